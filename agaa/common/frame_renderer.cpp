@@ -1,0 +1,137 @@
+#include "agaa/common/frame_renderer.h"
+
+#include "engine/frame/readback.h"
+#include "engine/frame/sample_pattern.h"
+#include "shared/frame.h"
+
+#include <algorithm>
+#include <cstring>
+#include <stdexcept>
+
+namespace agaa {
+namespace rg = eng::rg;
+namespace vk = eng::vk;
+
+namespace {
+
+double median(std::vector<double> v) {
+    if (v.empty()) return 0.0;
+    std::sort(v.begin(), v.end());
+    size_t n = v.size();
+    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+eng::io::ImageF readImage(const vk::Device& device, const vk::Buffer& buffer, uint32_t w, uint32_t h) {
+    vk::invalidateBuffer(device, buffer);
+    eng::io::ImageF img = eng::io::makeImage(w, h);
+    std::memcpy(img.rgba.data(), buffer.mapped, size_t(w) * h * 16);
+    return img;
+}
+
+} // namespace
+
+FrameRenderer::FrameRenderer(vk::Device& device, const eng::scene::Scene& scene)
+    : m_device(device), m_scene(scene), m_gpuScene(device, scene), m_runner(device) {
+    if (scene.lights.size() > shared::kMaxLights)
+        throw std::invalid_argument(scene.source + ": " + std::to_string(scene.lights.size()) +
+                                    " lights; at most " + std::to_string(shared::kMaxLights) + " are supported");
+    m_frameConstants = vk::createBuffer(device, sizeof(shared::FrameConstants), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
+                                        vk::MemoryUse::Upload, "frame.constants");
+    size_t lightCount = std::max<size_t>(1, scene.lights.size());
+    m_lights = vk::createBuffer(device, lightCount * sizeof(shared::GpuLight), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+                                vk::MemoryUse::Upload, "frame.lights");
+}
+
+FrameRenderer::~FrameRenderer() {
+    vkDeviceWaitIdle(m_device.device());
+    m_techniques.clear();
+    vk::destroyBuffer(m_device, m_frameConstants);
+    vk::destroyBuffer(m_device, m_lights);
+}
+
+Technique& FrameRenderer::technique(const RenderRequest& r) {
+    std::string key = r.method + "/" + std::to_string(r.settings.samples) + "/" + std::to_string(r.settings.aggregates);
+    auto it = m_techniques.find(key);
+    if (it == m_techniques.end())
+        it = m_techniques.emplace(key, createTechnique(r.method, m_device, m_gpuScene, r.settings)).first;
+    return *it->second;
+}
+
+RenderResult FrameRenderer::render(const RenderRequest& request) {
+    const uint32_t w = request.view.width, h = request.view.height;
+    if (w == 0 || h == 0 || w > 8192 || h > 8192)
+        throw std::invalid_argument("image size " + std::to_string(w) + "x" + std::to_string(h) +
+                                    " is out of range (1..8192 each)");
+    Technique& tech = technique(request);
+    const eng::frame::SamplePattern pattern = eng::frame::makeSamplePattern(tech.samples());
+    shared::FrameConstants constants = eng::frame::makeFrameConstants(m_scene, request.view, pattern);
+    std::vector<shared::GpuLight> lights = eng::frame::makeGpuLights(m_scene, constants.view);
+    vk::writeBuffer(m_device, m_frameConstants, std::as_bytes(std::span(&constants, 1)));
+    vk::writeBuffer(m_device, m_lights, std::as_bytes(std::span(lights)));
+
+    vk::Buffer hdrHost = eng::frame::createReadbackBuffer(m_device, w, h, VK_FORMAT_R32G32B32A32_SFLOAT, "readback.hdr");
+    vk::Buffer displayHost =
+        eng::frame::createReadbackBuffer(m_device, w, h, VK_FORMAT_R32G32B32A32_SFLOAT, "readback.display");
+    vk::Buffer eventsHost = eng::frame::createReadbackBuffer(m_device, w, h, VK_FORMAT_R32_UINT, "readback.events");
+
+    rg::Graph graph;
+    FrameInputs inputs;
+    inputs.scene = &m_gpuScene;
+    inputs.width = w;
+    inputs.height = h;
+    // Host-written before submission (the submit makes them visible): no prior GPU use.
+    inputs.frameConstants = graph.importBuffer("frame.constants", {m_frameConstants.buffer, m_frameConstants.size},
+                                               std::nullopt, std::nullopt);
+    inputs.lights = graph.importBuffer("frame.lights", {m_lights.buffer, m_lights.size}, std::nullopt, std::nullopt);
+    FrameTargets targets = tech.addPasses(graph, inputs);
+    eng::frame::addReadbackPass(graph, targets.hdr, hdrHost, "readback.hdr");
+    eng::frame::addReadbackPass(graph, targets.display, displayHost, "readback.display");
+    eng::frame::addReadbackPass(graph, targets.shadingEvents, eventsHost, "readback.events");
+    graph.compile();
+
+    RenderResult result;
+    result.samples = tech.samples();
+    for (uint32_t i = 0; i < request.warmupFrames; ++i) m_runner.run(graph);
+    std::vector<eng::frame::FrameTiming> timings;
+    for (uint32_t i = 0; i < std::max(1u, request.timedFrames); ++i) timings.push_back(m_runner.run(graph));
+
+    for (size_t p = 0; p < timings[0].passes.size(); ++p) {
+        std::vector<double> samples;
+        for (const auto& t : timings) samples.push_back(t.passes[p].gpuMs);
+        result.passes.push_back({timings[0].passes[p].name, median(samples)});
+        result.passSamples.push_back(samples);
+    }
+    std::vector<double> frames;
+    for (const auto& t : timings) frames.push_back(t.frameMs);
+    result.frameGpuMs = median(frames);
+    result.culledPasses = graph.culledPassNames();
+    result.graphDot = graph.dumpDot();
+    result.graphJson = graph.dumpJson();
+
+    uint64_t storage = 0;
+    for (const auto& [name, bytes] : m_runner.pool().bytesByName())
+        if (tech.isStorage(name)) {
+            result.storageBytes[name] = bytes;
+            storage += bytes;
+        }
+    result.bytesPerPixel = double(storage) / (double(w) * h);
+
+    result.hdr = readImage(m_device, hdrHost, w, h);
+    result.display = readImage(m_device, displayHost, w, h);
+    vk::invalidateBuffer(m_device, eventsHost);
+    result.shadingEvents.resize(size_t(w) * h);
+    std::memcpy(result.shadingEvents.data(), eventsHost.mapped, result.shadingEvents.size() * 4);
+    uint64_t sum = 0;
+    for (uint32_t e : result.shadingEvents) {
+        sum += e;
+        result.shadingEventsMax = std::max(result.shadingEventsMax, e);
+    }
+    result.shadingEventsMean = double(sum) / double(result.shadingEvents.size());
+
+    vk::destroyBuffer(m_device, hdrHost);
+    vk::destroyBuffer(m_device, displayHost);
+    vk::destroyBuffer(m_device, eventsHost);
+    return result;
+}
+
+} // namespace agaa

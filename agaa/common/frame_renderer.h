@@ -1,0 +1,65 @@
+#pragma once
+// Renders one frame of a scene with one method, headless, and brings back what
+// the tools, the benchmark and the tests look at: the images, per-pass GPU
+// times, shading events, the technique's storage from its real allocations,
+// the compiled graph and the validation count. The same code path for all.
+
+#include "agaa/common/technique.h"
+#include "agaa/methods.h"
+#include "engine/frame/frame_constants.h"
+#include "engine/frame/frame_runner.h"
+#include "engine/frame/gpu_scene.h"
+#include "engine/io/image.h"
+#include "engine/vk/resources.h"
+
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace agaa {
+
+struct RenderRequest {
+    std::string method = "reference";
+    MethodSettings settings;
+    eng::frame::ViewSettings view;
+    uint32_t warmupFrames = 0; // lavapipe JIT-compiles pipelines on first use: warm up before timing
+    uint32_t timedFrames = 1; // per-pass times are the median over these
+};
+
+struct RenderResult {
+    eng::io::ImageF hdr; // linear radiance
+    eng::io::ImageF display; // tone-mapped resolve, linear [0,1] (sRGB-encode for viewing)
+    std::vector<uint32_t> shadingEvents; // per pixel
+    std::vector<eng::frame::PassTiming> passes; // median gpu ms per pass
+    std::vector<std::vector<double>> passSamples; // every timed frame's ms, per pass
+    double frameGpuMs = 0.0; // median
+    std::vector<std::string> culledPasses;
+    std::map<std::string, uint64_t> storageBytes; // the technique's own resources
+    double bytesPerPixel = 0.0;
+    double shadingEventsMean = 0.0;
+    uint32_t shadingEventsMax = 0;
+    uint32_t samples = 0;
+    std::string graphDot, graphJson;
+};
+
+class FrameRenderer {
+public:
+    FrameRenderer(eng::vk::Device& device, const eng::scene::Scene& scene);
+    ~FrameRenderer();
+    RenderResult render(const RenderRequest& request);
+    eng::vk::Device& device() { return m_device; }
+    const eng::scene::Scene& scene() const { return m_scene; }
+
+private:
+    Technique& technique(const RenderRequest& request);
+
+    eng::vk::Device& m_device;
+    const eng::scene::Scene& m_scene;
+    eng::frame::GpuScene m_gpuScene;
+    eng::frame::FrameRunner m_runner;
+    eng::vk::Buffer m_frameConstants, m_lights;
+    std::map<std::string, std::unique_ptr<Technique>> m_techniques; // keyed by method and settings
+};
+
+} // namespace agaa

@@ -1,0 +1,48 @@
+#pragma once
+// The face every anti-aliasing technique shows the host: it adds its passes to
+// the host's render graph and hands back the targets. It owns pipelines (which
+// outlive frames: lavapipe JIT-compiles each on first use) but no per-frame
+// state, no window, no swapchain.
+
+#include "engine/frame/gpu_scene.h"
+#include "engine/graph/graph.h"
+
+#include <cstdint>
+#include <string>
+
+namespace agaa {
+
+// Inputs every technique reads; the host imports these buffers into its graph.
+struct FrameInputs {
+    const eng::frame::GpuScene* scene = nullptr;
+    eng::rg::Buffer frameConstants; // shared::FrameConstants, uniform
+    eng::rg::Buffer lights; // shared::GpuLight[], storage
+    uint32_t width = 0;
+    uint32_t height = 0;
+};
+
+// Outputs every technique produces, with the same meaning (DESIGN section 6).
+struct FrameTargets {
+    eng::rg::Texture hdr; // RGBA32F linear radiance, box-resolved
+    eng::rg::Texture display; // RGBA32F: each shading event tone-mapped, weighted by its sample fraction, summed
+    eng::rg::Texture shadingEvents; // R32_UINT: shading events per pixel
+};
+
+// Settings every method understands; a method ignores the ones it has no use for.
+struct MethodSettings {
+    uint32_t samples = 8; // n: visibility samples per pixel
+    uint32_t aggregates = 2; // c: AGAA aggregates per pixel
+};
+
+class Technique {
+public:
+    virtual ~Technique() = default;
+    virtual std::string name() const = 0;
+    // Visibility samples per pixel this technique rasterises (selects the sample pattern).
+    virtual uint32_t samples() const = 0;
+    virtual FrameTargets addPasses(eng::rg::Graph& graph, const FrameInputs& inputs) = 0;
+    // Resource names that are this technique's own per-pixel storage (for bytes_per_pixel).
+    virtual bool isStorage(const std::string& resourceName) const = 0;
+};
+
+} // namespace agaa

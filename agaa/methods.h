@@ -1,0 +1,31 @@
+#pragma once
+// Every anti-aliasing method agaa-render, the benchmark and the hard-case suite
+// know, in one table: adding a technique here is all it takes for the tools
+// and the report to pick it up.
+
+#include "agaa/common/technique.h"
+#include "engine/vk/device.h"
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace agaa {
+
+struct MethodInfo {
+    std::string name;
+    std::string summary;
+    bool usesSamples = true; // --samples matters
+    bool usesAggregates = false; // --aggregates matters
+};
+
+const std::vector<MethodInfo>& knownMethods();
+std::string knownMethodNames(); // "reference, noaa" for messages
+bool isKnownMethod(const std::string& name);
+
+// Throws std::invalid_argument naming the method or setting and the allowed values,
+// eng::vk::MissingCapability when the device lacks what the method needs.
+std::unique_ptr<Technique> createTechnique(const std::string& method, eng::vk::Device& device,
+                                           const eng::frame::GpuScene& scene, const MethodSettings& settings);
+
+} // namespace agaa

@@ -1,0 +1,49 @@
+#pragma once
+// The per-sample deferred reference (DESIGN section 5): a full G-buffer per
+// sample (16 bytes + 4 bytes depth) at n samples, 1 and 4 native, 8/16/32 by
+// layered 4x emulation; then a tiled-deferred compute pass lights every sample.
+// With n = 1 it is the no-AA method: one sample, one shading event per pixel.
+
+#include "agaa/common/technique.h"
+#include "engine/vk/device.h"
+#include "engine/vk/pipeline.h"
+
+#include <array>
+
+namespace agaa {
+
+struct ReferenceSettings {
+    uint32_t samples = 8;
+};
+
+class Reference final : public Technique {
+public:
+    Reference(eng::vk::Device& device, const eng::frame::GpuScene& scene, const ReferenceSettings& settings,
+              std::string name = "reference");
+    ~Reference() override;
+
+    std::string name() const override { return m_name; }
+    uint32_t samples() const override { return m_settings.samples; }
+    FrameTargets addPasses(eng::rg::Graph& graph, const FrameInputs& inputs) override;
+    bool isStorage(const std::string& resourceName) const override;
+
+    static constexpr VkFormat kDepthFormat = VK_FORMAT_D32_SFLOAT;
+    static constexpr VkFormat kNormalFormat = VK_FORMAT_R16G16_SNORM;
+    static constexpr VkFormat kAlbedoMetalFormat = VK_FORMAT_R8G8B8A8_SRGB;
+    static constexpr VkFormat kEmissiveRoughnessFormat = VK_FORMAT_R16G16B16A16_SFLOAT;
+
+private:
+    // G-buffer pipeline variants: [alpha-tested][double-sided].
+    VkPipeline gbufferPipeline(bool alphaTested, bool doubleSided);
+
+    eng::vk::Device& m_device;
+    ReferenceSettings m_settings;
+    std::string m_name;
+    eng::vk::PipelineLayout m_gbufferLayout;
+    eng::vk::PipelineLayout m_lightingLayout;
+    std::array<VkPipeline, 4> m_gbufferPipelines{};
+    VkPipeline m_lightingPipeline = VK_NULL_HANDLE;
+    VkSampler m_fetchSampler = VK_NULL_HANDLE;
+};
+
+} // namespace agaa

@@ -1,0 +1,83 @@
+#include "engine/frame/frame_constants.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace eng::frame {
+
+// Same floor as kMinSpotCosRange in shaders/glsl/common/epsilon.glsl.
+constexpr float kMinSpotCosRange = 1.0e-4f;
+
+glm::mat4 reversedZPerspective(float yfov, float aspect, float znear, float zfar) {
+    float f = 1.0f / std::tan(yfov * 0.5f);
+    glm::mat4 p(0.0f);
+    p[0][0] = f / aspect;
+    p[1][1] = -f; // Vulkan: +Y down in framebuffer space
+    p[2][2] = znear / (zfar - znear); // z_clip = A z_v + B, w_clip = -z_v
+    p[3][2] = znear * zfar / (zfar - znear);
+    p[2][3] = -1.0f;
+    return p;
+}
+
+shared::FrameConstants makeFrameConstants(const scene::Scene& scene, const ViewSettings& view,
+                                          const SamplePattern& pattern) {
+    if (view.camera >= scene.cameras.size())
+        throw std::invalid_argument("camera " + std::to_string(view.camera) + " does not exist (the scene has " +
+                                    std::to_string(scene.cameras.size()) + ")");
+    const scene::Camera& cam = scene.cameras[view.camera];
+    shared::FrameConstants c{};
+    float aspect = float(view.width) / float(view.height);
+    c.view = cam.view;
+    c.proj = reversedZPerspective(cam.yfov, aspect, cam.znear, cam.zfar);
+    c.viewProj = c.proj * c.view;
+    for (uint32_t l = 0; l < pattern.layers; ++l) c.layerOffsets[l] = glm::vec4(pattern.layerOffsets[l], 0, 0);
+    for (uint32_t s = 0; s < pattern.samples; ++s) c.samplePositions[s] = glm::vec4(pattern.positions[s], 0, 0);
+    c.skyRadiance = glm::vec4(view.skyRadiance, 0.0f);
+    c.extent = {float(view.width), float(view.height), 1.0f / float(view.width), 1.0f / float(view.height)};
+    c.depthParams = {cam.znear, cam.zfar, view.exposure, 0.0f};
+    c.projParams = {c.proj[0][0], c.proj[1][1], 0.0f, 0.0f};
+    c.counts = {pattern.samples, pattern.samplesPerLayer, pattern.layers,
+                uint32_t(std::min<size_t>(scene.lights.size(), shared::kMaxLights))};
+    return c;
+}
+
+std::vector<shared::GpuLight> makeGpuLights(const scene::Scene& scene, const glm::mat4& view) {
+    std::vector<shared::GpuLight> out;
+    for (const scene::Light& l : scene.lights) {
+        shared::GpuLight g{};
+        glm::vec3 p = glm::vec3(view * glm::vec4(l.position, 1.0f));
+        glm::vec3 d = glm::vec3(view * glm::vec4(l.direction, 0.0f));
+        float dl = glm::length(d);
+        d = dl > 0.0f ? d / dl : glm::vec3(0, 0, -1);
+        uint32_t type = l.type == scene::LightType::Directional ? shared::kLightDirectional
+                        : l.type == scene::LightType::Point     ? shared::kLightPoint
+                                                                : shared::kLightSpot;
+        g.positionRange = {p, l.range};
+        g.directionType = {d, float(type)};
+        g.radiance = {l.color * l.intensity, 0.0f};
+        float cosOuter = std::cos(l.outerConeAngle), cosInner = std::cos(l.innerConeAngle);
+        g.spot = {cosOuter, 1.0f / std::max(cosInner - cosOuter, kMinSpotCosRange), 0.0f, 0.0f};
+        out.push_back(g);
+    }
+    if (out.empty()) out.push_back(shared::GpuLight{}); // a zero-sized storage buffer is not allowed
+    return out;
+}
+
+std::vector<shared::GpuMaterial> makeGpuMaterials(const scene::Scene& scene) {
+    std::vector<shared::GpuMaterial> out;
+    for (const scene::Material& m : scene.materials) {
+        shared::GpuMaterial g{};
+        g.baseColorFactor = m.baseColorFactor;
+        g.emissive = {m.emissiveFactor * m.emissiveStrength, m.alphaCutoff};
+        uint32_t mode = m.alphaMode == scene::AlphaMode::Opaque ? shared::kAlphaOpaque
+                        : m.alphaMode == scene::AlphaMode::Mask ? shared::kAlphaMask
+                                                                : shared::kAlphaBlend;
+        g.params = {m.metallicFactor, m.roughnessFactor, m.normalScale, float(mode)};
+        g.textures = {m.baseColorTexture, m.metallicRoughnessTexture, m.normalTexture, m.emissiveTexture};
+        out.push_back(g);
+    }
+    return out;
+}
+
+} // namespace eng::frame

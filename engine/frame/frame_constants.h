@@ -1,0 +1,28 @@
+#pragma once
+// Per-frame constants every pass reads: camera (reversed-Z projection), the
+// sample pattern, lights in view space, sky and exposure.
+
+#include "engine/frame/sample_pattern.h"
+#include "engine/scene/scene.h"
+#include "shared/frame.h"
+
+#include <vector>
+
+namespace eng::frame {
+
+struct ViewSettings {
+    uint32_t width = 256;
+    uint32_t height = 256;
+    uint32_t camera = 0; // index into Scene::cameras
+    glm::vec3 skyRadiance{0.35f, 0.5f, 0.8f};
+    float exposure = 1.0f;
+};
+
+// Reversed Z, finite far: depth 1 at znear, 0 at zfar (see common/depth.glsl), Y flipped for Vulkan.
+glm::mat4 reversedZPerspective(float yfov, float aspect, float znear, float zfar);
+
+shared::FrameConstants makeFrameConstants(const scene::Scene&, const ViewSettings&, const SamplePattern&);
+std::vector<shared::GpuLight> makeGpuLights(const scene::Scene&, const glm::mat4& view);
+std::vector<shared::GpuMaterial> makeGpuMaterials(const scene::Scene&);
+
+} // namespace eng::frame

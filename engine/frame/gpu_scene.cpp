@@ -1,0 +1,200 @@
+#include "engine/frame/gpu_scene.h"
+
+#include "engine/frame/frame_constants.h"
+#include "engine/graph/graph.h"
+#include "engine/frame/transient_pool.h"
+#include "engine/vk/check.h"
+#include "engine/vk/pipeline.h"
+#include "shared/frame.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <stdexcept>
+
+namespace eng::frame {
+namespace {
+
+float srgbToLinear(float c) { return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f); }
+float linearToSrgb(float c) { return c <= 0.0031308f ? c * 12.92f : 1.055f * std::pow(c, 1.0f / 2.4f) - 0.055f; }
+
+struct MipLevel {
+    uint32_t width, height;
+    std::vector<uint8_t> rgba;
+};
+
+// 2x2 box filter down to 1x1; sRGB colour averaged in linear space so dark/bright edges keep their weight.
+std::vector<MipLevel> buildMips(const scene::Texture& t) {
+    std::vector<MipLevel> mips{{t.width, t.height, t.rgba8}};
+    while (mips.back().width > 1 || mips.back().height > 1) {
+        const MipLevel& src = mips.back();
+        MipLevel dst{std::max(1u, src.width / 2), std::max(1u, src.height / 2), {}};
+        dst.rgba.resize(size_t(dst.width) * dst.height * 4);
+        for (uint32_t y = 0; y < dst.height; ++y)
+            for (uint32_t x = 0; x < dst.width; ++x)
+                for (uint32_t c = 0; c < 4; ++c) {
+                    float sum = 0.0f;
+                    for (uint32_t dy = 0; dy < 2; ++dy)
+                        for (uint32_t dx = 0; dx < 2; ++dx) {
+                            uint32_t sx = std::min(src.width - 1, 2 * x + dx), sy = std::min(src.height - 1, 2 * y + dy);
+                            float v = src.rgba[(size_t(sy) * src.width + sx) * 4 + c] / 255.0f;
+                            sum += (t.srgb && c < 3) ? srgbToLinear(v) : v;
+                        }
+                    float v = sum * 0.25f;
+                    if (t.srgb && c < 3) v = linearToSrgb(v);
+                    dst.rgba[(size_t(y) * dst.width + x) * 4 + c] = uint8_t(std::lround(std::clamp(v, 0.0f, 1.0f) * 255.0f));
+                }
+        mips.push_back(std::move(dst));
+    }
+    return mips;
+}
+
+template <class T> std::span<const std::byte> bytesOf(const std::vector<T>& v) {
+    return std::as_bytes(std::span<const T>(v));
+}
+
+} // namespace
+
+GpuScene::GpuScene(vk::Device& device, const scene::Scene& scene) : m_device(device), m_scene(scene) {
+    if (scene.textures.size() + 1 > shared::kMaxSceneTextures)
+        throw std::invalid_argument(scene.source + ": " + std::to_string(scene.textures.size()) +
+                                    " textures; at most " + std::to_string(shared::kMaxSceneTextures - 1) +
+                                    " are supported");
+    // Host-visible vertex data: lavapipe's memory is all host-visible; on a discrete GPU this
+    // is read over the bus (a staging copy would be the next step there).
+    m_vertices = vk::createBuffer(device, std::max<size_t>(16, scene.vertices.size() * sizeof(scene::Vertex)),
+                                  VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, vk::MemoryUse::Upload, "scene.vertices");
+    m_indices = vk::createBuffer(device, std::max<size_t>(16, scene.indices.size() * 4),
+                                 VK_BUFFER_USAGE_INDEX_BUFFER_BIT, vk::MemoryUse::Upload, "scene.indices");
+    if (!scene.vertices.empty()) vk::writeBuffer(device, m_vertices, bytesOf(scene.vertices));
+    if (!scene.indices.empty()) vk::writeBuffer(device, m_indices, bytesOf(scene.indices));
+    std::vector<shared::GpuMaterial> materials = makeGpuMaterials(scene);
+    if (materials.empty()) materials.push_back(shared::GpuMaterial{});
+    m_materials = vk::createBuffer(device, materials.size() * sizeof(shared::GpuMaterial),
+                                   VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, vk::MemoryUse::Upload, "scene.materials");
+    vk::writeBuffer(device, m_materials, bytesOf(materials));
+
+    m_sampler = vk::createSampler(device, VK_FILTER_LINEAR, VK_SAMPLER_ADDRESS_MODE_REPEAT, 16.0f, "scene.sampler");
+    uploadTextures();
+
+    vk::Binding binding{0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
+                        VK_SHADER_STAGE_FRAGMENT_BIT | VK_SHADER_STAGE_COMPUTE_BIT, shared::kMaxSceneTextures};
+    m_textureSetLayout = vk::createSetLayout(device, std::span(&binding, 1), "scene.textures.layout");
+    VkDescriptorPoolSize size{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, shared::kMaxSceneTextures};
+    VkDescriptorPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
+    poolInfo.maxSets = 1;
+    poolInfo.poolSizeCount = 1;
+    poolInfo.pPoolSizes = &size;
+    VK_CHECK(vkCreateDescriptorPool(device.device(), &poolInfo, nullptr, &m_pool));
+    VkDescriptorSetAllocateInfo alloc{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
+    alloc.descriptorPool = m_pool;
+    alloc.descriptorSetCount = 1;
+    alloc.pSetLayouts = &m_textureSetLayout;
+    VK_CHECK(vkAllocateDescriptorSets(device.device(), &alloc, &m_textureSet));
+    // Unused slots point at the white fallback, so no descriptor is ever undefined.
+    std::vector<VkDescriptorImageInfo> infos(shared::kMaxSceneTextures);
+    for (uint32_t i = 0; i < shared::kMaxSceneTextures; ++i) {
+        const vk::Image& img = i < scene.textures.size() ? m_textures[i] : m_textures.back();
+        infos[i] = {m_sampler, img.view, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
+    }
+    VkWriteDescriptorSet write{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+    write.dstSet = m_textureSet;
+    write.descriptorCount = shared::kMaxSceneTextures;
+    write.descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
+    write.pImageInfo = infos.data();
+    vkUpdateDescriptorSets(device.device(), 1, &write, 0, nullptr);
+}
+
+void GpuScene::uploadTextures() {
+    std::vector<scene::Texture> sources = m_scene.textures;
+    sources.push_back({"fallback.white", 1, 1, false, {255, 255, 255, 255}});
+
+    struct Pending {
+        std::vector<MipLevel> mips;
+        VkDeviceSize offset;
+    };
+    std::vector<Pending> pending;
+    VkDeviceSize total = 0;
+    for (const scene::Texture& t : sources) {
+        Pending p{buildMips(t), total};
+        for (const MipLevel& m : p.mips) total += m.rgba.size();
+        pending.push_back(std::move(p));
+    }
+    vk::Buffer staging = vk::createBuffer(m_device, total, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, vk::MemoryUse::Upload,
+                                          "scene.textures.staging");
+    rg::Graph graph;
+    std::vector<rg::Texture> handles;
+    for (size_t i = 0; i < sources.size(); ++i) {
+        const scene::Texture& t = sources[i];
+        VkDeviceSize offset = pending[i].offset;
+        for (const MipLevel& m : pending[i].mips) {
+            vk::writeBuffer(m_device, staging, std::as_bytes(std::span(m.rgba)), offset);
+            offset += m.rgba.size();
+        }
+        vk::ImageDesc desc{t.srgb ? VK_FORMAT_R8G8B8A8_SRGB : VK_FORMAT_R8G8B8A8_UNORM, t.width, t.height, 1,
+                           uint32_t(pending[i].mips.size()), VK_SAMPLE_COUNT_1_BIT,
+                           VK_IMAGE_USAGE_TRANSFER_DST_BIT | VK_IMAGE_USAGE_SAMPLED_BIT, VK_IMAGE_VIEW_TYPE_2D};
+        m_textures.push_back(vk::createImage(m_device, desc, "scene.texture." + (t.name.empty() ? std::to_string(i) : t.name)));
+        const vk::Image& img = m_textures.back();
+        rg::PhysicalTexture physical{img.image, img.view, img.sampledView, {desc.format, t.width, t.height, 1}};
+        handles.push_back(graph.importTexture("scene.texture." + std::to_string(i), physical, std::nullopt,
+                                              rg::Use::SampledFragment));
+    }
+    rg::PhysicalBuffer stagingPhysical{staging.buffer, staging.size};
+    rg::Buffer stagingHandle = graph.importBuffer("scene.textures.staging", stagingPhysical, std::nullopt, std::nullopt);
+    struct Data {
+        rg::Buffer staging;
+        std::vector<rg::Texture> textures;
+    };
+    graph.addPass<Data>(
+        "scene.upload", rg::PassKind::Transfer,
+        [&](rg::Builder& b, Data& d) {
+            d.staging = b.read(stagingHandle, rg::Use::TransferSrc);
+            for (rg::Texture t : handles) d.textures.push_back(b.write(t, rg::Use::TransferDst));
+        },
+        [&](const rg::Context& ctx, const Data& d) {
+            for (size_t i = 0; i < d.textures.size(); ++i) {
+                VkDeviceSize offset = pending[i].offset;
+                for (uint32_t level = 0; level < pending[i].mips.size(); ++level) {
+                    const MipLevel& m = pending[i].mips[level];
+                    VkBufferImageCopy copy{};
+                    copy.bufferOffset = offset;
+                    copy.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, level, 0, 1};
+                    copy.imageExtent = {m.width, m.height, 1};
+                    vkCmdCopyBufferToImage(ctx.cmd(), ctx.buffer(d.staging).buffer, ctx.texture(d.textures[i]).image,
+                                           VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &copy);
+                    offset += m.rgba.size();
+                }
+            }
+        });
+    graph.compile();
+    TransientPool pool(m_device);
+    m_device.submitAndWait([&](VkCommandBuffer cmd) {
+        rg::Graph::ExecuteInfo info;
+        info.cmd = cmd;
+        info.allocator = &pool;
+        graph.execute(info);
+    });
+    graph.releaseTransients();
+    vk::destroyBuffer(m_device, staging);
+}
+
+GpuScene::~GpuScene() {
+    VkDevice d = m_device.device();
+    vkDeviceWaitIdle(d);
+    if (m_pool) vkDestroyDescriptorPool(d, m_pool, nullptr);
+    if (m_textureSetLayout) vkDestroyDescriptorSetLayout(d, m_textureSetLayout, nullptr);
+    if (m_sampler) vkDestroySampler(d, m_sampler, nullptr);
+    for (auto& t : m_textures) vk::destroyImage(m_device, t);
+    vk::destroyBuffer(m_device, m_vertices);
+    vk::destroyBuffer(m_device, m_indices);
+    vk::destroyBuffer(m_device, m_materials);
+}
+
+VkDeviceSize GpuScene::bytes() const {
+    VkDeviceSize b = m_vertices.size + m_indices.size + m_materials.size;
+    for (const auto& t : m_textures) b += t.bytes;
+    return b;
+}
+
+} // namespace eng::frame

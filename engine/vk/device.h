@@ -1,0 +1,95 @@
+#pragma once
+// Instance, physical-device choice, logical device and queue. One graphics +
+// compute queue (lavapipe has exactly one family). The debug messenger counts
+// validation errors: messages whose id starts with VUID-, UNASSIGNED- or SYNC-
+// are errors (tests fail on them); anything else (Mesa's own SPIR-V warnings,
+// performance hints) is logged only. See ../shared/LAVAPIPE.md, "Traps".
+
+#include "engine/vk/capabilities.h"
+
+#include <vulkan/vulkan.h>
+
+#include <atomic>
+#include <cstdint>
+#include <functional>
+#include <mutex>
+#include <string>
+#include <vector>
+
+namespace eng::vk {
+
+struct DeviceOptions {
+    bool validation = false; // also enabled by AGAA_VALIDATE=1 in the environment
+    bool synchronizationValidation = true; // with validation: sync2 hazards are reported as SYNC-*
+    std::string deviceName; // case-insensitive substring of VkPhysicalDeviceProperties::deviceName; empty = best
+    bool quiet = false; // do not print non-error messages
+};
+
+class Device {
+public:
+    explicit Device(const DeviceOptions& options);
+    ~Device();
+    Device(const Device&) = delete;
+    Device& operator=(const Device&) = delete;
+
+    VkInstance instance() const { return m_instance; }
+    VkPhysicalDevice physical() const { return m_physical; }
+    VkDevice device() const { return m_device; }
+    VkQueue queue() const { return m_queue; }
+    uint32_t queueFamily() const { return m_queueFamily; }
+    const Capabilities& caps() const { return m_caps; }
+    bool validationEnabled() const { return m_validation; }
+
+    // Validation messages counted as errors since creation (or the last reset).
+    uint32_t validationErrors() const { return m_validationErrors.load(); }
+    std::vector<std::string> validationMessages() const;
+    void resetValidationErrors();
+
+    // Records with record(), submits, and waits on a fence. Used for whole frames
+    // and uploads; this project renders headless, so one frame in flight is enough.
+    void submitAndWait(const std::function<void(VkCommandBuffer)>& record);
+
+    // VK_EXT_debug_utils naming and labels (no-ops when the extension is absent).
+    void setName(VkObjectType type, uint64_t handle, const std::string& name) const;
+    template <class T> void setName(VkObjectType type, T handle, const std::string& name) const {
+        setName(type, reinterpret_cast<uint64_t>(handle), name);
+    }
+    PFN_vkCmdBeginDebugUtilsLabelEXT beginLabel() const { return m_beginLabel; }
+    PFN_vkCmdEndDebugUtilsLabelEXT endLabel() const { return m_endLabel; }
+    PFN_vkCmdPushDescriptorSetKHR pushDescriptorSet() const { return m_pushDescriptorSet; }
+
+    uint32_t findMemoryType(uint32_t typeBits, VkMemoryPropertyFlags required, VkMemoryPropertyFlags preferred) const;
+
+    // Lists every Vulkan 1.3 device the loader sees (for error messages and --caps).
+    static std::vector<std::string> listDevices();
+
+private:
+    void createInstance(const DeviceOptions& options);
+    void pickPhysicalDevice(const DeviceOptions& options);
+    void createDevice();
+    static VKAPI_ATTR VkBool32 VKAPI_CALL onMessage(VkDebugUtilsMessageSeverityFlagBitsEXT severity,
+                                                    VkDebugUtilsMessageTypeFlagsEXT type,
+                                                    const VkDebugUtilsMessengerCallbackDataEXT* data, void* user);
+
+    VkInstance m_instance = VK_NULL_HANDLE;
+    VkDebugUtilsMessengerEXT m_messenger = VK_NULL_HANDLE;
+    VkPhysicalDevice m_physical = VK_NULL_HANDLE;
+    VkDevice m_device = VK_NULL_HANDLE;
+    VkQueue m_queue = VK_NULL_HANDLE;
+    uint32_t m_queueFamily = 0;
+    VkCommandPool m_commandPool = VK_NULL_HANDLE;
+    VkFence m_fence = VK_NULL_HANDLE;
+    Capabilities m_caps;
+    bool m_validation = false;
+    bool m_debugUtils = false;
+    bool m_quiet = false;
+    std::atomic<uint32_t> m_validationErrors{0};
+    mutable std::mutex m_messagesMutex;
+    std::vector<std::string> m_messages;
+    PFN_vkSetDebugUtilsObjectNameEXT m_setObjectName = nullptr;
+    PFN_vkCmdBeginDebugUtilsLabelEXT m_beginLabel = nullptr;
+    PFN_vkCmdEndDebugUtilsLabelEXT m_endLabel = nullptr;
+    PFN_vkCmdPushDescriptorSetKHR m_pushDescriptorSet = nullptr;
+};
+
+} // namespace eng::vk

@@ -1,0 +1,198 @@
+#include "engine/vk/resources.h"
+
+#include "engine/vk/check.h"
+
+#include <cstring>
+
+namespace eng::vk {
+
+bool isDepthFormat(VkFormat f) {
+    switch (f) {
+    case VK_FORMAT_D16_UNORM:
+    case VK_FORMAT_X8_D24_UNORM_PACK32:
+    case VK_FORMAT_D32_SFLOAT:
+    case VK_FORMAT_D16_UNORM_S8_UINT:
+    case VK_FORMAT_D24_UNORM_S8_UINT:
+    case VK_FORMAT_D32_SFLOAT_S8_UINT: return true;
+    default: return false;
+    }
+}
+
+bool hasStencil(VkFormat f) {
+    return f == VK_FORMAT_D16_UNORM_S8_UINT || f == VK_FORMAT_D24_UNORM_S8_UINT || f == VK_FORMAT_D32_SFLOAT_S8_UINT ||
+           f == VK_FORMAT_S8_UINT;
+}
+
+VkImageAspectFlags aspectOf(VkFormat f) {
+    if (!isDepthFormat(f)) return VK_IMAGE_ASPECT_COLOR_BIT;
+    return VK_IMAGE_ASPECT_DEPTH_BIT | (hasStencil(f) ? VK_IMAGE_ASPECT_STENCIL_BIT : 0);
+}
+
+uint32_t bytesPerTexel(VkFormat f) {
+    switch (f) {
+    case VK_FORMAT_R8_UNORM:
+    case VK_FORMAT_R8_UINT:
+    case VK_FORMAT_S8_UINT: return 1;
+    case VK_FORMAT_R8G8_UNORM:
+    case VK_FORMAT_R8G8_UINT:
+    case VK_FORMAT_R16_UINT:
+    case VK_FORMAT_R16_SFLOAT:
+    case VK_FORMAT_D16_UNORM: return 2;
+    case VK_FORMAT_D16_UNORM_S8_UINT: return 3;
+    case VK_FORMAT_R8G8B8A8_UNORM:
+    case VK_FORMAT_R8G8B8A8_SRGB:
+    case VK_FORMAT_A2B10G10R10_UNORM_PACK32:
+    case VK_FORMAT_R16G16_SNORM:
+    case VK_FORMAT_R16G16_UNORM:
+    case VK_FORMAT_R16G16_SFLOAT:
+    case VK_FORMAT_R32_UINT:
+    case VK_FORMAT_R32_SFLOAT:
+    case VK_FORMAT_D32_SFLOAT:
+    case VK_FORMAT_X8_D24_UNORM_PACK32:
+    case VK_FORMAT_D24_UNORM_S8_UINT:
+    case VK_FORMAT_B10G11R11_UFLOAT_PACK32: return 4;
+    case VK_FORMAT_D32_SFLOAT_S8_UINT: return 5;
+    case VK_FORMAT_R16G16B16A16_SFLOAT:
+    case VK_FORMAT_R16G16B16A16_UNORM:
+    case VK_FORMAT_R32G32_UINT:
+    case VK_FORMAT_R32G32_SFLOAT: return 8;
+    case VK_FORMAT_R32G32B32A32_SFLOAT:
+    case VK_FORMAT_R32G32B32A32_UINT: return 16;
+    default: return 0;
+    }
+}
+
+Buffer createBuffer(const Device& device, VkDeviceSize size, VkBufferUsageFlags usage, MemoryUse use,
+                    const std::string& name) {
+    Buffer b;
+    b.size = size;
+    VkBufferCreateInfo info{VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO};
+    info.size = size > 0 ? size : 4; // a zero-sized buffer is invalid; callers may have nothing to store
+    info.usage = usage;
+    info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
+    VK_CHECK(vkCreateBuffer(device.device(), &info, nullptr, &b.buffer));
+    VkMemoryRequirements req;
+    vkGetBufferMemoryRequirements(device.device(), b.buffer, &req);
+
+    VkMemoryPropertyFlags required = 0, preferred = 0;
+    switch (use) {
+    case MemoryUse::GpuOnly: preferred = VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT; break;
+    case MemoryUse::Upload:
+        required = VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT;
+        preferred = VK_MEMORY_PROPERTY_HOST_COHERENT_BIT;
+        break;
+    case MemoryUse::Readback:
+        required = VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT;
+        preferred = VK_MEMORY_PROPERTY_HOST_CACHED_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT;
+        break;
+    }
+    uint32_t type = device.findMemoryType(req.memoryTypeBits, required, preferred);
+    VkMemoryAllocateInfo alloc{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
+    alloc.allocationSize = req.size;
+    alloc.memoryTypeIndex = type;
+    VK_CHECK(vkAllocateMemory(device.device(), &alloc, nullptr, &b.memory));
+    VK_CHECK(vkBindBufferMemory(device.device(), b.buffer, b.memory, 0));
+    if (use != MemoryUse::GpuOnly) {
+        VK_CHECK(vkMapMemory(device.device(), b.memory, 0, VK_WHOLE_SIZE, 0, &b.mapped));
+        VkPhysicalDeviceMemoryProperties props;
+        vkGetPhysicalDeviceMemoryProperties(device.physical(), &props);
+        b.coherent = (props.memoryTypes[type].propertyFlags & VK_MEMORY_PROPERTY_HOST_COHERENT_BIT) != 0;
+    }
+    device.setName(VK_OBJECT_TYPE_BUFFER, b.buffer, name);
+    device.setName(VK_OBJECT_TYPE_DEVICE_MEMORY, b.memory, name + ".memory");
+    return b;
+}
+
+void destroyBuffer(const Device& device, Buffer& b) {
+    if (b.buffer) vkDestroyBuffer(device.device(), b.buffer, nullptr);
+    if (b.memory) vkFreeMemory(device.device(), b.memory, nullptr);
+    b = Buffer{};
+}
+
+void writeBuffer(const Device& device, const Buffer& b, std::span<const std::byte> bytes, VkDeviceSize offset) {
+    if (!b.mapped || offset + bytes.size() > b.size)
+        throw std::logic_error("writeBuffer: buffer not mapped or write past its end");
+    std::memcpy(static_cast<std::byte*>(b.mapped) + offset, bytes.data(), bytes.size());
+    if (!b.coherent) {
+        VkMappedMemoryRange range{VK_STRUCTURE_TYPE_MAPPED_MEMORY_RANGE};
+        range.memory = b.memory;
+        range.size = VK_WHOLE_SIZE;
+        VK_CHECK(vkFlushMappedMemoryRanges(device.device(), 1, &range));
+    }
+}
+
+void invalidateBuffer(const Device& device, const Buffer& b) {
+    if (b.coherent || !b.mapped) return;
+    VkMappedMemoryRange range{VK_STRUCTURE_TYPE_MAPPED_MEMORY_RANGE};
+    range.memory = b.memory;
+    range.size = VK_WHOLE_SIZE;
+    VK_CHECK(vkInvalidateMappedMemoryRanges(device.device(), 1, &range));
+}
+
+Image createImage(const Device& device, const ImageDesc& desc, const std::string& name) {
+    Image img;
+    img.desc = desc;
+    VkImageCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
+    info.imageType = VK_IMAGE_TYPE_2D;
+    info.format = desc.format;
+    info.extent = {desc.width, desc.height, 1};
+    info.mipLevels = desc.mipLevels;
+    info.arrayLayers = desc.layers;
+    info.samples = desc.samples;
+    info.tiling = VK_IMAGE_TILING_OPTIMAL;
+    info.usage = desc.usage;
+    info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
+    info.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
+    VK_CHECK(vkCreateImage(device.device(), &info, nullptr, &img.image));
+    VkMemoryRequirements req;
+    vkGetImageMemoryRequirements(device.device(), img.image, &req);
+    VkMemoryAllocateInfo alloc{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
+    alloc.allocationSize = req.size;
+    alloc.memoryTypeIndex = device.findMemoryType(req.memoryTypeBits, 0, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
+    VK_CHECK(vkAllocateMemory(device.device(), &alloc, nullptr, &img.memory));
+    VK_CHECK(vkBindImageMemory(device.device(), img.image, img.memory, 0));
+    img.bytes = req.size;
+
+    // 2D_ARRAY views by default, so shaders use one sampler type whether or not the
+    // sample rate is emulated with layers.
+    VkImageViewCreateInfo view{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
+    view.image = img.image;
+    view.viewType = desc.viewType;
+    view.format = desc.format;
+    view.subresourceRange = {aspectOf(desc.format), 0, desc.mipLevels, 0, desc.layers};
+    VK_CHECK(vkCreateImageView(device.device(), &view, nullptr, &img.view));
+    img.sampledView = img.view;
+    if (isDepthFormat(desc.format) && hasStencil(desc.format) &&
+        (desc.usage & VK_IMAGE_USAGE_SAMPLED_BIT)) {
+        view.subresourceRange.aspectMask = VK_IMAGE_ASPECT_DEPTH_BIT;
+        VK_CHECK(vkCreateImageView(device.device(), &view, nullptr, &img.sampledView));
+    }
+    device.setName(VK_OBJECT_TYPE_IMAGE, img.image, name);
+    device.setName(VK_OBJECT_TYPE_IMAGE_VIEW, img.view, name + ".view");
+    device.setName(VK_OBJECT_TYPE_DEVICE_MEMORY, img.memory, name + ".memory");
+    return img;
+}
+
+void destroyImage(const Device& device, Image& img) {
+    if (img.sampledView && img.sampledView != img.view) vkDestroyImageView(device.device(), img.sampledView, nullptr);
+    if (img.view) vkDestroyImageView(device.device(), img.view, nullptr);
+    if (img.image) vkDestroyImage(device.device(), img.image, nullptr);
+    if (img.memory) vkFreeMemory(device.device(), img.memory, nullptr);
+    img = Image{};
+}
+
+VkSampler createSampler(const Device& device, VkFilter filter, VkSamplerAddressMode address, float maxLod,
+                        const std::string& name) {
+    VkSamplerCreateInfo info{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
+    info.magFilter = filter;
+    info.minFilter = filter;
+    info.mipmapMode = filter == VK_FILTER_LINEAR ? VK_SAMPLER_MIPMAP_MODE_LINEAR : VK_SAMPLER_MIPMAP_MODE_NEAREST;
+    info.addressModeU = info.addressModeV = info.addressModeW = address;
+    info.maxLod = maxLod;
+    VkSampler sampler = VK_NULL_HANDLE;
+    VK_CHECK(vkCreateSampler(device.device(), &info, nullptr, &sampler));
+    device.setName(VK_OBJECT_TYPE_SAMPLER, sampler, name);
+    return sampler;
+}
+
+} // namespace eng::vk

@@ -1,0 +1,55 @@
+#ifndef AGAA_BRDF_GLSL
+#define AGAA_BRDF_GLSL
+#include "common/epsilon.glsl"
+// GGX specular (Walter et al. 2007) with the height-correlated Smith visibility,
+// Schlick Fresnel, Lambert diffuse: the glTF metallic-roughness model. Shared by
+// every technique so that methods differ only in what they shade, not how.
+
+const float kPi = 3.14159265358979;
+
+struct SurfaceInputs {
+    vec3 albedo; // base colour, linear
+    float metallic;
+    float roughness; // perceptual roughness r; alpha = r^2
+    vec3 normal; // unit, view space
+};
+
+float ggxD(float NoH, float alpha) {
+    float a2 = alpha * alpha;
+    float f = (NoH * a2 - NoH) * NoH + 1.0; // >= a2 > 0 since NoH in [0,1]
+    return a2 / (kPi * f * f);
+}
+
+// Height-correlated Smith G divided by 4 N.L N.V (Heitz 2014).
+float smithVisibility(float NoV, float NoL, float alpha) {
+    float a2 = alpha * alpha;
+    float gv = NoL * sqrt(NoV * NoV * (1.0 - a2) + a2);
+    float gl = NoV * sqrt(NoL * NoL * (1.0 - a2) + a2);
+    return 0.5 / max(gv + gl, kMinCosine * kMinCosine);
+}
+
+vec3 fresnelSchlick(vec3 f0, float VoH) {
+    float f = pow(1.0 - clamp(VoH, 0.0, 1.0), 5.0); // base in [0,1]: pow is defined
+    return f0 + (1.0 - f0) * f;
+}
+
+// Outgoing radiance towards V for irradiance E (already times N.L) from direction L.
+vec3 evaluateBrdf(SurfaceInputs s, vec3 V, vec3 L, vec3 irradiance) {
+    vec3 N = s.normal;
+    float NoL = dot(N, L);
+    if (NoL <= 0.0) return vec3(0.0);
+    float NoV = max(dot(N, V), kMinCosine);
+    vec3 Hraw = V + L;
+    // V = -L (light exactly behind the viewer's direction) makes H zero.
+    float hlen = length(Hraw);
+    vec3 H = hlen > kMinNormalLength ? Hraw / hlen : N;
+    float NoH = clamp(dot(N, H), 0.0, 1.0);
+    float VoH = clamp(dot(V, H), 0.0, 1.0);
+    float alpha = max(s.roughness * s.roughness, kMinGgxAlpha);
+    vec3 f0 = mix(vec3(0.04), s.albedo, s.metallic);
+    vec3 F = fresnelSchlick(f0, VoH);
+    vec3 specular = F * (ggxD(NoH, alpha) * smithVisibility(NoV, max(NoL, kMinCosine), alpha));
+    vec3 diffuse = (1.0 - F) * (1.0 - s.metallic) * s.albedo / kPi;
+    return (diffuse + specular) * irradiance * NoL;
+}
+#endif

@@ -1,0 +1,19 @@
+#ifndef AGAA_DEPTH_GLSL
+#define AGAA_DEPTH_GLSL
+// Reversed Z with a finite far plane: d(t) = n (f - t) / (t (f - n)) maps view
+// distance t in [n, f] to depth d in [1, 0]. Cleared depth 0 is the far plane:
+// such a sample is sky. Inverse: t = n f / (d (f - n) + n); the denominator is
+// >= n > 0 for d >= 0, so it needs no guard.
+float viewDistanceFromDepth(float d, float znear, float zfar) {
+    return znear * zfar / (d * (zfar - znear) + znear);
+}
+
+bool isSky(float d) { return d <= 0.0; }
+
+// View-space position of a point at pixel-space position (pixel + subpixel) with depth d.
+vec3 viewPositionFromDepth(vec2 pixelPos, float d, vec4 extent, vec4 depthParams, vec4 projParams) {
+    float t = viewDistanceFromDepth(d, depthParams.x, depthParams.y);
+    vec2 ndc = pixelPos * extent.zw * 2.0 - 1.0;
+    return vec3(ndc.x * t / projParams.x, ndc.y * t / projParams.y, -t);
+}
+#endif

@@ -1,0 +1,23 @@
+#ifndef AGAA_EPSILON_GLSL
+#define AGAA_EPSILON_GLSL
+// Every guard in shader math uses one of these named constants; tests drive
+// each to its edge (tests/gpu/test_shader_math). Units in the comments.
+
+// Smallest GGX alpha (= roughness^2): roughness 0 would make D a delta and
+// D*G/(4 N.L N.V) divide by zero. 1e-3 keeps D finite (about 3.2e5 peak) in fp32.
+const float kMinGgxAlpha = 1.0e-3;
+// Lower bound of N.V and N.L in the specular denominator 4 N.L N.V (grazing angles).
+const float kMinCosine = 1.0e-4;
+// Squared distance floor for inverse-square falloff (m^2): a light inside the
+// geometry (distance -> 0) stays finite.
+const float kMinLightDistance2 = 1.0e-4;
+// Length below which a vector is treated as zero and a fallback is used
+// (zero normals, cancelled tangents).
+const float kMinNormalLength = 1.0e-6;
+// Spot cone: cos(inner) - cos(outer) floor, so equal inner and outer cones do not divide by zero.
+const float kMinSpotCosRange = 1.0e-4;
+// Largest radiance a tone mapper is fed; beyond it the curve is flat anyway and
+// fp32 products would overflow (1e4 emissive * 1e3 light count stays below).
+const float kMaxRadiance = 6.0e4;
+
+#endif

@@ -1,0 +1,19 @@
+#ifndef AGAA_SCENE_VERTEX_GLSL
+#define AGAA_SCENE_VERTEX_GLSL
+// The one vertex transform every scene raster pass uses. Passes that depth-test
+// EQUAL against an earlier pass must produce bit-identical positions: same code,
+// same inputs, `invariant gl_Position` (../shared/LAVAPIPE.md, "Traps").
+//
+// Sample-rate emulation (paper section 4.4): instance l of each draw goes to
+// layer l, shifted by frame.layerOffsets[l] pixels in clip space, so layer l's
+// hardware samples land on the emulated positions q - offset.
+#extension GL_ARB_shader_viewport_layer_array : require
+
+invariant gl_Position;
+
+vec4 sceneClipPosition(vec3 worldPosition, uint layer, FrameConstants frame) {
+    vec4 clip = frame.viewProj * vec4(worldPosition, 1.0);
+    clip.xy += frame.layerOffsets[layer].xy * 2.0 * frame.extent.zw * clip.w;
+    return clip;
+}
+#endif

@@ -1,0 +1,76 @@
+#ifndef AGAA_TILE_CULLING_GLSL
+#define AGAA_TILE_CULLING_GLSL
+// Tiled deferred light culling (one workgroup of kTileSize^2 invocations per tile):
+// tile depth bounds from the samples' view distances, then every point/spot light
+// tested against the tile's view-space box. Surviving lights are recorded as bits,
+// not appended, so every invocation walks them in increasing index order and the
+// sums are bit-identical run to run (an atomic append would order them by timing).
+// Requires: `frame` (FrameConstants) and `lights` (GpuLight[]) declared by the includer.
+
+shared uint sTileMinBits;
+shared uint sTileMaxBits;
+shared uint sLightMask[kMaxLights / 32u];
+
+void tileBoundsBegin() {
+    if (gl_LocalInvocationIndex == 0u) {
+        sTileMinBits = 0x7f7fffffu; // FLT_MAX: positive floats order like their bits
+        sTileMaxBits = 0u;
+    }
+    for (uint i = gl_LocalInvocationIndex; i < kMaxLights / 32u; i += kTileSize * kTileSize) sLightMask[i] = 0u;
+    barrier();
+}
+
+// Called by each invocation with the min/max view distance of its own non-sky samples
+// (min > max when it has none).
+void tileBoundsAdd(float tmin, float tmax) {
+    if (tmin <= tmax) {
+        atomicMin(sTileMinBits, floatBitsToUint(tmin));
+        atomicMax(sTileMaxBits, floatBitsToUint(tmax));
+    }
+    barrier();
+}
+
+bool tileHasGeometry() { return sTileMinBits <= sTileMaxBits; }
+
+bool sphereTouchesBox(vec3 c, float r, vec3 lo, vec3 hi) {
+    vec3 d = max(max(lo - c, c - hi), vec3(0.0));
+    return dot(d, d) <= r * r;
+}
+
+// Culls every light against this workgroup's tile.
+void tileCullLights() {
+    if (!tileHasGeometry()) return; // sky-only tile: nothing is lit
+    float tmin = uintBitsToFloat(sTileMinBits);
+    float tmax = uintBitsToFloat(sTileMaxBits);
+    vec2 lo = vec2(gl_WorkGroupID.xy * kTileSize) * frame.extent.zw * 2.0 - 1.0;
+    vec2 hi = vec2((gl_WorkGroupID.xy + 1u) * kTileSize) * frame.extent.zw * 2.0 - 1.0;
+    // View-space box of the tile's frustum slice: x = ndc.x t / P00, y = ndc.y t / P11.
+    vec3 boxLo = vec3(1e30), boxHi = vec3(-1e30);
+    for (int c = 0; c < 8; ++c) {
+        vec2 ndc = vec2((c & 1) != 0 ? hi.x : lo.x, (c & 2) != 0 ? hi.y : lo.y);
+        float t = (c & 4) != 0 ? tmax : tmin;
+        vec3 p = vec3(ndc.x * t / frame.projParams.x, ndc.y * t / frame.projParams.y, -t);
+        boxLo = min(boxLo, p);
+        boxHi = max(boxHi, p);
+    }
+    uint count = frame.counts.w;
+    for (uint i = gl_LocalInvocationIndex; i < count; i += kTileSize * kTileSize) {
+        GpuLight light = lights[i];
+        uint type = uint(light.directionType.w);
+        float range = light.positionRange.w;
+        bool touches = type == kLightDirectional || range <= 0.0 ||
+                       sphereTouchesBox(light.positionRange.xyz, range, boxLo, boxHi);
+        if (touches) atomicOr(sLightMask[i / 32u], 1u << (i % 32u));
+    }
+}
+
+// Next culled light index at or after `start`, or kMaxLights when none.
+uint nextTileLight(uint start) {
+    for (uint w = start / 32u; w < kMaxLights / 32u; ++w) {
+        uint bits = sLightMask[w];
+        if (w == start / 32u) bits &= ~0u << (start % 32u);
+        if (bits != 0u) return w * 32u + uint(findLSB(bits));
+    }
+    return kMaxLights;
+}
+#endif

@@ -1,0 +1,25 @@
+#version 460
+#extension GL_GOOGLE_include_directive : require
+// Per-sample G-buffer fill (the per-sample deferred reference, DESIGN section 5).
+#include "shared/frame.h"
+#include "common/scene_vertex.glsl"
+
+layout(set = 0, binding = 0) uniform Frame { FrameConstants frame; };
+
+layout(location = 0) in vec3 inPosition;
+layout(location = 1) in vec3 inNormal;
+layout(location = 2) in vec4 inTangent;
+layout(location = 3) in vec2 inUv;
+
+layout(location = 0) out vec3 outNormal; // view space
+layout(location = 1) out vec4 outTangent; // view space xyz, w bitangent sign
+layout(location = 2) out vec2 outUv;
+
+void main() {
+    uint layer = uint(gl_InstanceIndex);
+    gl_Position = sceneClipPosition(inPosition, layer, frame);
+    gl_Layer = int(layer);
+    outNormal = mat3(frame.view) * inNormal;
+    outTangent = vec4(mat3(frame.view) * inTangent.xyz, inTangent.w);
+    outUv = inUv;
+}

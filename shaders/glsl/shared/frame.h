@@ -1,0 +1,54 @@
+#ifndef AGAA_SHARED_FRAME_H
+#define AGAA_SHARED_FRAME_H
+#include "shared/glsl_cpp.h"
+
+SHARED_BEGIN
+
+SHARED_CONST kMaxSamples = 32u; // highest emulated rate (8 layers of 4x)
+SHARED_CONST kMaxLayers = 8u;
+SHARED_CONST kMaxLights = 1024u; // tile light lists live in shared memory
+SHARED_CONST kMaxSceneTextures = 128u;
+SHARED_CONST kTileSize = 16u; // tiled lighting: 16x16 pixels per workgroup
+
+SHARED_CONST kLightDirectional = 0u;
+SHARED_CONST kLightPoint = 1u;
+SHARED_CONST kLightSpot = 2u;
+
+SHARED_CONST kAlphaOpaque = 0u;
+SHARED_CONST kAlphaMask = 1u;
+SHARED_CONST kAlphaBlend = 2u;
+
+// Per-frame constants, one uniform buffer read by every pass.
+struct FrameConstants {
+    mat4 view; // world -> view (looking down -Z)
+    mat4 proj; // view -> clip, reversed Z (near -> 1, far -> 0), Y flipped for Vulkan
+    mat4 viewProj;
+    // Sample-rate emulation (DESIGN section 3): layer l rasterises the scene shifted by
+    // layerOffsets[l].xy pixels, so its hardware sample at q sees the point q - offset.
+    vec4 layerOffsets[kMaxLayers];
+    // Position of sample s (= layer * samplesPerLayer + hardware sample) inside its pixel, in [0,1)^2.
+    vec4 samplePositions[kMaxSamples];
+    vec4 skyRadiance; // rgb: radiance of uncovered samples
+    vec4 extent; // width, height, 1/width, 1/height
+    vec4 depthParams; // znear, zfar, exposure, unused
+    vec4 projParams; // proj[0][0], proj[1][1], unused, unused
+    uvec4 counts; // samples n, samples per layer, layers, light count
+};
+
+// A punctual light in view space. Intensity already multiplied into colour.
+struct GpuLight {
+    vec4 positionRange; // xyz view-space position; w: range (0 = infinite)
+    vec4 directionType; // xyz view-space direction the light travels; w: type as float
+    vec4 radiance; // rgb colour * intensity (lux or candela); w unused
+    vec4 spot; // x cos(outer), y 1/max(cos(inner)-cos(outer), eps), zw unused
+};
+
+struct GpuMaterial {
+    vec4 baseColorFactor;
+    vec4 emissive; // rgb emissiveFactor * strength; w alphaCutoff
+    vec4 params; // x metallic, y roughness, z normalScale, w alphaMode as float
+    ivec4 textures; // base colour, metal-roughness, normal, emissive (-1 = none)
+};
+
+SHARED_END
+#endif

@@ -1,0 +1,239 @@
+// agaa-render: the headless renderer. Renders one frame of a glTF scene (or a
+// built-in procedural scene) with one anti-aliasing method and writes the
+// linear EXR, the tone-mapped PNG, and optionally stats JSON and the graph.
+//
+// Exit codes: 0 success; 2 bad arguments or bad input; 3 the device lacks something required.
+
+#include "agaa/common/frame_renderer.h"
+#include "agaa/methods.h"
+#include "engine/frame/sample_pattern.h"
+#include "engine/io/exr.h"
+#include "engine/io/io_error.h"
+#include "engine/io/png.h"
+#include "engine/io/tone_map.h"
+#include "engine/scene/gltf_loader.h"
+#include "engine/scene/scene_error.h"
+#include "engine/scene/scenegen.h"
+#include "engine/vk/check.h"
+#include "engine/vk/device.h"
+
+#include <nlohmann/json.hpp>
+
+#include <charconv>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <optional>
+#include <string>
+
+namespace {
+
+constexpr int kExitBadInput = 2;
+constexpr int kExitMissingCapability = 3;
+
+struct BadArgument : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+
+struct Options {
+    std::optional<std::string> sceneFile;
+    std::string builtin = "default";
+    agaa::RenderRequest request;
+    std::string out = "out/frame";
+    std::optional<std::string> stats, graph;
+    bool validate = false, caps = false, help = false;
+    std::string device;
+    uint32_t frames = 1, warmup = 0;
+};
+
+const char* kUsage =
+    "usage: agaa-render [--scene FILE | --builtin NAME] [--method NAME] [--samples N] [--aggregates C]\n"
+    "                   [--width W] [--height H] [--camera I] [--exposure E] [--out PREFIX]\n"
+    "                   [--stats FILE.json] [--graph FILE.dot] [--frames K] [--warmup K]\n"
+    "                   [--validate] [--device NAME] [--caps] [--help]\n"
+    "\n"
+    "  --scene FILE      glTF 2.0 scene (.gltf or .glb)\n"
+    "  --builtin NAME    procedural scene (default: 'default')\n"
+    "  --method NAME     anti-aliasing method (default: reference)\n"
+    "  --samples N       visibility samples per pixel: 1, 4 native; 8, 16, 32 emulated (default 8)\n"
+    "  --aggregates C    AGAA aggregates per pixel, 1..4 (default 2)\n"
+    "  --width/--height  image size in pixels, 1..8192 (default 256x256)\n"
+    "  --camera I        scene camera index (default 0)\n"
+    "  --out PREFIX      writes PREFIX.exr (linear HDR) and PREFIX.png (tone-mapped sRGB)\n"
+    "  --stats FILE      per-pass GPU times, storage, shading events, validation errors as JSON\n"
+    "  --graph FILE      compiled render graph as Graphviz DOT (and FILE.json)\n"
+    "  --frames K        timed frames, per-pass times are medians (default 1); --warmup K untimed first\n"
+    "  --validate        Khronos validation layer on (also AGAA_VALIDATE=1)\n"
+    "  --device NAME     pick the Vulkan device whose name contains NAME\n"
+    "  --caps            print the device's capabilities and exit\n";
+
+uint32_t parseUint(const std::string& flag, const std::string& value, uint32_t lo, uint32_t hi) {
+    uint32_t v = 0;
+    auto [ptr, ec] = std::from_chars(value.data(), value.data() + value.size(), v);
+    if (ec != std::errc() || ptr != value.data() + value.size() || v < lo || v > hi)
+        throw BadArgument(flag + " '" + value + "' is not an integer in " + std::to_string(lo) + ".." +
+                          std::to_string(hi));
+    return v;
+}
+
+float parseFloat(const std::string& flag, const std::string& value, float lo, float hi) {
+    try {
+        size_t used = 0;
+        float v = std::stof(value, &used);
+        if (used == value.size() && v >= lo && v <= hi) return v;
+    } catch (const std::exception&) {
+    }
+    throw BadArgument(flag + " '" + value + "' is not a number in [" + std::to_string(lo) + ", " +
+                      std::to_string(hi) + "]");
+}
+
+Options parse(int argc, char** argv) {
+    Options o;
+    auto& r = o.request;
+    for (int i = 1; i < argc; ++i) {
+        std::string a = argv[i];
+        auto value = [&]() -> std::string {
+            if (i + 1 >= argc) throw BadArgument(a + " needs a value");
+            return argv[++i];
+        };
+        if (a == "--help" || a == "-h") o.help = true;
+        else if (a == "--scene") o.sceneFile = value();
+        else if (a == "--builtin") o.builtin = value();
+        else if (a == "--method") r.method = value();
+        else if (a == "--samples") {
+            std::string v = value();
+            r.settings.samples = parseUint(a, v, 1, 32);
+            if (!eng::frame::isSupportedSampleCount(r.settings.samples))
+                throw BadArgument("--samples '" + v + "' is not supported (allowed: " +
+                                  eng::frame::supportedSampleCounts() + ")");
+        } else if (a == "--aggregates") r.settings.aggregates = parseUint(a, value(), 1, 4);
+        else if (a == "--width") r.view.width = parseUint(a, value(), 1, 8192);
+        else if (a == "--height") r.view.height = parseUint(a, value(), 1, 8192);
+        else if (a == "--camera") r.view.camera = parseUint(a, value(), 0, 1u << 20);
+        else if (a == "--exposure") r.view.exposure = parseFloat(a, value(), 1e-6f, 1e6f);
+        else if (a == "--out") o.out = value();
+        else if (a == "--stats") o.stats = value();
+        else if (a == "--graph") o.graph = value();
+        else if (a == "--frames") o.frames = parseUint(a, value(), 1, 1000);
+        else if (a == "--warmup") o.warmup = parseUint(a, value(), 0, 1000);
+        else if (a == "--validate") o.validate = true;
+        else if (a == "--device") o.device = value();
+        else if (a == "--caps") o.caps = true;
+        else throw BadArgument("unknown argument '" + a + "' (see --help)");
+    }
+    if (!agaa::isKnownMethod(r.method))
+        throw BadArgument("--method '" + r.method + "' is unknown (known: " + agaa::knownMethodNames() + ")");
+    r.timedFrames = o.frames;
+    r.warmupFrames = o.warmup;
+    return o;
+}
+
+void writeText(const std::filesystem::path& path, const std::string& text) {
+    if (path.has_parent_path()) std::filesystem::create_directories(path.parent_path());
+    std::ofstream f(path);
+    if (!f) throw eng::io::IoError("cannot write " + path.string());
+    f << text;
+}
+
+nlohmann::json statsJson(const Options& o, const agaa::RenderResult& r, const eng::vk::Device& device) {
+    nlohmann::json j;
+    j["method"] = o.request.method;
+    j["scene"] = o.sceneFile ? *o.sceneFile : "builtin:" + o.builtin;
+    j["samples"] = r.samples;
+    j["aggregates"] = o.request.settings.aggregates;
+    j["width"] = o.request.view.width;
+    j["height"] = o.request.view.height;
+    j["device"] = device.caps().deviceName;
+    j["frames_timed"] = o.frames;
+    j["frames_warmup"] = o.warmup;
+    j["passes"] = nlohmann::json::array();
+    for (size_t i = 0; i < r.passes.size(); ++i)
+        j["passes"].push_back({{"name", r.passes[i].name}, {"gpu_ms", r.passes[i].gpuMs}, {"gpu_ms_samples", r.passSamples[i]}});
+    j["passes_culled"] = r.culledPasses;
+    j["frame_gpu_ms"] = r.frameGpuMs;
+    j["bytes_per_pixel"] = r.bytesPerPixel;
+    j["storage_bytes"] = r.storageBytes;
+    j["shading_events_per_pixel"] = {{"mean", r.shadingEventsMean}, {"max", r.shadingEventsMax}};
+    j["validation_errors"] = device.validationErrors();
+    j["validation_enabled"] = device.validationEnabled();
+    return j;
+}
+
+int run(const Options& o) {
+    eng::vk::DeviceOptions deviceOptions;
+    deviceOptions.validation = o.validate;
+    deviceOptions.deviceName = o.device;
+    eng::vk::Device device(deviceOptions);
+    if (o.caps) {
+        std::cout << device.caps().describe();
+        return 0;
+    }
+    eng::scene::Scene scene =
+        o.sceneFile ? eng::scene::loadGltf(*o.sceneFile) : eng::scene::loadBuiltin(o.builtin);
+    for (const std::string& w : scene.stats.warnings) std::cerr << "warning: " << w << "\n";
+    if (o.request.view.camera >= scene.cameras.size())
+        throw BadArgument("--camera " + std::to_string(o.request.view.camera) + " is out of range (the scene has " +
+                          std::to_string(scene.cameras.size()) + " camera(s))");
+
+    agaa::FrameRenderer renderer(device, scene);
+    agaa::RenderResult r = renderer.render(o.request);
+    if (!eng::io::allFinite(r.hdr) || !eng::io::allFinite(r.display)) {
+        std::cerr << "agaa-render: internal error: the frame contains NaN or Inf; nothing written\n";
+        return 1;
+    }
+    std::filesystem::path prefix(o.out);
+    if (prefix.has_parent_path()) std::filesystem::create_directories(prefix.parent_path());
+    eng::io::writeExr(prefix.string() + ".exr", r.hdr);
+    eng::io::writePng(prefix.string() + ".png", eng::io::quantizeToU8(r.display));
+    std::cout << "wrote " << prefix.string() << ".exr and " << prefix.string() << ".png (" << o.request.method
+              << ", n=" << r.samples << ", " << o.request.view.width << "x" << o.request.view.height << ", "
+              << scene.triangleCount() << " triangles, frame " << r.frameGpuMs << " ms on " << device.caps().deviceName
+              << ")\n";
+    if (o.stats) {
+        writeText(*o.stats, statsJson(o, r, device).dump(2) + "\n");
+        std::cout << "wrote " << *o.stats << "\n";
+    }
+    if (o.graph) {
+        writeText(*o.graph, r.graphDot);
+        writeText(*o.graph + ".json", r.graphJson);
+        std::cout << "wrote " << *o.graph << " and " << *o.graph << ".json\n";
+    }
+    if (device.validationErrors() > 0) {
+        std::cerr << "agaa-render: " << device.validationErrors() << " validation error(s)\n";
+        return 1;
+    }
+    return 0;
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+    try {
+        Options o = parse(argc, argv);
+        if (o.help) {
+            std::cout << kUsage << "\nmethods:\n";
+            for (const auto& m : agaa::knownMethods()) std::cout << "  " << m.name << ": " << m.summary << "\n";
+            std::cout << "built-in scenes:";
+            for (const auto& k : eng::scene::sceneKinds()) std::cout << " " << k;
+            std::cout << "\n";
+            return 0;
+        }
+        return run(o);
+    } catch (const BadArgument& e) {
+        std::cerr << "agaa-render: " << e.what() << "\n";
+        return kExitBadInput;
+    } catch (const eng::scene::SceneError& e) {
+        std::cerr << "agaa-render: " << e.what() << "\n";
+        return kExitBadInput;
+    } catch (const std::invalid_argument& e) {
+        std::cerr << "agaa-render: " << e.what() << "\n";
+        return kExitBadInput;
+    } catch (const eng::io::IoError& e) {
+        std::cerr << "agaa-render: " << e.what() << "\n";
+        return kExitBadInput;
+    } catch (const eng::vk::MissingCapability& e) {
+        std::cerr << "agaa-render: the device lacks a required capability: " << e.what() << "\n";
+        return kExitMissingCapability;
+    }
+}

@@ -1,0 +1,57 @@
+# GLSL -> SPIR-V at build time, embedded in the binaries as uint32_t arrays so
+# they run from any directory. A shader compile error fails the build.
+#
+#   agaa_embed_shaders(TARGET name SOURCES a/b.comp ...)
+# creates an INTERFACE library `name` whose include directory holds, for each
+# shaders/glsl/<dir>/<pass>.<stage>, a header shaders/<dir>/<pass>_<stage>.h defining
+#   inline constexpr uint32_t k<Dir><Pass><Stage>[] (the SPIR-V words)
+# e.g. shaders/glsl/reference/lighting.comp -> #include "shaders/reference/lighting_comp.h", kReferenceLightingComp.
+
+function(_agaa_camel out text)
+  string(REGEX REPLACE "[-./]" "_" text "${text}")
+  string(REPLACE "_" ";" parts "${text}")
+  set(result "")
+  foreach(p IN LISTS parts)
+    if(p STREQUAL "")
+      continue()
+    endif()
+    string(SUBSTRING "${p}" 0 1 first)
+    string(SUBSTRING "${p}" 1 -1 rest)
+    string(TOUPPER "${first}" first)
+    string(APPEND result "${first}${rest}")
+  endforeach()
+  set(${out} "${result}" PARENT_SCOPE)
+endfunction()
+
+function(agaa_embed_shaders)
+  cmake_parse_arguments(ARG "" "TARGET" "SOURCES" ${ARGN})
+  set(glsl_root ${PROJECT_SOURCE_DIR}/shaders/glsl)
+  set(out_root ${CMAKE_BINARY_DIR}/generated)
+  set(headers "")
+  foreach(src IN LISTS ARG_SOURCES)
+    get_filename_component(dir "${src}" DIRECTORY)
+    get_filename_component(stem "${src}" NAME_WE)
+    get_filename_component(ext "${src}" LAST_EXT)
+    string(SUBSTRING "${ext}" 1 -1 stage)
+    _agaa_camel(symbol "${dir}_${stem}_${stage}")
+    set(symbol "k${symbol}")
+    set(header ${out_root}/shaders/${dir}/${stem}_${stage}.h)
+    set(raw ${header}.raw)
+    add_custom_command(
+      OUTPUT ${header} ${raw}
+      COMMAND ${CMAKE_COMMAND} -E make_directory ${out_root}/shaders/${dir}
+      COMMAND ${GLSLANG_VALIDATOR} -V --target-env vulkan1.3 -I${glsl_root} -g0
+              --vn ${symbol}Words --depfile ${raw}.d -o ${raw} ${glsl_root}/${src}
+      COMMAND ${CMAKE_COMMAND} -DRAW=${raw} -DOUT=${header} -DSYMBOL=${symbol}
+              -P ${PROJECT_SOURCE_DIR}/tools/cmake/wrap_spirv.cmake
+      DEPENDS ${glsl_root}/${src} ${PROJECT_SOURCE_DIR}/tools/cmake/wrap_spirv.cmake
+      DEPFILE ${raw}.d
+      COMMENT "GLSL ${src}"
+      VERBATIM)
+    list(APPEND headers ${header})
+  endforeach()
+  add_custom_target(${ARG_TARGET}_spirv DEPENDS ${headers})
+  add_library(${ARG_TARGET} INTERFACE)
+  add_dependencies(${ARG_TARGET} ${ARG_TARGET}_spirv)
+  target_include_directories(${ARG_TARGET} INTERFACE ${out_root} ${glsl_root})
+endfunction()
