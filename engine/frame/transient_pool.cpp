@@ -17,13 +17,17 @@ rg::PhysicalTexture TransientPool::acquireTexture(const std::string& name, const
     for (auto& t : m_textures) {
         const vk::ImageDesc& d = t.image.desc;
         if (!t.inUse && d.format == desc.format && d.width == desc.width && d.height == desc.height &&
-            d.layers == desc.layers && d.samples == desc.samples && d.usage == usage) {
+            d.layers == desc.layers && d.samples == desc.samples && d.usage == usage) {  // same view type too
             found = &t;
             break;
         }
     }
     if (!found) {
         vk::ImageDesc d{desc.format, desc.width, desc.height, desc.layers, 1, desc.samples, usage};
+        // Single-sample single-layer targets are plain 2D images to shaders (image2D, sampler2D);
+        // layered or multisampled ones are arrays, so emulated and native rates share one shader.
+        d.viewType = desc.layers == 1 && desc.samples == VK_SAMPLE_COUNT_1_BIT ? VK_IMAGE_VIEW_TYPE_2D
+                                                                               : VK_IMAGE_VIEW_TYPE_2D_ARRAY;
         m_textures.push_back({vk::createImage(m_device, d, name), false});
         found = &m_textures.back();
     } else {

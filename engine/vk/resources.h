@@ -41,7 +41,7 @@ struct ImageDesc {
 struct Image {
     VkImage image = VK_NULL_HANDLE;
     VkDeviceMemory memory = VK_NULL_HANDLE;
-    VkImageView view = VK_NULL_HANDLE; // all aspects, desc.viewType (2D_ARRAY unless asked)
+    VkImageView view = VK_NULL_HANDLE; // all aspects, of desc.viewType
     VkImageView sampledView = VK_NULL_HANDLE; // depth aspect only for depth formats, else == view
     ImageDesc desc;
     VkDeviceSize bytes = 0; // the allocation's size, for bytes-per-pixel reports

@@ -16,11 +16,11 @@ layout(set = 0, binding = 4) uniform sampler2DMSArray gAlbedoMetal;
 layout(set = 0, binding = 5) uniform sampler2DMSArray gEmissiveRoughness;
 #define FETCH(tex, p, layer, s) texelFetch(tex, ivec3(p, layer), int(s))
 #else
-layout(set = 0, binding = 2) uniform sampler2DArray gDepth;
-layout(set = 0, binding = 3) uniform sampler2DArray gNormal;
-layout(set = 0, binding = 4) uniform sampler2DArray gAlbedoMetal;
-layout(set = 0, binding = 5) uniform sampler2DArray gEmissiveRoughness;
-#define FETCH(tex, p, layer, s) texelFetch(tex, ivec3(p, layer), 0)
+layout(set = 0, binding = 2) uniform sampler2D gDepth;
+layout(set = 0, binding = 3) uniform sampler2D gNormal;
+layout(set = 0, binding = 4) uniform sampler2D gAlbedoMetal;
+layout(set = 0, binding = 5) uniform sampler2D gEmissiveRoughness;
+#define FETCH(tex, p, layer, s) texelFetch(tex, p, 0)
 #endif
 layout(set = 0, binding = 6, rgba32f) uniform writeonly image2D outHdr;
 layout(set = 0, binding = 7, rgba32f) uniform writeonly image2D outDisplay;

@@ -7,7 +7,8 @@ SHARED_BEGIN
 SHARED_CONST kMaxSamples = 32u; // highest emulated rate (8 layers of 4x)
 SHARED_CONST kMaxLayers = 8u;
 SHARED_CONST kMaxLights = 1024u; // tile light lists live in shared memory
-SHARED_CONST kMaxSceneTextures = 128u;
+// lavapipe: maxPerStageDescriptorSamplers = 32; the rest is left for the passes' own bindings.
+SHARED_CONST kMaxSceneTextures = 24u;
 SHARED_CONST kTileSize = 16u; // tiled lighting: 16x16 pixels per workgroup
 
 SHARED_CONST kLightDirectional = 0u;
