@@ -38,7 +38,7 @@ function(agaa_embed_shaders)
     set(header ${out_root}/shaders/${dir}/${stem}_${stage}.h)
     set(raw ${header}.raw)
     add_custom_command(
-      OUTPUT ${header} ${raw}
+      OUTPUT ${raw} ${header}
       COMMAND ${CMAKE_COMMAND} -E make_directory ${out_root}/shaders/${dir}
       COMMAND ${GLSLANG_VALIDATOR} -V --target-env vulkan1.3 -I${glsl_root} -g0
               --vn ${symbol}Words --depfile ${raw}.d -o ${raw} ${glsl_root}/${src}

@@ -1,0 +1,170 @@
+// execute(): realises transients and records, per pass, its baked barriers, a debug label,
+// timestamps and the pass's own commands. The only place in the project that records barriers.
+
+#include "engine/graph/graph.h"
+
+#include <stdexcept>
+
+namespace eng::rg {
+namespace {
+
+// Label colours by pass kind, so captures separate graphics, compute and copies at a glance.
+void labelColor(PassKind kind, float (&color)[4]) {
+    const float graphics[4] = {0.25f, 0.55f, 0.95f, 1.0f};
+    const float compute[4] = {0.95f, 0.6f, 0.2f, 1.0f};
+    const float transfer[4] = {0.6f, 0.6f, 0.6f, 1.0f};
+    const float* chosen = kind == PassKind::Graphics  ? graphics
+                          : kind == PassKind::Compute ? compute
+                                                      : transfer;
+    for (int i = 0; i < 4; ++i)
+        color[i] = chosen[i];
+}
+
+} // namespace
+
+const PhysicalTexture& Context::texture(Texture texture) const {
+    const uint32_t resource = m_graph.checkHandle(texture.id, true, "pass '" + passName() + "'").resource;
+    if (!m_graph.findAccess(m_pass, resource))
+        throw std::logic_error("render graph: pass '" + passName() + "' resolves texture '" +
+                               m_graph.m_resources[resource].name + "' that its setup never declared");
+    return m_graph.m_resources[resource].texture;
+}
+
+const PhysicalBuffer& Context::buffer(Buffer buffer) const {
+    const uint32_t resource = m_graph.checkHandle(buffer.id, false, "pass '" + passName() + "'").resource;
+    if (!m_graph.findAccess(m_pass, resource))
+        throw std::logic_error("render graph: pass '" + passName() + "' resolves buffer '" +
+                               m_graph.m_resources[resource].name + "' that its setup never declared");
+    return m_graph.m_resources[resource].buffer;
+}
+
+const std::string& Context::passName() const {
+    return m_graph.m_passes[m_pass].name;
+}
+
+void Graph::realiseTransients(Allocator& allocator) {
+    const CompiledGraph& graph = compiled();
+    if (m_allocator && m_allocator != &allocator)
+        throw std::logic_error("render graph: transients are realised by another allocator; call "
+                               "releaseTransients() before switching");
+    for (uint32_t r = 0; r < m_resources.size(); ++r) {
+        Resource& resource = m_resources[r];
+        if (resource.imported || resource.realised || graph.firstUse[r] == kInvalidId) continue;
+        if (resource.isImage)
+            resource.texture =
+                allocator.acquireTexture(resource.name, resource.textureDesc, graph.imageUsage[r]);
+        else
+            resource.buffer =
+                allocator.acquireBuffer(resource.name, resource.bufferDesc, graph.bufferUsage[r]);
+        resource.realised = true;
+        m_allocator = &allocator;
+    }
+}
+
+void Graph::releaseTransients() {
+    for (Resource& resource : m_resources) {
+        if (!resource.realised) continue;
+        if (resource.isImage) {
+            m_allocator->release(resource.texture);
+            resource.texture = PhysicalTexture{};
+        } else {
+            m_allocator->release(resource.buffer);
+            resource.buffer = PhysicalBuffer{};
+        }
+        resource.realised = false;
+    }
+    m_allocator = nullptr;
+}
+
+void Graph::recordBarriers(VkCommandBuffer cmd, const std::vector<Barrier>& barriers) const {
+    if (barriers.empty()) return;
+    std::vector<VkImageMemoryBarrier2> images;
+    std::vector<VkBufferMemoryBarrier2> buffers;
+    for (const Barrier& barrier : barriers) {
+        const Resource& resource = m_resources[barrier.resource];
+        if (barrier.isImage) {
+            VkImageMemoryBarrier2 image{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER_2};
+            image.srcStageMask = barrier.srcStage;
+            image.srcAccessMask = barrier.srcAccess;
+            image.dstStageMask = barrier.dstStage;
+            image.dstAccessMask = barrier.dstAccess;
+            image.oldLayout = barrier.oldLayout;
+            image.newLayout = barrier.newLayout;
+            // One queue family on the targets we support: never an ownership transfer.
+            image.srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+            image.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+            image.image = resource.texture.image;
+            image.subresourceRange = {barrier.aspect, 0, VK_REMAINING_MIP_LEVELS, 0,
+                                      VK_REMAINING_ARRAY_LAYERS};
+            images.push_back(image);
+        } else {
+            VkBufferMemoryBarrier2 buffer{VK_STRUCTURE_TYPE_BUFFER_MEMORY_BARRIER_2};
+            buffer.srcStageMask = barrier.srcStage;
+            buffer.srcAccessMask = barrier.srcAccess;
+            buffer.dstStageMask = barrier.dstStage;
+            buffer.dstAccessMask = barrier.dstAccess;
+            buffer.srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+            buffer.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+            buffer.buffer = resource.buffer.buffer;
+            buffer.offset = 0;
+            buffer.size = VK_WHOLE_SIZE;
+            buffers.push_back(buffer);
+        }
+    }
+    VkDependencyInfo dependency{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
+    dependency.bufferMemoryBarrierCount = static_cast<uint32_t>(buffers.size());
+    dependency.pBufferMemoryBarriers = buffers.data();
+    dependency.imageMemoryBarrierCount = static_cast<uint32_t>(images.size());
+    dependency.pImageMemoryBarriers = images.data();
+    vkCmdPipelineBarrier2(cmd, &dependency);
+}
+
+void Graph::execute(const ExecuteInfo& info) {
+    const CompiledGraph& graph = compiled();
+    if (info.cmd == VK_NULL_HANDLE)
+        throw std::logic_error("render graph: execute() without a command buffer");
+    bool needsTransients = false;
+    for (uint32_t r = 0; r < m_resources.size(); ++r)
+        needsTransients = needsTransients || (!m_resources[r].imported && graph.firstUse[r] != kInvalidId);
+    if (needsTransients) {
+        if (!info.allocator)
+            throw std::logic_error("render graph: execute() needs an allocator for the graph's transients");
+        realiseTransients(*info.allocator);
+    }
+    const bool labels = info.beginLabel && info.endLabel;
+
+    for (uint32_t i = 0; i < graph.order.size(); ++i) {
+        const CompiledPass& compiledPass = graph.order[i];
+        const Pass& pass = m_passes[compiledPass.pass];
+        if (labels) {
+            VkDebugUtilsLabelEXT label{VK_STRUCTURE_TYPE_DEBUG_UTILS_LABEL_EXT};
+            label.pLabelName = pass.name.c_str();
+            labelColor(pass.kind, label.color);
+            info.beginLabel(info.cmd, &label);
+        }
+        recordBarriers(info.cmd, compiledPass.barriers);
+        // ALL_COMMANDS on both ends: the first stamp waits for everything before the pass, the
+        // second for the pass itself, so per-pass times add up to the frame without overlap.
+        if (info.queryPool != VK_NULL_HANDLE)
+            vkCmdWriteTimestamp2(info.cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, info.queryPool,
+                                 info.firstQuery + 2 * i);
+        if (pass.callback) pass.callback->run(Context(*this, compiledPass.pass, info.cmd));
+        if (info.queryPool != VK_NULL_HANDLE)
+            vkCmdWriteTimestamp2(info.cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, info.queryPool,
+                                 info.firstQuery + 2 * i + 1);
+        if (labels) info.endLabel(info.cmd);
+    }
+
+    if (!graph.finalBarriers.empty()) {
+        if (labels) {
+            VkDebugUtilsLabelEXT label{VK_STRUCTURE_TYPE_DEBUG_UTILS_LABEL_EXT};
+            label.pLabelName = "rg.finalState";
+            labelColor(PassKind::Transfer, label.color);
+            info.beginLabel(info.cmd, &label);
+        }
+        recordBarriers(info.cmd, graph.finalBarriers);
+        if (labels) info.endLabel(info.cmd);
+    }
+}
+
+} // namespace eng::rg

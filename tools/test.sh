@@ -1,0 +1,16 @@
+#!/usr/bin/env bash
+# The whole test suite: installs what is missing, builds (Release with
+# assertions), and runs every CTest test. GPU tests run on lavapipe with the
+# Khronos validation layer; a validation message fails them.
+#   tools/test.sh [ctest args, e.g. -L cpu]
+set -euo pipefail
+root="$(cd "$(dirname "$0")/.." && pwd)"
+cd "$root"
+tools/deps.sh
+build="${AGAA_BUILD_DIR:-build/test}"
+cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DAGAA_BUILD_TESTS=ON -DAGAA_WERROR=ON >/dev/null
+cmake --build "$build" -j"$(nproc)"
+# Software Vulkan only: a machine with a GPU still tests the same driver CI uses.
+lvp="$(ls /usr/share/vulkan/icd.d/lvp_icd.*.json 2>/dev/null | head -n1)"
+export VK_ICD_FILENAMES="${VK_ICD_FILENAMES:-$lvp}"
+ctest --test-dir "$build" --output-on-failure -j2 "$@"
