@@ -20,6 +20,17 @@ glm::mat4 reversedZPerspective(float yfov, float aspect, float znear, float zfar
     return p;
 }
 
+glm::mat4 orbitView(const glm::mat4& view, const glm::vec3& pivot, float degrees) {
+    // world' = T(pivot) R T(-pivot) world; the camera sees the scene rotated the other way.
+    glm::mat4 toPivot(1.0f), fromPivot(1.0f), rotate(1.0f);
+    toPivot[3] = glm::vec4(-pivot, 1.0f);
+    fromPivot[3] = glm::vec4(pivot, 1.0f);
+    float a = glm::radians(degrees);
+    rotate[0] = {std::cos(a), 0.0f, -std::sin(a), 0.0f};
+    rotate[2] = {std::sin(a), 0.0f, std::cos(a), 0.0f};
+    return view * fromPivot * rotate * toPivot;
+}
+
 shared::FrameConstants makeFrameConstants(const scene::Scene& scene, const ViewSettings& view,
                                           const SamplePattern& pattern) {
     if (view.camera >= scene.cameras.size())
@@ -28,7 +39,7 @@ shared::FrameConstants makeFrameConstants(const scene::Scene& scene, const ViewS
     const scene::Camera& cam = scene.cameras[view.camera];
     shared::FrameConstants c{};
     float aspect = float(view.width) / float(view.height);
-    c.view = cam.view;
+    c.view = view.viewOverride ? *view.viewOverride : cam.view;
     c.proj = reversedZPerspective(cam.yfov, aspect, cam.znear, cam.zfar);
     c.viewProj = c.proj * c.view;
     for (uint32_t l = 0; l < pattern.layers; ++l) c.layerOffsets[l] = glm::vec4(pattern.layerOffsets[l], 0, 0);

@@ -6,6 +6,7 @@
 #include "engine/scene/scene.h"
 #include "shared/frame.h"
 
+#include <optional>
 #include <vector>
 
 namespace eng::frame {
@@ -16,7 +17,14 @@ struct ViewSettings {
     uint32_t camera = 0; // index into Scene::cameras
     glm::vec3 skyRadiance{0.35f, 0.5f, 0.8f};
     float exposure = 1.0f;
+    // Replaces the scene camera's view matrix (camera paths, the viewer's orbit camera);
+    // the camera's fov and clip planes still apply.
+    std::optional<glm::mat4> viewOverride;
 };
+
+// The scene camera's view rotated about the world Y axis through `pivot` by `degrees`
+// (a short orbit for temporal-stability measurements).
+glm::mat4 orbitView(const glm::mat4& view, const glm::vec3& pivot, float degrees);
 
 // Reversed Z, finite far: depth 1 at znear, 0 at zfar (see common/depth.glsl), Y flipped for Vulkan.
 glm::mat4 reversedZPerspective(float yfov, float aspect, float znear, float zfar);
