@@ -1,0 +1,457 @@
+#include "engine/scene/gltf_loader.h"
+
+#include "engine/scene/gltf_accessor.h"
+#include "engine/scene/gltf_lights_cameras.h"
+#include "engine/scene/gltf_materials.h"
+#include "engine/scene/mesh_repair.h"
+
+#include <glm/gtc/quaternion.hpp>
+#include <glm/gtc/type_ptr.hpp>
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <fstream>
+#include <limits>
+
+namespace eng::scene {
+
+namespace {
+
+bool isFinite(const glm::vec3& v) {
+    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
+
+std::string vecText(const glm::vec3& v) {
+    return "(" + std::to_string(v.x) + ", " + std::to_string(v.y) + ", " + std::to_string(v.z) + ")";
+}
+
+// Node-local transform: matrix if given, else T * R * S (glTF 2.0 section 3.5.3).
+glm::mat4 localMatrix(const tinygltf::Node& node, const std::string& source, const std::string& field,
+                      std::vector<std::string>& warnings) {
+    auto checkFinite = [&](const std::vector<double>& v, const char* name) {
+        for (double d : v) {
+            if (!std::isfinite(d)) {
+                throw SceneError(source + ": " + field + "." + name + ": not finite");
+            }
+        }
+    };
+    if (!node.matrix.empty()) {
+        if (node.matrix.size() != 16) {
+            warnings.push_back(source + ": " + field + ".matrix: needs 16 numbers, has " +
+                               std::to_string(node.matrix.size()) + "; using identity");
+            return glm::mat4(1.0f);
+        }
+        checkFinite(node.matrix, "matrix");
+        glm::dmat4 m = glm::make_mat4(node.matrix.data()); // glTF stores column-major, as glm does
+        return glm::mat4(m);
+    }
+    glm::dvec3 t(0.0), s(1.0);
+    glm::dquat r(1.0, 0.0, 0.0, 0.0);
+    if (node.translation.size() == 3) {
+        checkFinite(node.translation, "translation");
+        t = glm::make_vec3(node.translation.data());
+    } else if (!node.translation.empty()) {
+        warnings.push_back(source + ": " + field + ".translation: needs 3 numbers; ignored");
+    }
+    if (node.rotation.size() == 4) {
+        checkFinite(node.rotation, "rotation");
+        // glTF quaternions are (x, y, z, w); glm's constructor takes w first.
+        r = glm::dquat(node.rotation[3], node.rotation[0], node.rotation[1], node.rotation[2]);
+        const double len = glm::length(r);
+        if (!(len > 1e-12)) {
+            warnings.push_back(source + ": " + field + ".rotation: zero quaternion; using identity");
+            r = glm::dquat(1.0, 0.0, 0.0, 0.0);
+        } else {
+            r = r / len;
+        }
+    } else if (!node.rotation.empty()) {
+        warnings.push_back(source + ": " + field + ".rotation: needs 4 numbers; ignored");
+    }
+    if (node.scale.size() == 3) {
+        checkFinite(node.scale, "scale");
+        s = glm::make_vec3(node.scale.data());
+    } else if (!node.scale.empty()) {
+        warnings.push_back(source + ": " + field + ".scale: needs 3 numbers; ignored");
+    }
+    glm::dmat4 m = glm::mat4_cast(r);
+    m[0] *= s.x;
+    m[1] *= s.y;
+    m[2] *= s.z;
+    m[3] = glm::dvec4(t, 1.0);
+    return glm::mat4(m);
+}
+
+class GltfConverter {
+  public:
+    GltfConverter(const tinygltf::Model& model, const std::string& source)
+        : m_model(model), m_source(source) {
+        m_scene.source = source;
+    }
+
+    Scene run() {
+        convertMaterials(m_model, m_source, m_scene);
+        collectNodes();
+        for (const NodeInstance& instance : m_instances) {
+            addMesh(instance);
+        }
+        computeBounds();
+        std::vector<LightRecord> lights;
+        for (const NodeInstance& instance : m_instances) {
+            LightRecord record;
+            if (readNodeLight(m_model, m_source, instance.node, instance.world, m_scene, record)) {
+                lights.push_back(record);
+            }
+            Camera camera;
+            if (readNodeCamera(m_model, m_source, instance.node, instance.world, m_scene, camera)) {
+                m_scene.cameras.push_back(camera);
+            }
+        }
+        resolveShadowCasters(lights, m_scene);
+        finishCameras(m_scene);
+        if (m_scene.materials.empty()) {
+            defaultMaterial();
+        }
+        return std::move(m_scene);
+    }
+
+  private:
+    struct NodeInstance {
+        int node = -1;
+        glm::mat4 world{1.0f};
+    };
+
+    void warn(const std::string& what) { m_scene.stats.warnings.push_back(m_source + ": " + what); }
+
+    void collectNodes() {
+        std::vector<int> roots;
+        if (!m_model.scenes.empty()) {
+            int sceneIndex = m_model.defaultScene;
+            if (sceneIndex < 0) {
+                sceneIndex = 0;
+            } else if (static_cast<size_t>(sceneIndex) >= m_model.scenes.size()) {
+                throw SceneError(m_source + ": scene: " + std::to_string(sceneIndex) + " out of range (" +
+                                 std::to_string(m_model.scenes.size()) + " scenes)");
+            }
+            roots = m_model.scenes[static_cast<size_t>(sceneIndex)].nodes;
+        } else {
+            // No scenes: glTF leaves it to the application; draw every root node.
+            std::vector<bool> isChild(m_model.nodes.size(), false);
+            for (const tinygltf::Node& node : m_model.nodes) {
+                for (int c : node.children) {
+                    if (c >= 0 && static_cast<size_t>(c) < isChild.size()) {
+                        isChild[static_cast<size_t>(c)] = true;
+                    }
+                }
+            }
+            for (size_t i = 0; i < m_model.nodes.size(); ++i) {
+                if (!isChild[i]) {
+                    roots.push_back(static_cast<int>(i));
+                }
+            }
+            if (!m_model.nodes.empty()) {
+                warn("scenes: none defined; using every root node");
+            }
+        }
+        m_visited.assign(m_model.nodes.size(), false);
+        for (size_t i = 0; i < roots.size(); ++i) {
+            visit(roots[i], glm::mat4(1.0f), "scenes.nodes[" + std::to_string(i) + "]");
+        }
+    }
+
+    // Iterative would avoid deep recursion, but a node is visited once (m_visited),
+    // so depth is bounded by the node count; cycles end at the visited check.
+    void visit(int nodeIndex, const glm::mat4& parent, const std::string& referrer) {
+        if (nodeIndex < 0 || static_cast<size_t>(nodeIndex) >= m_model.nodes.size()) {
+            throw SceneError(m_source + ": " + referrer + ": node " + std::to_string(nodeIndex) +
+                             " out of range (" + std::to_string(m_model.nodes.size()) + " nodes)");
+        }
+        const std::string field = "nodes[" + std::to_string(nodeIndex) + "]";
+        if (m_visited[static_cast<size_t>(nodeIndex)]) {
+            warn(referrer + ": " + field + " already visited (a cycle or a second parent); ignored");
+            return;
+        }
+        m_visited[static_cast<size_t>(nodeIndex)] = true;
+        const tinygltf::Node& node = m_model.nodes[static_cast<size_t>(nodeIndex)];
+        const glm::mat4 world = parent * localMatrix(node, m_source, field, m_scene.stats.warnings);
+        m_instances.push_back({nodeIndex, world});
+        for (size_t c = 0; c < node.children.size(); ++c) {
+            visit(node.children[c], world, field + ".children[" + std::to_string(c) + "]");
+        }
+    }
+
+    uint32_t defaultMaterial() {
+        if (m_defaultMaterial == std::numeric_limits<uint32_t>::max()) {
+            Material material;
+            material.name = "default";
+            material.metallicFactor = 0.0f;
+            material.roughnessFactor = 0.5f;
+            m_scene.materials.push_back(material);
+            m_defaultMaterial = static_cast<uint32_t>(m_scene.materials.size() - 1);
+        }
+        return m_defaultMaterial;
+    }
+
+    void addMesh(const NodeInstance& instance) {
+        const tinygltf::Node& node = m_model.nodes[static_cast<size_t>(instance.node)];
+        if (node.mesh < 0) {
+            return;
+        }
+        if (static_cast<size_t>(node.mesh) >= m_model.meshes.size()) {
+            throw SceneError(m_source + ": nodes[" + std::to_string(instance.node) + "].mesh: mesh " +
+                             std::to_string(node.mesh) + " out of range (" +
+                             std::to_string(m_model.meshes.size()) + " meshes)");
+        }
+        const tinygltf::Mesh& mesh = m_model.meshes[static_cast<size_t>(node.mesh)];
+        for (size_t p = 0; p < mesh.primitives.size(); ++p) {
+            addPrimitive(mesh.primitives[p],
+                         "meshes[" + std::to_string(node.mesh) + "].primitives[" + std::to_string(p) + "]",
+                         instance.world);
+        }
+    }
+
+    void addPrimitive(const tinygltf::Primitive& prim, const std::string& ctx, const glm::mat4& world) {
+        const int mode = prim.mode < 0 ? TINYGLTF_MODE_TRIANGLES : prim.mode;
+        if (mode != TINYGLTF_MODE_TRIANGLES) {
+            warn(ctx + ".mode: " + std::to_string(mode) + " is not TRIANGLES (4); primitive skipped");
+            return;
+        }
+        const auto attribute = [&](const char* name) {
+            const auto it = prim.attributes.find(name);
+            return it == prim.attributes.end() ? -1 : it->second;
+        };
+        const int posIndex = attribute("POSITION");
+        if (posIndex < 0) {
+            warn(ctx + ".attributes: no POSITION; primitive skipped");
+            return;
+        }
+        uint32_t material = 0;
+        if (prim.material < 0) {
+            material = defaultMaterial();
+        } else if (static_cast<size_t>(prim.material) >= m_model.materials.size()) {
+            throw SceneError(m_source + ": " + ctx + ".material: material " + std::to_string(prim.material) +
+                             " out of range (" + std::to_string(m_model.materials.size()) + " materials)");
+        } else {
+            material = static_cast<uint32_t>(prim.material);
+        }
+
+        AccessorExpect posExpect; // float, or quantized integers (KHR_mesh_quantization)
+        posExpect.allowNormalizedInts = true;
+        posExpect.allowPlainInts = true;
+        const AccessorReader positions(m_model, m_source, posIndex, posExpect, ctx + ".attributes.POSITION");
+        const size_t count = positions.count();
+        if (count == 0) {
+            warn(positions.field() + ".count: 0 vertices; primitive skipped");
+            return;
+        }
+
+        std::vector<Vertex> vertices(count);
+        const glm::mat3 linear(world);
+        const glm::mat3 normalMatrix = glm::transpose(glm::inverse(linear));
+        const float det = glm::determinant(linear);
+        const float handedness = det < 0.0f ? -1.0f : 1.0f;
+        for (size_t i = 0; i < count; ++i) {
+            const glm::vec3 p = positions.vec3(i);
+            if (!isFinite(p)) {
+                throw SceneError(m_source + ": " + positions.field() + ": POSITION element " +
+                                 std::to_string(i) + " is " + vecText(p) + ", not finite");
+            }
+            vertices[i].position = glm::vec3(world * glm::vec4(p, 1.0f));
+            if (!isFinite(vertices[i].position)) {
+                throw SceneError(m_source + ": " + positions.field() + ": POSITION element " +
+                                 std::to_string(i) + " is not finite after the node transform");
+            }
+        }
+
+        const int normalIndex = attribute("NORMAL");
+        const int tangentIndex = attribute("TANGENT");
+        const int uvIndex = attribute("TEXCOORD_0");
+        auto checkCount = [&](const AccessorReader& r, const char* name) {
+            if (r.count() != count) {
+                throw SceneError(m_source + ": " + r.field() + ".count: " + name + " has " +
+                                 std::to_string(r.count()) + " elements but POSITION (accessors[" +
+                                 std::to_string(posIndex) + "]) has " + std::to_string(count));
+            }
+        };
+        if (normalIndex >= 0) {
+            AccessorExpect e;
+            e.allowNormalizedInts = true;
+            const AccessorReader normals(m_model, m_source, normalIndex, e, ctx + ".attributes.NORMAL");
+            checkCount(normals, "NORMAL");
+            for (size_t i = 0; i < count; ++i) {
+                // Inverse-transpose keeps normals perpendicular under non-uniform
+                // scale; repairNormals renormalises and fixes zero ones.
+                vertices[i].normal = normalMatrix * normals.vec3(i);
+            }
+        }
+        if (tangentIndex >= 0) {
+            AccessorExpect e;
+            e.type = TINYGLTF_TYPE_VEC4;
+            e.allowNormalizedInts = true;
+            const AccessorReader tangents(m_model, m_source, tangentIndex, e, ctx + ".attributes.TANGENT");
+            checkCount(tangents, "TANGENT");
+            for (size_t i = 0; i < count; ++i) {
+                const glm::vec4 t = tangents.vec4(i);
+                // A mirroring transform reverses cross(N, T), so the bitangent
+                // sign must flip for B = w * cross(N, T) to stay the mapped B.
+                vertices[i].tangent =
+                    glm::vec4(linear * glm::vec3(t), (t.w < 0.0f ? -1.0f : 1.0f) * handedness);
+            }
+        }
+        if (uvIndex >= 0) {
+            AccessorExpect e;
+            e.type = TINYGLTF_TYPE_VEC2;
+            e.allowNormalizedInts = true;
+            e.allowPlainInts = true;
+            const AccessorReader uvs(m_model, m_source, uvIndex, e, ctx + ".attributes.TEXCOORD_0");
+            checkCount(uvs, "TEXCOORD_0");
+            size_t bad = 0;
+            for (size_t i = 0; i < count; ++i) {
+                const glm::vec2 uv = uvs.vec2(i);
+                if (!std::isfinite(uv.x) || !std::isfinite(uv.y)) {
+                    ++bad;
+                    continue;
+                }
+                vertices[i].uv = uv;
+            }
+            if (bad > 0) {
+                warn(uvs.field() + ": " + std::to_string(bad) + " TEXCOORD_0 values not finite; set to 0");
+            }
+        }
+
+        std::vector<uint32_t> indices = readIndices(m_model, m_source, prim, ctx, count, posIndex);
+        if (indices.size() % 3 != 0) {
+            warn(ctx + ".indices: " + std::to_string(indices.size()) +
+                 " indices is not a multiple of 3; the last partial triangle is dropped");
+            indices.resize(indices.size() - indices.size() % 3);
+        }
+        if (det < 0.0f) {
+            // A mirroring transform turns counter-clockwise front faces clockwise.
+            for (size_t t = 0; t + 2 < indices.size(); t += 3) {
+                std::swap(indices[t + 1], indices[t + 2]);
+            }
+        }
+
+        const uint32_t dropped = dropDegenerateTriangles(vertices, indices);
+        if (dropped > 0) {
+            m_scene.stats.degenerateTrianglesDropped += dropped;
+            warn(ctx + ": " + std::to_string(dropped) + " degenerate triangles dropped");
+        }
+        if (indices.empty()) {
+            warn(ctx + ": no triangles left; primitive skipped");
+            return;
+        }
+        if (normalIndex < 0) {
+            makeFlatNormals(vertices, indices);
+            ++m_scene.stats.primitivesWithFlatNormals;
+        } else if (const uint32_t repaired = repairNormals(vertices, indices); repaired > 0) {
+            warn(ctx + ".attributes.NORMAL: " + std::to_string(repaired) +
+                 " zero-length or non-finite normals replaced by the face normal");
+        }
+        if (tangentIndex < 0) {
+            generateTangents(vertices, indices, uvIndex >= 0);
+        } else if (const uint32_t repaired = repairTangents(vertices); repaired > 0) {
+            warn(ctx + ".attributes.TANGENT: " + std::to_string(repaired) + " unusable tangents replaced");
+        }
+        append(vertices, indices, material, ctx);
+    }
+
+    void append(const std::vector<Vertex>& vertices, const std::vector<uint32_t>& indices, uint32_t material,
+                const std::string& ctx) {
+        const size_t base = m_scene.vertices.size();
+        if (base + vertices.size() > std::numeric_limits<uint32_t>::max() ||
+            m_scene.indices.size() + indices.size() > std::numeric_limits<uint32_t>::max()) {
+            throw SceneError(m_source + ": " + ctx + ": the scene exceeds 2^32 vertices or indices");
+        }
+        Draw draw;
+        draw.firstIndex = static_cast<uint32_t>(m_scene.indices.size());
+        draw.indexCount = static_cast<uint32_t>(indices.size());
+        draw.material = material;
+        m_scene.vertices.insert(m_scene.vertices.end(), vertices.begin(), vertices.end());
+        for (uint32_t i : indices) {
+            m_scene.indices.push_back(static_cast<uint32_t>(base) + i);
+        }
+        m_scene.draws.push_back(draw);
+    }
+
+    void computeBounds() {
+        if (m_scene.vertices.empty()) {
+            return; // stays the zero box; the default camera copes
+        }
+        Bounds b;
+        b.min = glm::vec3(std::numeric_limits<float>::max());
+        b.max = glm::vec3(-std::numeric_limits<float>::max());
+        for (const Vertex& v : m_scene.vertices) {
+            b.min = glm::min(b.min, v.position);
+            b.max = glm::max(b.max, v.position);
+        }
+        m_scene.bounds = b;
+    }
+
+    const tinygltf::Model& m_model;
+    std::string m_source;
+    Scene m_scene;
+    std::vector<NodeInstance> m_instances;
+    std::vector<bool> m_visited;
+    uint32_t m_defaultMaterial = std::numeric_limits<uint32_t>::max();
+};
+
+std::string lowerExtension(const std::filesystem::path& path) {
+    std::string ext = path.extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    return ext;
+}
+
+std::string trimmed(std::string s) {
+    while (!s.empty() && (s.back() == '\n' || s.back() == '\r' || s.back() == ' ')) {
+        s.pop_back();
+    }
+    return s;
+}
+
+} // namespace
+
+Scene loadGltfModel(const tinygltf::Model& model, const std::string& sourceName) {
+    return GltfConverter(model, sourceName).run();
+}
+
+Scene loadGltf(const std::filesystem::path& path) {
+    const std::string source = path.string();
+    const std::string ext = lowerExtension(path);
+    if (ext != ".gltf" && ext != ".glb") {
+        throw SceneError(source + ": extension '" + ext + "' is not .gltf or .glb");
+    }
+    {
+        std::ifstream probe(path, std::ios::binary);
+        if (!probe) {
+            throw SceneError(source + ": cannot open the file for reading");
+        }
+    }
+    tinygltf::TinyGLTF gltf;
+    // Our decoder always yields RGBA8 and reports failures per image.
+    gltf.SetImageLoader(&decodeImageRgba8, nullptr);
+    tinygltf::Model model;
+    std::string err;
+    std::string warn;
+    bool ok = false;
+    try {
+        ok = ext == ".glb" ? gltf.LoadBinaryFromFile(&model, &err, &warn, source)
+                           : gltf.LoadASCIIFromFile(&model, &err, &warn, source);
+    } catch (const std::exception& e) {
+        // tinygltf's JSON layer may throw on malformed input instead of reporting.
+        ok = false;
+        err += e.what();
+    }
+    if (!ok) {
+        throw SceneError(source + ": " +
+                         (err.empty() ? std::string("tinygltf failed without a message") : trimmed(err)));
+    }
+    Scene scene = loadGltfModel(model, source);
+    if (!warn.empty()) {
+        scene.stats.warnings.push_back(source + ": " + trimmed(warn));
+    }
+    return scene;
+}
+
+} // namespace eng::scene
