@@ -1,6 +1,9 @@
 #include "agaa/methods.h"
 
+#include "agaa/aggregate/aggregate.h"
+#include "agaa/fxaa/fxaa.h"
 #include "agaa/reference/reference.h"
+#include "agaa/simple_complex/simple_complex.h"
 
 #include <stdexcept>
 
@@ -10,6 +13,14 @@ const std::vector<MethodInfo>& knownMethods() {
     static const std::vector<MethodInfo> methods = {
         {"reference", "per-sample deferred shading: every covered sample lit (ground truth at the same n)", true, false},
         {"noaa", "one sample, one shading event per pixel", false, false},
+        {"simple-complex",
+         "Simple/Complex deferred MSAA (Lauritzen 2010): sample 0 lit everywhere, every sample of complex pixels",
+         true, false, {"complex"}},
+        {"simple-complex-naive", "simple-complex with per-pixel sample loops instead of per-tile packing (timing)", true,
+         false, {"complex"}},
+        {"fxaa", "FXAA 3.11 quality (Lottes 2009), preset 39, on the no-AA image", false, false},
+        {"agaa", "aggregate G-buffer anti-aliasing: n visibility samples, c aggregates lit once each", true, true,
+         {"aggregates"}},
     };
     return methods;
 }
@@ -30,6 +41,24 @@ std::unique_ptr<Technique> createTechnique(const std::string& method, eng::vk::D
                                            const eng::frame::GpuScene& scene, const MethodSettings& settings) {
     if (method == "reference") return std::make_unique<Reference>(device, scene, ReferenceSettings{settings.samples});
     if (method == "noaa") return std::make_unique<Reference>(device, scene, ReferenceSettings{1}, "noaa");
+    if (method == "simple-complex" || method == "simple-complex-naive") {
+        SimpleComplexSettings s; // thresholds: the documented defaults (simple_complex.h)
+        s.samples = settings.samples;
+        if (method == "simple-complex-naive") s.schedule = SimpleComplexSchedule::Naive;
+        if (!settings.debug.empty() && settings.debug != "complex")
+            throw std::invalid_argument("--debug '" + settings.debug + "' is not a debug view of " + method +
+                                        " (allowed: complex)");
+        if (settings.debug == "complex") s.debugView = SimpleComplexDebugView::Complex;
+        return std::make_unique<SimpleComplex>(device, scene, s, method);
+    }
+    if (method == "fxaa") return std::make_unique<Fxaa>(device, scene, FxaaSettings{});
+    if (method == "agaa") {
+        AggregateSettings s;
+        s.samples = settings.samples;
+        s.aggregates = settings.aggregates;
+        s.debugView = settings.debug == "aggregates" ? AggregateDebugView::Aggregates : AggregateDebugView::None;
+        return std::make_unique<AggregateAA>(device, scene, s);
+    }
     throw std::invalid_argument("--method '" + method + "' is unknown (known: " + knownMethodNames() + ")");
 }
 

@@ -17,6 +17,7 @@ struct MethodInfo {
     std::string summary;
     bool usesSamples = true; // --samples matters
     bool usesAggregates = false; // --aggregates matters
+    std::vector<std::string> debugViews; // values --debug accepts for this method
 };
 
 const std::vector<MethodInfo>& knownMethods();

@@ -50,7 +50,8 @@ FrameRenderer::~FrameRenderer() {
 }
 
 Technique& FrameRenderer::technique(const RenderRequest& r) {
-    std::string key = r.method + "/" + std::to_string(r.settings.samples) + "/" + std::to_string(r.settings.aggregates);
+    std::string key = r.method + "/" + std::to_string(r.settings.samples) + "/" + std::to_string(r.settings.aggregates) +
+                      "/" + r.settings.debug;
     auto it = m_techniques.find(key);
     if (it == m_techniques.end())
         it = m_techniques.emplace(key, createTechnique(r.method, m_device, m_gpuScene, r.settings)).first;
@@ -77,6 +78,7 @@ RenderResult FrameRenderer::render(const RenderRequest& request) {
     rg::Graph graph;
     FrameInputs inputs;
     inputs.scene = &m_gpuScene;
+    inputs.constants = &constants;
     inputs.width = w;
     inputs.height = h;
     // Host-written before submission (the submit makes them visible): no prior GPU use.

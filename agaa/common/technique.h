@@ -6,6 +6,7 @@
 
 #include "engine/frame/gpu_scene.h"
 #include "engine/graph/graph.h"
+#include "shared/frame.h"
 
 #include <cstdint>
 #include <string>
@@ -15,6 +16,7 @@ namespace agaa {
 // Inputs every technique reads; the host imports these buffers into its graph.
 struct FrameInputs {
     const eng::frame::GpuScene* scene = nullptr;
+    const shared::FrameConstants* constants = nullptr; // the values behind frameConstants
     eng::rg::Buffer frameConstants; // shared::FrameConstants, uniform
     eng::rg::Buffer lights; // shared::GpuLight[], storage
     uint32_t width = 0;
@@ -32,6 +34,7 @@ struct FrameTargets {
 struct MethodSettings {
     uint32_t samples = 8; // n: visibility samples per pixel
     uint32_t aggregates = 2; // c: AGAA aggregates per pixel
+    std::string debug; // a method's debug view ("" = none), e.g. "aggregates" for agaa
 };
 
 class Technique {
@@ -43,6 +46,11 @@ public:
     virtual FrameTargets addPasses(eng::rg::Graph& graph, const FrameInputs& inputs) = 0;
     // Resource names that are this technique's own per-pixel storage (for bytes_per_pixel).
     virtual bool isStorage(const std::string& resourceName) const = 0;
+    // Which part of the storage a resource is, for the bytes-per-pixel split:
+    // "per-sample", "per-aggregate", "metadata" or "transient".
+    virtual std::string storageCategory(const std::string& resourceName) const {
+        return isStorage(resourceName) ? "per-sample" : "transient";
+    }
 };
 
 } // namespace agaa

@@ -63,9 +63,9 @@ GpuScene::GpuScene(vk::Device& device, const scene::Scene& scene) : m_device(dev
     // Host-visible vertex data: lavapipe's memory is all host-visible; on a discrete GPU this
     // is read over the bus (a staging copy would be the next step there).
     m_vertices = vk::createBuffer(device, std::max<size_t>(16, scene.vertices.size() * sizeof(scene::Vertex)),
-                                  VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, vk::MemoryUse::Upload, "scene.vertices");
+                                  VK_BUFFER_USAGE_VERTEX_BUFFER_BIT | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, vk::MemoryUse::Upload, "scene.vertices");
     m_indices = vk::createBuffer(device, std::max<size_t>(16, scene.indices.size() * 4),
-                                 VK_BUFFER_USAGE_INDEX_BUFFER_BIT, vk::MemoryUse::Upload, "scene.indices");
+                                 VK_BUFFER_USAGE_INDEX_BUFFER_BIT | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, vk::MemoryUse::Upload, "scene.indices");
     if (!scene.vertices.empty()) vk::writeBuffer(device, m_vertices, bytesOf(scene.vertices));
     if (!scene.indices.empty()) vk::writeBuffer(device, m_indices, bytesOf(scene.indices));
     std::vector<shared::GpuMaterial> materials = makeGpuMaterials(scene);
@@ -189,6 +189,13 @@ GpuScene::~GpuScene() {
     vk::destroyBuffer(m_device, m_vertices);
     vk::destroyBuffer(m_device, m_indices);
     vk::destroyBuffer(m_device, m_materials);
+}
+
+bool GpuScene::hasEmissive() const {
+    for (const scene::Material& m : m_scene.materials)
+        if (m.emissiveStrength > 0.0f && (m.emissiveFactor.r > 0.0f || m.emissiveFactor.g > 0.0f || m.emissiveFactor.b > 0.0f))
+            return true;
+    return false;
 }
 
 VkDeviceSize GpuScene::bytes() const {

@@ -23,6 +23,10 @@ public:
     const scene::Scene& scene() const { return m_scene; }
     VkBuffer vertexBuffer() const { return m_vertices.buffer; }
     VkBuffer indexBuffer() const { return m_indices.buffer; }
+    // Also bound as storage buffers (face normals from gl_PrimitiveID).
+    const vk::Buffer& vertices() const { return m_vertices; }
+    const vk::Buffer& indices() const { return m_indices; }
+    bool hasEmissive() const; // any material emits light
     const vk::Buffer& materials() const { return m_materials; }
     VkDescriptorSetLayout textureSetLayout() const { return m_textureSetLayout; }
     VkDescriptorSet textureSet() const { return m_textureSet; }

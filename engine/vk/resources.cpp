@@ -173,6 +173,13 @@ Image createImage(const Device& device, const ImageDesc& desc, const std::string
     return img;
 }
 
+bool supportsImage(const Device& device, VkFormat format, VkImageUsageFlags usage, VkSampleCountFlagBits samples) {
+    VkImageFormatProperties props;
+    VkResult r = vkGetPhysicalDeviceImageFormatProperties(device.physical(), format, VK_IMAGE_TYPE_2D,
+                                                          VK_IMAGE_TILING_OPTIMAL, usage, 0, &props);
+    return r == VK_SUCCESS && (props.sampleCounts & samples) != 0;
+}
+
 void destroyImage(const Device& device, Image& img) {
     if (img.sampledView && img.sampledView != img.view) vkDestroyImageView(device.device(), img.sampledView, nullptr);
     if (img.view) vkDestroyImageView(device.device(), img.view, nullptr);

@@ -60,6 +60,8 @@ void writeBuffer(const Device&, const Buffer&, std::span<const std::byte> bytes,
 void invalidateBuffer(const Device&, const Buffer&);
 
 Image createImage(const Device&, const ImageDesc&, const std::string& name);
+// Whether an optimal-tiling 2D image of this format, usage and sample count can be created.
+bool supportsImage(const Device&, VkFormat, VkImageUsageFlags, VkSampleCountFlagBits);
 void destroyImage(const Device&, Image&);
 
 VkSampler createSampler(const Device&, VkFilter filter, VkSamplerAddressMode address, float maxLod,

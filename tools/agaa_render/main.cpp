@@ -49,7 +49,7 @@ struct Options {
 
 const char* kUsage =
     "usage: agaa-render [--scene FILE | --builtin NAME] [--method NAME] [--samples N] [--aggregates C]\n"
-    "                   [--width W] [--height H] [--camera I] [--exposure E] [--out PREFIX]\n"
+    "                   [--width W] [--height H] [--camera I] [--exposure E] [--out PREFIX] [--debug VIEW]\n"
     "                   [--stats FILE.json] [--graph FILE.dot] [--frames K] [--warmup K]\n"
     "                   [--validate] [--device NAME] [--caps] [--help]\n"
     "\n"
@@ -60,6 +60,7 @@ const char* kUsage =
     "  --aggregates C    AGAA aggregates per pixel, 1..4 (default 2)\n"
     "  --width/--height  image size in pixels, 1..8192 (default 256x256)\n"
     "  --camera I        scene camera index (default 0)\n"
+    "  --debug VIEW      a method's debug view instead of the lit frame (agaa: aggregates)\n"
     "  --out PREFIX      writes PREFIX.exr (linear HDR) and PREFIX.png (tone-mapped sRGB)\n"
     "  --stats FILE      per-pass GPU times, storage, shading events, validation errors as JSON\n"
     "  --graph FILE      compiled render graph as Graphviz DOT (and FILE.json)\n"
@@ -108,6 +109,7 @@ Options parse(int argc, char** argv) {
                 throw BadArgument("--samples '" + v + "' is not supported (allowed: " +
                                   eng::frame::supportedSampleCounts() + ")");
         } else if (a == "--aggregates") r.settings.aggregates = parseUint(a, value(), 1, 4);
+        else if (a == "--debug") r.settings.debug = value();
         else if (a == "--width") r.view.width = parseUint(a, value(), 1, 8192);
         else if (a == "--height") r.view.height = parseUint(a, value(), 1, 8192);
         else if (a == "--camera") r.view.camera = parseUint(a, value(), 0, 1u << 20);
@@ -124,6 +126,19 @@ Options parse(int argc, char** argv) {
     }
     if (!agaa::isKnownMethod(r.method))
         throw BadArgument("--method '" + r.method + "' is unknown (known: " + agaa::knownMethodNames() + ")");
+    if (!r.settings.debug.empty()) {
+        std::string allowed;
+        bool known = false;
+        for (const auto& m : agaa::knownMethods())
+            if (m.name == r.method)
+                for (const auto& v : m.debugViews) {
+                    allowed += (allowed.empty() ? "" : ", ") + v;
+                    known |= v == r.settings.debug;
+                }
+        if (!known)
+            throw BadArgument("--debug '" + r.settings.debug + "' is not a debug view of --method " + r.method +
+                              " (allowed: " + (allowed.empty() ? std::string("none") : allowed) + ")");
+    }
     r.timedFrames = o.frames;
     r.warmupFrames = o.warmup;
     return o;

@@ -10,10 +10,15 @@ float viewDistanceFromDepth(float d, float znear, float zfar) {
 
 bool isSky(float d) { return d <= 0.0; }
 
-// View-space position of a point at pixel-space position (pixel + subpixel) with depth d.
-vec3 viewPositionFromDepth(vec2 pixelPos, float d, vec4 extent, vec4 depthParams, vec4 projParams) {
-    float t = viewDistanceFromDepth(d, depthParams.x, depthParams.y);
+// View-space point at view distance t on the ray through pixel-space position pixelPos.
+vec3 viewPositionAtDistance(vec2 pixelPos, float t, vec4 extent, vec4 projParams) {
     vec2 ndc = pixelPos * extent.zw * 2.0 - 1.0;
     return vec3(ndc.x * t / projParams.x, ndc.y * t / projParams.y, -t);
+}
+
+// View-space position of a point at pixel-space position (pixel + subpixel) with depth d.
+vec3 viewPositionFromDepth(vec2 pixelPos, float d, vec4 extent, vec4 depthParams, vec4 projParams) {
+    return viewPositionAtDistance(pixelPos, viewDistanceFromDepth(d, depthParams.x, depthParams.y), extent,
+                                  projParams);
 }
 #endif

@@ -4,6 +4,7 @@
 // layouts of uniform and storage buffers cannot drift. Members are vec4/mat4/
 // uvec4/ivec4 only: identical under std140, std430 and C++ alignment.
 #ifdef __cplusplus
+#include <cmath>
 #include <cstdint>
 #include <glm/glm.hpp>
 namespace shared {
@@ -12,11 +13,15 @@ using uvec4 = glm::uvec4;
 using ivec4 = glm::ivec4;
 using mat4 = glm::mat4;
 using uint = uint32_t;
+using std::floor;
+using std::sqrt;
 } // namespace shared
 #define SHARED_BEGIN namespace shared {
 #define SHARED_END }
 #define SHARED_CONST inline constexpr uint32_t
+#define inline_fn inline
 #else
+#define inline_fn
 #define SHARED_BEGIN
 #define SHARED_END
 #define SHARED_CONST const uint

@@ -1,0 +1,48 @@
+#include "agaa/aggregate/agaa_constants.h"
+
+#include "shared/clustering.h"
+
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+#include <string>
+
+namespace agaa {
+
+void validate(const AggregateSettings& s) {
+    if (s.samples != 4 && s.samples != 8 && s.samples != 16 && s.samples != 32)
+        throw std::invalid_argument("agaa: --samples " + std::to_string(s.samples) +
+                                    " is not supported (allowed: 4, 8, 16, 32)");
+    if (s.aggregates < 1 || s.aggregates > shared::kMaxAggregates)
+        throw std::invalid_argument("agaa: --aggregates " + std::to_string(s.aggregates) +
+                                    " is out of range (allowed: 1, 2, 3, 4)");
+    if (!(s.characteristicLength > 0.0f) || !std::isfinite(s.characteristicLength))
+        throw std::invalid_argument("agaa: characteristic length must be a positive number of metres");
+    if (!(s.seedThreshold >= 0.0f) || !std::isfinite(s.seedThreshold))
+        throw std::invalid_argument("agaa: seed threshold must be >= 0");
+}
+
+shared::AgaaConstants makeAgaaConstants(const AggregateSettings& s, const shared::FrameConstants& frame,
+                                        bool hasEmissive) {
+    shared::AgaaConstants c{};
+    // Decoding tables in double, rounded once to float: both the GPU and the CPU reference read them.
+    for (uint32_t q = 0; q < shared::kNormalAngleLevels; ++q) {
+        double theta = double(q) * (std::numbers::pi / 2.0) / 255.0;
+        double phi = (double(q) / 256.0) * 2.0 * std::numbers::pi - std::numbers::pi;
+        c.cosSinTheta[q] = {float(std::cos(theta)), float(std::sin(theta)), 0.0f, 0.0f};
+        c.cosSinPhi[q] = {float(std::cos(phi)), float(std::sin(phi)), 0.0f, 0.0f};
+    }
+    float znear = frame.depthParams.x, zfar = frame.depthParams.y;
+    c.clustering = {1.0f / s.characteristicLength, s.seedThreshold, znear * zfar, zfar - znear};
+    c.ndcParams = {2.0f / frame.extent.x, 2.0f / frame.extent.y, frame.projParams.x, frame.projParams.y};
+    c.shape = {s.aggregates, shared::metadataBits(s.aggregates), shared::metadataWords(s.samples, s.aggregates),
+               s.samples};
+    // Toksvig with roughness injected as variance (agaa/aggregate/README.md): the reference
+    // Blinn-Phong exponent of the smoothest representable surface.
+    float smax = 2.0f / (kMinGgxAlpha * kMinGgxAlpha) - 2.0f;
+    c.toksvig = {smax, kMinGgxAlpha, 0.0f, 0.0f};
+    c.options = {uint32_t(s.debugView), uint32_t(s.position), hasEmissive ? 1u : 0u, 0u};
+    return c;
+}
+
+} // namespace agaa

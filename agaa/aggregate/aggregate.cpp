@@ -1,0 +1,327 @@
+// The AGAA passes as render-graph nodes (pipelines: aggregate_pipelines.cpp).
+
+#include "agaa/aggregate/aggregate.h"
+
+#include "engine/vk/descriptors.h"
+#include "shaders/agaa/sample_readback_comp.h"
+#include "shared/clustering.h"
+
+#include <algorithm>
+
+namespace agaa {
+namespace rg = eng::rg;
+namespace vk = eng::vk;
+
+namespace {
+
+rg::Buffer importScene(rg::Graph& graph, const char* name, const vk::Buffer& b) {
+    return graph.importBuffer(name, {b.buffer, b.size}, std::nullopt, std::nullopt);
+}
+
+uint32_t groups(uint32_t size, uint32_t group) { return (size + group - 1) / group; }
+
+VkRenderingAttachmentInfo attachment(VkImageView view, VkImageLayout layout, VkAttachmentLoadOp load) {
+    VkRenderingAttachmentInfo a{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
+    a.imageView = view;
+    a.imageLayout = layout;
+    a.loadOp = load;
+    a.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+    return a;
+}
+
+} // namespace
+
+FrameTargets AggregateAA::addPasses(rg::Graph& graph, const FrameInputs& in) {
+    m_constants = makeAgaaConstants(m_settings, *in.constants, m_hasEmissive);
+    vk::writeBuffer(m_device, m_constantsBuffer, std::as_bytes(std::span(&m_constants, 1)));
+    const uint32_t layers = m_settings.samples / 4;
+    const uint32_t c = m_settings.aggregates;
+    const uint32_t pixels = in.width * in.height;
+    const eng::frame::GpuScene* scene = in.scene;
+
+    std::vector<VkPipeline> visibilityPipelines, generationPipelines;
+    for (const eng::scene::Draw& draw : scene->scene().draws) {
+        const eng::scene::Material& m = scene->scene().materials.at(draw.material);
+        visibilityPipelines.push_back(visibilityPipeline(m.alphaMode == eng::scene::AlphaMode::Mask, m.doubleSided));
+        generationPipelines.push_back(generationPipeline(m.doubleSided));
+    }
+
+    rg::Buffer agaaConstants = graph.importBuffer("agaa.constants", {m_constantsBuffer.buffer, m_constantsBuffer.size},
+                                                  std::nullopt, std::nullopt);
+    rg::Buffer materials = importScene(graph, "scene.materials", scene->materials());
+    m_resources.agaaConstants = agaaConstants;
+
+    auto drawScene = [scene, layers](VkCommandBuffer cmd, VkPipelineLayout layout, const std::vector<VkPipeline>& pipes) {
+        VkDeviceSize offset = 0;
+        VkBuffer vb = scene->vertexBuffer();
+        vkCmdBindVertexBuffers(cmd, 0, 1, &vb, &offset);
+        vkCmdBindIndexBuffer(cmd, scene->indexBuffer(), 0, VK_INDEX_TYPE_UINT32);
+        VkDescriptorSet textures = scene->textureSet();
+        vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout, 1, 1, &textures, 0, nullptr);
+        VkPipeline bound = VK_NULL_HANDLE;
+        const auto& draws = scene->scene().draws;
+        for (size_t i = 0; i < draws.size(); ++i) {
+            if (draws[i].indexCount == 0) continue;
+            if (pipes[i] != bound) vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, bound = pipes[i]);
+            uint32_t material = draws[i].material;
+            vkCmdPushConstants(cmd, layout, VK_SHADER_STAGE_ALL, 0, sizeof material, &material);
+            vkCmdDrawIndexed(cmd, draws[i].indexCount, layers, draws[i].firstIndex, 0, 0); // one instance per layer
+        }
+    };
+    auto beginRendering = [](VkCommandBuffer cmd, uint32_t w, uint32_t h, uint32_t layerCount,
+                             const VkRenderingAttachmentInfo* color, const VkRenderingAttachmentInfo& depth) {
+        VkRenderingInfo info{VK_STRUCTURE_TYPE_RENDERING_INFO};
+        info.renderArea = {{0, 0}, {w, h}};
+        info.layerCount = layerCount;
+        info.colorAttachmentCount = color ? 1 : 0;
+        info.pColorAttachments = color;
+        info.pDepthAttachment = &depth;
+        info.pStencilAttachment = &depth;
+        vkCmdBeginRendering(cmd, &info);
+        VkViewport viewport{0.0f, 0.0f, float(w), float(h), 0.0f, 1.0f};
+        VkRect2D scissor{{0, 0}, {w, h}};
+        vkCmdSetViewport(cmd, 0, 1, &viewport);
+        vkCmdSetScissor(cmd, 0, 1, &scissor);
+    };
+
+    // ---- 1. visibility prepass -------------------------------------------------------------
+    struct Visibility {
+        rg::Buffer frame, agaa, materials;
+        rg::Texture depth, normal;
+    };
+    const rg::TextureDesc sampleDesc{VK_FORMAT_UNDEFINED, in.width, in.height, layers, VK_SAMPLE_COUNT_4_BIT};
+    auto desc = [&](VkFormat f) {
+        rg::TextureDesc d = sampleDesc;
+        d.format = f;
+        return d;
+    };
+    const Visibility& vis = graph.addGraphics<Visibility>(
+        "agaa.visibility",
+        [&](rg::Builder& b, Visibility& d) {
+            d.frame = b.read(in.frameConstants, rg::Use::UniformRead);
+            d.agaa = b.read(agaaConstants, rg::Use::UniformRead);
+            d.materials = b.read(materials, rg::Use::StorageReadFragment);
+            d.depth = b.write(b.create("agaa.visibility.depth", desc(m_depthFormat)), rg::Use::DepthStencilWrite);
+            d.normal = b.write(b.create("agaa.visibility.normal", desc(VK_FORMAT_R8G8_UNORM)), rg::Use::ColorAttachment);
+        },
+        [=, this](const rg::Context& ctx, const Visibility& d) {
+            VkCommandBuffer cmd = ctx.cmd();
+            VkRenderingAttachmentInfo color = attachment(ctx.texture(d.normal).view,
+                                                         VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_ATTACHMENT_LOAD_OP_CLEAR);
+            VkRenderingAttachmentInfo depth = attachment(
+                ctx.texture(d.depth).view, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL, VK_ATTACHMENT_LOAD_OP_CLEAR);
+            depth.clearValue.depthStencil = {0.0f, 0}; // reversed Z: 0 = far (sky); stencil 0 for generation
+            beginRendering(cmd, in.width, in.height, layers, &color, depth);
+            vk::PushDescriptors()
+                .uniform(0, ctx.buffer(d.frame).buffer)
+                .storage(1, ctx.buffer(d.materials).buffer)
+                .uniform(2, ctx.buffer(d.agaa).buffer)
+                .push(m_device, cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, m_visibilityLayout.layout);
+            drawScene(cmd, m_visibilityLayout.layout, visibilityPipelines);
+            vkCmdEndRendering(cmd);
+        });
+
+    // ---- 2. clustering ----------------------------------------------------------------------
+    struct Cluster {
+        rg::Buffer frame, agaa, metadata;
+        rg::Texture depth, normal, count;
+    };
+    const uint32_t words = shared::metadataWords(m_settings.samples, c);
+    const Cluster& cl = graph.addCompute<Cluster>(
+        "agaa.cluster",
+        [&](rg::Builder& b, Cluster& d) {
+            d.frame = b.read(in.frameConstants, rg::Use::UniformRead);
+            d.agaa = b.read(agaaConstants, rg::Use::UniformRead);
+            d.depth = b.read(vis.depth, rg::Use::SampledCompute);
+            d.normal = b.read(vis.normal, rg::Use::SampledCompute);
+            // c = 1 needs no metadata bits; keep a minimal buffer so the binding stays valid.
+            d.metadata = b.write(b.create("agaa.metadata", {std::max<VkDeviceSize>(4, VkDeviceSize(pixels) * words * 4)}),
+                                 rg::Use::StorageWriteCompute);
+            d.count = b.write(b.create("agaa.aggregateCount", {VK_FORMAT_R8_UINT, in.width, in.height, 1,
+                                                                VK_SAMPLE_COUNT_1_BIT}),
+                              rg::Use::StorageImageWriteCompute);
+        },
+        [=, this](const rg::Context& ctx, const Cluster& d) {
+            VkCommandBuffer cmd = ctx.cmd();
+            vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, m_clusterPipeline);
+            vk::PushDescriptors()
+                .uniform(0, ctx.buffer(d.frame).buffer)
+                .uniform(1, ctx.buffer(d.agaa).buffer)
+                .sampled(2, m_fetchSampler, ctx.texture(d.depth).sampledView)
+                .sampled(3, m_fetchSampler, ctx.texture(d.normal).sampledView)
+                .storage(4, ctx.buffer(d.metadata).buffer)
+                .storageImage(5, ctx.texture(d.count).view)
+                .push(m_device, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, m_clusterLayout.layout);
+            vkCmdDispatch(cmd, groups(in.width, 8), groups(in.height, 8), 1);
+        });
+    m_resources.depth = vis.depth;
+    m_resources.normal = vis.normal;
+    m_resources.metadata = cl.metadata;
+    m_resources.aggregateCount = cl.count;
+
+    const rg::TextureDesc outDesc{VK_FORMAT_R32G32B32A32_SFLOAT, in.width, in.height, 1, VK_SAMPLE_COUNT_1_BIT};
+    const rg::TextureDesc eventsDesc{VK_FORMAT_R32_UINT, in.width, in.height, 1, VK_SAMPLE_COUNT_1_BIT};
+
+    if (m_settings.debugView == AggregateDebugView::Aggregates) {
+        struct Debug {
+            rg::Buffer frame, agaa, metadata;
+            rg::Texture count, depth, hdr, display, events;
+        };
+        const Debug& dbg = graph.addCompute<Debug>(
+            "agaa.debug.aggregates",
+            [&](rg::Builder& b, Debug& d) {
+                d.frame = b.read(in.frameConstants, rg::Use::UniformRead);
+                d.agaa = b.read(agaaConstants, rg::Use::UniformRead);
+                d.metadata = b.read(cl.metadata, rg::Use::StorageReadCompute);
+                d.count = b.read(cl.count, rg::Use::StorageImageReadCompute);
+                d.depth = b.read(vis.depth, rg::Use::SampledCompute);
+                d.hdr = b.write(b.create("agaa.debug.hdr", outDesc), rg::Use::StorageImageWriteCompute);
+                d.display = b.write(b.create("agaa.debug.display", outDesc), rg::Use::StorageImageWriteCompute);
+                d.events = b.write(b.create("agaa.debug.events", eventsDesc), rg::Use::StorageImageWriteCompute);
+            },
+            [=, this](const rg::Context& ctx, const Debug& d) {
+                VkCommandBuffer cmd = ctx.cmd();
+                vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, m_debugPipeline);
+                vk::PushDescriptors()
+                    .uniform(0, ctx.buffer(d.frame).buffer)
+                    .uniform(1, ctx.buffer(d.agaa).buffer)
+                    .storage(2, ctx.buffer(d.metadata).buffer)
+                    .storageImage(3, ctx.texture(d.count).view)
+                    .sampled(4, m_fetchSampler, ctx.texture(d.depth).sampledView)
+                    .storageImage(5, ctx.texture(d.hdr).view)
+                    .storageImage(6, ctx.texture(d.display).view)
+                    .storageImage(7, ctx.texture(d.events).view)
+                    .push(m_device, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, m_debugLayout.layout);
+                vkCmdDispatch(cmd, groups(in.width, 8), groups(in.height, 8), 1);
+            });
+        return {dbg.hdr, dbg.display, dbg.events};
+    }
+
+    // ---- 3. AG-buffer generation (accumulation kernel) -------------------------------------
+    struct Clear {
+        rg::Buffer agBuffer;
+    };
+    const VkDeviceSize agBytes = VkDeviceSize(pixels) * c * shared::kAggregateWords * 4;
+    const Clear& clear = graph.addPass<Clear>(
+        "agaa.clear", rg::PassKind::Transfer,
+        [&](rg::Builder& b, Clear& d) {
+            d.agBuffer = b.write(b.create("agaa.agBuffer", {agBytes}), rg::Use::TransferDst);
+        },
+        [](const rg::Context& ctx, const Clear& d) {
+            vkCmdFillBuffer(ctx.cmd(), ctx.buffer(d.agBuffer).buffer, 0, VK_WHOLE_SIZE, 0);
+        });
+    struct Generation {
+        rg::Buffer frame, agaa, materials, metadata, agBuffer;
+        rg::Texture depth, emissive;
+    };
+    const bool emissive = m_hasEmissive;
+    const Generation& gen = graph.addGraphics<Generation>(
+        "agaa.generation",
+        [&](rg::Builder& b, Generation& d) {
+            d.frame = b.read(in.frameConstants, rg::Use::UniformRead);
+            d.agaa = b.read(agaaConstants, rg::Use::UniformRead);
+            d.materials = b.read(materials, rg::Use::StorageReadFragment);
+            d.metadata = b.read(cl.metadata, rg::Use::StorageReadFragment);
+            d.agBuffer = b.readWrite(clear.agBuffer, rg::Use::StorageReadWriteFragment);
+            d.depth = b.readWrite(vis.depth, rg::Use::DepthStencilRead); // EQUAL test, stencil written
+            if (emissive)
+                d.emissive = b.write(b.create("agaa.emissive", desc(VK_FORMAT_B10G11R11_UFLOAT_PACK32)),
+                                     rg::Use::ColorAttachment);
+        },
+        [=, this](const rg::Context& ctx, const Generation& d) {
+            VkCommandBuffer cmd = ctx.cmd();
+            VkRenderingAttachmentInfo depth = attachment(
+                ctx.texture(d.depth).view, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL, VK_ATTACHMENT_LOAD_OP_LOAD);
+            VkRenderingAttachmentInfo color{};
+            if (emissive)
+                color = attachment(ctx.texture(d.emissive).view, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+                                   VK_ATTACHMENT_LOAD_OP_CLEAR);
+            beginRendering(cmd, in.width, in.height, layers, emissive ? &color : nullptr, depth);
+            vk::PushDescriptors()
+                .uniform(0, ctx.buffer(d.frame).buffer)
+                .storage(1, ctx.buffer(d.materials).buffer)
+                .uniform(2, ctx.buffer(d.agaa).buffer)
+                .storage(3, ctx.buffer(d.metadata).buffer)
+                .storage(4, ctx.buffer(d.agBuffer).buffer)
+                .push(m_device, cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, m_generationLayout.layout);
+            drawScene(cmd, m_generationLayout.layout, generationPipelines);
+            vkCmdEndRendering(cmd);
+        });
+    m_resources.agBuffer = gen.agBuffer;
+
+    // ---- 4. tiled lighting, aggregating at the top of each tile ------------------------------
+    struct Lighting {
+        rg::Buffer frame, lights, agaa, metadata, agBuffer;
+        rg::Texture depth, count, emissive, hdr, display, events;
+    };
+    const Lighting& lit = graph.addCompute<Lighting>(
+        "agaa.lighting",
+        [&](rg::Builder& b, Lighting& d) {
+            d.frame = b.read(in.frameConstants, rg::Use::UniformRead);
+            d.lights = b.read(in.lights, rg::Use::StorageReadCompute);
+            d.agaa = b.read(agaaConstants, rg::Use::UniformRead);
+            d.depth = b.read(gen.depth, rg::Use::SampledCompute);
+            d.metadata = b.read(cl.metadata, rg::Use::StorageReadCompute);
+            d.count = b.read(cl.count, rg::Use::StorageImageReadCompute);
+            d.agBuffer = b.read(gen.agBuffer, rg::Use::StorageReadCompute);
+            if (emissive) d.emissive = b.read(gen.emissive, rg::Use::SampledCompute);
+            d.hdr = b.write(b.create("agaa.hdr", outDesc), rg::Use::StorageImageWriteCompute);
+            d.display = b.write(b.create("agaa.display", outDesc), rg::Use::StorageImageWriteCompute);
+            d.events = b.write(b.create("agaa.shadingEvents", eventsDesc), rg::Use::StorageImageWriteCompute);
+        },
+        [=, this](const rg::Context& ctx, const Lighting& d) {
+            VkCommandBuffer cmd = ctx.cmd();
+            vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, m_lightingPipeline);
+            vk::PushDescriptors pd;
+            pd.uniform(0, ctx.buffer(d.frame).buffer)
+                .storage(1, ctx.buffer(d.lights).buffer)
+                .uniform(2, ctx.buffer(d.agaa).buffer)
+                .sampled(3, m_fetchSampler, ctx.texture(d.depth).sampledView)
+                .storage(4, ctx.buffer(d.metadata).buffer)
+                .storageImage(5, ctx.texture(d.count).view)
+                .storage(6, ctx.buffer(d.agBuffer).buffer)
+                .storageImage(7, ctx.texture(d.hdr).view)
+                .storageImage(8, ctx.texture(d.display).view)
+                .storageImage(9, ctx.texture(d.events).view);
+            if (emissive) pd.sampled(10, m_fetchSampler, ctx.texture(d.emissive).sampledView);
+            pd.push(m_device, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, m_lightingLayout.layout);
+            vkCmdDispatch(cmd, groups(in.width, shared::kTileSize), groups(in.height, shared::kTileSize), 1);
+        });
+    return {lit.hdr, lit.display, lit.events};
+}
+
+void AggregateAA::addSampleReadback(rg::Graph& graph, const FrameInputs& in, const vk::Buffer& host) {
+    if (!m_readbackPipeline)
+        m_readbackPipeline = vk::createComputePipeline(m_device, kAgaaSampleReadbackComp, m_readbackLayout.layout, {},
+                                                       "agaa.sampleReadback");
+    rg::Buffer target = graph.importBuffer("agaa.sampleReadback.host", {host.buffer, host.size}, std::nullopt,
+                                           std::nullopt);
+    struct Data {
+        rg::Buffer frame, agaa, target;
+        rg::Texture depth, normal;
+    };
+    graph.addCompute<Data>(
+        "agaa.sampleReadback",
+        [&](rg::Builder& b, Data& d) {
+            d.frame = b.read(in.frameConstants, rg::Use::UniformRead);
+            d.agaa = b.read(m_resources.agaaConstants, rg::Use::UniformRead);
+            d.depth = b.read(m_resources.depth, rg::Use::SampledCompute);
+            d.normal = b.read(m_resources.normal, rg::Use::SampledCompute);
+            d.target = b.write(target, rg::Use::StorageWriteCompute);
+            b.sideEffect();
+        },
+        [=, this](const rg::Context& ctx, const Data& d) {
+            VkCommandBuffer cmd = ctx.cmd();
+            vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, m_readbackPipeline);
+            vk::PushDescriptors()
+                .uniform(0, ctx.buffer(d.frame).buffer)
+                .uniform(1, ctx.buffer(d.agaa).buffer)
+                .sampled(2, m_fetchSampler, ctx.texture(d.depth).sampledView)
+                .sampled(3, m_fetchSampler, ctx.texture(d.normal).sampledView)
+                .storage(4, ctx.buffer(d.target).buffer)
+                .push(m_device, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, m_readbackLayout.layout);
+            vkCmdDispatch(cmd, groups(in.width, 8), groups(in.height, 8), 1);
+        });
+}
+
+} // namespace agaa

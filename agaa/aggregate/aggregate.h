@@ -1,0 +1,71 @@
+#pragma once
+// Aggregate G-Buffer Anti-Aliasing (Crassin et al.; DESIGN section 4) as a render-graph node:
+//   agaa.visibility  n-sample depth + 8-bit face normals (layered 4x emulation above 4)
+//   agaa.cluster     Algorithm 1 -> bit-packed metadata + aggregate count per pixel
+//   agaa.generation  accumulation kernel: fixed-point integer atomics into c aggregates per pixel
+//   agaa.lighting    tiled deferred, aggregates built at the top of each tile, each lit once
+// With --debug aggregates the lighting is replaced by a view of the clustering, and the graph
+// culls the generation passes nothing reads any more.
+
+#include "agaa/aggregate/agaa_constants.h"
+#include "agaa/common/technique.h"
+#include "engine/vk/device.h"
+#include "engine/vk/pipeline.h"
+#include "engine/vk/resources.h"
+
+#include <array>
+#include <map>
+
+namespace agaa {
+
+// Handles of the passes' outputs from the last addPasses(), for tests and tools.
+struct AggregateResources {
+    eng::rg::Texture depth, normal; // per-sample visibility
+    eng::rg::Buffer metadata;
+    eng::rg::Texture aggregateCount;
+    eng::rg::Buffer agBuffer; // after generation
+    eng::rg::Buffer agaaConstants;
+};
+
+class AggregateAA final : public Technique {
+public:
+    AggregateAA(eng::vk::Device& device, const eng::frame::GpuScene& scene, const AggregateSettings& settings);
+    ~AggregateAA() override;
+
+    std::string name() const override { return "agaa"; }
+    uint32_t samples() const override { return m_settings.samples; }
+    FrameTargets addPasses(eng::rg::Graph& graph, const FrameInputs& inputs) override;
+    bool isStorage(const std::string& resourceName) const override;
+    std::string storageCategory(const std::string& resourceName) const override;
+
+    const AggregateSettings& settings() const { return m_settings; }
+    const AggregateResources& resources() const { return m_resources; }
+    const shared::AgaaConstants& constants() const { return m_constants; }
+    VkFormat depthFormat() const { return m_depthFormat; }
+
+    // Test support: copies the clustering kernel's per-sample inputs (uvec2 per sample: depth
+    // bits, theta | phi << 8) into `host` (pixels * n * 8 bytes). Call after addPasses().
+    void addSampleReadback(eng::rg::Graph& graph, const FrameInputs& inputs, const eng::vk::Buffer& host);
+
+private:
+    VkPipeline visibilityPipeline(bool alphaTested, bool doubleSided);
+    VkPipeline generationPipeline(bool doubleSided);
+    void createLayouts(const eng::frame::GpuScene& scene);
+
+    eng::vk::Device& m_device;
+    AggregateSettings m_settings;
+    bool m_hasEmissive = false;
+    VkFormat m_depthFormat = VK_FORMAT_D24_UNORM_S8_UINT;
+    shared::AgaaConstants m_constants{};
+    eng::vk::Buffer m_constantsBuffer;
+    eng::vk::PipelineLayout m_visibilityLayout, m_generationLayout, m_clusterLayout, m_lightingLayout, m_debugLayout,
+        m_readbackLayout;
+    std::array<VkPipeline, 4> m_visibilityPipelines{};
+    std::array<VkPipeline, 2> m_generationPipelines{};
+    VkPipeline m_clusterPipeline = VK_NULL_HANDLE, m_lightingPipeline = VK_NULL_HANDLE,
+               m_debugPipeline = VK_NULL_HANDLE, m_readbackPipeline = VK_NULL_HANDLE;
+    VkSampler m_fetchSampler = VK_NULL_HANDLE;
+    AggregateResources m_resources;
+};
+
+} // namespace agaa

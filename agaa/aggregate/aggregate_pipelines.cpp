@@ -1,0 +1,166 @@
+// Pipeline layouts and pipelines of the AGAA passes (agaa/aggregate/aggregate.cpp adds the passes).
+
+#include "agaa/aggregate/aggregate.h"
+
+#include "engine/vk/check.h"
+#include "shaders/agaa/cluster_comp.h"
+#include "shaders/agaa/debug_aggregates_comp.h"
+#include "shaders/agaa/generation_emissive_frag.h"
+#include "shaders/agaa/generation_frag.h"
+#include "shaders/agaa/lighting_comp.h"
+#include "shaders/agaa/lighting_emissive_comp.h"
+#include "shaders/agaa/sample_readback_comp.h"
+#include "shaders/agaa/scene_vert.h"
+#include "shaders/agaa/visibility_frag.h"
+
+#include <stdexcept>
+
+namespace agaa {
+namespace vk = eng::vk;
+
+namespace {
+constexpr VkDescriptorType kUbo = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
+constexpr VkDescriptorType kSsbo = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+constexpr VkDescriptorType kSampled = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
+constexpr VkDescriptorType kImage = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
+constexpr VkShaderStageFlags kCs = VK_SHADER_STAGE_COMPUTE_BIT;
+constexpr VkShaderStageFlags kFs = VK_SHADER_STAGE_FRAGMENT_BIT;
+constexpr VkShaderStageFlags kVsFs = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
+} // namespace
+
+AggregateAA::AggregateAA(vk::Device& device, const eng::frame::GpuScene& scene, const AggregateSettings& settings)
+    : m_device(device), m_settings(settings), m_hasEmissive(scene.hasEmissive()) {
+    validate(settings);
+    const vk::Capabilities& caps = device.caps();
+    if (!caps.supportsSamples(4))
+        throw vk::MissingCapability(caps.deviceName + " lacks 4x MSAA (AGAA rasterises n >= 4 samples as 4x layers)");
+    if (!caps.postDepthCoverage)
+        throw vk::MissingCapability(caps.deviceName +
+                                    " lacks VK_EXT_post_depth_coverage (the accumulation kernel needs the "
+                                    "post-depth-test sample mask)");
+    // The paper's 4-byte depth + stencil per sample; D32S8 where D24S8 is not offered at 4x.
+    const VkImageUsageFlags depthUsage = VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT;
+    if (vk::supportsImage(device, VK_FORMAT_D24_UNORM_S8_UINT, depthUsage, VK_SAMPLE_COUNT_4_BIT))
+        m_depthFormat = VK_FORMAT_D24_UNORM_S8_UINT;
+    else if (vk::supportsImage(device, VK_FORMAT_D32_SFLOAT_S8_UINT, depthUsage, VK_SAMPLE_COUNT_4_BIT))
+        m_depthFormat = VK_FORMAT_D32_SFLOAT_S8_UINT;
+    else
+        throw vk::MissingCapability(caps.deviceName + " offers no 4x sampled depth-stencil format (D24S8 or D32S8)");
+
+    m_constantsBuffer = vk::createBuffer(device, sizeof(shared::AgaaConstants), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
+                                         vk::MemoryUse::Upload, "agaa.constants");
+    m_fetchSampler =
+        vk::createSampler(device, VK_FILTER_NEAREST, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE, 0.0f, "agaa.fetchSampler");
+    createLayouts(scene);
+
+    m_clusterPipeline = vk::createComputePipeline(device, kAgaaClusterComp, m_clusterLayout.layout, {}, "agaa.cluster");
+    m_lightingPipeline = vk::createComputePipeline(device, m_hasEmissive ? kAgaaLightingEmissiveComp : kAgaaLightingComp,
+                                                   m_lightingLayout.layout, {}, "agaa.lighting");
+    m_debugPipeline =
+        vk::createComputePipeline(device, kAgaaDebugAggregatesComp, m_debugLayout.layout, {}, "agaa.debug.aggregates");
+}
+
+void AggregateAA::createLayouts(const eng::frame::GpuScene& scene) {
+    vk::LayoutDesc visibility;
+    visibility.pushBindings = {{0, kUbo, kVsFs}, {1, kSsbo, kFs}, {2, kUbo, kFs}};
+    visibility.extraSets = {scene.textureSetLayout()};
+    visibility.pushConstantBytes = 4;
+    m_visibilityLayout = vk::createPipelineLayout(m_device, visibility, "agaa.visibility.layout");
+
+    vk::LayoutDesc generation;
+    generation.pushBindings = {{0, kUbo, kVsFs}, {1, kSsbo, kFs}, {2, kUbo, kFs}, {3, kSsbo, kFs}, {4, kSsbo, kFs}};
+    generation.extraSets = {scene.textureSetLayout()};
+    generation.pushConstantBytes = 4;
+    m_generationLayout = vk::createPipelineLayout(m_device, generation, "agaa.generation.layout");
+
+    vk::LayoutDesc cluster;
+    cluster.pushBindings = {{0, kUbo, kCs}, {1, kUbo, kCs}, {2, kSampled, kCs}, {3, kSampled, kCs}, {4, kSsbo, kCs},
+                            {5, kImage, kCs}};
+    m_clusterLayout = vk::createPipelineLayout(m_device, cluster, "agaa.cluster.layout");
+
+    vk::LayoutDesc lighting;
+    lighting.pushBindings = {{0, kUbo, kCs},   {1, kSsbo, kCs},  {2, kUbo, kCs},   {3, kSampled, kCs},
+                             {4, kSsbo, kCs},  {5, kImage, kCs}, {6, kSsbo, kCs},  {7, kImage, kCs},
+                             {8, kImage, kCs}, {9, kImage, kCs}};
+    if (m_hasEmissive) lighting.pushBindings.push_back({10, kSampled, kCs});
+    m_lightingLayout = vk::createPipelineLayout(m_device, lighting, "agaa.lighting.layout");
+
+    vk::LayoutDesc debug;
+    debug.pushBindings = {{0, kUbo, kCs},     {1, kUbo, kCs},   {2, kSsbo, kCs},  {3, kImage, kCs},
+                          {4, kSampled, kCs}, {5, kImage, kCs}, {6, kImage, kCs}, {7, kImage, kCs}};
+    m_debugLayout = vk::createPipelineLayout(m_device, debug, "agaa.debug.layout");
+
+    vk::LayoutDesc readback;
+    readback.pushBindings = {{0, kUbo, kCs}, {1, kUbo, kCs}, {2, kSampled, kCs}, {3, kSampled, kCs}, {4, kSsbo, kCs}};
+    m_readbackLayout = vk::createPipelineLayout(m_device, readback, "agaa.sampleReadback.layout");
+}
+
+AggregateAA::~AggregateAA() {
+    VkDevice d = m_device.device();
+    vkDeviceWaitIdle(d);
+    for (VkPipeline p : m_visibilityPipelines)
+        if (p) vkDestroyPipeline(d, p, nullptr);
+    for (VkPipeline p : m_generationPipelines)
+        if (p) vkDestroyPipeline(d, p, nullptr);
+    for (VkPipeline p : {m_clusterPipeline, m_lightingPipeline, m_debugPipeline, m_readbackPipeline})
+        if (p) vkDestroyPipeline(d, p, nullptr);
+    vkDestroySampler(d, m_fetchSampler, nullptr);
+    for (vk::PipelineLayout* l : {&m_visibilityLayout, &m_generationLayout, &m_clusterLayout, &m_lightingLayout,
+                                  &m_debugLayout, &m_readbackLayout})
+        vk::destroyPipelineLayout(m_device, *l);
+    vk::destroyBuffer(m_device, m_constantsBuffer);
+}
+
+VkPipeline AggregateAA::visibilityPipeline(bool alphaTested, bool doubleSided) {
+    VkPipeline& p = m_visibilityPipelines[(alphaTested ? 2 : 0) + (doubleSided ? 1 : 0)];
+    if (p) return p;
+    vk::GraphicsPipelineDesc d;
+    d.vertex = kAgaaSceneVert;
+    d.fragment = kAgaaVisibilityFrag;
+    d.layout = m_visibilityLayout.layout;
+    d.specialization.values = {alphaTested ? 1u : 0u};
+    d.colorFormats = {VK_FORMAT_R8G8_UNORM};
+    d.depthFormat = m_depthFormat;
+    d.samples = VK_SAMPLE_COUNT_4_BIT;
+    d.cullMode = doubleSided ? VK_CULL_MODE_NONE : VK_CULL_MODE_BACK_BIT;
+    d.depthCompare = VK_COMPARE_OP_GREATER; // reversed Z
+    p = vk::createGraphicsPipeline(m_device, d,
+                                   std::string("agaa.visibility") + (alphaTested ? ".masked" : ".opaque") +
+                                       (doubleSided ? ".twoSided" : ""));
+    return p;
+}
+
+VkPipeline AggregateAA::generationPipeline(bool doubleSided) {
+    VkPipeline& p = m_generationPipelines[doubleSided ? 1 : 0];
+    if (p) return p;
+    vk::GraphicsPipelineDesc d;
+    d.vertex = kAgaaSceneVert;
+    d.fragment = m_hasEmissive ? std::span<const uint32_t>(kAgaaGenerationEmissiveFrag)
+                               : std::span<const uint32_t>(kAgaaGenerationFrag);
+    d.layout = m_generationLayout.layout;
+    if (m_hasEmissive) d.colorFormats = {VK_FORMAT_B10G11R11_UFLOAT_PACK32};
+    d.depthFormat = m_depthFormat;
+    d.samples = VK_SAMPLE_COUNT_4_BIT;
+    d.cullMode = doubleSided ? VK_CULL_MODE_NONE : VK_CULL_MODE_BACK_BIT;
+    // Algorithm 2 step 1: depth EQUAL without writes; stencil keeps the first fragment per sample
+    // (GREATER against reference 1 passes while the sample's stencil is 0; INCREMENT_AND_CLAMP on pass).
+    d.depthCompare = VK_COMPARE_OP_EQUAL;
+    d.depthWrite = false;
+    d.stencilTest = true;
+    d.stencil = {VK_STENCIL_OP_KEEP, VK_STENCIL_OP_INCREMENT_AND_CLAMP, VK_STENCIL_OP_KEEP, VK_COMPARE_OP_GREATER,
+                 0xFF, 0xFF, 1};
+    p = vk::createGraphicsPipeline(m_device, d, std::string("agaa.generation") + (doubleSided ? ".twoSided" : ""));
+    return p;
+}
+
+bool AggregateAA::isStorage(const std::string& name) const { return storageCategory(name) != "transient"; }
+
+std::string AggregateAA::storageCategory(const std::string& name) const {
+    auto starts = [&](const char* prefix) { return name.rfind(prefix, 0) == 0; };
+    if (starts("agaa.visibility.") || starts("agaa.emissive")) return "per-sample";
+    if (starts("agaa.agBuffer")) return "per-aggregate";
+    if (starts("agaa.metadata") || starts("agaa.aggregateCount")) return "metadata";
+    return "transient";
+}
+
+} // namespace agaa

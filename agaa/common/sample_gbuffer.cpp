@@ -1,0 +1,152 @@
+#include "agaa/common/sample_gbuffer.h"
+
+#include "agaa/common/push_descriptors.h"
+#include "engine/frame/sample_pattern.h"
+#include "engine/vk/check.h"
+#include "shaders/reference/gbuffer_frag.h"
+#include "shaders/reference/gbuffer_vert.h"
+
+#include <stdexcept>
+
+namespace agaa {
+namespace rg = eng::rg;
+namespace vk = eng::vk;
+
+SampleGBufferPass::SampleGBufferPass(vk::Device& device, const eng::frame::GpuScene& scene, uint32_t samples,
+                                     std::string name)
+    : m_device(device), m_samples(samples), m_name(std::move(name)) {
+    if (!eng::frame::isSupportedSampleCount(samples))
+        throw std::invalid_argument("--samples " + std::to_string(samples) + " is not supported (allowed: " +
+                                    eng::frame::supportedSampleCounts() + ")");
+    if (samples > 1 && !device.caps().supportsSamples(4))
+        throw vk::MissingCapability(device.caps().deviceName + " lacks 4x MSAA colour/depth (needed for --samples " +
+                                    std::to_string(samples) + ")");
+    vk::LayoutDesc layout;
+    layout.pushBindings = {{0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT},
+                           {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_FRAGMENT_BIT}};
+    layout.extraSets = {scene.textureSetLayout()};
+    layout.pushConstantBytes = 4; // material index
+    m_layout = vk::createPipelineLayout(device, layout, m_name + ".gbuffer.layout");
+}
+
+SampleGBufferPass::~SampleGBufferPass() {
+    VkDevice d = m_device.device();
+    vkDeviceWaitIdle(d);
+    for (VkPipeline p : m_pipelines)
+        if (p) vkDestroyPipeline(d, p, nullptr);
+    vk::destroyPipelineLayout(m_device, m_layout);
+}
+
+VkPipeline SampleGBufferPass::pipeline(bool alphaTested, bool doubleSided) {
+    VkPipeline& p = m_pipelines[(alphaTested ? 2 : 0) + (doubleSided ? 1 : 0)];
+    if (p) return p;
+    vk::GraphicsPipelineDesc d;
+    d.vertex = kReferenceGbufferVert;
+    d.fragment = kReferenceGbufferFrag;
+    d.layout = m_layout.layout;
+    d.specialization.values = {alphaTested ? 1u : 0u};
+    d.colorFormats = {kNormalFormat, kAlbedoMetalFormat, kEmissiveRoughnessFormat};
+    d.depthFormat = kDepthFormat;
+    d.samples = m_samples > 1 ? VK_SAMPLE_COUNT_4_BIT : VK_SAMPLE_COUNT_1_BIT;
+    d.cullMode = doubleSided ? VK_CULL_MODE_NONE : VK_CULL_MODE_BACK_BIT;
+    d.depthCompare = VK_COMPARE_OP_GREATER; // reversed Z: nearer is larger
+    std::string name = m_name + ".gbuffer" + (alphaTested ? ".masked" : ".opaque") + (doubleSided ? ".twoSided" : "");
+    p = vk::createGraphicsPipeline(m_device, d, name);
+    return p;
+}
+
+bool SampleGBufferPass::isStorage(const std::string& resourceName) const {
+    return resourceName.rfind(m_name + ".gbuffer.", 0) == 0;
+}
+
+SampleGBuffer SampleGBufferPass::add(rg::Graph& graph, const FrameInputs& in) {
+    const eng::frame::SamplePattern pattern = eng::frame::makeSamplePattern(m_samples);
+    const VkSampleCountFlagBits hwSamples = pattern.samplesPerLayer == 4 ? VK_SAMPLE_COUNT_4_BIT : VK_SAMPLE_COUNT_1_BIT;
+    auto desc = [&](VkFormat f) { return rg::TextureDesc{f, in.width, in.height, pattern.layers, hwSamples}; };
+
+    // Variants each draw needs, chosen up front so pipeline creation never happens mid-recording.
+    const eng::frame::GpuScene* gpuScene = in.scene;
+    const eng::scene::Scene& scene = gpuScene->scene();
+    std::vector<VkPipeline> drawPipelines;
+    for (const eng::scene::Draw& draw : scene.draws) {
+        const eng::scene::Material& m = scene.materials.at(draw.material);
+        drawPipelines.push_back(pipeline(m.alphaMode == eng::scene::AlphaMode::Mask, m.doubleSided));
+    }
+    rg::Buffer materials = graph.importBuffer(m_name + ".materials",
+                                              {gpuScene->materials().buffer, gpuScene->materials().size},
+                                              std::nullopt, std::nullopt);
+    struct Data {
+        rg::Buffer frame, materials;
+        SampleGBuffer g;
+    };
+    const Data& out = graph.addGraphics<Data>(
+        m_name + ".gbuffer",
+        [&](rg::Builder& b, Data& d) {
+            d.frame = b.read(in.frameConstants, rg::Use::UniformRead);
+            d.materials = b.read(materials, rg::Use::StorageReadFragment);
+            d.g.depth = b.write(b.create(m_name + ".gbuffer.depth", desc(kDepthFormat)), rg::Use::DepthStencilWrite);
+            d.g.normal = b.write(b.create(m_name + ".gbuffer.normal", desc(kNormalFormat)), rg::Use::ColorAttachment);
+            d.g.albedoMetal =
+                b.write(b.create(m_name + ".gbuffer.albedoMetal", desc(kAlbedoMetalFormat)), rg::Use::ColorAttachment);
+            d.g.emissiveRoughness = b.write(
+                b.create(m_name + ".gbuffer.emissiveRoughness", desc(kEmissiveRoughnessFormat)), rg::Use::ColorAttachment);
+        },
+        [this, gpuScene, drawPipelines, layers = pattern.layers, w = in.width, h = in.height](const rg::Context& ctx,
+                                                                                          const Data& d) {
+            VkCommandBuffer cmd = ctx.cmd();
+            VkRenderingAttachmentInfo colors[3];
+            const rg::Texture targets[3] = {d.g.normal, d.g.albedoMetal, d.g.emissiveRoughness};
+            for (int i = 0; i < 3; ++i) {
+                colors[i] = {VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
+                colors[i].imageView = ctx.texture(targets[i]).view;
+                colors[i].imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
+                colors[i].loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
+                colors[i].storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+            }
+            VkRenderingAttachmentInfo depth{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
+            depth.imageView = ctx.texture(d.g.depth).view;
+            depth.imageLayout = VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL;
+            depth.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
+            depth.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+            depth.clearValue.depthStencil = {0.0f, 0}; // reversed Z: 0 is the far plane (sky)
+            VkRenderingInfo info{VK_STRUCTURE_TYPE_RENDERING_INFO};
+            info.renderArea = {{0, 0}, {w, h}};
+            info.layerCount = layers;
+            info.colorAttachmentCount = 3;
+            info.pColorAttachments = colors;
+            info.pDepthAttachment = &depth;
+            vkCmdBeginRendering(cmd, &info);
+            VkViewport viewport{0.0f, 0.0f, float(w), float(h), 0.0f, 1.0f};
+            VkRect2D scissor{{0, 0}, {w, h}};
+            vkCmdSetViewport(cmd, 0, 1, &viewport);
+            vkCmdSetScissor(cmd, 0, 1, &scissor);
+            VkDeviceSize offset = 0;
+            VkBuffer vb = gpuScene->vertexBuffer();
+            vkCmdBindVertexBuffers(cmd, 0, 1, &vb, &offset);
+            vkCmdBindIndexBuffer(cmd, gpuScene->indexBuffer(), 0, VK_INDEX_TYPE_UINT32);
+            VkDescriptorBufferInfo frameInfo = bufferInfo(ctx.buffer(d.frame));
+            VkDescriptorBufferInfo materialInfo = bufferInfo(ctx.buffer(d.materials));
+            VkWriteDescriptorSet writes[] = {bufferWrite(0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, &frameInfo),
+                                             bufferWrite(1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, &materialInfo)};
+            m_device.pushDescriptorSet()(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, m_layout.layout, 0, 2, writes);
+            VkDescriptorSet textures = gpuScene->textureSet();
+            vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, m_layout.layout, 1, 1, &textures, 0, nullptr);
+            VkPipeline bound = VK_NULL_HANDLE;
+            const auto& draws = gpuScene->scene().draws;
+            for (size_t i = 0; i < draws.size(); ++i) {
+                if (draws[i].indexCount == 0) continue;
+                if (drawPipelines[i] != bound) {
+                    bound = drawPipelines[i];
+                    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, bound);
+                }
+                uint32_t material = draws[i].material;
+                vkCmdPushConstants(cmd, m_layout.layout, VK_SHADER_STAGE_ALL, 0, 4, &material);
+                // One instance per emulation layer (common/scene_vertex.glsl).
+                vkCmdDrawIndexed(cmd, draws[i].indexCount, layers, draws[i].firstIndex, 0, 0);
+            }
+            vkCmdEndRendering(cmd);
+        });
+    return out.g;
+}
+
+} // namespace agaa

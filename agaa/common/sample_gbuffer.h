@@ -1,0 +1,54 @@
+#pragma once
+// The per-sample G-buffer raster pass (DESIGN section 5): 16 bytes per sample plus
+// 4 bytes depth, at n = 1, 4 natively and 8, 16, 32 by layered 4x emulation, drawn
+// with the reference's shaders (reference/gbuffer.vert, .frag). For the methods that
+// light a per-sample G-buffer differently from the reference (Simple/Complex), so
+// that they see exactly the reference's samples. It mirrors the G-buffer pass of
+// agaa/reference/reference.cpp, which can move onto this class.
+
+#include "agaa/common/technique.h"
+#include "engine/vk/device.h"
+#include "engine/vk/pipeline.h"
+
+#include <array>
+#include <string>
+
+namespace agaa {
+
+struct SampleGBuffer {
+    eng::rg::Texture depth; // D32, reversed Z, 0 = sky
+    eng::rg::Texture normal; // RG16_SNORM octahedral, view space
+    eng::rg::Texture albedoMetal; // RGBA8_SRGB
+    eng::rg::Texture emissiveRoughness; // RGBA16F
+};
+
+class SampleGBufferPass {
+public:
+    static constexpr VkFormat kDepthFormat = VK_FORMAT_D32_SFLOAT;
+    static constexpr VkFormat kNormalFormat = VK_FORMAT_R16G16_SNORM;
+    static constexpr VkFormat kAlbedoMetalFormat = VK_FORMAT_R8G8B8A8_SRGB;
+    static constexpr VkFormat kEmissiveRoughnessFormat = VK_FORMAT_R16G16B16A16_SFLOAT;
+
+    // Throws std::invalid_argument for an unsupported n, MissingCapability without 4x MSAA.
+    // `name` prefixes the pass, its pipelines and its resources ("<name>.gbuffer.*").
+    SampleGBufferPass(eng::vk::Device& device, const eng::frame::GpuScene& scene, uint32_t samples, std::string name);
+    ~SampleGBufferPass();
+    SampleGBufferPass(const SampleGBufferPass&) = delete;
+    SampleGBufferPass& operator=(const SampleGBufferPass&) = delete;
+
+    // Adds the "<name>.gbuffer" graphics pass.
+    SampleGBuffer add(eng::rg::Graph& graph, const FrameInputs& inputs);
+    bool isStorage(const std::string& resourceName) const;
+    uint32_t samples() const { return m_samples; }
+
+private:
+    VkPipeline pipeline(bool alphaTested, bool doubleSided); // [alpha-tested][double-sided], made on first use
+
+    eng::vk::Device& m_device;
+    uint32_t m_samples;
+    std::string m_name;
+    eng::vk::PipelineLayout m_layout;
+    std::array<VkPipeline, 4> m_pipelines{};
+};
+
+} // namespace agaa

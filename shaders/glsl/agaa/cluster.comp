@@ -1,0 +1,54 @@
+#version 460
+#extension GL_GOOGLE_include_directive : require
+// AGAA step 2: aggregate definition, one pixel per invocation (paper section 3.3). Reads the
+// prepass's per-sample depth and face normal, runs Algorithm 1 (shared/clustering.h, the same
+// source as the CPU reference) and writes the bit-packed metadata and the aggregate count.
+#include "shared/agaa.h"
+#include "shared/frame.h"
+#include "shared/clustering.h"
+
+layout(local_size_x = 8, local_size_y = 8) in;
+
+layout(set = 0, binding = 0) uniform Frame { FrameConstants frame; };
+layout(set = 0, binding = 1) uniform Agaa { AgaaConstants agaa; };
+layout(set = 0, binding = 2) uniform sampler2DMSArray visibilityDepth;
+layout(set = 0, binding = 3) uniform sampler2DMSArray visibilityNormal;
+layout(set = 0, binding = 4, std430) writeonly buffer Metadata { uint metadata[]; };
+layout(set = 0, binding = 5, r8ui) uniform writeonly uimage2D aggregateCount;
+
+void main() {
+    uvec2 pixel = gl_GlobalInvocationID.xy;
+    uvec2 size = uvec2(frame.extent.xy);
+    if (any(greaterThanEqual(pixel, size))) return;
+    uint n = agaa.shape.w;
+    uint c = agaa.shape.x;
+    float px[kMaxSamples], py[kMaxSamples], pz[kMaxSamples];
+    float nx[kMaxSamples], ny[kMaxSamples], nz[kMaxSamples];
+    bool valid[kMaxSamples];
+    float vx, vy, vz;
+    pixelCentreToCamera(pixel.x, pixel.y, agaa.ndcParams.x, agaa.ndcParams.y, agaa.ndcParams.z, agaa.ndcParams.w,
+                        vx, vy, vz);
+    for (uint s = 0u; s < kMaxSamples; ++s) {
+        valid[s] = false;
+        px[s] = 0.0; py[s] = 0.0; pz[s] = 0.0; nx[s] = 0.0; ny[s] = 0.0; nz[s] = 0.0;
+        if (s >= n) continue;
+        ivec3 at = ivec3(pixel, s / 4u);
+        float d = texelFetch(visibilityDepth, at, int(s % 4u)).r;
+        valid[s] = d > 0.0; // reversed Z: cleared depth 0 is the far plane, i.e. sky
+        if (!valid[s]) continue;
+        vec2 e = texelFetch(visibilityNormal, at, int(s % 4u)).rg;
+        uvec2 q = uvec2(round(e * 255.0)); // UNORM8 -> the stored byte, exactly
+        sampleScaledPosition(pixel.x, pixel.y, frame.samplePositions[s].x, frame.samplePositions[s].y, d,
+                             agaa.ndcParams.x, agaa.ndcParams.y, agaa.ndcParams.z, agaa.ndcParams.w,
+                             frame.depthParams.x, agaa.clustering.z, agaa.clustering.w, agaa.clustering.x,
+                             px[s], py[s], pz[s]);
+        decodeFaceNormal(agaa.cosSinTheta[q.x].x, agaa.cosSinTheta[q.x].y, agaa.cosSinPhi[q.y].x,
+                         agaa.cosSinPhi[q.y].y, vx, vy, vz, nx[s], ny[s], nz[s]);
+    }
+    uint ids[kMaxSamples];
+    uint count = clusterSamples(n, c, agaa.clustering.y, px, py, pz, nx, ny, nz, valid, ids);
+    uint words = agaa.shape.z;
+    uint base = (pixel.y * size.x + pixel.x) * words;
+    for (uint w = 0u; w < words; ++w) metadata[base + w] = packMetadataWord(w, n, c, ids);
+    imageStore(aggregateCount, ivec2(pixel), uvec4(count));
+}

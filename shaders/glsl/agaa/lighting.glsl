@@ -1,0 +1,161 @@
+// AGAA step 4: tiled-deferred lighting that aggregates at the top of each tile (paper
+// section 3.5, the UE4 variant of seed 004). One workgroup per 16x16 tile:
+//   1. each invocation turns its pixel's accumulations into normalised aggregates (divide by
+//      the sample count; filtered roughness from the Toksvig length) and rebuilds each
+//      aggregate's depth mean and variance from the per-sample depths its metadata assigns it;
+//      they stay in registers: an invocation only ever shades its own pixel's aggregates, and
+//      c = 4 aggregates x 256 pixels would not fit lavapipe's 32 KB of shared memory;
+//   2. tile depth bounds and light culling in shared memory (common/tile_culling.glsl);
+//   3. each aggregate lit once per light with the reference's BRDF (common/brdf.glsl);
+//   4. resolve (DESIGN section 6): per sample, its aggregate's radiance plus the sample's own
+//      emissive, tone-mapped and weighted 1/n; uncovered samples get the sky.
+#extension GL_GOOGLE_include_directive : require
+#include "shared/ag_buffer.h"
+#include "shared/agaa.h"
+#include "shared/clustering.h"
+#include "shared/frame.h"
+
+layout(local_size_x = 16, local_size_y = 16) in;
+
+layout(set = 0, binding = 0) uniform Frame { FrameConstants frame; };
+layout(set = 0, binding = 1, std430) readonly buffer Lights { GpuLight lights[]; };
+layout(set = 0, binding = 2) uniform Agaa { AgaaConstants agaa; };
+layout(set = 0, binding = 3) uniform sampler2DMSArray visibilityDepth;
+layout(set = 0, binding = 4, std430) readonly buffer Metadata { uint metadata[]; };
+layout(set = 0, binding = 5, r8ui) uniform readonly uimage2D aggregateCount;
+layout(set = 0, binding = 6, std430) readonly buffer AgBuffer { uint agBuffer[]; };
+layout(set = 0, binding = 7, rgba32f) uniform writeonly image2D outHdr;
+layout(set = 0, binding = 8, rgba32f) uniform writeonly image2D outDisplay;
+layout(set = 0, binding = 9, r32ui) uniform writeonly uimage2D outShadingEvents;
+#if AGAA_EMISSIVE
+layout(set = 0, binding = 10) uniform sampler2DMSArray emissiveSamples;
+#endif
+
+#include "common/brdf.glsl"
+#include "common/depth.glsl"
+#include "common/lights.glsl"
+#include "common/tile_culling.glsl"
+#include "common/tonemap.glsl"
+
+uint sampleAggregate(uint s, uint pixelIndex) {
+    uint words = agaa.shape.z;
+    if (words == 0u) return 0u;
+    uint c = agaa.shape.x;
+    return unpackMetadata(metadata[pixelIndex * words + (s * metadataBits(c)) / 32u], s, c);
+}
+
+void main() {
+    ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
+    ivec2 size = ivec2(frame.extent.xy);
+    bool inside = all(lessThan(pixel, size));
+    uint n = agaa.shape.w;
+    uint c = agaa.shape.x;
+    uint pixelIndex = inside ? uint(pixel.y * size.x + pixel.x) : 0u;
+
+    // ---- 1. aggregate at the top of the tile -------------------------------------------
+    uint count = inside ? imageLoad(aggregateCount, pixel).r : 0u;
+    float depthSum[kMaxAggregates] = float[](0.0, 0.0, 0.0, 0.0);
+    float depthSquares[kMaxAggregates] = float[](0.0, 0.0, 0.0, 0.0);
+    vec3 positionSum[kMaxAggregates] = vec3[](vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0));
+    uint samplesIn[kMaxAggregates] = uint[](0u, 0u, 0u, 0u);
+    float tmin = 1e30, tmax = -1e30;
+    if (inside) {
+        for (uint s = 0u; s < n; ++s) {
+            float d = texelFetch(visibilityDepth, ivec3(pixel, s / 4u), int(s % 4u)).r;
+            if (isSky(d)) continue;
+            uint a = sampleAggregate(s, pixelIndex);
+            vec3 P = viewPositionFromDepth(vec2(pixel) + frame.samplePositions[s].xy, d, frame.extent,
+                                           frame.depthParams, frame.projParams);
+            float t = -P.z;
+            depthSum[a] += t;
+            depthSquares[a] += t * t;
+            positionSum[a] += P;
+            samplesIn[a] += 1u;
+            tmin = min(tmin, t);
+            tmax = max(tmax, t);
+        }
+    }
+    SurfaceInputs surfaces[kMaxAggregates];
+    vec3 positions[kMaxAggregates];
+    float depthVariance[kMaxAggregates] = float[](0.0, 0.0, 0.0, 0.0);
+    bool present[kMaxAggregates] = bool[](false, false, false, false);
+    for (uint a = 0u; a < c; ++a) {
+        uint base = (pixelIndex * c + a) * kAggregateWords;
+        uint w0 = inside ? agBuffer[base] : 0u;
+        uint k = w0 >> kCountShift; // samples the generation pass accumulated
+        // An aggregate with no accumulated sample (no fragment passed EQUAL for it) has nothing to
+        // normalise: it is not lit, and its samples resolve to black rather than to a division by 0.
+        present[a] = a < count && k > 0u && samplesIn[a] > 0u;
+        if (!present[a]) continue;
+        vec3 toksvig = vec3(meanSigned(w0 & kNormalFieldMask, k, kNormalScale),
+                            meanSigned(agBuffer[base + 1u], k, kNormalScale),
+                            meanSigned(agBuffer[base + 2u], k, kNormalScale));
+        uint w3 = agBuffer[base + 3u], w4 = agBuffer[base + 4u];
+        float len = length(toksvig);
+        float fs = float(samplesIn[a]);
+        float meanDepth = depthSum[a] / fs;
+        // Position: the mean of the samples' view positions, or the UE4 shortcut (seed 004): the
+        // mean depth on the pixel centre's ray (measured against each other in the README).
+        vec3 P = agaa.options.y == 0u ? positionSum[a] / fs
+                                      : viewPositionAtDistance(vec2(pixel) + 0.5, meanDepth, frame.extent,
+                                                               frame.projParams);
+        positions[a] = P;
+        vec3 V = normalize(-P); // |P| >= znear > 0
+        // |N| -> 0 when opposing normals cancel: no mean direction; shade facing the viewer
+        // (the filtered roughness is then 1, so the direction barely matters).
+        surfaces[a].normal = len > kMinNormalLength ? toksvig / len : V;
+        surfaces[a].roughness = sqrt(filteredAlpha(len, agaa.toksvig.x)); // the BRDF squares it back
+        surfaces[a].albedo = vec3(meanUnit(w3 & 0xFFFFu, k, kUnormScale), meanUnit(w3 >> 16u, k, kUnormScale),
+                                  meanUnit(w4 & 0xFFFFu, k, kUnormScale));
+        surfaces[a].metallic = meanUnit(w4 >> 16u, k, kUnormScale);
+        // Depth variance (E[t^2] - E[t]^2, clamped: cancellation can make it slightly negative):
+        // the aggregate's extent along the view ray, the footprint shadow filtering samples in.
+        depthVariance[a] = max(depthSquares[a] / fs - meanDepth * meanDepth, 0.0);
+    }
+
+    // ---- 2. tile depth bounds and light culling --------------------------------------
+    tileBoundsBegin();
+    tileBoundsAdd(tmin, tmax);
+    tileCullLights();
+    barrier();
+    if (!inside) return;
+
+    // ---- 3. light each aggregate once per light ----------------------------------------
+    float exposure = frame.depthParams.z;
+    vec3 radiance[kMaxAggregates] = vec3[](vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0));
+    uint events = 0u;
+    for (uint a = 0u; a < c; ++a) {
+        if (!present[a]) continue;
+        events += 1u;
+        vec3 P = positions[a];
+        vec3 V = normalize(-P);
+        for (uint i = nextTileLight(0u); i < kMaxLights; i = nextTileLight(i + 1u)) {
+            vec3 L, irradiance;
+            if (lightIncidence(lights[i], P, L, irradiance)) radiance[a] += evaluateBrdf(surfaces[a], V, L, irradiance);
+        }
+    }
+
+    // ---- 4. resolve: tone-map per sample, weight by the sample fraction -------------------
+    float weight = 1.0 / float(n);
+    vec3 sky = frame.skyRadiance.rgb * exposure;
+    vec3 display = vec3(0.0), hdr = vec3(0.0);
+    for (uint s = 0u; s < n; ++s) {
+        float d = texelFetch(visibilityDepth, ivec3(pixel, s / 4u), int(s % 4u)).r;
+        if (isSky(d)) {
+            display += weight * toneMapAces(sky);
+            hdr += weight * sky;
+            continue;
+        }
+        uint a = sampleAggregate(s, pixelIndex);
+        vec3 L = present[a] ? radiance[a] : vec3(0.0);
+#if AGAA_EMISSIVE
+        L += texelFetch(emissiveSamples, ivec3(pixel, s / 4u), int(s % 4u)).rgb;
+#endif
+        L = min(L * exposure, vec3(kMaxRadiance));
+        display += weight * toneMapAces(L);
+        hdr += weight * L;
+    }
+    imageStore(outHdr, pixel, vec4(hdr, 1.0));
+    imageStore(outDisplay, pixel, vec4(display, 1.0));
+    imageStore(outShadingEvents, pixel, uvec4(events));
+}

@@ -1,0 +1,38 @@
+#version 460
+#extension GL_GOOGLE_include_directive : require
+// AGAA step 1, the dense visibility prepass (paper section 3.2): depth (fixed-function) and
+// the primitive's face normal as two 8-bit spherical angles (RG8) per sample. Opaque materials
+// use the variant that samples nothing; masked ones sample base-colour alpha and discard.
+#include "shared/agaa.h"
+#include "shared/frame.h"
+
+layout(constant_id = 0) const uint kAlphaTested = 0u;
+
+layout(set = 0, binding = 0) uniform Frame { FrameConstants frame; };
+layout(set = 0, binding = 1, std430) readonly buffer Materials { GpuMaterial materials[]; };
+layout(set = 0, binding = 2) uniform Agaa { AgaaConstants agaa; };
+layout(set = 1, binding = 0) uniform sampler2D textures[kMaxSceneTextures];
+layout(push_constant) uniform Push { uint material; } pc;
+
+#include "common/face_normal.glsl"
+#include "common/hemisphere_normal.glsl"
+#include "common/material.glsl"
+
+layout(location = 0) in vec3 inNormal;
+layout(location = 1) in vec4 inTangent;
+layout(location = 2) in vec2 inUv;
+layout(location = 3) flat in uint inLayer;
+layout(location = 4) in vec3 inViewPosition;
+
+layout(location = 0) out vec2 outNormal;
+
+void main() {
+    // Derivatives first: they must be taken in uniform control flow, before any discard.
+    vec3 V = pixelToCamera(uvec2(gl_FragCoord.xy), agaa.ndcParams);
+    vec3 N = viewFaceNormal(inViewPosition, V);
+    if (kAlphaTested != 0u) {
+        GpuMaterial m = materials[pc.material];
+        if (materialAlpha(m, inUv) < m.emissive.w) discard;
+    }
+    outNormal = vec2(encodeHemisphereNormal(N, V)) / 255.0;
+}

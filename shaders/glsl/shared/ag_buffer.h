@@ -1,0 +1,49 @@
+#ifndef AGAA_SHARED_AG_BUFFER_H
+#define AGAA_SHARED_AG_BUFFER_H
+// The AG-buffer's fixed-point encoding (layout in shared/agaa.h), shared by the generation
+// kernel, the lighting pass and their CPU twins (agaa/aggregate/ag_buffer.cpp).
+#include "shared/agaa.h"
+
+SHARED_BEGIN
+
+// round(v * scale) for v clamped to [0, 1]; NaN maps to 0 (the comparisons are false).
+inline_fn uint quantizeUnit(float v, uint scale) {
+    float c = v > 0.0f ? (v < 1.0f ? v : 1.0f) : 0.0f;
+    return uint(floor(c * float(scale) + 0.5f));
+}
+
+// Normal components in [-1, 1] are stored offset-binary: (x + 1) / 2.
+inline_fn uint quantizeSigned(float x, uint scale) { return quantizeUnit(x * 0.5f + 0.5f, scale); }
+
+// Mean of k samples' offset-binary values back to [-1, 1]. k >= 1 (callers skip empty aggregates).
+inline_fn float meanSigned(uint sum, uint k, uint scale) {
+    return (float(sum) / (float(k) * float(scale))) * 2.0f - 1.0f;
+}
+
+inline_fn float meanUnit(uint sum, uint k, uint scale) { return float(sum) / (float(k) * float(scale)); }
+
+// Toksvig length that encodes GGX alpha as normal variance ("roughness injected as extra
+// variance", DESIGN section 4). With s = 2/alpha^2 - 2 the Blinn-Phong exponent and smax the
+// exponent of alpha_min, the length L solves f(L) smax = s for the Toksvig factor
+// f(L) = L / (L + smax (1 - L)):  L = s smax / (smax - s + s smax).
+// s is clamped to [0, smax], so the denominator is >= smax > 0.
+inline_fn float toksvigLength(float alpha, float smax, float alphaMin) {
+    float a = alpha > alphaMin ? alpha : alphaMin;
+    float s = 2.0f / (a * a) - 2.0f;
+    s = s > 0.0f ? (s < smax ? s : smax) : 0.0f;
+    return (s * smax) / (smax - s + s * smax);
+}
+
+// Filtered GGX alpha from a Toksvig vector's length (paper section 3.5.2, steps 2-4):
+// f = |N| / (|N| + s (1 - |N|)), s' = f s, alpha' = sqrt(2 / (s' + 2)), with s = smax since the
+// material roughness is already inside |N|. |N| is clamped to [0, 1] (quantisation can exceed 1);
+// the denominator is then >= min(1, smax) > 0, and s' + 2 >= 2.
+inline_fn float filteredAlpha(float toksvigLen, float smax) {
+    float len = toksvigLen > 0.0f ? (toksvigLen < 1.0f ? toksvigLen : 1.0f) : 0.0f;
+    float f = len / (len + smax * (1.0f - len));
+    float s = f * smax;
+    return sqrt(2.0f / (s + 2.0f));
+}
+
+SHARED_END
+#endif

@@ -1,0 +1,228 @@
+#ifndef AGAA_SHARED_CLUSTERING_H
+#define AGAA_SHARED_CLUSTERING_H
+// AGAA step 2, aggregate definition (paper section 3.3, Algorithm 1, Equation 1), written
+// once for both the GPU kernel (shaders/glsl/agaa/cluster.comp) and its CPU reference
+// (agaa/aggregate/clustering.cpp). The two must produce identical metadata words, so:
+//   - only scalar float operations whose IEEE results are exact-rounded (+ - * / sqrt, compares);
+//   - every float local is PRECISE (GLSL `precise`: no contraction into fused multiply-add);
+//     the C++ side compiles with -ffp-contract=off;
+//   - sums are accumulated in increasing sample order, and ties are broken by the lowest index.
+#include "shared/agaa.h"
+#include "shared/frame.h"
+
+#ifdef __cplusplus
+#define PRECISE
+#define OUT(T) T&
+#define OUT_ARRAY(T) T
+#define IN_ARRAY(T) const T
+#else
+#define PRECISE precise
+#define OUT(T) out T
+#define OUT_ARRAY(T) out T
+#define IN_ARRAY(T) T
+#endif
+
+SHARED_BEGIN
+
+// b = ceil(log2 c) bits per sample (figure 5); c = 1 needs none.
+inline_fn uint metadataBits(uint c) { return c <= 1u ? 0u : (c <= 2u ? 1u : 2u); }
+// ceil(n b / 32) words per pixel. 32 is a multiple of b, so no sample's bits straddle two words.
+inline_fn uint metadataWords(uint n, uint c) { return (n * metadataBits(c) + 31u) / 32u; }
+
+// Unit direction from the pixel centre's view ray to the camera (the hemisphere's pole).
+inline_fn void pixelCentreToCamera(uint px, uint py, float ndcScaleX, float ndcScaleY, float p00, float p11,
+                                   OUT(float) vx, OUT(float) vy, OUT(float) vz) {
+    PRECISE float nx = (float(px) + 0.5f) * ndcScaleX - 1.0f;
+    PRECISE float ny = (float(py) + 0.5f) * ndcScaleY - 1.0f;
+    PRECISE float x = nx / p00;
+    PRECISE float y = ny / p11;
+    PRECISE float len = sqrt((x * x + y * y) + 1.0f); // >= 1: no guard
+    vx = -x / len;
+    vy = -y / len;
+    vz = 1.0f / len;
+}
+
+// Orthonormal basis around V (Duff et al. 2017); V.z > 0 for any pixel of a perspective view.
+inline_fn void hemisphereBasis(float vx, float vy, float vz, OUT(float) tx, OUT(float) ty, OUT(float) tz,
+                               OUT(float) bx, OUT(float) by, OUT(float) bz) {
+    PRECISE float s = vz >= 0.0f ? 1.0f : -1.0f;
+    PRECISE float a = -1.0f / (s + vz);
+    PRECISE float b = (vx * vy) * a;
+    PRECISE float t0 = 1.0f + ((s * vx) * vx) * a;
+    PRECISE float t1 = s * b;
+    PRECISE float t2 = -s * vx;
+    PRECISE float b1 = s + (vy * vy) * a;
+    tx = t0;
+    ty = t1;
+    tz = t2;
+    bx = b;
+    by = b1;
+    bz = -vy;
+}
+
+// Decodes the two angles through the tables (cos/sin of each level), around V.
+inline_fn void decodeFaceNormal(float cosTheta, float sinTheta, float cosPhi, float sinPhi, float vx, float vy,
+                                float vz, OUT(float) nx, OUT(float) ny, OUT(float) nz) {
+    float tx, ty, tz, bx, by, bz;
+    hemisphereBasis(vx, vy, vz, tx, ty, tz, bx, by, bz);
+    PRECISE float a = sinTheta * cosPhi;
+    PRECISE float b = sinTheta * sinPhi;
+    PRECISE float x = (a * tx + b * bx) + cosTheta * vx;
+    PRECISE float y = (a * ty + b * by) + cosTheta * vy;
+    PRECISE float z = (a * tz + b * bz) + cosTheta * vz;
+    nx = x;
+    ny = y;
+    nz = z;
+}
+
+// View-space position of a sample from its depth (reversed Z, see common/depth.glsl) and its
+// sub-pixel position, divided by the characteristic length k (Equation 1 works in units of k).
+inline_fn void sampleScaledPosition(uint px, uint py, float sx, float sy, float d, float ndcScaleX, float ndcScaleY,
+                                    float p00, float p11, float znear, float nf, float fmn, float invK,
+                                    OUT(float) x, OUT(float) y, OUT(float) z) {
+    PRECISE float t = nf / (d * fmn + znear); // denominator >= znear > 0
+    PRECISE float ndcX = (float(px) + sx) * ndcScaleX - 1.0f;
+    PRECISE float ndcY = (float(py) + sy) * ndcScaleY - 1.0f;
+    PRECISE float vx = (ndcX * t) / p00;
+    PRECISE float vy = (ndcY * t) / p11;
+    PRECISE float rx = vx * invK;
+    PRECISE float ry = vy * invK;
+    PRECISE float rz = -t * invK;
+    x = rx;
+    y = ry;
+    z = rz;
+}
+
+// Equation 1: d(a, b) = |(p_a - p_b)/k|^2 + (1 - n_a . n_b)^2, positions already divided by k.
+inline_fn float aggregateDistance(float ax, float ay, float az, float anx, float any, float anz, float bx, float by,
+                                  float bz, float bnx, float bny, float bnz) {
+    PRECISE float dx = ax - bx;
+    PRECISE float dy = ay - by;
+    PRECISE float dz = az - bz;
+    PRECISE float position = (dx * dx + dy * dy) + dz * dz;
+    PRECISE float cosine = (anx * bnx + any * bny) + anz * bnz;
+    PRECISE float o = 1.0f - cosine;
+    PRECISE float r = position + o * o;
+    return r;
+}
+
+#define AGAA_DIST(a, b) \
+    aggregateDistance(px[a], py[a], pz[a], nx[a], ny[a], nz[a], px[b], py[b], pz[b], nx[b], ny[b], nz[b])
+
+// Algorithm 1. Inputs: n samples (valid = not sky), positions divided by k, unit normals.
+// Output: each valid sample's aggregate id (0 for sky samples) and the number of aggregates.
+//  1(b) mean position and normal of the valid samples;
+//  1(c) seed 0: the sample farthest from the mean;
+//  1(d) seed 1: the sample farthest from seed 0;
+//  1(e) further seeds: the largest sum of distances (Equation 1 is already squared) to the seeds;
+//  a seed is only created from samples farther than `threshold` from every existing seed, so a
+//  flat pixel gets one aggregate and is lit once;
+//  2(a) every valid sample joins its nearest seed.
+// Ties go to the lowest sample index (strict comparisons while scanning upwards) and, in the
+// assignment, to the lowest aggregate id.
+inline_fn uint clusterSamples(uint n, uint c, float threshold, IN_ARRAY(float) px[kMaxSamples],
+                              IN_ARRAY(float) py[kMaxSamples], IN_ARRAY(float) pz[kMaxSamples],
+                              IN_ARRAY(float) nx[kMaxSamples], IN_ARRAY(float) ny[kMaxSamples],
+                              IN_ARRAY(float) nz[kMaxSamples], IN_ARRAY(bool) valid[kMaxSamples],
+                              OUT_ARRAY(uint) ids[kMaxSamples]) {
+    uint count = 0u;
+    PRECISE float mx = 0.0f, my = 0.0f, mz = 0.0f, mnx = 0.0f, mny = 0.0f, mnz = 0.0f;
+    for (uint s = 0u; s < kMaxSamples; ++s) {
+        ids[s] = 0u;
+        if (s >= n || !valid[s]) continue;
+        mx = mx + px[s];
+        my = my + py[s];
+        mz = mz + pz[s];
+        mnx = mnx + nx[s];
+        mny = mny + ny[s];
+        mnz = mnz + nz[s];
+        count = count + 1u;
+    }
+    if (count == 0u) return 0u; // sky-only pixel: no aggregate
+    PRECISE float fc = float(count);
+    mx = mx / fc;
+    my = my / fc;
+    mz = mz / fc;
+    mnx = mnx / fc;
+    mny = mny / fc;
+    mnz = mnz / fc;
+
+    uint seeds[kMaxAggregates];
+    seeds[0] = 0u;
+    PRECISE float best = -1.0f;
+    for (uint s = 0u; s < n; ++s) {
+        if (!valid[s]) continue;
+        PRECISE float dm = aggregateDistance(px[s], py[s], pz[s], nx[s], ny[s], nz[s], mx, my, mz, mnx, mny, mnz);
+        if (dm > best) {
+            best = dm;
+            seeds[0] = s;
+        }
+    }
+    uint seedCount = 1u;
+    for (uint k = 1u; k < c && k < kMaxAggregates; ++k) {
+        int chosen = -1;
+        PRECISE float bestScore = -1.0f;
+        for (uint s = 0u; s < n; ++s) {
+            if (!valid[s]) continue;
+            PRECISE float nearest = 3.0e38f;
+            PRECISE float sum = 0.0f;
+            for (uint j = 0u; j < seedCount; ++j) {
+                PRECISE float dj = AGAA_DIST(s, seeds[j]);
+                if (dj < nearest) nearest = dj;
+                sum = sum + dj;
+            }
+            if (nearest > threshold) {
+                PRECISE float score = k == 1u ? nearest : sum;
+                if (score > bestScore) {
+                    bestScore = score;
+                    chosen = int(s);
+                }
+            }
+        }
+        if (chosen < 0) break; // every sample is within t of a seed: no further aggregate
+        seeds[seedCount] = uint(chosen);
+        seedCount = seedCount + 1u;
+    }
+    for (uint s = 0u; s < n; ++s) {
+        if (!valid[s]) continue;
+        uint id = 0u;
+        PRECISE float nearest = AGAA_DIST(s, seeds[0]);
+        for (uint j = 1u; j < seedCount; ++j) {
+            PRECISE float dj = AGAA_DIST(s, seeds[j]);
+            if (dj < nearest) {
+                nearest = dj;
+                id = j;
+            }
+        }
+        ids[s] = id;
+    }
+    return seedCount;
+}
+
+#undef AGAA_DIST
+
+// Figure 5: sample s's id in bits [s b, s b + b) of the pixel's words; nothing else in those bits.
+inline_fn uint packMetadataWord(uint word, uint n, uint c, IN_ARRAY(uint) ids[kMaxSamples]) {
+    uint b = metadataBits(c);
+    uint bits = 0u;
+    if (b == 0u) return 0u;
+    for (uint s = 0u; s < n; ++s) {
+        uint first = s * b;
+        if (first / 32u == word) bits = bits | (ids[s] << (first % 32u));
+    }
+    return bits;
+}
+
+inline_fn uint unpackMetadata(uint wordValue, uint s, uint c) {
+    uint b = metadataBits(c);
+    if (b == 0u) return 0u;
+    return (wordValue >> ((s * b) % 32u)) & ((1u << b) - 1u);
+}
+
+SHARED_END
+
+#undef PRECISE
+#undef OUT
+#undef OUT_ARRAY
+#undef IN_ARRAY
+#endif
