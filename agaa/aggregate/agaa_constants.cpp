@@ -40,7 +40,7 @@ shared::AgaaConstants makeAgaaConstants(const AggregateSettings& s, const shared
     // Toksvig with roughness injected as variance (agaa/aggregate/README.md): the reference
     // Blinn-Phong exponent of the smoothest representable surface.
     float smax = 2.0f / (kMinGgxAlpha * kMinGgxAlpha) - 2.0f;
-    c.toksvig = {smax, kMinGgxAlpha, 0.0f, 0.0f};
+    c.toksvig = {smax, kMinGgxAlpha, kMaxGgxAlpha, 0.0f};
     c.options = {uint32_t(s.debugView), uint32_t(s.position), hasEmissive ? 1u : 0u, 0u};
     return c;
 }

@@ -25,8 +25,10 @@ struct AggregateSettings {
     AggregatePosition position = AggregatePosition::SampleMean;
 };
 
-// Smallest GGX alpha, as kMinGgxAlpha in shaders/glsl/common/epsilon.glsl.
+// The shared BRDF's GGX alpha range, as kMinGgxAlpha / kMaxGgxAlpha in
+// shaders/glsl/common/epsilon.glsl.
 inline constexpr float kMinGgxAlpha = 1.0e-3f;
+inline constexpr float kMaxGgxAlpha = 0.9f;
 
 // Throws std::invalid_argument naming the setting and its allowed range.
 void validate(const AggregateSettings&);

@@ -210,11 +210,28 @@ FrameTargets AggregateAA::addPasses(rg::Graph& graph, const FrameInputs& in) {
         [](const rg::Context& ctx, const Clear& d) {
             vkCmdFillBuffer(ctx.cmd(), ctx.buffer(d.agBuffer).buffer, 0, VK_WHOLE_SIZE, 0);
         });
+    rg::Buffer records;
+    if (m_recordTarget) {
+        struct ClearRecords {
+            rg::Buffer records;
+        };
+        rg::Buffer imported = graph.importBuffer("agaa.fragmentRecords", {m_recordTarget->buffer, m_recordTarget->size},
+                                                 std::nullopt, std::nullopt);
+        records = graph.addPass<ClearRecords>(
+                           "agaa.clearRecords", rg::PassKind::Transfer,
+                           [&](rg::Builder& b, ClearRecords& d) { d.records = b.write(imported, rg::Use::TransferDst); },
+                           [](const rg::Context& ctx, const ClearRecords& d) {
+                               vkCmdFillBuffer(ctx.cmd(), ctx.buffer(d.records).buffer, 0, 4, 0); // count only
+                           })
+                      .records;
+    }
     struct Generation {
-        rg::Buffer frame, agaa, materials, metadata, agBuffer;
+        rg::Buffer frame, agaa, materials, metadata, agBuffer, records;
         rg::Texture depth, emissive;
     };
     const bool emissive = m_hasEmissive;
+    const bool recording = m_recordTarget != nullptr;
+    const VkPipelineLayout generationLayout = recording ? m_recordLayout.layout : m_generationLayout.layout;
     const Generation& gen = graph.addGraphics<Generation>(
         "agaa.generation",
         [&](rg::Builder& b, Generation& d) {
@@ -227,6 +244,7 @@ FrameTargets AggregateAA::addPasses(rg::Graph& graph, const FrameInputs& in) {
             if (emissive)
                 d.emissive = b.write(b.create("agaa.emissive", desc(VK_FORMAT_B10G11R11_UFLOAT_PACK32)),
                                      rg::Use::ColorAttachment);
+            if (recording) d.records = b.readWrite(records, rg::Use::StorageReadWriteFragment);
         },
         [=, this](const rg::Context& ctx, const Generation& d) {
             VkCommandBuffer cmd = ctx.cmd();
@@ -237,14 +255,15 @@ FrameTargets AggregateAA::addPasses(rg::Graph& graph, const FrameInputs& in) {
                 color = attachment(ctx.texture(d.emissive).view, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
                                    VK_ATTACHMENT_LOAD_OP_CLEAR);
             beginRendering(cmd, in.width, in.height, layers, emissive ? &color : nullptr, depth);
-            vk::PushDescriptors()
-                .uniform(0, ctx.buffer(d.frame).buffer)
+            vk::PushDescriptors pd;
+            pd.uniform(0, ctx.buffer(d.frame).buffer)
                 .storage(1, ctx.buffer(d.materials).buffer)
                 .uniform(2, ctx.buffer(d.agaa).buffer)
                 .storage(3, ctx.buffer(d.metadata).buffer)
-                .storage(4, ctx.buffer(d.agBuffer).buffer)
-                .push(m_device, cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, m_generationLayout.layout);
-            drawScene(cmd, m_generationLayout.layout, generationPipelines);
+                .storage(4, ctx.buffer(d.agBuffer).buffer);
+            if (recording) pd.storage(5, ctx.buffer(d.records).buffer);
+            pd.push(m_device, cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, generationLayout);
+            drawScene(cmd, generationLayout, generationPipelines);
             vkCmdEndRendering(cmd);
         });
     m_resources.agBuffer = gen.agBuffer;

@@ -43,6 +43,12 @@ public:
     const shared::AgaaConstants& constants() const { return m_constants; }
     VkFormat depthFormat() const { return m_depthFormat; }
 
+    // Test support: the generation pass records the fragments of the central 16x16 pixels
+    // (12 words each after an 8-byte header {count, capacity}) into `host`, which must be a
+    // Readback buffer whose second word the caller sets to the record capacity. Set before
+    // the first addPasses() (it selects the generation pipeline variant); nullptr turns it off.
+    void setFragmentRecordTarget(const eng::vk::Buffer* host) { m_recordTarget = host; }
+
     // Test support: copies the clustering kernel's per-sample inputs (uvec2 per sample: depth
     // bits, theta | phi << 8) into `host` (pixels * n * 8 bytes). Call after addPasses().
     void addSampleReadback(eng::rg::Graph& graph, const FrameInputs& inputs, const eng::vk::Buffer& host);
@@ -58,14 +64,15 @@ private:
     VkFormat m_depthFormat = VK_FORMAT_D24_UNORM_S8_UINT;
     shared::AgaaConstants m_constants{};
     eng::vk::Buffer m_constantsBuffer;
-    eng::vk::PipelineLayout m_visibilityLayout, m_generationLayout, m_clusterLayout, m_lightingLayout, m_debugLayout,
+    eng::vk::PipelineLayout m_visibilityLayout, m_generationLayout, m_recordLayout, m_clusterLayout, m_lightingLayout, m_debugLayout,
         m_readbackLayout;
     std::array<VkPipeline, 4> m_visibilityPipelines{};
-    std::array<VkPipeline, 2> m_generationPipelines{};
+    std::array<VkPipeline, 4> m_generationPipelines{}; // [recording][double-sided]
     VkPipeline m_clusterPipeline = VK_NULL_HANDLE, m_lightingPipeline = VK_NULL_HANDLE,
                m_debugPipeline = VK_NULL_HANDLE, m_readbackPipeline = VK_NULL_HANDLE;
     VkSampler m_fetchSampler = VK_NULL_HANDLE;
     AggregateResources m_resources;
+    const eng::vk::Buffer* m_recordTarget = nullptr;
 };
 
 } // namespace agaa

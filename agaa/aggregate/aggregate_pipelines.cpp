@@ -7,6 +7,7 @@
 #include "shaders/agaa/debug_aggregates_comp.h"
 #include "shaders/agaa/generation_emissive_frag.h"
 #include "shaders/agaa/generation_frag.h"
+#include "shaders/agaa/generation_record_frag.h"
 #include "shaders/agaa/lighting_comp.h"
 #include "shaders/agaa/lighting_emissive_comp.h"
 #include "shaders/agaa/sample_readback_comp.h"
@@ -72,6 +73,8 @@ void AggregateAA::createLayouts(const eng::frame::GpuScene& scene) {
     generation.extraSets = {scene.textureSetLayout()};
     generation.pushConstantBytes = 4;
     m_generationLayout = vk::createPipelineLayout(m_device, generation, "agaa.generation.layout");
+    generation.pushBindings.push_back({5, kSsbo, kFs});
+    m_recordLayout = vk::createPipelineLayout(m_device, generation, "agaa.generation.record.layout");
 
     vk::LayoutDesc cluster;
     cluster.pushBindings = {{0, kUbo, kCs}, {1, kUbo, kCs}, {2, kSampled, kCs}, {3, kSampled, kCs}, {4, kSsbo, kCs},
@@ -105,7 +108,7 @@ AggregateAA::~AggregateAA() {
     for (VkPipeline p : {m_clusterPipeline, m_lightingPipeline, m_debugPipeline, m_readbackPipeline})
         if (p) vkDestroyPipeline(d, p, nullptr);
     vkDestroySampler(d, m_fetchSampler, nullptr);
-    for (vk::PipelineLayout* l : {&m_visibilityLayout, &m_generationLayout, &m_clusterLayout, &m_lightingLayout,
+    for (vk::PipelineLayout* l : {&m_visibilityLayout, &m_generationLayout, &m_recordLayout, &m_clusterLayout, &m_lightingLayout,
                                   &m_debugLayout, &m_readbackLayout})
         vk::destroyPipelineLayout(m_device, *l);
     vk::destroyBuffer(m_device, m_constantsBuffer);
@@ -131,13 +134,17 @@ VkPipeline AggregateAA::visibilityPipeline(bool alphaTested, bool doubleSided) {
 }
 
 VkPipeline AggregateAA::generationPipeline(bool doubleSided) {
-    VkPipeline& p = m_generationPipelines[doubleSided ? 1 : 0];
+    const bool recording = m_recordTarget != nullptr;
+    VkPipeline& p = m_generationPipelines[(recording ? 2 : 0) + (doubleSided ? 1 : 0)];
     if (p) return p;
+    if (recording && m_hasEmissive)
+        throw std::logic_error("agaa: fragment recording supports scenes without emissive materials only");
     vk::GraphicsPipelineDesc d;
     d.vertex = kAgaaSceneVert;
-    d.fragment = m_hasEmissive ? std::span<const uint32_t>(kAgaaGenerationEmissiveFrag)
-                               : std::span<const uint32_t>(kAgaaGenerationFrag);
-    d.layout = m_generationLayout.layout;
+    d.fragment = recording     ? std::span<const uint32_t>(kAgaaGenerationRecordFrag)
+                 : m_hasEmissive ? std::span<const uint32_t>(kAgaaGenerationEmissiveFrag)
+                                 : std::span<const uint32_t>(kAgaaGenerationFrag);
+    d.layout = recording ? m_recordLayout.layout : m_generationLayout.layout;
     if (m_hasEmissive) d.colorFormats = {VK_FORMAT_B10G11R11_UFLOAT_PACK32};
     d.depthFormat = m_depthFormat;
     d.samples = VK_SAMPLE_COUNT_4_BIT;
@@ -149,7 +156,9 @@ VkPipeline AggregateAA::generationPipeline(bool doubleSided) {
     d.stencilTest = true;
     d.stencil = {VK_STENCIL_OP_KEEP, VK_STENCIL_OP_INCREMENT_AND_CLAMP, VK_STENCIL_OP_KEEP, VK_COMPARE_OP_GREATER,
                  0xFF, 0xFF, 1};
-    p = vk::createGraphicsPipeline(m_device, d, std::string("agaa.generation") + (doubleSided ? ".twoSided" : ""));
+    p = vk::createGraphicsPipeline(m_device, d,
+                                   std::string("agaa.generation") + (recording ? ".record" : "") +
+                                       (doubleSided ? ".twoSided" : ""));
     return p;
 }
 

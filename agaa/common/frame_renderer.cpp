@@ -86,6 +86,7 @@ RenderResult FrameRenderer::render(const RenderRequest& request) {
                                                std::nullopt, std::nullopt);
     inputs.lights = graph.importBuffer("frame.lights", {m_lights.buffer, m_lights.size}, std::nullopt, std::nullopt);
     FrameTargets targets = tech.addPasses(graph, inputs);
+    if (request.extraPasses) request.extraPasses(graph, tech, inputs);
     eng::frame::addReadbackPass(graph, targets.hdr, hdrHost, "readback.hdr");
     eng::frame::addReadbackPass(graph, targets.display, displayHost, "readback.display");
     eng::frame::addReadbackPass(graph, targets.shadingEvents, eventsHost, "readback.events");
@@ -111,12 +112,17 @@ RenderResult FrameRenderer::render(const RenderRequest& request) {
     result.graphJson = graph.dumpJson();
 
     uint64_t storage = 0;
-    for (const auto& [name, bytes] : m_runner.pool().bytesByName())
+    const double pixels = double(w) * h;
+    for (const auto& [name, bytes] : m_runner.pool().bytesByName()) {
         if (tech.isStorage(name)) {
             result.storageBytes[name] = bytes;
             storage += bytes;
+            result.bytesPerPixelSplit[tech.storageCategory(name)] += double(bytes) / pixels;
+        } else if (name.rfind("readback.", 0) != 0) {
+            result.transientBytesPerPixel += double(bytes) / pixels;
         }
-    result.bytesPerPixel = double(storage) / (double(w) * h);
+    }
+    result.bytesPerPixel = double(storage) / pixels;
 
     result.hdr = readImage(m_device, hdrHost, w, h);
     result.display = readImage(m_device, displayHost, w, h);
@@ -129,6 +135,8 @@ RenderResult FrameRenderer::render(const RenderRequest& request) {
         result.shadingEventsMax = std::max(result.shadingEventsMax, e);
     }
     result.shadingEventsMean = double(sum) / double(result.shadingEvents.size());
+    result.shadingEventsHistogram.assign(result.shadingEventsMax + 1, 0);
+    for (uint32_t e : result.shadingEvents) result.shadingEventsHistogram[e] += 1;
 
     vk::destroyBuffer(m_device, hdrHost);
     vk::destroyBuffer(m_device, displayHost);

@@ -12,6 +12,7 @@
 #include "engine/io/image.h"
 #include "engine/vk/resources.h"
 
+#include <functional>
 #include <map>
 #include <memory>
 #include <string>
@@ -25,6 +26,9 @@ struct RenderRequest {
     eng::frame::ViewSettings view;
     uint32_t warmupFrames = 0; // lavapipe JIT-compiles pipelines on first use: warm up before timing
     uint32_t timedFrames = 1; // per-pass times are the median over these
+    // Tools and tests add their own passes (readbacks of intermediate resources) after the
+    // technique's; they run in every frame of this request.
+    std::function<void(eng::rg::Graph&, Technique&, const FrameInputs&)> extraPasses;
 };
 
 struct RenderResult {
@@ -37,8 +41,13 @@ struct RenderResult {
     std::vector<std::string> culledPasses;
     std::map<std::string, uint64_t> storageBytes; // the technique's own resources
     double bytesPerPixel = 0.0;
+    // The technique's storage split into per-sample / per-aggregate / metadata, and the
+    // frame's other transient allocations (outputs, scratch), in bytes per pixel.
+    std::map<std::string, double> bytesPerPixelSplit;
+    double transientBytesPerPixel = 0.0;
     double shadingEventsMean = 0.0;
     uint32_t shadingEventsMax = 0;
+    std::vector<uint64_t> shadingEventsHistogram; // [k] = pixels with k shading events
     uint32_t samples = 0;
     std::string graphDot, graphJson;
 };
@@ -49,11 +58,11 @@ public:
     ~FrameRenderer();
     RenderResult render(const RenderRequest& request);
     eng::vk::Device& device() { return m_device; }
+    // The technique a request renders with (created on first use, then cached).
+    Technique& technique(const RenderRequest& request);
     const eng::scene::Scene& scene() const { return m_scene; }
 
 private:
-    Technique& technique(const RenderRequest& request);
-
     eng::vk::Device& m_device;
     const eng::scene::Scene& m_scene;
     eng::frame::GpuScene m_gpuScene;

@@ -1,5 +1,6 @@
 #include "engine/frame/readback.h"
 
+#include <algorithm>
 #include <stdexcept>
 
 namespace eng::frame {
@@ -32,6 +33,25 @@ void addReadbackPass(rg::Graph& graph, rg::Texture texture, const vk::Buffer& ho
             copy.imageExtent = {src.desc.width, src.desc.height, 1};
             vkCmdCopyImageToBuffer(ctx.cmd(), src.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
                                    ctx.buffer(d.target).buffer, 1, &copy);
+        });
+}
+
+void addBufferReadbackPass(rg::Graph& graph, rg::Buffer buffer, const vk::Buffer& host, const std::string& name) {
+    rg::Buffer target = graph.importBuffer(name + ".host", {host.buffer, host.size}, std::nullopt, std::nullopt);
+    struct Data {
+        rg::Buffer source, target;
+    };
+    VkDeviceSize bytes = host.size;
+    graph.addPass<Data>(
+        name, rg::PassKind::Transfer,
+        [&](rg::Builder& b, Data& d) {
+            d.source = b.read(buffer, rg::Use::TransferSrc);
+            d.target = b.write(target, rg::Use::TransferDst);
+            b.sideEffect();
+        },
+        [bytes](const rg::Context& ctx, const Data& d) {
+            VkBufferCopy copy{0, 0, std::min(bytes, ctx.buffer(d.source).size)};
+            vkCmdCopyBuffer(ctx.cmd(), ctx.buffer(d.source).buffer, ctx.buffer(d.target).buffer, 1, &copy);
         });
 }
 

@@ -15,5 +15,7 @@ vk::Buffer createReadbackBuffer(const vk::Device&, uint32_t width, uint32_t heig
                                 const std::string& name);
 // Adds "<name>" pass copying `texture` (layer 0) into `host` (tightly packed rows).
 void addReadbackPass(rg::Graph&, rg::Texture texture, const vk::Buffer& host, const std::string& name);
+// Adds "<name>" pass copying the first host.size bytes of `buffer` into `host`.
+void addBufferReadbackPass(rg::Graph&, rg::Buffer buffer, const vk::Buffer& host, const std::string& name);
 
 } // namespace eng::frame

@@ -169,7 +169,12 @@ nlohmann::json statsJson(const Options& o, const agaa::RenderResult& r, const en
     j["frame_gpu_ms"] = r.frameGpuMs;
     j["bytes_per_pixel"] = r.bytesPerPixel;
     j["storage_bytes"] = r.storageBytes;
-    j["shading_events_per_pixel"] = {{"mean", r.shadingEventsMean}, {"max", r.shadingEventsMax}};
+    j["bytes_per_pixel_split"] = r.bytesPerPixelSplit;
+    j["transient_bytes_per_pixel"] = r.transientBytesPerPixel;
+    j["shading_events_per_pixel"] = {{"mean", r.shadingEventsMean}, {"max", r.shadingEventsMax},
+                                     {"histogram", r.shadingEventsHistogram}};
+    // AGAA lights each aggregate once: its shading events are its aggregates.
+    if (o.request.method == "agaa") j["aggregates_per_pixel_histogram"] = r.shadingEventsHistogram;
     j["validation_errors"] = device.validationErrors();
     j["validation_enabled"] = device.validationEnabled();
     return j;

@@ -27,6 +27,14 @@ layout(set = 0, binding = 2) uniform Agaa { AgaaConstants agaa; };
 layout(set = 0, binding = 3, std430) readonly buffer Metadata { uint metadata[]; };
 layout(set = 0, binding = 4, std430) buffer AgBuffer { uint agBuffer[]; };
 layout(set = 1, binding = 0) uniform sampler2D textures[kMaxSceneTextures];
+#if AGAA_RECORD
+// Test support (tests/agaa/test_agaa_gpu.cpp): every fragment of the pixels in the central
+// kRecordWindow^2 block of the frame appends what it accumulates, so the CPU can re-accumulate the same
+// fragments and compare with the AG-buffer.
+const uint kRecordWindow = 16u;
+const uint kRecordWords = 12u;
+layout(set = 0, binding = 5, std430) buffer FragmentRecords { uint recordCount; uint recordCapacity; uint records[]; };
+#endif
 layout(push_constant) uniform Push { uint material; } pc;
 
 #include "common/material.glsl"
@@ -55,7 +63,7 @@ void main() {
     uint words = agaa.shape.z;
 
     float alpha = m.roughness * m.roughness;
-    vec3 t = m.normal * toksvigLength(alpha, agaa.toksvig.x, agaa.toksvig.y);
+    vec3 t = m.normal * toksvigLength(alpha, agaa.toksvig.x, agaa.toksvig.y, agaa.toksvig.z);
     uint qx = quantizeSigned(t.x, kNormalScale);
     uint qy = quantizeSigned(t.y, kNormalScale);
     uint qz = quantizeSigned(t.z, kNormalScale);
@@ -64,6 +72,25 @@ void main() {
     uint qb = quantizeUnit(m.albedo.b, kUnormScale);
     uint qm = quantizeUnit(m.metallic, kUnormScale);
 
+#if AGAA_RECORD
+    uvec2 origin = uvec2(frame.extent.xy) / 2u - kRecordWindow / 2u;
+    if (all(greaterThanEqual(pixel, origin)) && all(lessThan(pixel, origin + kRecordWindow))) {
+        uint slot = atomicAdd(recordCount, 1u);
+        if (slot < recordCapacity) {
+            uint r = slot * kRecordWords;
+            records[r + 0u] = pixelIndex;
+            records[r + 1u] = inLayer;
+            records[r + 2u] = mask;
+            records[r + 3u] = qx;
+            records[r + 4u] = qy;
+            records[r + 5u] = qz;
+            records[r + 6u] = qr;
+            records[r + 7u] = qg;
+            records[r + 8u] = qb;
+            records[r + 9u] = qm;
+        }
+    }
+#endif
     uint perAggregate[kMaxAggregates] = uint[](0u, 0u, 0u, 0u);
     for (uint hw = 0u; hw < 4u; ++hw) {
         if ((mask & (1u << hw)) == 0u) continue;

@@ -45,7 +45,7 @@ vec3 evaluateBrdf(SurfaceInputs s, vec3 V, vec3 L, vec3 irradiance) {
     vec3 H = hlen > kMinNormalLength ? Hraw / hlen : N;
     float NoH = clamp(dot(N, H), 0.0, 1.0);
     float VoH = clamp(dot(V, H), 0.0, 1.0);
-    float alpha = max(s.roughness * s.roughness, kMinGgxAlpha);
+    float alpha = clamp(s.roughness * s.roughness, kMinGgxAlpha, kMaxGgxAlpha);
     vec3 f0 = mix(vec3(0.04), s.albedo, s.metallic);
     vec3 F = fresnelSchlick(f0, VoH);
     vec3 specular = F * (ggxD(NoH, alpha) * smithVisibility(NoV, max(NoL, kMinCosine), alpha));

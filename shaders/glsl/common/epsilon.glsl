@@ -6,6 +6,11 @@
 // Smallest GGX alpha (= roughness^2): roughness 0 would make D a delta and
 // D*G/(4 N.L N.V) divide by zero. 1e-3 keeps D finite (about 3.2e5 peak) in fp32.
 const float kMinGgxAlpha = 1.0e-3;
+// Largest GGX alpha of the shared BRDF (roughness 0.949). Toksvig encodes roughness as the
+// length of the normal (shared/ag_buffer.h); alpha = 1 would be length 0 and erase the sample's
+// direction from its aggregate's mean normal. Capping alpha for every method keeps each
+// sample's normal with weight >= 0.32 while the methods still shade identically.
+const float kMaxGgxAlpha = 0.9;
 // Lower bound of N.V and N.L in the specular denominator 4 N.L N.V (grazing angles).
 const float kMinCosine = 1.0e-4;
 // Squared distance floor for inverse-square falloff (m^2): a light inside the
@@ -19,5 +24,9 @@ const float kMinSpotCosRange = 1.0e-4;
 // Largest radiance a tone mapper is fed; beyond it the curve is flat anyway and
 // fp32 products would overflow (1e4 emissive * 1e3 light count stays below).
 const float kMaxRadiance = 6.0e4;
+// Simple/Complex depth test (relative to view distance): floor under the plane-slope
+// tolerance, since a face-on plane has zero slope but its samples' fp32 depths still
+// differ by interpolation and reconstruction rounding (about 1e-6 relative).
+const float kDepthCompareRelative = 1.0e-4;
 
 #endif

@@ -26,9 +26,10 @@ inline_fn float meanUnit(uint sum, uint k, uint scale) { return float(sum) / (fl
 // variance", DESIGN section 4). With s = 2/alpha^2 - 2 the Blinn-Phong exponent and smax the
 // exponent of alpha_min, the length L solves f(L) smax = s for the Toksvig factor
 // f(L) = L / (L + smax (1 - L)):  L = s smax / (smax - s + s smax).
-// s is clamped to [0, smax], so the denominator is >= smax > 0.
-inline_fn float toksvigLength(float alpha, float smax, float alphaMin) {
-    float a = alpha > alphaMin ? alpha : alphaMin;
+// alpha is clamped to [alphaMin, alphaMax] (the BRDF's range), so s is in [smin, smax] with
+// smin > 0: every sample keeps a direction; the denominator is >= smax > 0.
+inline_fn float toksvigLength(float alpha, float smax, float alphaMin, float alphaMax) {
+    float a = alpha > alphaMin ? (alpha < alphaMax ? alpha : alphaMax) : alphaMin;
     float s = 2.0f / (a * a) - 2.0f;
     s = s > 0.0f ? (s < smax ? s : smax) : 0.0f;
     return (s * smax) / (smax - s + s * smax);

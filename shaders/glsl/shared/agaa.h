@@ -42,7 +42,7 @@ struct AgaaConstants {
     vec4 ndcParams;
     // x aggregates c, y metadata bits per sample b, z metadata words per pixel, w samples n
     uvec4 shape;
-    // x Toksvig reference exponent s_max (Blinn-Phong), y alpha_min; zw unused
+    // x Toksvig reference exponent s_max (Blinn-Phong), y alpha_min, z alpha_max; w unused
     vec4 toksvig;
     // x debug view (0 none, 1 aggregates), y position mode (0 mean of sample positions, 1 UE4 pixel centre), z has emissive
     uvec4 options;

@@ -1,0 +1,90 @@
+#ifndef AGAA_GBUFFER_LIGHTING_GLSL
+#define AGAA_GBUFFER_LIGHTING_GLSL
+// Lighting one sample of the per-sample G-buffer (reference/gbuffer.frag): the
+// code every per-sample deferred method shares (the reference, Simple/Complex),
+// so that they differ only in which samples they shade, never in how.
+//
+// Requires, declared by the includer before this file: GBUFFER_MS (1: 4x layered
+// G-buffer, 0: one sample per pixel), `frame` (FrameConstants, set 0 binding 0),
+// `lights` (GpuLight[], set 0 binding 1). Declares the G-buffer at set 0
+// bindings 2..5. nextTileLight() needs tileCullLights() to have run.
+#include "common/brdf.glsl"
+#include "common/depth.glsl"
+#include "common/lights.glsl"
+#include "common/octahedral.glsl"
+#include "common/tile_culling.glsl"
+#include "common/tonemap.glsl"
+
+#if GBUFFER_MS
+layout(set = 0, binding = 2) uniform sampler2DMSArray gDepth;
+layout(set = 0, binding = 3) uniform sampler2DMSArray gNormal;
+layout(set = 0, binding = 4) uniform sampler2DMSArray gAlbedoMetal;
+layout(set = 0, binding = 5) uniform sampler2DMSArray gEmissiveRoughness;
+#define FETCH(tex, p, layer, s) texelFetch(tex, ivec3(p, layer), int(s))
+#else
+layout(set = 0, binding = 2) uniform sampler2D gDepth;
+layout(set = 0, binding = 3) uniform sampler2D gNormal;
+layout(set = 0, binding = 4) uniform sampler2D gAlbedoMetal;
+layout(set = 0, binding = 5) uniform sampler2D gEmissiveRoughness;
+#define FETCH(tex, p, layer, s) texelFetch(tex, p, 0)
+#endif
+
+// Sample s = layer * samplesPerLayer + hardware sample (engine/frame/sample_pattern.h).
+#define FETCH_SAMPLE(tex, p, s) FETCH(tex, p, (s) / frame.counts.y, (s) % frame.counts.y)
+
+float gbufferDepth(ivec2 pixel, uint s) { return FETCH_SAMPLE(gDepth, pixel, s).r; }
+
+vec3 gbufferNormal(ivec2 pixel, uint s) { return decodeOctahedral(FETCH_SAMPLE(gNormal, pixel, s).xy); }
+
+// View distances of the pixel's non-sky samples, for the tile's depth bounds
+// (tile_culling.glsl); tmin > tmax when every sample is sky.
+void gbufferDistanceRange(ivec2 pixel, out float tmin, out float tmax) {
+    tmin = 1e30;
+    tmax = -1e30;
+    for (uint s = 0u; s < frame.counts.x; ++s) {
+        float d = gbufferDepth(pixel, s);
+        if (isSky(d)) continue;
+        float t = viewDistanceFromDepth(d, frame.depthParams.x, frame.depthParams.y);
+        tmin = min(tmin, t);
+        tmax = max(tmax, t);
+    }
+}
+
+// One shading event (DESIGN section 6): the surface stored in sample s of `pixel`, seen
+// at view-space point P, lit by every light of the tile, emissive added per sample
+// before the tone map (seed 004), exposure applied. radiance: the exposed linear
+// radiance; display: its tone-mapped value. Both unweighted: the caller weights them
+// by the sample fraction they stand for. The sample must not be sky.
+void shadeGBufferSurface(ivec2 pixel, uint s, vec3 P, out vec3 radiance, out vec3 display) {
+    vec3 V = normalize(-P); // |P| >= znear > 0
+    SurfaceInputs surface;
+    surface.normal = gbufferNormal(pixel, s);
+    vec4 am = FETCH_SAMPLE(gAlbedoMetal, pixel, s);
+    vec4 er = FETCH_SAMPLE(gEmissiveRoughness, pixel, s);
+    surface.albedo = am.rgb;
+    surface.metallic = am.a;
+    surface.roughness = er.a;
+    vec3 lit = vec3(0.0);
+    for (uint i = nextTileLight(0u); i < kMaxLights; i = nextTileLight(i + 1u)) {
+        vec3 L, irradiance;
+        if (lightIncidence(lights[i], P, L, irradiance)) lit += evaluateBrdf(surface, V, L, irradiance);
+    }
+    radiance = min((lit + er.rgb) * frame.depthParams.z, vec3(kMaxRadiance));
+    display = toneMapAces(radiance);
+}
+
+// Sample s of `pixel` shaded at its own position; a sky sample gets the sky.
+// Returns false for sky (not a shading event).
+bool shadeGBufferSample(ivec2 pixel, uint s, out vec3 radiance, out vec3 display) {
+    float d = gbufferDepth(pixel, s);
+    if (isSky(d)) {
+        radiance = frame.skyRadiance.rgb * frame.depthParams.z;
+        display = toneMapAces(radiance);
+        return false;
+    }
+    vec2 pixelPos = vec2(pixel) + frame.samplePositions[s].xy;
+    shadeGBufferSurface(pixel, s, viewPositionFromDepth(pixelPos, d, frame.extent, frame.depthParams, frame.projParams),
+                        radiance, display);
+    return true;
+}
+#endif
