@@ -57,6 +57,8 @@ std::unique_ptr<Technique> createTechnique(const std::string& method, eng::vk::D
         s.samples = settings.samples;
         s.aggregates = settings.aggregates;
         s.debugView = settings.debug == "aggregates" ? AggregateDebugView::Aggregates : AggregateDebugView::None;
+        if (settings.characteristicLength >= 0.0f) s.characteristicLength = settings.characteristicLength;
+        if (settings.seedThreshold >= 0.0f) s.seedThreshold = settings.seedThreshold;
         return std::make_unique<AggregateAA>(device, scene, s);
     }
     throw std::invalid_argument("--method '" + method + "' is unknown (known: " + knownMethodNames() + ")");

@@ -35,6 +35,10 @@ struct MethodSettings {
     uint32_t samples = 8; // n: visibility samples per pixel
     uint32_t aggregates = 2; // c: AGAA aggregates per pixel
     std::string debug; // a method's debug view ("" = none), e.g. "aggregates" for agaa
+    // AGAA clustering (Equation 1): characteristic length k in metres and the seed threshold t;
+    // negative = the method's documented default.
+    float characteristicLength = -1.0f;
+    float seedThreshold = -1.0f;
 };
 
 class Technique {

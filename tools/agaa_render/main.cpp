@@ -51,6 +51,7 @@ const char* kUsage =
     "usage: agaa-render [--scene FILE | --builtin NAME] [--method NAME] [--samples N] [--aggregates C]\n"
     "                   [--width W] [--height H] [--camera I] [--exposure E] [--out PREFIX] [--debug VIEW]\n"
     "                   [--stats FILE.json] [--graph FILE.dot] [--frames K] [--warmup K]\n"
+    "                   [--characteristic-length K] [--seed-threshold T]\n"
     "                   [--validate] [--device NAME] [--caps] [--help]\n"
     "\n"
     "  --scene FILE      glTF 2.0 scene (.gltf or .glb)\n"
@@ -60,7 +61,9 @@ const char* kUsage =
     "  --aggregates C    AGAA aggregates per pixel, 1..4 (default 2)\n"
     "  --width/--height  image size in pixels, 1..8192 (default 256x256)\n"
     "  --camera I        scene camera index (default 0)\n"
-    "  --debug VIEW      a method's debug view instead of the lit frame (agaa: aggregates)\n"
+    "  --debug VIEW      a method's debug view instead of the lit frame (agaa: aggregates; simple-complex: complex)\n"
+    "  --characteristic-length K, --seed-threshold T\n"
+    "                    AGAA clustering (Equation 1): k in metres (default 0.1), t (default 0.05)\n"
     "  --out PREFIX      writes PREFIX.exr (linear HDR) and PREFIX.png (tone-mapped sRGB)\n"
     "  --stats FILE      per-pass GPU times, storage, shading events, validation errors as JSON\n"
     "  --graph FILE      compiled render graph as Graphviz DOT (and FILE.json)\n"
@@ -110,6 +113,8 @@ Options parse(int argc, char** argv) {
                                   eng::frame::supportedSampleCounts() + ")");
         } else if (a == "--aggregates") r.settings.aggregates = parseUint(a, value(), 1, 4);
         else if (a == "--debug") r.settings.debug = value();
+        else if (a == "--characteristic-length") r.settings.characteristicLength = parseFloat(a, value(), 1e-6f, 1e6f);
+        else if (a == "--seed-threshold") r.settings.seedThreshold = parseFloat(a, value(), 0.0f, 1e6f);
         else if (a == "--width") r.view.width = parseUint(a, value(), 1, 8192);
         else if (a == "--height") r.view.height = parseUint(a, value(), 1, 8192);
         else if (a == "--camera") r.view.camera = parseUint(a, value(), 0, 1u << 20);

@@ -1,0 +1,90 @@
+#include "agaa/fxaa/fxaa.h"
+
+#include "agaa/common/push_descriptors.h"
+#include "engine/vk/resources.h"
+#include "shaders/fxaa/fxaa_comp.h"
+#include "shared/frame.h"
+#include "shared/fxaa.h"
+
+#include <bit>
+
+namespace agaa {
+namespace rg = eng::rg;
+namespace vk = eng::vk;
+
+namespace {
+
+// Specialisation constants of fxaa.comp: 0 the step count, 1..12 the step lengths (float bits).
+vk::Specialization presetSpecialization(uint32_t preset) {
+    std::span<const float> steps = fxaaPresetSteps(preset);
+    vk::Specialization s;
+    s.values.push_back(uint32_t(steps.size()));
+    for (uint32_t i = 0; i < shared::kFxaaMaxSteps; ++i)
+        s.values.push_back(std::bit_cast<uint32_t>(i < steps.size() ? steps[i] : 0.0f));
+    return s;
+}
+
+FxaaSettings checked(const FxaaSettings& s) {
+    checkFxaaSettings(s);
+    return s;
+}
+
+} // namespace
+
+Fxaa::Fxaa(vk::Device& device, const eng::frame::GpuScene& scene, const FxaaSettings& settings, std::string name)
+    : m_device(device), m_settings(checked(settings)), m_name(std::move(name)),
+      m_noaa(device, scene, ReferenceSettings{1}, m_name + ".noaa") {
+    vk::LayoutDesc layout;
+    const VkShaderStageFlags cs = VK_SHADER_STAGE_COMPUTE_BIT;
+    layout.pushBindings = {{0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, cs}, {1, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs}};
+    layout.pushConstantBytes = sizeof(shared::FxaaParams);
+    m_layout = vk::createPipelineLayout(device, layout, m_name + ".layout");
+    m_pipeline = vk::createComputePipeline(device, kFxaaFxaaComp, m_layout.layout, presetSpecialization(settings.preset),
+                                           m_name + ".filter");
+    m_fetchSampler = vk::createSampler(device, VK_FILTER_NEAREST, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE, 0.0f,
+                                       m_name + ".fetchSampler");
+}
+
+Fxaa::~Fxaa() {
+    VkDevice d = m_device.device();
+    vkDeviceWaitIdle(d);
+    vkDestroyPipeline(d, m_pipeline, nullptr);
+    vkDestroySampler(d, m_fetchSampler, nullptr);
+    vk::destroyPipelineLayout(m_device, m_layout);
+}
+
+FrameTargets Fxaa::addPasses(rg::Graph& graph, const FrameInputs& in) {
+    FrameTargets noaa = m_noaa.addPasses(graph, in);
+    return {noaa.hdr, addFxaaPass(graph, noaa.display, in.width, in.height), noaa.shadingEvents};
+}
+
+rg::Texture Fxaa::addFxaaPass(rg::Graph& graph, rg::Texture display, uint32_t width, uint32_t height) {
+    struct Data {
+        rg::Texture input, output;
+    };
+    shared::FxaaParams params{};
+    params.thresholds = {m_settings.subpix, m_settings.edgeThreshold, m_settings.edgeThresholdMin, 0.0f};
+    const Data& out = graph.addCompute<Data>(
+        m_name + ".filter",
+        [&](rg::Builder& b, Data& d) {
+            d.input = b.read(display, rg::Use::SampledCompute);
+            const rg::TextureDesc desc{VK_FORMAT_R32G32B32A32_SFLOAT, width, height, 1, VK_SAMPLE_COUNT_1_BIT};
+            d.output = b.write(b.create(m_name + ".display", desc), rg::Use::StorageImageWriteCompute);
+        },
+        [this, params](const rg::Context& ctx, const Data& d) {
+            VkCommandBuffer cmd = ctx.cmd();
+            const rg::PhysicalTexture& output = ctx.texture(d.output);
+            VkDescriptorImageInfo input = sampledImageInfo(m_fetchSampler, ctx.texture(d.input));
+            VkDescriptorImageInfo target = storageImageInfo(output);
+            VkWriteDescriptorSet writes[] = {imageWrite(0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, &input),
+                                             imageWrite(1, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, &target)};
+            vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, m_pipeline);
+            m_device.pushDescriptorSet()(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, m_layout.layout, 0, 2, writes);
+            vkCmdPushConstants(cmd, m_layout.layout, VK_SHADER_STAGE_ALL, 0, sizeof(params), &params);
+            vkCmdDispatch(cmd, (output.desc.width + shared::kTileSize - 1) / shared::kTileSize,
+                          (output.desc.height + shared::kTileSize - 1) / shared::kTileSize, 1);
+        });
+    return out.output;
+}
+
+} // namespace agaa

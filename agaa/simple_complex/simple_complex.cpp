@@ -1,0 +1,170 @@
+#include "agaa/simple_complex/simple_complex.h"
+
+#include "agaa/common/push_descriptors.h"
+#include "engine/vk/check.h"
+#include "engine/vk/resources.h"
+#include "shaders/simple_complex/gbuffer_export_comp.h"
+#include "shaders/simple_complex/lighting_ms_comp.h"
+#include "shaders/simple_complex/lighting_ss_comp.h"
+#include "shared/frame.h"
+#include "shared/simple_complex.h"
+
+#include <cmath>
+#include <stdexcept>
+
+namespace agaa {
+namespace rg = eng::rg;
+namespace vk = eng::vk;
+
+namespace {
+
+void checkSettings(const SimpleComplexSettings& s) {
+    if (!(s.minNormalCos >= -1.0f && s.minNormalCos <= 1.0f))
+        throw std::invalid_argument("simple-complex: minNormalCos " + std::to_string(s.minNormalCos) +
+                                    " is out of range [-1, 1]");
+    if (!(s.depthSlopeScale >= 0.0f && s.depthSlopeScale <= 1.0e3f))
+        throw std::invalid_argument("simple-complex: depthSlopeScale " + std::to_string(s.depthSlopeScale) +
+                                    " is out of range [0, 1000]");
+    if (s.schedule != SimpleComplexSchedule::DeferPerSample && s.schedule != SimpleComplexSchedule::Naive)
+        throw std::invalid_argument("simple-complex: unknown schedule");
+    if (s.debugView != SimpleComplexDebugView::None && s.debugView != SimpleComplexDebugView::Complex)
+        throw std::invalid_argument("simple-complex: unknown debug view");
+}
+
+} // namespace
+
+SimpleComplex::SimpleComplex(vk::Device& device, const eng::frame::GpuScene& scene,
+                             const SimpleComplexSettings& settings, std::string name)
+    : m_device(device), m_settings(settings), m_name(std::move(name)),
+      m_gbuffer(device, scene, settings.samples, m_name) {
+    checkSettings(settings);
+    vk::LayoutDesc lighting;
+    const VkShaderStageFlags cs = VK_SHADER_STAGE_COMPUTE_BIT;
+    lighting.pushBindings = {{0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, cs},
+                             {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs},
+                             {2, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, cs},
+                             {3, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, cs},
+                             {4, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, cs},
+                             {5, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, cs},
+                             {6, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs},
+                             {7, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs},
+                             {8, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs}};
+    lighting.pushConstantBytes = sizeof(shared::SimpleComplexParams);
+    m_lightingLayout = vk::createPipelineLayout(device, lighting, m_name + ".lighting.layout");
+    std::span<const uint32_t> code = settings.samples > 1 ? kSimpleComplexLightingMsComp : kSimpleComplexLightingSsComp;
+    m_lightingPipeline = vk::createComputePipeline(device, code, m_lightingLayout.layout,
+                                                   {{uint32_t(settings.schedule)}}, m_name + ".lighting");
+    m_fetchSampler = vk::createSampler(device, VK_FILTER_NEAREST, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE, 0.0f,
+                                       m_name + ".fetchSampler");
+}
+
+SimpleComplex::~SimpleComplex() {
+    VkDevice d = m_device.device();
+    vkDeviceWaitIdle(d);
+    vkDestroyPipeline(d, m_lightingPipeline, nullptr);
+    if (m_exportPipeline) vkDestroyPipeline(d, m_exportPipeline, nullptr);
+    vkDestroySampler(d, m_fetchSampler, nullptr);
+    vk::destroyPipelineLayout(m_device, m_lightingLayout);
+    if (m_exportLayout.layout) vk::destroyPipelineLayout(m_device, m_exportLayout);
+}
+
+FrameTargets SimpleComplex::addPasses(rg::Graph& graph, const FrameInputs& in) {
+    return addLighting(graph, in, addGBuffer(graph, in));
+}
+
+FrameTargets SimpleComplex::addLighting(rg::Graph& graph, const FrameInputs& in, const SampleGBuffer& gbuffer) {
+    struct Lighting {
+        rg::Buffer frame, lights;
+        SampleGBuffer g;
+        rg::Texture hdr, display, events;
+    };
+    const rg::TextureDesc out{VK_FORMAT_R32G32B32A32_SFLOAT, in.width, in.height, 1, VK_SAMPLE_COUNT_1_BIT};
+    const rg::TextureDesc eventsDesc{VK_FORMAT_R32_UINT, in.width, in.height, 1, VK_SAMPLE_COUNT_1_BIT};
+    shared::SimpleComplexParams params{};
+    params.thresholds = {m_settings.minNormalCos, m_settings.depthSlopeScale, 0.0f, 0.0f};
+    params.options = {uint32_t(m_settings.debugView), 0u, 0u, 0u};
+    const Lighting& l = graph.addCompute<Lighting>(
+        m_name + ".lighting",
+        [&](rg::Builder& b, Lighting& d) {
+            d.frame = b.read(in.frameConstants, rg::Use::UniformRead);
+            d.lights = b.read(in.lights, rg::Use::StorageReadCompute);
+            d.g.depth = b.read(gbuffer.depth, rg::Use::SampledCompute);
+            d.g.normal = b.read(gbuffer.normal, rg::Use::SampledCompute);
+            d.g.albedoMetal = b.read(gbuffer.albedoMetal, rg::Use::SampledCompute);
+            d.g.emissiveRoughness = b.read(gbuffer.emissiveRoughness, rg::Use::SampledCompute);
+            d.hdr = b.write(b.create(m_name + ".hdr", out), rg::Use::StorageImageWriteCompute);
+            d.display = b.write(b.create(m_name + ".display", out), rg::Use::StorageImageWriteCompute);
+            d.events = b.write(b.create(m_name + ".shadingEvents", eventsDesc), rg::Use::StorageImageWriteCompute);
+        },
+        [this, params, w = in.width, h = in.height](const rg::Context& ctx, const Lighting& d) {
+            VkCommandBuffer cmd = ctx.cmd();
+            VkDescriptorBufferInfo frameInfo = bufferInfo(ctx.buffer(d.frame));
+            VkDescriptorBufferInfo lightInfo = bufferInfo(ctx.buffer(d.lights));
+            VkDescriptorImageInfo images[] = {
+                sampledImageInfo(m_fetchSampler, ctx.texture(d.g.depth)),
+                sampledImageInfo(m_fetchSampler, ctx.texture(d.g.normal)),
+                sampledImageInfo(m_fetchSampler, ctx.texture(d.g.albedoMetal)),
+                sampledImageInfo(m_fetchSampler, ctx.texture(d.g.emissiveRoughness)),
+                storageImageInfo(ctx.texture(d.hdr)),
+                storageImageInfo(ctx.texture(d.display)),
+                storageImageInfo(ctx.texture(d.events))};
+            VkWriteDescriptorSet writes[9] = {bufferWrite(0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, &frameInfo),
+                                              bufferWrite(1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, &lightInfo)};
+            for (uint32_t i = 0; i < 7; ++i)
+                writes[2 + i] = imageWrite(2 + i,
+                                           i < 4 ? VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER
+                                                 : VK_DESCRIPTOR_TYPE_STORAGE_IMAGE,
+                                           &images[i]);
+            vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, m_lightingPipeline);
+            m_device.pushDescriptorSet()(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, m_lightingLayout.layout, 0, 9, writes);
+            vkCmdPushConstants(cmd, m_lightingLayout.layout, VK_SHADER_STAGE_ALL, 0, sizeof(params), &params);
+            vkCmdDispatch(cmd, (w + shared::kTileSize - 1) / shared::kTileSize,
+                          (h + shared::kTileSize - 1) / shared::kTileSize, 1);
+        });
+    return {l.hdr, l.display, l.events};
+}
+
+void SimpleComplex::addClassificationExport(rg::Graph& graph, const FrameInputs& in, const SampleGBuffer& gbuffer,
+                                            rg::Buffer target) {
+    if (m_settings.samples < 4)
+        throw std::invalid_argument("simple-complex: the classification export needs n >= 4 (n = 1 is never complex)");
+    if (!m_exportPipeline) {
+        vk::LayoutDesc layout;
+        const VkShaderStageFlags cs = VK_SHADER_STAGE_COMPUTE_BIT;
+        layout.pushBindings = {{0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, cs},
+                               {1, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, cs},
+                               {2, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, cs},
+                               {3, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs}};
+        m_exportLayout = vk::createPipelineLayout(m_device, layout, m_name + ".export.layout");
+        m_exportPipeline = vk::createComputePipeline(m_device, kSimpleComplexGbufferExportComp, m_exportLayout.layout,
+                                                     {}, m_name + ".export");
+    }
+    struct Export {
+        rg::Buffer frame, target;
+        rg::Texture depth, normal;
+    };
+    graph.addCompute<Export>(
+        m_name + ".classificationExport",
+        [&](rg::Builder& b, Export& d) {
+            d.frame = b.read(in.frameConstants, rg::Use::UniformRead);
+            d.depth = b.read(gbuffer.depth, rg::Use::SampledCompute);
+            d.normal = b.read(gbuffer.normal, rg::Use::SampledCompute);
+            d.target = b.write(target, rg::Use::StorageWriteCompute);
+        },
+        [this, w = in.width, h = in.height](const rg::Context& ctx, const Export& d) {
+            VkCommandBuffer cmd = ctx.cmd();
+            VkDescriptorBufferInfo frameInfo = bufferInfo(ctx.buffer(d.frame));
+            VkDescriptorBufferInfo targetInfo = bufferInfo(ctx.buffer(d.target));
+            VkDescriptorImageInfo depth = sampledImageInfo(m_fetchSampler, ctx.texture(d.depth));
+            VkDescriptorImageInfo normal = sampledImageInfo(m_fetchSampler, ctx.texture(d.normal));
+            VkWriteDescriptorSet writes[] = {bufferWrite(0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, &frameInfo),
+                                             imageWrite(1, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, &depth),
+                                             imageWrite(2, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, &normal),
+                                             bufferWrite(3, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, &targetInfo)};
+            vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, m_exportPipeline);
+            m_device.pushDescriptorSet()(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, m_exportLayout.layout, 0, 4, writes);
+            vkCmdDispatch(cmd, (w + 7) / 8, (h + 7) / 8, 1);
+        });
+}
+
+} // namespace agaa

@@ -1,0 +1,192 @@
+// agaa-timings: per-pass GPU times of several methods on the same scene, in one process and
+// one run, with the ratios the paper reports (AGAA vs its peers): shading-pass ratio, frame
+// ratio, bytes-per-pixel ratio. Pipelines are warmed up first (lavapipe JIT-compiles on first
+// use); every time is the median over the timed frames. A benchmark, not a test: it prints,
+// it asserts nothing about speed.
+//
+//   agaa-timings [--scenes foliage,furball] [--size 640x360] [--frames 5] [--warmup 2]
+//                [--jobs reference:8,agaa:8:2,simple-complex:8] [--validate] [--json FILE]
+// Exit codes: 0 done; 2 bad arguments; 3 the device lacks something required.
+
+#include "agaa/common/frame_renderer.h"
+#include "agaa/methods.h"
+#include "engine/scene/scene_error.h"
+#include "engine/scene/scenegen.h"
+#include "engine/vk/check.h"
+
+#include <nlohmann/json.hpp>
+
+#include <charconv>
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace {
+
+struct Job {
+    std::string method;
+    uint32_t samples = 8, aggregates = 2;
+    std::string label() const {
+        std::string l = method + " n=" + std::to_string(samples);
+        return method == "agaa" ? l + " c=" + std::to_string(aggregates) : l;
+    }
+};
+
+std::vector<std::string> split(const std::string& s, char sep) {
+    std::vector<std::string> out;
+    std::stringstream ss(s);
+    for (std::string item; std::getline(ss, item, sep);)
+        if (!item.empty()) out.push_back(item);
+    return out;
+}
+
+uint32_t number(const std::string& flag, const std::string& v, uint32_t lo, uint32_t hi) {
+    uint32_t x = 0;
+    auto [p, ec] = std::from_chars(v.data(), v.data() + v.size(), x);
+    if (ec != std::errc() || p != v.data() + v.size() || x < lo || x > hi)
+        throw std::invalid_argument(flag + " '" + v + "' is not an integer in " + std::to_string(lo) + ".." +
+                                    std::to_string(hi));
+    return x;
+}
+
+Job parseJob(const std::string& text) {
+    auto parts = split(text, ':');
+    if (parts.empty() || parts.size() > 3 || !agaa::isKnownMethod(parts[0]))
+        throw std::invalid_argument("--jobs entry '" + text + "' is not METHOD[:N[:C]] with METHOD one of " +
+                                    agaa::knownMethodNames());
+    Job j;
+    j.method = parts[0];
+    if (parts.size() > 1) j.samples = number("--jobs samples", parts[1], 1, 32);
+    if (parts.size() > 2) j.aggregates = number("--jobs aggregates", parts[2], 1, 4);
+    return j;
+}
+
+// The shading pass of a method: the pass whose name ends in ".lighting".
+double shadingMs(const agaa::RenderResult& r) {
+    for (const auto& p : r.passes)
+        if (p.name.size() > 9 && p.name.compare(p.name.size() - 9, 9, ".lighting") == 0) return p.gpuMs;
+    return 0.0;
+}
+
+// The technique's frame: every pass but the tool's readbacks.
+double frameMs(const agaa::RenderResult& r) {
+    double sum = 0.0;
+    for (const auto& p : r.passes)
+        if (p.name.rfind("readback.", 0) != 0) sum += p.gpuMs;
+    return sum;
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+    std::vector<std::string> scenes = {"foliage", "furball"};
+    uint32_t width = 640, height = 360, frames = 5, warmup = 2;
+    std::vector<Job> jobs = {{"reference", 8, 1}, {"agaa", 8, 2}};
+    if (agaa::isKnownMethod("simple-complex")) jobs.push_back({"simple-complex", 8, 1});
+    bool validate = false;
+    std::string jsonPath;
+    try {
+        for (int i = 1; i < argc; ++i) {
+            std::string a = argv[i];
+            auto value = [&]() -> std::string {
+                if (i + 1 >= argc) throw std::invalid_argument(a + " needs a value");
+                return argv[++i];
+            };
+            if (a == "--scenes") scenes = split(value(), ',');
+            else if (a == "--size") {
+                auto wh = split(value(), 'x');
+                if (wh.size() != 2) throw std::invalid_argument("--size must be WxH, e.g. 1280x720");
+                width = number("--size width", wh[0], 1, 8192);
+                height = number("--size height", wh[1], 1, 8192);
+            } else if (a == "--frames") frames = number(a, value(), 1, 1000);
+            else if (a == "--warmup") warmup = number(a, value(), 0, 1000);
+            else if (a == "--jobs") {
+                jobs.clear();
+                for (const auto& j : split(value(), ',')) jobs.push_back(parseJob(j));
+            } else if (a == "--validate") validate = true;
+            else if (a == "--json") jsonPath = value();
+            else if (a == "--help" || a == "-h") {
+                std::printf("usage: agaa-timings [--scenes a,b] [--size WxH] [--frames K] [--warmup K]\n"
+                            "                    [--jobs METHOD[:N[:C]],...] [--validate] [--json FILE]\n"
+                            "methods: %s; scenes: builtin kinds\n",
+                            agaa::knownMethodNames().c_str());
+                return 0;
+            } else throw std::invalid_argument("unknown argument '" + a + "' (see --help)");
+        }
+        eng::vk::DeviceOptions options;
+        options.validation = validate;
+        eng::vk::Device device(options);
+        nlohmann::json out;
+        out["device"] = device.caps().deviceName;
+        out["size"] = {width, height};
+        out["frames"] = frames;
+        out["warmup"] = warmup;
+        std::printf("device: %s, %ux%u, median of %u frames after %u warm-up frames\n",
+                    device.caps().deviceName.c_str(), width, height, frames, warmup);
+        for (const std::string& name : scenes) {
+            eng::scene::Scene scene = eng::scene::loadBuiltin(name);
+            agaa::FrameRenderer renderer(device, scene);
+            std::map<std::string, agaa::RenderResult> results;
+            std::printf("\n== %s (%u triangles)\n", name.c_str(), scene.triangleCount());
+            for (const Job& job : jobs) {
+                agaa::RenderRequest r;
+                r.method = job.method;
+                r.settings.samples = job.samples;
+                r.settings.aggregates = job.aggregates;
+                r.view.width = width;
+                r.view.height = height;
+                r.warmupFrames = warmup;
+                r.timedFrames = frames;
+                agaa::RenderResult res = renderer.render(r);
+                std::printf("  %-26s frame %9.2f ms  bytes/px %7.1f  events/px %.2f (max %u)\n", job.label().c_str(),
+                            frameMs(res), res.bytesPerPixel, res.shadingEventsMean, res.shadingEventsMax);
+                nlohmann::json passes = nlohmann::json::object();
+                for (const auto& p : res.passes) {
+                    if (p.name.rfind("readback.", 0) == 0) continue;
+                    std::printf("      %-28s %9.2f ms\n", p.name.c_str(), p.gpuMs);
+                    passes[p.name] = p.gpuMs;
+                }
+                out["scenes"][name][job.label()] = {{"frame_ms", frameMs(res)},
+                                                    {"shading_ms", shadingMs(res)},
+                                                    {"bytes_per_pixel", res.bytesPerPixel},
+                                                    {"passes", passes}};
+                results[job.label()] = std::move(res);
+            }
+            // Ratios of every AGAA job against every peer at the same n.
+            for (const Job& a : jobs) {
+                if (a.method != "agaa") continue;
+                const auto& ra = results[a.label()];
+                for (const Job& b : jobs) {
+                    if (b.method == "agaa" || b.samples != a.samples) continue;
+                    const auto& rb = results[b.label()];
+                    double shading = shadingMs(ra) > 0 ? shadingMs(rb) / shadingMs(ra) : 0.0;
+                    double frame = frameMs(rb) / frameMs(ra);
+                    double bytes = ra.bytesPerPixel / rb.bytesPerPixel;
+                    std::printf("  %s vs %s: shading pass %.2fx faster, frame %.2fx faster, bytes/px %.3fx\n",
+                                a.label().c_str(), b.label().c_str(), shading, frame, bytes);
+                    out["scenes"][name]["ratios"][a.label() + " vs " + b.label()] = {
+                        {"shading_speedup", shading}, {"frame_speedup", frame}, {"bytes_ratio", bytes}};
+                }
+            }
+        }
+        if (device.validationErrors()) {
+            std::fprintf(stderr, "agaa-timings: %u validation error(s)\n", device.validationErrors());
+            return 1;
+        }
+        if (!jsonPath.empty()) std::ofstream(jsonPath) << out.dump(2) << "\n";
+    } catch (const eng::vk::MissingCapability& e) {
+        std::fprintf(stderr, "agaa-timings: the device lacks a required capability: %s\n", e.what());
+        return 3;
+    } catch (const std::invalid_argument& e) {
+        std::fprintf(stderr, "agaa-timings: %s\n", e.what());
+        return 2;
+    } catch (const eng::scene::SceneError& e) {
+        std::fprintf(stderr, "agaa-timings: %s\n", e.what());
+        return 2;
+    }
+    return 0;
+}
