@@ -54,9 +54,11 @@ AggregateAA::AggregateAA(vk::Device& device, const eng::frame::GpuScene& scene, 
         vk::createSampler(device, VK_FILTER_NEAREST, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE, 0.0f, "agaa.fetchSampler");
     createLayouts(scene);
 
-    m_clusterPipeline = vk::createComputePipeline(device, kAgaaClusterComp, m_clusterLayout.layout, {}, "agaa.cluster");
+    m_clusterPipeline = vk::createComputePipeline(device, kAgaaClusterComp, m_clusterLayout.layout,
+                                                  {{settings.samples, settings.aggregates}}, "agaa.cluster");
     m_lightingPipeline = vk::createComputePipeline(device, m_hasEmissive ? kAgaaLightingEmissiveComp : kAgaaLightingComp,
-                                                   m_lightingLayout.layout, {}, "agaa.lighting");
+                                                   m_lightingLayout.layout, {{settings.samples, settings.aggregates}},
+                                                   "agaa.lighting");
     m_debugPipeline =
         vk::createComputePipeline(device, kAgaaDebugAggregatesComp, m_debugLayout.layout, {}, "agaa.debug.aggregates");
 }

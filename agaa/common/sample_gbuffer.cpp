@@ -1,6 +1,6 @@
 #include "agaa/common/sample_gbuffer.h"
 
-#include "agaa/common/push_descriptors.h"
+#include "engine/vk/descriptors.h"
 #include "engine/frame/sample_pattern.h"
 #include "engine/vk/check.h"
 #include "shaders/reference/gbuffer_frag.h"
@@ -124,11 +124,10 @@ SampleGBuffer SampleGBufferPass::add(rg::Graph& graph, const FrameInputs& in) {
             VkBuffer vb = gpuScene->vertexBuffer();
             vkCmdBindVertexBuffers(cmd, 0, 1, &vb, &offset);
             vkCmdBindIndexBuffer(cmd, gpuScene->indexBuffer(), 0, VK_INDEX_TYPE_UINT32);
-            VkDescriptorBufferInfo frameInfo = bufferInfo(ctx.buffer(d.frame));
-            VkDescriptorBufferInfo materialInfo = bufferInfo(ctx.buffer(d.materials));
-            VkWriteDescriptorSet writes[] = {bufferWrite(0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, &frameInfo),
-                                             bufferWrite(1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, &materialInfo)};
-            m_device.pushDescriptorSet()(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, m_layout.layout, 0, 2, writes);
+            eng::vk::PushDescriptors()
+                .uniform(0, ctx.buffer(d.frame).buffer)
+                .storage(1, ctx.buffer(d.materials).buffer)
+                .push(m_device, cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, m_layout.layout);
             VkDescriptorSet textures = gpuScene->textureSet();
             vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, m_layout.layout, 1, 1, &textures, 0, nullptr);
             VkPipeline bound = VK_NULL_HANDLE;

@@ -1,10 +1,9 @@
 #pragma once
 // The per-sample G-buffer raster pass (DESIGN section 5): 16 bytes per sample plus
 // 4 bytes depth, at n = 1, 4 natively and 8, 16, 32 by layered 4x emulation, drawn
-// with the reference's shaders (reference/gbuffer.vert, .frag). For the methods that
-// light a per-sample G-buffer differently from the reference (Simple/Complex), so
-// that they see exactly the reference's samples. It mirrors the G-buffer pass of
-// agaa/reference/reference.cpp, which can move onto this class.
+// with the reference's shaders (reference/gbuffer.vert, .frag). Shared by the methods
+// that light a per-sample G-buffer (the reference, no-AA, Simple/Complex), so they all
+// see exactly the same samples.
 
 #include "agaa/common/technique.h"
 #include "engine/vk/device.h"

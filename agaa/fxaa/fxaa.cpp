@@ -1,6 +1,6 @@
 #include "agaa/fxaa/fxaa.h"
 
-#include "agaa/common/push_descriptors.h"
+#include "engine/vk/descriptors.h"
 #include "engine/vk/resources.h"
 #include "shaders/fxaa/fxaa_comp.h"
 #include "shared/frame.h"
@@ -74,12 +74,11 @@ rg::Texture Fxaa::addFxaaPass(rg::Graph& graph, rg::Texture display, uint32_t wi
         [this, params](const rg::Context& ctx, const Data& d) {
             VkCommandBuffer cmd = ctx.cmd();
             const rg::PhysicalTexture& output = ctx.texture(d.output);
-            VkDescriptorImageInfo input = sampledImageInfo(m_fetchSampler, ctx.texture(d.input));
-            VkDescriptorImageInfo target = storageImageInfo(output);
-            VkWriteDescriptorSet writes[] = {imageWrite(0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, &input),
-                                             imageWrite(1, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, &target)};
             vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, m_pipeline);
-            m_device.pushDescriptorSet()(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, m_layout.layout, 0, 2, writes);
+            eng::vk::PushDescriptors()
+                .sampled(0, m_fetchSampler, ctx.texture(d.input).sampledView)
+                .storageImage(1, output.view)
+                .push(m_device, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, m_layout.layout);
             vkCmdPushConstants(cmd, m_layout.layout, VK_SHADER_STAGE_ALL, 0, sizeof(params), &params);
             vkCmdDispatch(cmd, (output.desc.width + shared::kTileSize - 1) / shared::kTileSize,
                           (output.desc.height + shared::kTileSize - 1) / shared::kTileSize, 1);

@@ -4,6 +4,7 @@
 // layered 4x emulation; then a tiled-deferred compute pass lights every sample.
 // With n = 1 it is the no-AA method: one sample, one shading event per pixel.
 
+#include "agaa/common/sample_gbuffer.h"
 #include "agaa/common/technique.h"
 #include "engine/vk/device.h"
 #include "engine/vk/pipeline.h"
@@ -27,21 +28,12 @@ public:
     FrameTargets addPasses(eng::rg::Graph& graph, const FrameInputs& inputs) override;
     bool isStorage(const std::string& resourceName) const override;
 
-    static constexpr VkFormat kDepthFormat = VK_FORMAT_D32_SFLOAT;
-    static constexpr VkFormat kNormalFormat = VK_FORMAT_R16G16_SNORM;
-    static constexpr VkFormat kAlbedoMetalFormat = VK_FORMAT_R8G8B8A8_SRGB;
-    static constexpr VkFormat kEmissiveRoughnessFormat = VK_FORMAT_R16G16B16A16_SFLOAT;
-
 private:
-    // G-buffer pipeline variants: [alpha-tested][double-sided].
-    VkPipeline gbufferPipeline(bool alphaTested, bool doubleSided);
-
     eng::vk::Device& m_device;
     ReferenceSettings m_settings;
     std::string m_name;
-    eng::vk::PipelineLayout m_gbufferLayout;
+    SampleGBufferPass m_gbuffer;
     eng::vk::PipelineLayout m_lightingLayout;
-    std::array<VkPipeline, 4> m_gbufferPipelines{};
     VkPipeline m_lightingPipeline = VK_NULL_HANDLE;
     VkSampler m_fetchSampler = VK_NULL_HANDLE;
 };

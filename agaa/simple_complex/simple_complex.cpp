@@ -1,6 +1,6 @@
 #include "agaa/simple_complex/simple_complex.h"
 
-#include "agaa/common/push_descriptors.h"
+#include "engine/vk/descriptors.h"
 #include "engine/vk/check.h"
 #include "engine/vk/resources.h"
 #include "shaders/simple_complex/gbuffer_export_comp.h"
@@ -53,7 +53,8 @@ SimpleComplex::SimpleComplex(vk::Device& device, const eng::frame::GpuScene& sce
     m_lightingLayout = vk::createPipelineLayout(device, lighting, m_name + ".lighting.layout");
     std::span<const uint32_t> code = settings.samples > 1 ? kSimpleComplexLightingMsComp : kSimpleComplexLightingSsComp;
     m_lightingPipeline = vk::createComputePipeline(device, code, m_lightingLayout.layout,
-                                                   {{uint32_t(settings.schedule)}}, m_name + ".lighting");
+                                                   {{uint32_t(settings.schedule), settings.samples}},
+                                                   m_name + ".lighting");
     m_fetchSampler = vk::createSampler(device, VK_FILTER_NEAREST, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE, 0.0f,
                                        m_name + ".fetchSampler");
 }
@@ -98,25 +99,18 @@ FrameTargets SimpleComplex::addLighting(rg::Graph& graph, const FrameInputs& in,
         },
         [this, params, w = in.width, h = in.height](const rg::Context& ctx, const Lighting& d) {
             VkCommandBuffer cmd = ctx.cmd();
-            VkDescriptorBufferInfo frameInfo = bufferInfo(ctx.buffer(d.frame));
-            VkDescriptorBufferInfo lightInfo = bufferInfo(ctx.buffer(d.lights));
-            VkDescriptorImageInfo images[] = {
-                sampledImageInfo(m_fetchSampler, ctx.texture(d.g.depth)),
-                sampledImageInfo(m_fetchSampler, ctx.texture(d.g.normal)),
-                sampledImageInfo(m_fetchSampler, ctx.texture(d.g.albedoMetal)),
-                sampledImageInfo(m_fetchSampler, ctx.texture(d.g.emissiveRoughness)),
-                storageImageInfo(ctx.texture(d.hdr)),
-                storageImageInfo(ctx.texture(d.display)),
-                storageImageInfo(ctx.texture(d.events))};
-            VkWriteDescriptorSet writes[9] = {bufferWrite(0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, &frameInfo),
-                                              bufferWrite(1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, &lightInfo)};
-            for (uint32_t i = 0; i < 7; ++i)
-                writes[2 + i] = imageWrite(2 + i,
-                                           i < 4 ? VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER
-                                                 : VK_DESCRIPTOR_TYPE_STORAGE_IMAGE,
-                                           &images[i]);
             vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, m_lightingPipeline);
-            m_device.pushDescriptorSet()(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, m_lightingLayout.layout, 0, 9, writes);
+            eng::vk::PushDescriptors()
+                .uniform(0, ctx.buffer(d.frame).buffer)
+                .storage(1, ctx.buffer(d.lights).buffer)
+                .sampled(2, m_fetchSampler, ctx.texture(d.g.depth).sampledView)
+                .sampled(3, m_fetchSampler, ctx.texture(d.g.normal).sampledView)
+                .sampled(4, m_fetchSampler, ctx.texture(d.g.albedoMetal).sampledView)
+                .sampled(5, m_fetchSampler, ctx.texture(d.g.emissiveRoughness).sampledView)
+                .storageImage(6, ctx.texture(d.hdr).view)
+                .storageImage(7, ctx.texture(d.display).view)
+                .storageImage(8, ctx.texture(d.events).view)
+                .push(m_device, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, m_lightingLayout.layout);
             vkCmdPushConstants(cmd, m_lightingLayout.layout, VK_SHADER_STAGE_ALL, 0, sizeof(params), &params);
             vkCmdDispatch(cmd, (w + shared::kTileSize - 1) / shared::kTileSize,
                           (h + shared::kTileSize - 1) / shared::kTileSize, 1);
@@ -153,16 +147,13 @@ void SimpleComplex::addClassificationExport(rg::Graph& graph, const FrameInputs&
         },
         [this, w = in.width, h = in.height](const rg::Context& ctx, const Export& d) {
             VkCommandBuffer cmd = ctx.cmd();
-            VkDescriptorBufferInfo frameInfo = bufferInfo(ctx.buffer(d.frame));
-            VkDescriptorBufferInfo targetInfo = bufferInfo(ctx.buffer(d.target));
-            VkDescriptorImageInfo depth = sampledImageInfo(m_fetchSampler, ctx.texture(d.depth));
-            VkDescriptorImageInfo normal = sampledImageInfo(m_fetchSampler, ctx.texture(d.normal));
-            VkWriteDescriptorSet writes[] = {bufferWrite(0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, &frameInfo),
-                                             imageWrite(1, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, &depth),
-                                             imageWrite(2, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, &normal),
-                                             bufferWrite(3, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, &targetInfo)};
             vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, m_exportPipeline);
-            m_device.pushDescriptorSet()(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, m_exportLayout.layout, 0, 4, writes);
+            eng::vk::PushDescriptors()
+                .uniform(0, ctx.buffer(d.frame).buffer)
+                .sampled(1, m_fetchSampler, ctx.texture(d.depth).sampledView)
+                .sampled(2, m_fetchSampler, ctx.texture(d.normal).sampledView)
+                .storage(3, ctx.buffer(d.target).buffer)
+                .push(m_device, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, m_exportLayout.layout);
             vkCmdDispatch(cmd, (w + 7) / 8, (h + 7) / 8, 1);
         });
 }

@@ -8,6 +8,10 @@
 #include "shared/clustering.h"
 
 layout(local_size_x = 8, local_size_y = 8) in;
+// n and c as specialisation constants: the per-sample loops get constant trip counts, so the
+// compiler can unroll them and keep the sample arrays in registers instead of scratch memory.
+layout(constant_id = 0) const uint kSamples = 8u;
+layout(constant_id = 1) const uint kAggregates = 2u;
 
 layout(set = 0, binding = 0) uniform Frame { FrameConstants frame; };
 layout(set = 0, binding = 1) uniform Agaa { AgaaConstants agaa; };
@@ -20,18 +24,16 @@ void main() {
     uvec2 pixel = gl_GlobalInvocationID.xy;
     uvec2 size = uvec2(frame.extent.xy);
     if (any(greaterThanEqual(pixel, size))) return;
-    uint n = agaa.shape.w;
-    uint c = agaa.shape.x;
+    const uint n = kSamples;
+    const uint c = kAggregates;
     float px[kMaxSamples], py[kMaxSamples], pz[kMaxSamples];
     float nx[kMaxSamples], ny[kMaxSamples], nz[kMaxSamples];
     bool valid[kMaxSamples];
     float vx, vy, vz;
     pixelCentreToCamera(pixel.x, pixel.y, agaa.ndcParams.x, agaa.ndcParams.y, agaa.ndcParams.z, agaa.ndcParams.w,
                         vx, vy, vz);
-    for (uint s = 0u; s < kMaxSamples; ++s) {
+    for (uint s = 0u; s < n; ++s) {
         valid[s] = false;
-        px[s] = 0.0; py[s] = 0.0; pz[s] = 0.0; nx[s] = 0.0; ny[s] = 0.0; nz[s] = 0.0;
-        if (s >= n) continue;
         ivec3 at = ivec3(pixel, s / 4u);
         float d = texelFetch(visibilityDepth, at, int(s % 4u)).r;
         valid[s] = d > 0.0; // reversed Z: cleared depth 0 is the far plane, i.e. sky
@@ -47,7 +49,7 @@ void main() {
     }
     uint ids[kMaxSamples];
     uint count = clusterSamples(n, c, agaa.clustering.y, px, py, pz, nx, ny, nz, valid, ids);
-    uint words = agaa.shape.z;
+    const uint words = (kSamples * metadataBits(kAggregates) + 31u) / 32u;
     uint base = (pixel.y * size.x + pixel.x) * words;
     for (uint w = 0u; w < words; ++w) metadata[base + w] = packMetadataWord(w, n, c, ids);
     imageStore(aggregateCount, ivec2(pixel), uvec4(count));

@@ -16,6 +16,9 @@
 #include "shared/frame.h"
 
 layout(local_size_x = 16, local_size_y = 16) in;
+// n and c as specialisation constants: constant trip counts for the per-sample loops.
+layout(constant_id = 0) const uint kSamples = 8u;
+layout(constant_id = 1) const uint kAggregates = 2u;
 
 layout(set = 0, binding = 0) uniform Frame { FrameConstants frame; };
 layout(set = 0, binding = 1, std430) readonly buffer Lights { GpuLight lights[]; };
@@ -38,9 +41,9 @@ layout(set = 0, binding = 10) uniform sampler2DMSArray emissiveSamples;
 #include "common/tonemap.glsl"
 
 uint sampleAggregate(uint s, uint pixelIndex) {
-    uint words = agaa.shape.z;
+    const uint words = (kSamples * metadataBits(kAggregates) + 31u) / 32u;
     if (words == 0u) return 0u;
-    uint c = agaa.shape.x;
+    const uint c = kAggregates;
     return unpackMetadata(metadata[pixelIndex * words + (s * metadataBits(c)) / 32u], s, c);
 }
 
@@ -48,8 +51,8 @@ void main() {
     ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
     ivec2 size = ivec2(frame.extent.xy);
     bool inside = all(lessThan(pixel, size));
-    uint n = agaa.shape.w;
-    uint c = agaa.shape.x;
+    const uint n = kSamples;
+    const uint c = kAggregates;
     uint pixelIndex = inside ? uint(pixel.y * size.x + pixel.x) : 0u;
 
     // ---- 1. aggregate at the top of the tile -------------------------------------------

@@ -29,8 +29,12 @@ layout(set = 0, binding = 5) uniform sampler2D gEmissiveRoughness;
 #define FETCH(tex, p, layer, s) texelFetch(tex, p, 0)
 #endif
 
-// Sample s = layer * samplesPerLayer + hardware sample (engine/frame/sample_pattern.h).
-#define FETCH_SAMPLE(tex, p, s) FETCH(tex, p, (s) / frame.counts.y, (s) % frame.counts.y)
+// n as a specialisation constant (id 1): per-sample loops get constant trip counts and unroll.
+// Sample s = layer * samplesPerLayer + hardware sample (engine/frame/sample_pattern.h); the
+// hardware rate is 4 whenever n > 1.
+layout(constant_id = 1) const uint kSampleCount = 1u;
+const uint kSamplesPerLayer = kSampleCount > 1u ? 4u : 1u;
+#define FETCH_SAMPLE(tex, p, s) FETCH(tex, p, (s) / kSamplesPerLayer, (s) % kSamplesPerLayer)
 
 float gbufferDepth(ivec2 pixel, uint s) { return FETCH_SAMPLE(gDepth, pixel, s).r; }
 
@@ -41,7 +45,7 @@ vec3 gbufferNormal(ivec2 pixel, uint s) { return decodeOctahedral(FETCH_SAMPLE(g
 void gbufferDistanceRange(ivec2 pixel, out float tmin, out float tmax) {
     tmin = 1e30;
     tmax = -1e30;
-    for (uint s = 0u; s < frame.counts.x; ++s) {
+    for (uint s = 0u; s < kSampleCount; ++s) {
         float d = gbufferDepth(pixel, s);
         if (isSky(d)) continue;
         float t = viewDistanceFromDepth(d, frame.depthParams.x, frame.depthParams.y);

@@ -19,7 +19,7 @@ void main() {
     ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
     ivec2 size = ivec2(frame.extent.xy);
     bool inside = all(lessThan(pixel, size));
-    uint n = frame.counts.x;
+    const uint n = kSampleCount;
 
     float tmin = 1e30, tmax = -1e30;
     if (inside) gbufferDistanceRange(pixel, tmin, tmax);

@@ -110,7 +110,8 @@ inline_fn float aggregateDistance(float ax, float ay, float az, float anx, float
     aggregateDistance(px[a], py[a], pz[a], nx[a], ny[a], nz[a], px[b], py[b], pz[b], nx[b], ny[b], nz[b])
 
 // Algorithm 1. Inputs: n samples (valid = not sky), positions divided by k, unit normals.
-// Output: each valid sample's aggregate id (0 for sky samples) and the number of aggregates.
+// Output: ids[s] for s < n: each valid sample's aggregate id (0 for sky samples), and the
+// number of aggregates. Entries from n up are not written.
 //  1(b) mean position and normal of the valid samples;
 //  1(c) seed 0: the sample farthest from the mean;
 //  1(d) seed 1: the sample farthest from seed 0;
@@ -127,9 +128,9 @@ inline_fn uint clusterSamples(uint n, uint c, float threshold, IN_ARRAY(float) p
                               OUT_ARRAY(uint) ids[kMaxSamples]) {
     uint count = 0u;
     PRECISE float mx = 0.0f, my = 0.0f, mz = 0.0f, mnx = 0.0f, mny = 0.0f, mnz = 0.0f;
-    for (uint s = 0u; s < kMaxSamples; ++s) {
+    for (uint s = 0u; s < n; ++s) {
         ids[s] = 0u;
-        if (s >= n || !valid[s]) continue;
+        if (!valid[s]) continue;
         mx = mx + px[s];
         my = my + py[s];
         mz = mz + pz[s];
