@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The main job: installs what is missing, builds Release, renders the built-in
-# default scene with every method into out/ (EXR, PNG, stats JSON, graph dump).
-#   tools/run.sh [extra agaa-render flags]
+# default scene with every method into out/ (EXR, PNG, stats JSON, graph dump), and
+# ends with the benchmark sweep on it: out/bench/report.html.
+#   tools/run.sh            (AGAA_RENDER_FLAGS adds agaa-render flags, e.g. "--device NAME")
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
 cd "$root"
@@ -11,10 +12,19 @@ cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release -DAGAA_BUILD_TESTS=OFF >/dev/n
 cmake --build "$build" -j"$(nproc)"
 render="$build/tools/agaa_render/agaa-render"
 mkdir -p out
-"$render" --builtin default --method reference --samples 8 --width 640 --height 360 \
-  --out out/default_reference8 --stats out/default_reference8.json --graph out/default_reference8.dot "$@"
-"$render" --builtin default --method noaa --width 640 --height 360 \
-  --out out/default_noaa --stats out/default_noaa.json "$@"
+# Every method at its paper setting (n = 8; AGAA c = 2), validation layer on.
+for job in "reference 8 1" "noaa 1 1" "simple-complex 8 1" "fxaa 1 1" "agaa 8 2"; do
+  set -- $job
+  name="default_$1"
+  "$render" --builtin default --method "$1" --samples "$2" --aggregates "$3" --width 640 --height 360 \
+    --validate --out "out/$name" --stats "out/$name.json" --graph "out/$name.dot" ${AGAA_RENDER_FLAGS:-}
+done
+# The clustering made visible: aggregate count per pixel (hue) and split (brightness).
+"$render" --builtin default --method agaa --samples 8 --aggregates 2 --debug aggregates --width 640 --height 360 \
+  --validate --out out/default_agaa_aggregates
 echo
 echo "out/ holds:"
 ls -1 out | sed 's/^/  out\//'
+# What accuracy costs in time, on the default scene: every method and setting, and the report.
+"$build/tools/agaa_bench/agaa-bench" --out out/bench --scenes default --size 160x90 --frames 3 --warmup 1
+echo "report: $root/out/bench/report.html"
