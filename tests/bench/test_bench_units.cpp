@@ -1,0 +1,214 @@
+// agaa-bench without a device: sweep planning and --job slicing, the job id,
+// the spread statistics, the worst-window search, the temporal measure, the
+// JSON round trip and the merge order.
+
+#include "claims.h"
+#include "image_error.h"
+#include "merge.h"
+#include "result_io.h"
+#include "sweep_plan.h"
+
+#include "agaa/methods.h"
+#include "engine/io/image.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <set>
+
+namespace {
+
+using namespace agaa::bench;
+
+const agaa::MethodInfo* firstWith(bool samples, bool aggregates) {
+    for (const agaa::MethodInfo& m : agaa::knownMethods())
+        if (m.usesSamples == samples && m.usesAggregates == aggregates) return &m;
+    return nullptr;
+}
+
+TEST(SweepPlan, EachMethodGetsExactlyTheSettingsItTakes) {
+    SweepSettings s;
+    s.scenes = {"plane", "metal"};
+    for (const agaa::MethodInfo& m : agaa::knownMethods())
+        s.methods.push_back(m.name);
+    s.samples = {32, 8, 8}; // unsorted with a duplicate: planned once each, ascending
+    s.aggregates = {2, 1};
+    const std::vector<Job> plan = planSweep(s);
+    size_t expected = 0;
+    for (const agaa::MethodInfo& m : agaa::knownMethods())
+        expected += (m.usesSamples ? 2 : 1) * (m.usesAggregates ? 2 : 1);
+    ASSERT_EQ(plan.size(), 2 * expected) << "scenes x methods x (n if taken) x (c if taken)";
+    std::set<std::string> ids;
+    for (size_t i = 0; i < plan.size(); ++i) {
+        EXPECT_EQ(plan[i].index, i) << "plan indices are positions, so --job slices are stable";
+        EXPECT_TRUE(ids.insert(plan[i].id()).second) << "duplicate job " << plan[i].id();
+        if (!plan[i].usesSamples) {
+            EXPECT_EQ(plan[i].samples, kSamplesWhenUnused) << plan[i].id();
+        }
+        if (!plan[i].usesAggregates) {
+            EXPECT_EQ(plan[i].aggregates, kAggregatesWhenUnused) << plan[i].id();
+        }
+    }
+    EXPECT_EQ(plan.front().scene, "plane") << "scenes in the given order, so one scene's jobs run together";
+    EXPECT_EQ(plan.back().scene, "metal");
+    if (const agaa::MethodInfo* m = firstWith(true, false)) {
+        auto it = std::find_if(plan.begin(), plan.end(), [&](const Job& j) { return j.method == m->name; });
+        ASSERT_NE(it, plan.end());
+        EXPECT_EQ(it->samples, 8u) << "n ascending";
+        EXPECT_EQ((it + 1)->samples, 32u);
+    }
+}
+
+TEST(SweepPlan, JobIdNamesSceneMethodAndSettings) {
+    EXPECT_EQ(jobId("foliage", "agaa", 8, 2), "foliage__agaa__n8__c2");
+}
+
+TEST(SweepPlan, UnknownMethodIsRefusedByName) {
+    SweepSettings s;
+    s.scenes = {"plane"};
+    s.methods = {"nope"};
+    try {
+        planSweep(s);
+        FAIL() << "an unknown method must be refused";
+    } catch (const std::invalid_argument& e) {
+        EXPECT_NE(std::string(e.what()).find("nope"), std::string::npos) << e.what();
+    }
+}
+
+TEST(JobSlice, SlicesPartitionThePlan) {
+    const JobSlice a = parseJobSlice("0/3"), b = parseJobSlice("1/3"), c = parseJobSlice("2/3");
+    for (size_t i = 0; i < 30; ++i)
+        EXPECT_EQ(int(a.contains(i)) + int(b.contains(i)) + int(c.contains(i)), 1) << "job " << i;
+    for (const char* bad : {"3/3", "1", "a/2", "1/0", "-1/2", "1/2/3", "", "0/2000"})
+        EXPECT_THROW(parseJobSlice(bad), std::invalid_argument) << "'" << bad << "' must be refused";
+}
+
+TEST(Spread, MedianQuartilesAndRangeOverTheSamples) {
+    const Spread s = makeSpread({5.0, 1.0, 3.0, 2.0, 4.0});
+    EXPECT_DOUBLE_EQ(s.median, 3.0);
+    EXPECT_DOUBLE_EQ(s.min, 1.0);
+    EXPECT_DOUBLE_EQ(s.max, 5.0);
+    EXPECT_DOUBLE_EQ(s.q1, 2.0);
+    EXPECT_DOUBLE_EQ(s.q3, 4.0);
+    EXPECT_EQ(s.samples, (std::vector<double>{5.0, 1.0, 3.0, 2.0, 4.0})) << "samples kept in frame order";
+    EXPECT_DOUBLE_EQ(makeSpread({1.0, 2.0}).median, 1.5);
+}
+
+TEST(WorstWindow, FindsTheBlockOfHighestErrorAndSkipsTheExcludedOne) {
+    const uint32_t w = 40, h = 24;
+    std::vector<double> score(w * h, 0.0);
+    for (uint32_t y = 12; y < 20; ++y)
+        for (uint32_t x = 24; x < 32; ++x)
+            score[y * w + x] = 1.0;
+    for (uint32_t y = 0; y < 8; ++y)
+        for (uint32_t x = 0; x < 8; ++x)
+            score[y * w + x] = 0.5;
+    const Window best = worstWindow(score, w, h, 8);
+    EXPECT_EQ(best.x, 24u);
+    EXPECT_EQ(best.y, 12u);
+    EXPECT_DOUBLE_EQ(best.meanError, 1.0);
+    const Window second = worstWindow(score, w, h, 8, best);
+    EXPECT_EQ(second.x, 0u) << "the second crop is the next feature, not an overlap of the first";
+    EXPECT_EQ(second.y, 0u);
+    EXPECT_DOUBLE_EQ(second.meanError, 0.5);
+    const Window clamped = worstWindow(std::vector<double>(16, 1.0), 4, 4, 100);
+    EXPECT_EQ(clamped.width, 4u) << "a window larger than the image is clamped to it";
+    EXPECT_DOUBLE_EQ(clamped.meanError, 1.0);
+    EXPECT_THROW(worstWindow(score, 4, 4, 8), std::invalid_argument)
+        << "a score of the wrong size is refused";
+}
+
+TEST(TemporalErrorChange, ConstantErrorIsStableFlickerIsNot) {
+    eng::io::ImageF truth = eng::io::makeImage(4, 4, {0.5f, 0.5f, 0.5f, 1.0f});
+    eng::io::ImageF biased = eng::io::makeImage(4, 4, {0.6f, 0.6f, 0.6f, 1.0f});
+    eng::io::ImageF low = eng::io::makeImage(4, 4, {0.4f, 0.4f, 0.4f, 1.0f});
+    const std::vector<double> steady = temporalErrorChange({biased, biased, biased}, {truth, truth, truth});
+    ASSERT_EQ(steady.size(), 2u) << "one value per step";
+    EXPECT_NEAR(steady[0], 0.0, 1e-12) << "the same error every frame is not instability";
+    const std::vector<double> flicker = temporalErrorChange({biased, low}, {truth, truth});
+    EXPECT_NEAR(flicker[0], 0.2, 1e-6) << "error +0.1 then -0.1: |change| = 0.2 per channel";
+    EXPECT_THROW(temporalErrorChange({truth}, {truth}), std::invalid_argument);
+}
+
+TEST(SrgbEncoded, EncodesColourAndKeepsAlpha) {
+    eng::io::ImageF img = eng::io::makeImage(1, 1, {0.0f, 1.0f, 0.5f, 0.25f});
+    const eng::io::ImageF e = srgbEncoded(img);
+    EXPECT_FLOAT_EQ(e.rgba[0], 0.0f);
+    EXPECT_FLOAT_EQ(e.rgba[1], 1.0f);
+    EXPECT_NEAR(e.rgba[2], 0.7354f, 1e-3) << "sRGB OETF of 0.5";
+    EXPECT_FLOAT_EQ(e.rgba[3], 0.25f);
+}
+
+JobResult sampleResult(const std::string& scene, const std::string& method, uint32_t n, uint32_t c) {
+    JobResult r;
+    r.job.scene = scene;
+    r.job.method = method;
+    r.job.samples = n;
+    r.job.aggregates = c;
+    r.job.usesSamples = true;
+    r.job.usesAggregates = c != 0;
+    r.width = 8;
+    r.height = 8;
+    r.frameMs = makeSpread({1.0, 2.0, 3.0});
+    r.passes = {{"x.lighting", makeSpread({0.5, 0.75})}};
+    r.bytesPerPixel = 12.5;
+    r.errorSameN = ErrorMetrics{0.0, std::numeric_limits<double>::infinity(), 1.0, 0.0};
+    r.errorHighRate = ErrorMetrics{0.01, 40.0, 0.99, 0.05};
+    r.temporal = TemporalStability{5, 0.5f, 4, 4, 0.002, {0.001, 0.003}};
+    r.imageDisplay = "images/a.png";
+    return r;
+}
+
+TEST(ResultIo, JsonRoundTripKeepsEveryFieldIncludingInfinitePsnr) {
+    const JobResult r = sampleResult("plane", "agaa", 8, 2);
+    const nlohmann::json j = toJson(r);
+    EXPECT_TRUE(j.at("error_vs_same_n_reference").at("psnr_db").is_null()) << "JSON has no infinity";
+    EXPECT_TRUE(j.contains("timing")) << "timings live under one key so comparisons can drop them";
+    const JobResult back = jobFromJson(j);
+    EXPECT_EQ(toJson(back), j);
+    EXPECT_TRUE(std::isinf(back.errorSameN->psnr));
+    nlohmann::json broken = j;
+    broken["id"] = "other";
+    EXPECT_THROW(jobFromJson(broken), std::runtime_error)
+        << "an id that does not match its fields is refused";
+}
+
+TEST(Merge, DropsDuplicatesAndSortsCanonically) {
+    std::vector<JobResult> in = {
+        sampleResult("metal", "reference", 8, 0), sampleResult("plane", "reference", 32, 0),
+        sampleResult("plane", "reference", 8, 0), sampleResult("metal", "reference", 8, 0)};
+    const MergeOutcome m = mergeResults(in);
+    ASSERT_EQ(m.results.size(), 3u);
+    ASSERT_EQ(m.warnings.size(), 1u) << "the duplicate is reported";
+    // sceneKinds() order puts metal before plane; n ascending within a method.
+    EXPECT_EQ(m.results[0].job.id(), "metal__reference__n8__c0");
+    EXPECT_EQ(m.results[1].job.id(), "plane__reference__n8__c0");
+    EXPECT_EQ(m.results[2].job.id(), "plane__reference__n32__c0");
+}
+
+TEST(Claims, NotMeasuredWhenTheRunLacksAMethodAndARatioWhenItHasBoth) {
+    std::vector<JobResult> none = {sampleResult("plane", "reference", 8, 0)};
+    for (const ClaimRow& row : measureClaims(none))
+        EXPECT_EQ(row.measured, "not measured") << row.claim;
+
+    JobResult agaa = sampleResult("plane", "agaa", 8, 2);
+    agaa.passes = {{"agaa.lighting", makeSpread({1.0})}};
+    JobResult ref = sampleResult("plane", "reference", 8, 0);
+    ref.passes = {{"reference.lighting", makeSpread({2.6})}};
+    ref.bytesPerPixel = 25.0;
+    bool sawSpeedup = false, sawMemory = false;
+    for (const ClaimRow& row : measureClaims({ref, agaa})) {
+        if (row.claim.find("(8x, c=2) lighting vs shading every sample") != std::string::npos) {
+            EXPECT_EQ(row.measured, "2.60x") << "reference lighting 2.6 ms / AGAA lighting 1.0 ms";
+            sawSpeedup = true;
+        }
+        if (row.claim.find("(8x, c=2) storage") != std::string::npos) {
+            EXPECT_EQ(row.measured, "-50%") << "12.5 B/px against 25 B/px";
+            sawMemory = true;
+        }
+    }
+    EXPECT_TRUE(sawSpeedup && sawMemory);
+}
+
+} // namespace

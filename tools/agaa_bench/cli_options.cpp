@@ -1,0 +1,185 @@
+#include "cli_options.h"
+
+#include "agaa/methods.h"
+#include "engine/frame/sample_pattern.h"
+#include "engine/scene/scenegen.h"
+
+#include <algorithm>
+#include <charconv>
+#include <optional>
+#include <sstream>
+
+namespace agaa::bench {
+
+namespace {
+
+// The default sweep: small enough for about 5 minutes on 2 shared cores with validation off.
+constexpr uint32_t kDefaultWidth = 160, kDefaultHeight = 90;
+const std::vector<uint32_t> kDefaultSamples = {8, 16, 32};
+const std::vector<uint32_t> kDefaultAggregates = {1, 2};
+// --full: the paper's settings (section 5, table 1).
+constexpr uint32_t kFullWidth = 1280, kFullHeight = 720;
+const std::vector<uint32_t> kFullSamples = {8, 32};
+const std::vector<uint32_t> kFullAggregates = {1, 2, 3, 4};
+
+std::vector<std::string> splitList(const std::string& flag, const std::string& value) {
+    std::vector<std::string> items;
+    std::stringstream s(value);
+    for (std::string item; std::getline(s, item, ',');) {
+        if (item.empty()) throw BadArgument(flag + " '" + value + "' has an empty item (use a,b,c)");
+        items.push_back(item);
+    }
+    if (items.empty()) throw BadArgument(flag + " needs at least one value");
+    return items;
+}
+
+uint32_t parseUint(const std::string& flag, const std::string& value, uint32_t lo, uint32_t hi) {
+    uint32_t v = 0;
+    auto [ptr, ec] = std::from_chars(value.data(), value.data() + value.size(), v);
+    if (ec != std::errc() || ptr != value.data() + value.size() || value.empty() || v < lo || v > hi)
+        throw BadArgument(flag + " '" + value + "' is not an integer in " + std::to_string(lo) + ".." +
+                          std::to_string(hi));
+    return v;
+}
+
+std::string joined(const std::vector<std::string>& v) {
+    std::string s;
+    for (const std::string& x : v)
+        s += (s.empty() ? "" : ", ") + x;
+    return s;
+}
+
+} // namespace
+
+std::string usage() {
+    return "usage: agaa-bench --out DIR [--scenes a,b] [--methods a,b] [--samples 8,32] [--aggregates 1,2]\n"
+           "                  [--size WxH] [--frames K] [--warmup K] [--temporal K] [--full] [--job I/N]\n"
+           "                  [--validate] [--help]\n"
+           "       agaa-bench --out DIR --merge DIR1 DIR2 ...\n"
+           "\n"
+           "Renders every method and setting on every scene, measures GPU time per pass, memory, and error\n"
+           "against the reference at the same n and against a high-rate truth (the reference at n=32), and\n"
+           "writes DIR/jobs/<scene>__<method>__n<N>__c<C>.json, DIR/results.json, DIR/results.csv,\n"
+           "DIR/report.html and DIR/images/. Error metrics are on the tone-mapped display image, "
+           "sRGB-encoded.\n"
+           "\n"
+           "  --out DIR         output directory (required)\n"
+           "  --scenes a,b      built-in scenes (default: " +
+           joined(defaultSweepScenes()) +
+           ")\n"
+           "  --methods a,b     methods (default: all known)\n"
+           "  --samples 8,32    n for methods that take it: 1, 4, 8, 16, 32 (default 8,16,32)\n"
+           "  --aggregates 1,2  c for methods that take it: 1..4 (default 1,2)\n"
+           "  --size WxH        image size, 1..8192 each (default 160x90)\n"
+           "  --frames K        timed frames per job, 1..1000 (default 3); times are medians with min/max\n"
+           "  --warmup K        untimed frames first, 0..1000 (default 1)\n"
+           "  --temporal K      frames on the orbit path for temporal stability, 0 (off) or 2..64\n"
+           "                    (default 5, 0.5 degree steps, rendered at most 320 pixels wide)\n"
+           "  --full            the paper's settings: 1280x720, n = 8 and 32, c = 1..4, all scenes\n"
+           "                    (flags given explicitly still win)\n"
+           "  --job I/N         run only jobs I, I+N, I+2N, ... of the plan (split a sweep; merge with "
+           "--merge)\n"
+           "  --merge DIR...    merge the jobs of several output directories into --out, without rendering\n"
+           "  --validate        Khronos validation layer on; a validation error makes the exit status 1\n"
+           "\n"
+           "exit status: 0 done; 1 a job failed or validation errors; 2 bad arguments or missing Chart.js;\n"
+           "3 the device lacks something every job needs.\n";
+}
+
+BenchOptions parseOptions(int argc, char** argv) {
+    BenchOptions o;
+    for (int i = 0; i < argc; ++i)
+        o.command += (i ? " " : "") + std::string(argv[i]);
+    std::optional<std::vector<std::string>> scenes, methods;
+    std::optional<std::vector<uint32_t>> samples, aggregates;
+    std::optional<uint32_t> width, height;
+    bool full = false, merge = false, sliced = false;
+    SweepSettings& s = o.sweep;
+    for (int i = 1; i < argc; ++i) {
+        const std::string a = argv[i];
+        auto value = [&]() -> std::string {
+            if (i + 1 >= argc) throw BadArgument(a + " needs a value");
+            return argv[++i];
+        };
+        if (a == "--help" || a == "-h")
+            o.help = true;
+        else if (a == "--out")
+            o.out = value();
+        else if (a == "--scenes") {
+            scenes = splitList(a, value());
+            const std::vector<std::string> known = eng::scene::sceneKinds();
+            for (const std::string& sc : *scenes)
+                if (std::find(known.begin(), known.end(), sc) == known.end())
+                    throw BadArgument("--scenes: '" + sc +
+                                      "' is not a built-in scene (known: " + joined(known) + ")");
+        } else if (a == "--methods") {
+            methods = splitList(a, value());
+            for (const std::string& m : *methods)
+                if (!isKnownMethod(m))
+                    throw BadArgument("--methods: '" + m + "' is unknown (known: " + knownMethodNames() +
+                                      ")");
+        } else if (a == "--samples") {
+            samples.emplace();
+            for (const std::string& v : splitList(a, value())) {
+                uint32_t n = parseUint(a, v, 1, 32);
+                if (!eng::frame::isSupportedSampleCount(n))
+                    throw BadArgument("--samples: '" + v + "' is not supported (allowed: " +
+                                      eng::frame::supportedSampleCounts() + ")");
+                samples->push_back(n);
+            }
+        } else if (a == "--aggregates") {
+            aggregates.emplace();
+            for (const std::string& v : splitList(a, value()))
+                aggregates->push_back(parseUint(a, v, 1, 4));
+        } else if (a == "--size") {
+            const std::string v = value();
+            const size_t x = v.find('x');
+            if (x == std::string::npos) throw BadArgument("--size '" + v + "' is not WxH (e.g. 160x90)");
+            width = parseUint("--size width", v.substr(0, x), 1, 8192);
+            height = parseUint("--size height", v.substr(x + 1), 1, 8192);
+        } else if (a == "--frames")
+            s.timedFrames = parseUint(a, value(), 1, 1000);
+        else if (a == "--warmup")
+            s.warmupFrames = parseUint(a, value(), 0, 1000);
+        else if (a == "--temporal") {
+            const std::string v = value();
+            s.temporalFrames = parseUint(a, v, 0, 64);
+            if (s.temporalFrames == 1)
+                throw BadArgument("--temporal '1': a path needs 0 (off) or 2..64 frames");
+        } else if (a == "--full")
+            full = true;
+        else if (a == "--job") {
+            try {
+                o.slice = parseJobSlice(value());
+            } catch (const std::invalid_argument& e) {
+                throw BadArgument(e.what());
+            }
+            sliced = true;
+        } else if (a == "--merge") {
+            merge = true;
+            while (i + 1 < argc && std::string(argv[i + 1]).rfind("--", 0) != 0)
+                o.mergeDirs.emplace_back(argv[++i]);
+            if (o.mergeDirs.empty()) throw BadArgument("--merge needs at least one directory");
+        } else if (a == "--validate")
+            s.validate = true;
+        else
+            throw BadArgument("unknown argument '" + a + "' (see --help)");
+    }
+    if (o.help) return o;
+    if (o.out.empty()) throw BadArgument("--out DIR is required (see --help)");
+    if (merge && sliced) throw BadArgument("--job and --merge do not go together: --merge renders nothing");
+
+    s.scenes = scenes ? *scenes : full ? eng::scene::sceneKinds() : defaultSweepScenes();
+    if (methods)
+        s.methods = *methods;
+    else
+        for (const MethodInfo& m : knownMethods())
+            s.methods.push_back(m.name);
+    s.samples = samples ? *samples : full ? kFullSamples : kDefaultSamples;
+    s.aggregates = aggregates ? *aggregates : full ? kFullAggregates : kDefaultAggregates;
+    s.width = width ? *width : full ? kFullWidth : kDefaultWidth;
+    s.height = height ? *height : full ? kFullHeight : kDefaultHeight;
+    return o;
+}
+
+} // namespace agaa::bench

@@ -1,0 +1,194 @@
+#include "job_runner.h"
+
+#include "engine/frame/frame_constants.h"
+#include "engine/io/metrics.h"
+#include "engine/io/png.h"
+#include "engine/scene/scenegen.h"
+
+#include <chrono>
+#include <limits>
+#include <stdexcept>
+
+namespace agaa::bench {
+
+namespace {
+
+// Error 0.25 (a quarter of the display range) shows as white in the heatmaps.
+constexpr float kHeatmapScale = 4.0f;
+
+const std::string kReference = "reference";
+
+ErrorMetrics identical() {
+    ErrorMetrics e;
+    e.rmse = 0.0;
+    e.psnr = std::numeric_limits<double>::infinity();
+    e.ssim = 1.0;
+    e.p99 = 0.0;
+    return e;
+}
+
+void writeDisplayPng(const std::filesystem::path& file, const eng::io::ImageF& srgb) {
+    std::filesystem::create_directories(file.parent_path());
+    eng::io::writePng(file, eng::io::quantizeToU8(srgb));
+}
+
+} // namespace
+
+JobRunner::JobRunner(eng::vk::Device& device, const SweepSettings& settings, std::filesystem::path outDir)
+    : m_device(device), m_settings(settings), m_outDir(std::move(outDir)) {}
+
+JobRunner::~JobRunner() {
+    m_scene.renderer.reset(); // before the scene it points at
+}
+
+void JobRunner::selectScene(const std::string& name) {
+    if (m_scene.name == name && m_scene.renderer) return;
+    m_scene.renderer.reset();
+    m_scene = SceneState{};
+    m_scene.name = name;
+    m_scene.scene = std::make_unique<eng::scene::Scene>(eng::scene::loadBuiltin(name));
+    m_scene.renderer = std::make_unique<FrameRenderer>(m_device, *m_scene.scene);
+}
+
+RenderRequest JobRunner::request(const std::string& method, uint32_t samples, uint32_t aggregates,
+                                 uint32_t width, uint32_t height, float orbitDegrees) const {
+    RenderRequest r;
+    r.method = method;
+    r.settings.samples = samples;
+    if (aggregates != kAggregatesWhenUnused) r.settings.aggregates = aggregates;
+    r.view.width = width;
+    r.view.height = height;
+    if (orbitDegrees != 0.0f) {
+        const eng::scene::Scene& s = *m_scene.scene;
+        const glm::vec3 centre = 0.5f * (s.bounds.min + s.bounds.max);
+        r.view.viewOverride = eng::frame::orbitView(s.cameras.at(r.view.camera).view, centre, orbitDegrees);
+    }
+    return r;
+}
+
+RenderResult JobRunner::renderTruth(const RenderRequest& request) {
+    const uint32_t before = m_device.validationErrors();
+    RenderResult result = m_scene.renderer->render(request);
+    m_truthValidationErrors += m_device.validationErrors() - before;
+    return result;
+}
+
+const eng::io::ImageF& JobRunner::truth(uint32_t samples) {
+    auto it = m_scene.truthAtSamples.find(samples);
+    if (it != m_scene.truthAtSamples.end()) return it->second;
+    RenderResult r = renderTruth(
+        request(kReference, samples, kAggregatesWhenUnused, m_settings.width, m_settings.height, 0.0f));
+    it = m_scene.truthAtSamples.emplace(samples, srgbEncoded(r.display)).first;
+    return it->second;
+}
+
+const std::vector<eng::io::ImageF>& JobRunner::pathTruth() {
+    if (m_scene.pathTruth.empty()) {
+        uint32_t w = 0, h = 0;
+        temporalSize(m_settings, w, h);
+        for (uint32_t t = 0; t < m_settings.temporalFrames; ++t) {
+            RenderResult r = renderTruth(request(kReference, m_settings.truthSamples, kAggregatesWhenUnused,
+                                                 w, h, float(t) * m_settings.temporalStepDegrees));
+            m_scene.pathTruth.push_back(srgbEncoded(r.display));
+        }
+    }
+    return m_scene.pathTruth;
+}
+
+std::vector<eng::io::ImageF> JobRunner::renderPath(const std::string& method, uint32_t samples,
+                                                   uint32_t aggregates) {
+    uint32_t w = 0, h = 0;
+    temporalSize(m_settings, w, h);
+    std::vector<eng::io::ImageF> frames;
+    for (uint32_t t = 0; t < m_settings.temporalFrames; ++t) {
+        RenderResult r = m_scene.renderer->render(
+            request(method, samples, aggregates, w, h, float(t) * m_settings.temporalStepDegrees));
+        frames.push_back(srgbEncoded(r.display));
+    }
+    return frames;
+}
+
+JobResult JobRunner::run(const Job& job) {
+    selectScene(job.scene);
+    const auto start = std::chrono::steady_clock::now();
+    const uint32_t validationBefore = m_device.validationErrors();
+
+    RenderRequest req =
+        request(job.method, job.samples, job.aggregates, m_settings.width, m_settings.height, 0.0f);
+    req.warmupFrames = m_settings.warmupFrames;
+    req.timedFrames = m_settings.timedFrames;
+    RenderResult rendered = m_scene.renderer->render(req);
+    if (!eng::io::allFinite(rendered.hdr) || !eng::io::allFinite(rendered.display))
+        throw std::runtime_error(job.id() + ": the frame contains NaN or Inf");
+    std::vector<eng::io::ImageF> path;
+    if (m_settings.temporalFrames >= 2) path = renderPath(job.method, job.samples, job.aggregates);
+    uint32_t validationErrors = m_device.validationErrors() - validationBefore;
+    const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+
+    JobResult r;
+    r.job = job;
+    r.samplesRendered = rendered.samples;
+    r.width = m_settings.width;
+    r.height = m_settings.height;
+    r.timedFrames = m_settings.timedFrames;
+    r.warmupFrames = m_settings.warmupFrames;
+    r.device = m_device.caps().deviceName;
+    r.wallSeconds = wall;
+    // Frame time per timed frame = the sum of its pass times, so its spread is known;
+    // the runner's first-start-to-last-end span is kept beside it.
+    std::vector<double> frameSums(rendered.passSamples.empty() ? 0 : rendered.passSamples[0].size(), 0.0);
+    for (size_t p = 0; p < rendered.passes.size(); ++p) {
+        r.passes.push_back({rendered.passes[p].name, makeSpread(rendered.passSamples[p])});
+        for (size_t t = 0; t < frameSums.size() && t < rendered.passSamples[p].size(); ++t)
+            frameSums[t] += rendered.passSamples[p][t];
+    }
+    r.frameMs = makeSpread(frameSums);
+    r.frameSpanMs = rendered.frameGpuMs;
+    r.bytesPerPixel = rendered.bytesPerPixel;
+    r.storageBytes = rendered.storageBytes;
+    r.shadingEventsMean = rendered.shadingEventsMean;
+    r.shadingEventsMax = rendered.shadingEventsMax;
+    r.culledPasses = rendered.culledPasses;
+    r.validationEnabled = m_device.validationEnabled();
+    r.validationErrors = validationErrors;
+    r.truthSamples = m_settings.truthSamples;
+
+    const eng::io::ImageF display = srgbEncoded(rendered.display);
+    if (job.method == kReference) {
+        // The reference is the same-n truth: error 0 by definition. Keep its image as that truth.
+        r.errorSameN = identical();
+        m_scene.truthAtSamples.emplace(job.samples, display);
+    } else if (job.usesSamples) {
+        r.errorSameN = compareImages(display, truth(job.samples));
+    }
+    const eng::io::ImageF& highRate = truth(m_settings.truthSamples);
+    r.errorHighRate = compareImages(display, highRate);
+    if (!path.empty()) {
+        TemporalStability t;
+        t.frames = m_settings.temporalFrames;
+        t.stepDegrees = m_settings.temporalStepDegrees;
+        t.width = path[0].width;
+        t.height = path[0].height;
+        t.perStep = temporalErrorChange(path, pathTruth());
+        for (double v : t.perStep)
+            t.meanErrorChange += v / double(t.perStep.size());
+        r.temporal = t;
+    }
+
+    // Images, relative to the output directory (the report references them as files).
+    const std::string size = std::to_string(m_settings.width) + "x" + std::to_string(m_settings.height);
+    r.imageTruth =
+        "images/" + job.scene + "__truth_n" + std::to_string(m_settings.truthSamples) + "_" + size + ".png";
+    if (m_scene.truthImage.empty()) {
+        writeDisplayPng(m_outDir / r.imageTruth, highRate);
+        m_scene.truthImage = r.imageTruth;
+    }
+    r.imageDisplay = "images/" + job.id() + "_" + size + ".png";
+    r.imageHeatmap = "images/" + job.id() + "_" + size + "__error.png";
+    r.heatmapScale = kHeatmapScale;
+    writeDisplayPng(m_outDir / r.imageDisplay, display);
+    writeDisplayPng(m_outDir / r.imageHeatmap, eng::io::errorHeatmap(display, highRate, kHeatmapScale));
+    return r;
+}
+
+} // namespace agaa::bench

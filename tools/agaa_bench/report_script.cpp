@@ -1,0 +1,222 @@
+#include "report_script.h"
+
+namespace agaa::bench {
+
+const char* reportScript() {
+    return R"JS(
+"use strict";
+(function () {
+  const palette = ["#1f77b4", "#d62728", "#2ca02c", "#ff7f0e", "#9467bd", "#8c564b", "#e377c2", "#17becf",
+                   "#7f7f7f", "#bcbd22"];
+  const methodColour = (m) => palette[Math.max(0, BENCH.methods.indexOf(m)) % palette.length];
+  const groupColour = (g) => palette[(BENCH.passGroups.indexOf(g) + 3) % palette.length];
+  const chartErrors = [];
+  let charts = 0;
+
+  // Draws each point's label beside it (Chart.js 3 has no built-in data labels).
+  const pointLabels = {
+    id: "pointLabels",
+    afterDatasetsDraw(chart) {
+      const ctx = chart.ctx;
+      ctx.save();
+      ctx.font = "10px sans-serif";
+      ctx.fillStyle = "#333";
+      chart.data.datasets.forEach((ds, i) => {
+        if (!ds.pointLabels || !chart.isDatasetVisible(i)) return;
+        chart.getDatasetMeta(i).data.forEach((pt, k) => ctx.fillText(ds.pointLabels[k], pt.x + 5, pt.y - 5));
+      });
+      ctx.restore();
+    },
+  };
+  // Horizontal whiskers: the min..max of the timed frames behind each point's median.
+  const xSpread = {
+    id: "xSpread",
+    afterDatasetsDraw(chart) {
+      const ctx = chart.ctx, x = chart.scales.x;
+      ctx.save();
+      chart.data.datasets.forEach((ds, i) => {
+        if (!ds.xSpread || !chart.isDatasetVisible(i)) return;
+        ctx.strokeStyle = ds.borderColor;
+        chart.getDatasetMeta(i).data.forEach((pt, k) => {
+          const [lo, hi] = ds.xSpread[k];
+          ctx.beginPath();
+          ctx.moveTo(x.getPixelForValue(lo), pt.y);
+          ctx.lineTo(x.getPixelForValue(hi), pt.y);
+          ctx.moveTo(x.getPixelForValue(lo), pt.y - 3);
+          ctx.lineTo(x.getPixelForValue(lo), pt.y + 3);
+          ctx.moveTo(x.getPixelForValue(hi), pt.y - 3);
+          ctx.lineTo(x.getPixelForValue(hi), pt.y + 3);
+          ctx.stroke();
+        });
+      });
+      ctx.restore();
+    },
+  };
+
+  // Points not dominated by another (lower or equal cost and lower or equal error), by cost.
+  function paretoFront(points) {
+    const sorted = points.slice().sort((a, b) => a.x - b.x || a.y - b.y);
+    const front = [];
+    let best = Infinity;
+    for (const p of sorted) {
+      if (p.y < best) {
+        front.push(p);
+        best = p.y;
+      }
+    }
+    return front;
+  }
+
+  function tradeOffChart(canvas, jobs, xKey, xTitle) {
+    const withError = jobs.filter((j) => j.rmse !== null);
+    const datasets = [];
+    for (const m of BENCH.methods) {
+      const js = withError.filter((j) => j.method === m);
+      if (!js.length) continue;
+      const ds = {
+        type: "scatter",
+        label: m,
+        data: js.map((j) => ({ x: j[xKey], y: j.rmse })),
+        pointLabels: js.map((j) => j.setting || j.method), // single-setting methods by name
+        backgroundColor: methodColour(m),
+        borderColor: methodColour(m),
+        pointRadius: 4,
+      };
+      if (xKey === "frameMs") ds.xSpread = js.map((j) => [j.frameMin, j.frameMax]);
+      datasets.push(ds);
+    }
+    datasets.push({
+      type: "line",
+      label: "Pareto front",
+      data: paretoFront(withError.map((j) => ({ x: j[xKey], y: j.rmse }))),
+      borderColor: "#444",
+      borderDash: [6, 4],
+      borderWidth: 1.5,
+      pointRadius: 0,
+      fill: false,
+    });
+    return new Chart(canvas, {
+      data: { datasets },
+      plugins: [pointLabels, xSpread],
+      options: {
+        animation: false,
+        layout: { padding: { right: 40, top: 8 } }, // room for the labels of the outermost points
+        responsive: true,
+        maintainAspectRatio: false,
+        scales: {
+          x: { type: "linear", beginAtZero: true, title: { display: true, text: xTitle } },
+          y: { beginAtZero: true, title: { display: true, text: "RMSE vs high-rate truth (sRGB display)" } },
+        },
+        plugins: { legend: { position: "bottom" } },
+      },
+    });
+  }
+
+  function passChart(canvas, jobs) {
+    const groups = BENCH.passGroups.filter((g) => jobs.some((j) => j.passes[g] !== undefined));
+    return new Chart(canvas, {
+      type: "bar",
+      data: {
+        labels: jobs.map((j) => j.label),
+        datasets: groups.map((g) => ({
+          label: g,
+          data: jobs.map((j) => j.passes[g] ?? 0),
+          backgroundColor: groupColour(g),
+        })),
+      },
+      options: {
+        animation: false,
+        responsive: true,
+        maintainAspectRatio: false,
+        scales: {
+          x: { stacked: true, ticks: { autoSkip: false, maxRotation: 60, minRotation: 30 } },
+          y: { stacked: true, beginAtZero: true, title: { display: true, text: "GPU ms (median per pass)" } },
+        },
+        plugins: { legend: { position: "bottom" } },
+      },
+    });
+  }
+
+  function growthChart(canvas, jobs, yKey, yTitle) {
+    const sampled = jobs.filter((j) => j.usesSamples);
+    const ns = [...new Set(sampled.map((j) => j.n))].sort((a, b) => a - b);
+    const series = [...new Set(sampled.map((j) => j.series))];
+    return new Chart(canvas, {
+      type: "line",
+      data: {
+        labels: ns.map((n) => n + "x"),
+        datasets: series.map((s) => {
+          const js = sampled.filter((j) => j.series === s);
+          return {
+            label: s,
+            data: ns.map((n) => {
+              const j = js.find((k) => k.n === n);
+              return j ? j[yKey] : null;
+            }),
+            borderColor: methodColour(js[0].method),
+            backgroundColor: methodColour(js[0].method),
+            borderDash: js[0].c > 1 ? [4 * (js[0].c - 1), 3] : [],
+            spanGaps: true,
+          };
+        }),
+      },
+      options: {
+        animation: false,
+        responsive: true,
+        maintainAspectRatio: false,
+        scales: {
+          x: { title: { display: true, text: "visibility samples per pixel (n)" } },
+          y: { beginAtZero: true, title: { display: true, text: yTitle } },
+        },
+        plugins: { legend: { position: "bottom" } },
+      },
+    });
+  }
+
+  const canvases = document.querySelectorAll("canvas[data-chart]");
+  for (const canvas of canvases) {
+    const jobs = BENCH.jobs.filter((j) => j.scene === canvas.dataset.scene);
+    try {
+      const kind = canvas.dataset.chart;
+      if (kind === "time") tradeOffChart(canvas, jobs, "frameMs", "frame GPU ms (median; whiskers min..max)");
+      else if (kind === "memory") tradeOffChart(canvas, jobs, "bpp", "bytes per pixel (technique storage)");
+      else if (kind === "passes") passChart(canvas, jobs);
+      else if (kind === "growth-time") growthChart(canvas, jobs, "frameMs", "frame GPU ms (median)");
+      else if (kind === "growth-memory") growthChart(canvas, jobs, "bpp", "bytes per pixel");
+      else throw new Error("unknown chart kind " + kind);
+      charts++;
+    } catch (e) {
+      chartErrors.push(canvas.dataset.scene + "/" + canvas.dataset.chart + ": " + e.message);
+    }
+  }
+
+  // Image comparison: the slider uncovers the method's crop over the truth's.
+  for (const slider of document.querySelectorAll("input.cmp-slider")) {
+    const top = slider.parentElement.querySelector(".cmp-top");
+    const apply = () => (top.style.clipPath = "inset(0 " + (100 - slider.value) + "% 0 0)");
+    slider.addEventListener("input", apply);
+    apply();
+  }
+  for (const button of document.querySelectorAll("button.cmp-toggle")) {
+    button.addEventListener("click", () => {
+      const table = document.getElementById(button.dataset.table);
+      const showHeat = table.classList.toggle("show-heat");
+      button.textContent = showHeat ? "slider: error heatmap over truth" : "slider: method over truth";
+    });
+  }
+
+  window.addEventListener("load", () => {
+    const images = [...document.images];
+    const broken = images.filter((i) => !(i.complete && i.naturalWidth > 0));
+    let state;
+    if (chartErrors.length || charts !== canvases.length)
+      state = "error:charts:" + charts + "/" + canvases.length + ":" + chartErrors.join(";");
+    else if (broken.length) state = "error:images:" + broken.map((i) => i.getAttribute("src")).join(";");
+    else state = "ok:" + charts + ":" + images.length;
+    document.body.dataset.rendered = state;
+  });
+})();
+)JS";
+}
+
+} // namespace agaa::bench

@@ -1,0 +1,93 @@
+#pragma once
+// One benchmark job's measurements as a plain struct, and its file forms: the
+// per-job JSON (DIR/jobs/<id>.json, what split sweeps exchange), the merged
+// results.json and results.csv. Everything that varies run to run on the same
+// inputs (GPU times, wall time, device name) sits under "timing" in the JSON,
+// so two runs can be compared by dropping that key.
+
+#include "image_error.h"
+#include "sweep_plan.h"
+
+#include <nlohmann/json.hpp>
+
+#include <cstdint>
+#include <filesystem>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace agaa::bench {
+
+inline constexpr const char* kJobSchema = "agaa-bench-job/1";
+inline constexpr const char* kResultsSchema = "agaa-bench-results/1";
+
+// Median and spread over the timed frames (after warm-up), milliseconds.
+struct Spread {
+    double median = 0.0, min = 0.0, max = 0.0, q1 = 0.0, q3 = 0.0;
+    std::vector<double> samples;
+};
+Spread makeSpread(std::vector<double> samples);
+
+struct PassTime {
+    std::string name;
+    Spread ms;
+};
+
+struct TemporalStability {
+    uint32_t frames = 0;
+    float stepDegrees = 0.0f;
+    uint32_t width = 0, height = 0;
+    double meanErrorChange = 0.0; // mean over steps (see temporalErrorChange)
+    std::vector<double> perStep;
+};
+
+struct JobResult {
+    Job job;
+    uint32_t samplesRendered = 0; // what the technique rasterised (1 for single-sample methods)
+    uint32_t width = 0, height = 0;
+    uint32_t timedFrames = 0, warmupFrames = 0;
+
+    // Timing (under "timing" in the JSON): frame ms is the sum of the frame's pass times.
+    std::string device;
+    Spread frameMs;
+    double frameSpanMs = 0.0; // median first-pass start to last-pass end, from the frame runner
+    std::vector<PassTime> passes;
+    double wallSeconds = 0.0; // this job's wall time on the host, truths excluded
+
+    double bytesPerPixel = 0.0;
+    std::map<std::string, uint64_t> storageBytes;
+    double shadingEventsMean = 0.0;
+    uint32_t shadingEventsMax = 0;
+    std::vector<std::string> culledPasses;
+    bool validationEnabled = false;
+    uint32_t validationErrors = 0;
+
+    // Against the reference at the same n (absent for methods that take no n); for the reference
+    // itself 0 by definition, not rendered twice.
+    std::optional<ErrorMetrics> errorSameN;
+    uint32_t truthSamples = 32;
+    std::optional<ErrorMetrics> errorHighRate; // against the reference at truthSamples, same size
+    std::optional<TemporalStability> temporal;
+
+    // Relative to the output directory.
+    std::string imageDisplay, imageHeatmap, imageTruth;
+    float heatmapScale = 4.0f;
+};
+
+nlohmann::json toJson(const JobResult& r);
+// Throws std::runtime_error naming the field when the JSON is not a job result.
+JobResult jobFromJson(const nlohmann::json& j);
+
+void writeJobFile(const std::filesystem::path& outDir, const JobResult& r);
+JobResult readJobFile(const std::filesystem::path& file);
+
+// results.json: {"schema", "jobs": [...]} in the order given.
+void writeResultsJson(const std::filesystem::path& file, const std::vector<JobResult>& results);
+// results.csv: one row per job, flat columns, header first.
+void writeResultsCsv(const std::filesystem::path& file, const std::vector<JobResult>& results);
+
+// Writes text to a file, creating its directory; throws eng::io::IoError when it cannot.
+void writeTextFile(const std::filesystem::path& file, const std::string& text);
+
+} // namespace agaa::bench

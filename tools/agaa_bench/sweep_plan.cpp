@@ -1,0 +1,98 @@
+#include "sweep_plan.h"
+
+#include "agaa/methods.h"
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <set>
+#include <stdexcept>
+
+namespace agaa::bench {
+
+namespace {
+
+const MethodInfo& methodInfo(const std::string& name) {
+    for (const MethodInfo& m : knownMethods())
+        if (m.name == name) return m;
+    throw std::invalid_argument("--methods: '" + name + "' is unknown (known: " + knownMethodNames() + ")");
+}
+
+std::vector<uint32_t> sortedUnique(std::vector<uint32_t> v) {
+    std::sort(v.begin(), v.end());
+    v.erase(std::unique(v.begin(), v.end()), v.end());
+    return v;
+}
+
+bool parseUint(const std::string& s, uint32_t& out) {
+    auto [ptr, ec] = std::from_chars(s.data(), s.data() + s.size(), out);
+    return ec == std::errc() && ptr == s.data() + s.size() && !s.empty();
+}
+
+} // namespace
+
+std::string jobId(const std::string& scene, const std::string& method, uint32_t samples,
+                  uint32_t aggregates) {
+    return scene + "__" + method + "__n" + std::to_string(samples) + "__c" + std::to_string(aggregates);
+}
+
+std::string Job::id() const {
+    return jobId(scene, method, samples, aggregates);
+}
+
+std::vector<Job> planSweep(const SweepSettings& settings) {
+    const std::vector<uint32_t> samples = sortedUnique(settings.samples);
+    const std::vector<uint32_t> aggregates = sortedUnique(settings.aggregates);
+    std::vector<Job> jobs;
+    std::set<std::string> seen;
+    for (const std::string& scene : settings.scenes) {
+        for (const std::string& method : settings.methods) {
+            const MethodInfo& info = methodInfo(method);
+            const std::vector<uint32_t> ns =
+                info.usesSamples ? samples : std::vector<uint32_t>{kSamplesWhenUnused};
+            const std::vector<uint32_t> cs =
+                info.usesAggregates ? aggregates : std::vector<uint32_t>{kAggregatesWhenUnused};
+            for (uint32_t n : ns) {
+                for (uint32_t c : cs) {
+                    Job job;
+                    job.scene = scene;
+                    job.method = method;
+                    job.samples = n;
+                    job.aggregates = c;
+                    job.usesSamples = info.usesSamples;
+                    job.usesAggregates = info.usesAggregates;
+                    if (!seen.insert(job.id()).second) continue;
+                    job.index = jobs.size();
+                    jobs.push_back(job);
+                }
+            }
+        }
+    }
+    return jobs;
+}
+
+JobSlice parseJobSlice(const std::string& text) {
+    const size_t slash = text.find('/');
+    JobSlice slice;
+    if (slash != std::string::npos && parseUint(text.substr(0, slash), slice.index) &&
+        parseUint(text.substr(slash + 1), slice.count) && slice.count >= 1 && slice.count <= 1024 &&
+        slice.index < slice.count)
+        return slice;
+    throw std::invalid_argument("--job '" + text +
+                                "' is not I/N with N in 1..1024 and 0 <= I < N (e.g. 0/2, 1/2)");
+}
+
+void temporalSize(const SweepSettings& settings, uint32_t& width, uint32_t& height) {
+    width = settings.width;
+    height = settings.height;
+    if (width <= settings.temporalMaxWidth) return;
+    const double scale = double(settings.temporalMaxWidth) / double(width);
+    width = settings.temporalMaxWidth;
+    height = std::max<uint32_t>(1, uint32_t(std::lround(double(settings.height) * scale)));
+}
+
+std::vector<std::string> defaultSweepScenes() {
+    return {"plane", "railings", "foliage", "furball", "metal"};
+}
+
+} // namespace agaa::bench

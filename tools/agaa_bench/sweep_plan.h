@@ -1,0 +1,71 @@
+#pragma once
+// What a benchmark run measures: the sweep settings taken from the command line
+// and the list of jobs they expand to (scene x method x the settings the method
+// takes). A job's id names its JSON file, so sweeps split with --job I/N land in
+// files that merge without clashes.
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace agaa::bench {
+
+struct SweepSettings {
+    std::vector<std::string> scenes;
+    std::vector<std::string> methods;
+    std::vector<uint32_t> samples;    // n, for methods that take it
+    std::vector<uint32_t> aggregates; // c, for methods that take it
+    uint32_t width = 160;
+    uint32_t height = 90;
+    uint32_t timedFrames = 3;
+    uint32_t warmupFrames = 1;
+    uint32_t truthSamples = 32;  // the high-rate ground truth: the reference at this n, same size
+    uint32_t temporalFrames = 5; // camera path length for temporal stability; 0 = not measured
+    float temporalStepDegrees = 0.5f;
+    uint32_t temporalMaxWidth = 320; // the path renders at the sweep size scaled down to this width
+    bool validate = false;
+};
+
+// n and c of a method that does not take them: n is the single sample it renders, c is 0 (none).
+inline constexpr uint32_t kSamplesWhenUnused = 1;
+inline constexpr uint32_t kAggregatesWhenUnused = 0;
+
+struct Job {
+    size_t index = 0; // position in the full plan (before --job slicing)
+    std::string scene;
+    std::string method;
+    uint32_t samples = kSamplesWhenUnused;
+    uint32_t aggregates = kAggregatesWhenUnused;
+    bool usesSamples = false;
+    bool usesAggregates = false;
+
+    // "<scene>__<method>__n<N>__c<C>"
+    std::string id() const;
+};
+
+std::string jobId(const std::string& scene, const std::string& method, uint32_t samples, uint32_t aggregates);
+
+// Scenes in the given order; per scene, methods in the given order; per method, n ascending then c
+// ascending. Methods that take neither n nor c get one job per scene. Duplicates are dropped.
+// Throws std::invalid_argument for an unknown method.
+std::vector<Job> planSweep(const SweepSettings& settings);
+
+// --job I/N: run only the jobs whose plan index i satisfies i % N == I.
+struct JobSlice {
+    uint32_t index = 0;
+    uint32_t count = 1;
+    bool contains(size_t jobIndex) const { return jobIndex % count == index; }
+    bool isWhole() const { return count == 1; }
+};
+
+// Parses "I/N" with N in 1..1024 and I < N; throws std::invalid_argument naming --job otherwise.
+JobSlice parseJobSlice(const std::string& text);
+
+// The size the temporal path renders at: the sweep size scaled down to temporalMaxWidth (aspect kept).
+void temporalSize(const SweepSettings& settings, uint32_t& width, uint32_t& height);
+
+// The scenes the default sweep covers (thin geometry, fur, foliage, metal, and the flat control).
+std::vector<std::string> defaultSweepScenes();
+
+} // namespace agaa::bench
