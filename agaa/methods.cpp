@@ -59,6 +59,7 @@ std::unique_ptr<Technique> createTechnique(const std::string& method, eng::vk::D
         s.debugView = settings.debug == "aggregates" ? AggregateDebugView::Aggregates : AggregateDebugView::None;
         if (settings.characteristicLength >= 0.0f) s.characteristicLength = settings.characteristicLength;
         if (settings.seedThreshold >= 0.0f) s.seedThreshold = settings.seedThreshold;
+        if (settings.pixelCentrePosition) s.position = AggregatePosition::PixelCentre;
         return std::make_unique<AggregateAA>(device, scene, s);
     }
     throw std::invalid_argument("--method '" + method + "' is unknown (known: " + knownMethodNames() + ")");

@@ -4,12 +4,14 @@
 // outlive frames: lavapipe JIT-compiles each on first use) but no per-frame
 // state, no window, no swapchain.
 
+#include "agaa/common/effects.h"
 #include "engine/frame/gpu_scene.h"
 #include "engine/graph/graph.h"
 #include "shared/frame.h"
 
 #include <cstdint>
 #include <string>
+#include <vector>
 
 namespace agaa {
 
@@ -39,6 +41,9 @@ struct MethodSettings {
     // negative = the method's documented default.
     float characteristicLength = -1.0f;
     float seedThreshold = -1.0f;
+    // AGAA shading position: false = mean of the aggregate's sample positions, true = the UE4
+    // shortcut (seed 004): the mean depth on the pixel centre's ray.
+    bool pixelCentrePosition = false;
 };
 
 class Technique {
@@ -55,6 +60,9 @@ public:
     virtual std::string storageCategory(const std::string& resourceName) const {
         return isStorage(resourceName) ? "per-sample" : "transient";
     }
+    // The shader/pass variants this technique chose from the scene's features, each with its
+    // cause (agaa/common/effects.h), for the stats and the graph dump.
+    virtual std::vector<VariantChoice> variants() const { return {}; }
 };
 
 } // namespace agaa

@@ -51,7 +51,7 @@ const char* kUsage =
     "usage: agaa-render [--scene FILE | --builtin NAME] [--method NAME] [--samples N] [--aggregates C]\n"
     "                   [--width W] [--height H] [--camera I] [--exposure E] [--out PREFIX] [--debug VIEW]\n"
     "                   [--stats FILE.json] [--graph FILE.dot] [--frames K] [--warmup K]\n"
-    "                   [--characteristic-length K] [--seed-threshold T]\n"
+    "                   [--characteristic-length K] [--seed-threshold T] [--agaa-position mean|centre]\n"
     "                   [--validate] [--device NAME] [--caps] [--help]\n"
     "\n"
     "  --scene FILE      glTF 2.0 scene (.gltf or .glb)\n"
@@ -64,6 +64,8 @@ const char* kUsage =
     "  --debug VIEW      a method's debug view instead of the lit frame (agaa: aggregates; simple-complex: complex)\n"
     "  --characteristic-length K, --seed-threshold T\n"
     "                    AGAA clustering (Equation 1): k in metres (default 0.1), t (default 0.05)\n"
+    "  --agaa-position mean|centre  AGAA shading point: mean of the samples (default) or UE4's\n"
+    "                    mean depth on the pixel-centre ray\n"
     "  --out PREFIX      writes PREFIX.exr (linear HDR) and PREFIX.png (tone-mapped sRGB)\n"
     "  --stats FILE      per-pass GPU times, storage, shading events, validation errors as JSON\n"
     "  --graph FILE      compiled render graph as Graphviz DOT (and FILE.json)\n"
@@ -115,6 +117,12 @@ Options parse(int argc, char** argv) {
         else if (a == "--debug") r.settings.debug = value();
         else if (a == "--characteristic-length") r.settings.characteristicLength = parseFloat(a, value(), 1e-6f, 1e6f);
         else if (a == "--seed-threshold") r.settings.seedThreshold = parseFloat(a, value(), 0.0f, 1e6f);
+        else if (a == "--agaa-position") {
+            std::string v = value();
+            if (v != "mean" && v != "centre")
+                throw BadArgument("--agaa-position '" + v + "' is not one of: mean, centre");
+            r.settings.pixelCentrePosition = v == "centre";
+        }
         else if (a == "--width") r.view.width = parseUint(a, value(), 1, 8192);
         else if (a == "--height") r.view.height = parseUint(a, value(), 1, 8192);
         else if (a == "--camera") r.view.camera = parseUint(a, value(), 0, 1u << 20);

@@ -1,0 +1,58 @@
+#include "agaa/common/effects.h"
+
+#include <stdexcept>
+
+namespace agaa {
+
+void validate(const EffectSettings& s) {
+    if (s.shadowMapSize < 64 || s.shadowMapSize > 4096)
+        throw std::invalid_argument("--shadow-map-size " + std::to_string(s.shadowMapSize) + " is out of range (64..4096)");
+    if (s.shadowTaps < 1 || s.shadowTaps > 4)
+        throw std::invalid_argument("--shadow-taps " + std::to_string(s.shadowTaps) + " is out of range (1..4)");
+}
+
+eng::scene::SceneFeatures effectiveFeatures(const eng::scene::Scene& scene, const EffectSettings& settings) {
+    validate(settings);
+    return settings.forceAll ? eng::scene::forceAllSceneFeatures(scene) : eng::scene::deriveSceneFeatures(scene);
+}
+
+std::vector<VariantChoice> effectVariants(const eng::scene::SceneFeatures& f, const eng::scene::Scene& scene,
+                                          uint32_t samples, uint32_t shadowTaps) {
+    const std::string forced = f.forced ? "forced on; " : "";
+    auto count = [](uint32_t n, const char* what) { return std::to_string(n) + " " + what; };
+    std::vector<VariantChoice> v;
+    if (f.hasShadows()) {
+        std::string names;
+        for (uint32_t i : f.shadowedLights)
+            names += (names.empty() ? "" : ", ") +
+                     (scene.lights[i].name.empty() ? "light " + std::to_string(i) : "'" + scene.lights[i].name + "'");
+        v.push_back({"shadows", "shadow map x" + std::to_string(f.shadowedLights.size()) + ", " +
+                                    std::to_string(shadowTaps) + (shadowTaps == 1 ? " tap" : " taps") + " per shading event",
+                     forced + "casts shadows: " + names});
+    } else {
+        v.push_back({"shadows", "off", "no directional or spot light casts shadows"});
+    }
+    if (f.hasMasked())
+        v.push_back({"alpha", maskedAlphaPath(samples) == AlphaPath::Coverage ? "alpha-to-coverage" : "discard",
+                     forced + count(f.maskedMaterials, "masked materials") +
+                         (samples > 1 ? "" : "; 1 sample per pixel: no coverage to dither")});
+    else
+        v.push_back({"alpha", "opaque only", "no masked materials"});
+    v.push_back({"emissive", f.hasEmissive() ? "per-sample emissive" : "off",
+                 f.hasEmissive() ? forced + count(f.emissiveMaterials, "emissive materials") : "no emissive materials"});
+    v.push_back({"normal-maps", f.hasNormalMaps() ? "fetch + Toksvig roughness" : "off",
+                 f.hasNormalMaps() ? forced + count(f.normalMappedMaterials, "normal-mapped materials")
+                                   : "no normal-mapped materials"});
+    v.push_back({"light-culling", f.needsLightCulling() ? "tiled" : "off",
+                 f.needsLightCulling() ? forced + count(f.pointLights + f.spotLights, "point/spot lights")
+                                       : "directional lights only: every light touches every tile"});
+    return v;
+}
+
+std::vector<uint32_t> effectSpecialization(const eng::scene::SceneFeatures& f, uint32_t id0, uint32_t id1,
+                                           uint32_t shadowTaps) {
+    return {id0, id1, f.needsLightCulling() ? 1u : 0u, f.hasNormalMaps() ? 1u : 0u, f.hasEmissive() ? 1u : 0u,
+            shadowTaps};
+}
+
+} // namespace agaa
