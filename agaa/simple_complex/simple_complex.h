@@ -29,8 +29,10 @@ enum class SimpleComplexDebugView : uint32_t {
 
 struct SimpleComplexSettings {
     uint32_t samples = 8;
-    // Lauritzen's minNormalDot: cos < 0.99 (about 8 degrees) makes the pixel complex.
-    float minNormalCos = 0.99f;
+    // Lauritzen's minNormalDot: cos below it makes the pixel complex. The classic 0.99 (8 degrees)
+    // let facets of tessellated bars shade as one (railings n = 4: RMSE 1.11e-3 vs the reference);
+    // 0.999 (2.6 degrees) is the paper's setting "with no quality degradation" (RMSE 6.4e-4).
+    float minNormalCos = 0.999f;
     // Depth tolerance = scale * (|dz/dx| + |dz/dy|) of sample 0's plane (see
     // simple_complex/classify.glsl); 1 is Lauritzen's maxZDelta.
     float depthSlopeScale = 1.0f;
