@@ -191,6 +191,9 @@ Texture Graph::importTexture(std::string name, const PhysicalTexture& texture, s
         if (use && !appliesTo(*use, true))
             throw std::logic_error("render graph: imported texture " + quoted(name) + " given buffer use " +
                                    std::string(useName(*use)));
+    if (initial == Use::Present)
+        throw std::logic_error("render graph: imported texture " + quoted(name) +
+                               " cannot start in Present (import an acquired swapchain image with nullopt)");
     if (texture.image == VK_NULL_HANDLE)
         throw std::logic_error("render graph: imported texture " + quoted(name) + " has no VkImage");
     const uint32_t handle = createResource(std::move(name), true, &texture.desc, nullptr);

@@ -145,6 +145,9 @@ UseInfo describe(Use use) {
         info.bufferUsage = VK_BUFFER_USAGE_TRANSFER_DST_BIT;
         info.writes = true;
         break;
+    case Use::Present:
+        info = image(VK_PIPELINE_STAGE_2_NONE, VK_ACCESS_2_NONE, VK_IMAGE_LAYOUT_PRESENT_SRC_KHR, 0);
+        break;
     }
     return info;
 }
@@ -183,6 +186,7 @@ constexpr VkPipelineStageFlags2 kComputeQueueStages = VK_PIPELINE_STAGE_2_COMPUT
                                                       VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT;
 
 bool allowedIn(Use use, PassKind kind) {
+    if (use == Use::Present) return false; // the presentation engine reads it, not a pass
     switch (kind) {
     case PassKind::Graphics:
         return true;
@@ -244,6 +248,8 @@ std::string_view useName(Use use) {
         return "TransferSrc";
     case Use::TransferDst:
         return "TransferDst";
+    case Use::Present:
+        return "Present";
     }
     return "?";
 }

@@ -39,9 +39,14 @@ enum class Use {
     // lavapipe's synchronisation validation expects TRANSFER after vkCmdFillBuffer.
     TransferSrc,
     TransferDst,
+    // Only as an imported swapchain image's final state: PRESENT_SRC_KHR, no stage and no access,
+    // because vkQueuePresentKHR is ordered by the semaphore the submit signals. Never in a pass,
+    // never as an initial state (import an acquired image with nullopt: the graph then waits on
+    // ALL_COMMANDS, which chains with the acquire semaphore's wait).
+    Present,
 };
 
-inline constexpr uint32_t kUseCount = static_cast<uint32_t>(Use::TransferDst) + 1;
+inline constexpr uint32_t kUseCount = static_cast<uint32_t>(Use::Present) + 1;
 
 enum class UseTarget { Image, Buffer, Both };
 

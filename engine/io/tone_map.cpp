@@ -48,6 +48,14 @@ ImageF toneMapped(const ImageF& hdr) {
     return out;
 }
 
+ImageF srgbEncoded(const ImageF& display) {
+    if (!isConsistent(display)) throw IoError("srgbEncoded: inconsistent image buffer");
+    ImageF out = display;
+    for (size_t i = 0; i < out.rgba.size(); ++i)
+        if (i % 4 != 3) out.rgba[i] = linearToSrgb(out.rgba[i]);
+    return out;
+}
+
 ImageU8 toneMapToSrgb8(const ImageF& hdr) {
     return quantizeToU8(toneMapped(hdr));
 }

@@ -30,6 +30,10 @@ float linearToSrgb(float v);
 // The display-encoded image as floats in [0,1]: the representation every metric in metrics.h is
 // computed on. NaN in the input stays NaN (the metrics then refuse the image).
 ImageF toneMapped(const ImageF& hdr);
+// sRGB-encodes an already tone-mapped display image (linear values in [0, 1]; alpha kept).
+// The renderers' `display` targets are resolved in linear space (DESIGN section 6); this is
+// what goes to PNG files and what the error metrics compare.
+ImageF srgbEncoded(const ImageF& display);
 
 // toneMapped() quantised to 8 bits (see quantizeToU8), ready for writePng.
 // Throws IoError if the image holds NaN or its buffer does not match its size.

@@ -52,7 +52,7 @@ Device::Device(const DeviceOptions& options) {
     m_quiet = options.quiet;
     createInstance(options);
     pickPhysicalDevice(options);
-    createDevice();
+    createDevice(options.swapchain);
 }
 
 Device::~Device() {
@@ -91,6 +91,13 @@ void Device::createInstance(const DeviceOptions& options) {
     std::vector<const char*> enabled;
     m_debugUtils = hasExtension(exts, VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
     if (m_debugUtils) enabled.push_back(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
+    for (const char* name : options.instanceExtensions) {
+        if (!hasExtension(exts, name))
+            throw MissingCapability(std::string("instance extension ") + name + " is not available");
+        auto same = [&](const char* e) { return std::strcmp(e, name) == 0; };
+        const bool already = std::any_of(enabled.begin(), enabled.end(), same);
+        if (!already) enabled.push_back(name);
+    }
 
     VkApplicationInfo app{VK_STRUCTURE_TYPE_APPLICATION_INFO};
     app.pApplicationName = "agaa";
@@ -194,7 +201,7 @@ void Device::pickPhysicalDevice(const DeviceOptions& options) {
     }
 }
 
-void Device::createDevice() {
+void Device::createDevice(bool swapchain) {
     uint32_t extCount = 0;
     vkEnumerateDeviceExtensionProperties(m_physical, nullptr, &extCount, nullptr);
     std::vector<VkExtensionProperties> exts(extCount);
@@ -292,6 +299,11 @@ void Device::createDevice() {
     if (m_caps.postDepthCoverage) enable.push_back(VK_EXT_POST_DEPTH_COVERAGE_EXTENSION_NAME);
     if (hasAtomicFloat) enable.push_back(VK_EXT_SHADER_ATOMIC_FLOAT_EXTENSION_NAME);
     if (m_caps.fragmentShaderInterlock) enable.push_back(VK_EXT_FRAGMENT_SHADER_INTERLOCK_EXTENSION_NAME);
+    if (swapchain) {
+        if (!hasExtension(exts, VK_KHR_SWAPCHAIN_EXTENSION_NAME))
+            throw MissingCapability(m_caps.deviceName + " lacks " + VK_KHR_SWAPCHAIN_EXTENSION_NAME);
+        enable.push_back(VK_KHR_SWAPCHAIN_EXTENSION_NAME);
+    }
 
     VkPhysicalDeviceShaderAtomicFloatFeaturesEXT atomicFloatOn{
         VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SHADER_ATOMIC_FLOAT_FEATURES_EXT};

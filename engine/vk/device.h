@@ -23,6 +23,11 @@ struct DeviceOptions {
     bool synchronizationValidation = true; // with validation: sync2 hazards are reported as SYNC-*
     std::string deviceName; // case-insensitive substring of VkPhysicalDeviceProperties::deviceName; empty = best
     bool quiet = false; // do not print non-error messages
+    // For windowed hosts (the sample viewer): instance extensions a window system needs, e.g.
+    // from glfwGetRequiredInstanceExtensions(), and VK_KHR_swapchain on the device. Refused with
+    // MissingCapability when absent. Headless by default.
+    std::vector<const char*> instanceExtensions;
+    bool swapchain = false;
 };
 
 class Device {
@@ -66,7 +71,7 @@ public:
 private:
     void createInstance(const DeviceOptions& options);
     void pickPhysicalDevice(const DeviceOptions& options);
-    void createDevice();
+    void createDevice(bool swapchain);
     static VKAPI_ATTR VkBool32 VKAPI_CALL onMessage(VkDebugUtilsMessageSeverityFlagBitsEXT severity,
                                                     VkDebugUtilsMessageTypeFlagsEXT type,
                                                     const VkDebugUtilsMessengerCallbackDataEXT* data, void* user);

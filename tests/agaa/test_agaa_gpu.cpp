@@ -32,13 +32,7 @@ agaa::RenderRequest request(const std::string& method, uint32_t n, uint32_t c, u
 }
 
 // sRGB-encoded display image: what people see and what the error metrics compare.
-eng::io::ImageF encoded(const eng::io::ImageF& display) {
-    eng::io::ImageF out = display;
-    for (size_t i = 0; i < out.rgba.size(); ++i) {
-        if (i % 4 != 3) out.rgba[i] = eng::io::linearToSrgb(out.rgba[i]);
-    }
-    return out;
-}
+eng::io::ImageF encoded(const eng::io::ImageF& display) { return eng::io::srgbEncoded(display); }
 
 struct ClusterCase {
     const char* scene;

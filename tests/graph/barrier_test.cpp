@@ -325,6 +325,44 @@ TEST(GraphBarriers, ImportedInitialAndFinalStates) {
     EXPECT_EQ(finals[0].dstAccess, VK_ACCESS_2_TRANSFER_READ_BIT);
 }
 
+TEST(GraphBarriers, SwapchainImageEndsInPresent) {
+    // The viewer's per-frame copy: an acquired swapchain image (contents discarded) is written by
+    // a copy and handed to vkQueuePresentKHR, which the submit's signal semaphore orders.
+    Graph graph;
+    Texture swapchain = graph.importTexture("swapchain", fakeTexture(), std::nullopt, Use::Present);
+    graph.addPass<NoData>(
+        "copy", PassKind::Transfer,
+        [&](Builder& b, NoData&) { swapchain = b.write(swapchain, Use::TransferDst); }, nullptr);
+    graph.compile();
+
+    const Barrier acquire = onlyBarrierBefore(graph, "copy", graph.resourceIndex(swapchain));
+    EXPECT_EQ(acquire.srcStage, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT)
+        << "the transition must chain with the acquire semaphore's wait, whatever its stage";
+    const std::vector<Barrier>& finals = graph.compiled().finalBarriers;
+    ASSERT_EQ(finals.size(), 1u) << "the present transition is the import's final barrier";
+    EXPECT_EQ(finals[0].oldLayout, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL);
+    EXPECT_EQ(finals[0].newLayout, VK_IMAGE_LAYOUT_PRESENT_SRC_KHR) << "vkQueuePresentKHR needs PRESENT_SRC";
+    EXPECT_EQ(finals[0].srcStage, VK_PIPELINE_STAGE_2_TRANSFER_BIT) << "after the copy";
+    EXPECT_EQ(finals[0].srcAccess, VK_ACCESS_2_TRANSFER_WRITE_BIT)
+        << "made available for the presentation engine";
+    EXPECT_EQ(finals[0].dstStage, VK_PIPELINE_STAGE_2_NONE) << "the signal semaphore orders the present";
+    EXPECT_EQ(finals[0].dstAccess, VK_ACCESS_2_NONE);
+}
+
+TEST(GraphBarriers, PresentIsRefusedInPassesAndAsInitialState) {
+    Graph graph;
+    Texture image = graph.importTexture("image", fakeTexture(), std::nullopt, std::nullopt);
+    EXPECT_THROW(
+        graph.addPass<NoData>(
+            "bad", PassKind::Graphics, [&](Builder& b, NoData&) { b.read(image, Use::Present); }, nullptr),
+        std::logic_error)
+        << "no pass can present: the use has no stage, so no barrier could order it";
+    Graph other;
+    EXPECT_THROW(other.importTexture("swapchain", fakeTexture(), Use::Present, std::nullopt),
+                 std::logic_error)
+        << "an initial Present would give the first barrier no source stage to chain with the acquire";
+}
+
 TEST(GraphBarriers, UsageFlagsAccumulateOverUses) {
     Graph graph;
     Buffer readback = graph.importBuffer("readback", fakeBuffer(), std::nullopt, std::nullopt);

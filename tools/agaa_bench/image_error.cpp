@@ -10,12 +10,7 @@
 
 namespace agaa::bench {
 
-eng::io::ImageF srgbEncoded(const eng::io::ImageF& linearDisplay) {
-    eng::io::ImageF out = linearDisplay;
-    for (size_t i = 0; i < out.rgba.size(); ++i)
-        if (i % 4 != 3) out.rgba[i] = eng::io::linearToSrgb(out.rgba[i]);
-    return out;
-}
+eng::io::ImageF srgbEncoded(const eng::io::ImageF& linearDisplay) { return eng::io::srgbEncoded(linearDisplay); }
 
 ErrorMetrics compareImages(const eng::io::ImageF& image, const eng::io::ImageF& truth) {
     ErrorMetrics m;

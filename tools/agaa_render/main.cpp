@@ -43,6 +43,7 @@ struct Options {
     std::string out = "out/frame";
     std::optional<std::string> stats, graph;
     bool validate = false, caps = false, help = false;
+    bool noShadowCasters = false; // --shadow-casters none
     std::string device;
     uint32_t frames = 1, warmup = 0;
 };
@@ -52,6 +53,7 @@ const char* kUsage =
     "                   [--width W] [--height H] [--camera I] [--exposure E] [--out PREFIX] [--debug VIEW]\n"
     "                   [--stats FILE.json] [--graph FILE.dot] [--frames K] [--warmup K]\n"
     "                   [--characteristic-length K] [--seed-threshold T] [--agaa-position mean|centre]\n"
+    "                   [--effects scene|all] [--shadow-taps N] [--shadow-map-size N] [--shadow-casters scene|none]\n"
     "                   [--validate] [--device NAME] [--caps] [--help]\n"
     "\n"
     "  --scene FILE      glTF 2.0 scene (.gltf or .glb)\n"
@@ -66,6 +68,11 @@ const char* kUsage =
     "                    AGAA clustering (Equation 1): k in metres (default 0.1), t (default 0.05)\n"
     "  --agaa-position mean|centre  AGAA shading point: mean of the samples (default) or UE4's\n"
     "                    mean depth on the pixel-centre ray\n"
+    "  --effects scene|all  passes and shader variants from the scene's features (default), or every\n"
+    "                    effect forced on (shadows, alpha-to-coverage, emissive, normal maps, light culling)\n"
+    "  --shadow-taps N   AGAA shadow taps inside each aggregate's footprint, 1..4 (default 4)\n"
+    "  --shadow-map-size N  texels per side of each shadow map, 64..4096 (default 1024)\n"
+    "  --shadow-casters scene|none  none: the scene's lights cast no shadows (a scene without shadows)\n"
     "  --out PREFIX      writes PREFIX.exr (linear HDR) and PREFIX.png (tone-mapped sRGB)\n"
     "  --stats FILE      per-pass GPU times, storage, shading events, validation errors as JSON\n"
     "  --graph FILE      compiled render graph as Graphviz DOT (and FILE.json)\n"
@@ -123,7 +130,17 @@ Options parse(int argc, char** argv) {
                 throw BadArgument("--agaa-position '" + v + "' is not one of: mean, centre");
             r.settings.pixelCentrePosition = v == "centre";
         }
-        else if (a == "--width") r.view.width = parseUint(a, value(), 1, 8192);
+        else if (a == "--effects") {
+            std::string v = value();
+            if (v != "scene" && v != "all") throw BadArgument("--effects '" + v + "' is not one of: scene, all");
+            r.settings.effects.forceAll = v == "all";
+        } else if (a == "--shadow-taps") r.settings.effects.shadowTaps = parseUint(a, value(), 1, 4);
+        else if (a == "--shadow-map-size") r.settings.effects.shadowMapSize = parseUint(a, value(), 64, 4096);
+        else if (a == "--shadow-casters") {
+            std::string v = value();
+            if (v != "scene" && v != "none") throw BadArgument("--shadow-casters '" + v + "' is not one of: scene, none");
+            o.noShadowCasters = v == "none";
+        } else if (a == "--width") r.view.width = parseUint(a, value(), 1, 8192);
         else if (a == "--height") r.view.height = parseUint(a, value(), 1, 8192);
         else if (a == "--camera") r.view.camera = parseUint(a, value(), 0, 1u << 20);
         else if (a == "--exposure") r.view.exposure = parseFloat(a, value(), 1e-6f, 1e6f);
@@ -188,6 +205,14 @@ nlohmann::json statsJson(const Options& o, const agaa::RenderResult& r, const en
                                      {"histogram", r.shadingEventsHistogram}};
     // AGAA lights each aggregate once: its shading events are its aggregates.
     if (o.request.method == "agaa") j["aggregates_per_pixel_histogram"] = r.shadingEventsHistogram;
+    // Scene-driven effects (agaa/common/effects.h): the features and each variant with its cause.
+    j["features"] = r.features;
+    j["effects"] = o.request.settings.effects.forceAll ? "all" : "scene";
+    j["variants"] = nlohmann::json::array();
+    for (const agaa::VariantChoice& v : r.variants)
+        j["variants"].push_back({{"effect", v.effect}, {"variant", v.variant}, {"cause", v.cause}});
+    j["passes_run"] = nlohmann::json::array();
+    for (const auto& p : r.passes) j["passes_run"].push_back(p.name);
     j["validation_errors"] = device.validationErrors();
     j["validation_enabled"] = device.validationEnabled();
     return j;
@@ -205,6 +230,8 @@ int run(const Options& o) {
     eng::scene::Scene scene =
         o.sceneFile ? eng::scene::loadGltf(*o.sceneFile) : eng::scene::loadBuiltin(o.builtin);
     for (const std::string& w : scene.stats.warnings) std::cerr << "warning: " << w << "\n";
+    if (o.noShadowCasters)
+        for (eng::scene::Light& light : scene.lights) light.castsShadows = false;
     if (o.request.view.camera >= scene.cameras.size())
         throw BadArgument("--camera " + std::to_string(o.request.view.camera) + " is out of range (the scene has " +
                           std::to_string(scene.cameras.size()) + " camera(s))");
@@ -218,7 +245,7 @@ int run(const Options& o) {
     std::filesystem::path prefix(o.out);
     if (prefix.has_parent_path()) std::filesystem::create_directories(prefix.parent_path());
     eng::io::writeExr(prefix.string() + ".exr", r.hdr);
-    eng::io::writePng(prefix.string() + ".png", eng::io::quantizeToU8(r.display));
+    eng::io::writePng(prefix.string() + ".png", eng::io::quantizeToU8(eng::io::srgbEncoded(r.display)));
     std::cout << "wrote " << prefix.string() << ".exr and " << prefix.string() << ".png (" << o.request.method
               << ", n=" << r.samples << ", " << o.request.view.width << "x" << o.request.view.height << ", "
               << scene.triangleCount() << " triangles, frame " << r.frameGpuMs << " ms on " << device.caps().deviceName
@@ -228,8 +255,17 @@ int run(const Options& o) {
         std::cout << "wrote " << *o.stats << "\n";
     }
     if (o.graph) {
-        writeText(*o.graph, r.graphDot);
-        writeText(*o.graph + ".json", r.graphJson);
+        // The variants and their causes ride along: DOT comments, and keys of the JSON dump.
+        std::string dot = "// scene features: " + r.features + "\n";
+        for (const agaa::VariantChoice& v : r.variants)
+            dot += "// variant " + v.effect + ": " + v.variant + " (" + v.cause + ")\n";
+        writeText(*o.graph, dot + r.graphDot);
+        nlohmann::json graphJson = nlohmann::json::parse(r.graphJson);
+        graphJson["features"] = r.features;
+        graphJson["variants"] = nlohmann::json::array();
+        for (const agaa::VariantChoice& v : r.variants)
+            graphJson["variants"].push_back({{"effect", v.effect}, {"variant", v.variant}, {"cause", v.cause}});
+        writeText(*o.graph + ".json", graphJson.dump(2) + "\n");
         std::cout << "wrote " << *o.graph << " and " << *o.graph << ".json\n";
     }
     if (device.validationErrors() > 0) {
