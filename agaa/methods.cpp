@@ -39,11 +39,13 @@ bool isKnownMethod(const std::string& name) {
 
 std::unique_ptr<Technique> createTechnique(const std::string& method, eng::vk::Device& device,
                                            const eng::frame::GpuScene& scene, const MethodSettings& settings) {
-    if (method == "reference") return std::make_unique<Reference>(device, scene, ReferenceSettings{settings.samples});
-    if (method == "noaa") return std::make_unique<Reference>(device, scene, ReferenceSettings{1}, "noaa");
+    if (method == "reference")
+        return std::make_unique<Reference>(device, scene, ReferenceSettings{settings.samples, settings.effects});
+    if (method == "noaa") return std::make_unique<Reference>(device, scene, ReferenceSettings{1, settings.effects}, "noaa");
     if (method == "simple-complex" || method == "simple-complex-naive") {
         SimpleComplexSettings s; // thresholds: the documented defaults (simple_complex.h)
         s.samples = settings.samples;
+        s.effects = settings.effects;
         if (method == "simple-complex-naive") s.schedule = SimpleComplexSchedule::Naive;
         if (!settings.debug.empty() && settings.debug != "complex")
             throw std::invalid_argument("--debug '" + settings.debug + "' is not a debug view of " + method +
@@ -56,6 +58,7 @@ std::unique_ptr<Technique> createTechnique(const std::string& method, eng::vk::D
         AggregateSettings s;
         s.samples = settings.samples;
         s.aggregates = settings.aggregates;
+        s.effects = settings.effects;
         s.debugView = settings.debug == "aggregates" ? AggregateDebugView::Aggregates : AggregateDebugView::None;
         if (settings.characteristicLength >= 0.0f) s.characteristicLength = settings.characteristicLength;
         if (settings.seedThreshold >= 0.0f) s.seedThreshold = settings.seedThreshold;

@@ -2,6 +2,7 @@
 // Builds the AGAA uniform block (shared/agaa.h): the normal-decoding tables, the clustering
 // constants of Equation 1 and the Toksvig reference exponent.
 
+#include "agaa/common/effects.h"
 #include "shared/agaa.h"
 #include "shared/frame.h"
 
@@ -23,6 +24,7 @@ struct AggregateSettings {
     float seedThreshold = 0.05f;
     AggregateDebugView debugView = AggregateDebugView::None;
     AggregatePosition position = AggregatePosition::SampleMean;
+    EffectSettings effects; // scene-driven shadows (taps: the footprint filter), alpha-to-coverage, ...
 };
 
 // The shared BRDF's GGX alpha range, as kMinGgxAlpha / kMaxGgxAlpha in

@@ -42,7 +42,9 @@ FrameTargets AggregateAA::addPasses(rg::Graph& graph, const FrameInputs& in) {
     std::vector<VkPipeline> visibilityPipelines, generationPipelines;
     for (const eng::scene::Draw& draw : scene->scene().draws) {
         const eng::scene::Material& m = scene->scene().materials.at(draw.material);
-        visibilityPipelines.push_back(visibilityPipeline(m.alphaMode == eng::scene::AlphaMode::Mask, m.doubleSided));
+        const bool masked = m.alphaMode == eng::scene::AlphaMode::Mask || m_features.forced;
+        visibilityPipelines.push_back(
+            visibilityPipeline(masked ? maskedAlphaPath(m_settings.samples) : AlphaPath::Opaque, m.doubleSided));
         generationPipelines.push_back(generationPipeline(m.doubleSided));
     }
 
@@ -162,6 +164,12 @@ FrameTargets AggregateAA::addPasses(rg::Graph& graph, const FrameInputs& in) {
     const rg::TextureDesc outDesc{VK_FORMAT_R32G32B32A32_SFLOAT, in.width, in.height, 1, VK_SAMPLE_COUNT_1_BIT};
     const rg::TextureDesc eventsDesc{VK_FORMAT_R32_UINT, in.width, in.height, 1, VK_SAMPLE_COUNT_1_BIT};
 
+    // ---- shadow maps: added whenever the scene has a shadowed light; lighting reads them (the
+    // aggregates debug view does not, and the graph culls the pass) ---------------------------
+    const bool shadows = m_shadow->enabled();
+    ShadowMaps shadowMaps;
+    if (shadows) shadowMaps = m_shadow->add(graph, in);
+
     if (m_settings.debugView == AggregateDebugView::Aggregates) {
         struct Debug {
             rg::Buffer frame, agaa, metadata;
@@ -267,11 +275,12 @@ FrameTargets AggregateAA::addPasses(rg::Graph& graph, const FrameInputs& in) {
             vkCmdEndRendering(cmd);
         });
     m_resources.agBuffer = gen.agBuffer;
+    m_resources.depth = gen.depth; // the generation pass wrote the stencil: later readers use that version
 
     // ---- 4. tiled lighting, aggregating at the top of each tile ------------------------------
     struct Lighting {
-        rg::Buffer frame, lights, agaa, metadata, agBuffer;
-        rg::Texture depth, count, emissive, hdr, display, events;
+        rg::Buffer frame, lights, agaa, metadata, agBuffer, shadowConstants;
+        rg::Texture depth, count, emissive, shadowMap, hdr, display, events;
     };
     const Lighting& lit = graph.addCompute<Lighting>(
         "agaa.lighting",
@@ -284,6 +293,10 @@ FrameTargets AggregateAA::addPasses(rg::Graph& graph, const FrameInputs& in) {
             d.count = b.read(cl.count, rg::Use::StorageImageReadCompute);
             d.agBuffer = b.read(gen.agBuffer, rg::Use::StorageReadCompute);
             if (emissive) d.emissive = b.read(gen.emissive, rg::Use::SampledCompute);
+            if (shadows) {
+                d.shadowMap = b.read(shadowMaps.map, rg::Use::SampledCompute);
+                d.shadowConstants = b.read(shadowMaps.constants, rg::Use::UniformRead);
+            }
             d.hdr = b.write(b.create("agaa.hdr", outDesc), rg::Use::StorageImageWriteCompute);
             d.display = b.write(b.create("agaa.display", outDesc), rg::Use::StorageImageWriteCompute);
             d.events = b.write(b.create("agaa.shadingEvents", eventsDesc), rg::Use::StorageImageWriteCompute);
@@ -303,6 +316,9 @@ FrameTargets AggregateAA::addPasses(rg::Graph& graph, const FrameInputs& in) {
                 .storageImage(8, ctx.texture(d.display).view)
                 .storageImage(9, ctx.texture(d.events).view);
             if (emissive) pd.sampled(10, m_fetchSampler, ctx.texture(d.emissive).sampledView);
+            if (shadows)
+                pd.sampled(11, m_shadow->sampler(), ctx.texture(d.shadowMap).sampledView)
+                    .uniform(12, ctx.buffer(d.shadowConstants).buffer);
             pd.push(m_device, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, m_lightingLayout.layout);
             vkCmdDispatch(cmd, groups(in.width, shared::kTileSize), groups(in.height, shared::kTileSize), 1);
         });

@@ -8,6 +8,7 @@
 // culls the generation passes nothing reads any more.
 
 #include "agaa/aggregate/agaa_constants.h"
+#include "agaa/common/shadow_map.h"
 #include "agaa/common/technique.h"
 #include "engine/vk/device.h"
 #include "engine/vk/pipeline.h"
@@ -15,6 +16,7 @@
 
 #include <array>
 #include <map>
+#include <memory>
 
 namespace agaa {
 
@@ -37,6 +39,8 @@ public:
     FrameTargets addPasses(eng::rg::Graph& graph, const FrameInputs& inputs) override;
     bool isStorage(const std::string& resourceName) const override;
     std::string storageCategory(const std::string& resourceName) const override;
+    std::vector<VariantChoice> variants() const override;
+    const eng::scene::SceneFeatures& features() const { return m_features; }
 
     const AggregateSettings& settings() const { return m_settings; }
     const AggregateResources& resources() const { return m_resources; }
@@ -54,19 +58,22 @@ public:
     void addSampleReadback(eng::rg::Graph& graph, const FrameInputs& inputs, const eng::vk::Buffer& host);
 
 private:
-    VkPipeline visibilityPipeline(bool alphaTested, bool doubleSided);
+    VkPipeline visibilityPipeline(AlphaPath alpha, bool doubleSided);
     VkPipeline generationPipeline(bool doubleSided);
     void createLayouts(const eng::frame::GpuScene& scene);
 
     eng::vk::Device& m_device;
     AggregateSettings m_settings;
+    const eng::scene::Scene& m_scene;
+    eng::scene::SceneFeatures m_features;
     bool m_hasEmissive = false;
     VkFormat m_depthFormat = VK_FORMAT_D24_UNORM_S8_UINT;
     shared::AgaaConstants m_constants{};
     eng::vk::Buffer m_constantsBuffer;
     eng::vk::PipelineLayout m_visibilityLayout, m_generationLayout, m_recordLayout, m_clusterLayout, m_lightingLayout, m_debugLayout,
         m_readbackLayout;
-    std::array<VkPipeline, 4> m_visibilityPipelines{};
+    std::array<VkPipeline, 6> m_visibilityPipelines{}; // [alpha path][double-sided]
+    std::unique_ptr<ShadowMapPass> m_shadow;
     std::array<VkPipeline, 4> m_generationPipelines{}; // [recording][double-sided]
     VkPipeline m_clusterPipeline = VK_NULL_HANDLE, m_lightingPipeline = VK_NULL_HANDLE,
                m_debugPipeline = VK_NULL_HANDLE, m_readbackPipeline = VK_NULL_HANDLE;

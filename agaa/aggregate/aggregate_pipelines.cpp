@@ -10,6 +10,8 @@
 #include "shaders/agaa/generation_record_frag.h"
 #include "shaders/agaa/lighting_comp.h"
 #include "shaders/agaa/lighting_emissive_comp.h"
+#include "shaders/agaa/lighting_emissive_shadow_comp.h"
+#include "shaders/agaa/lighting_shadow_comp.h"
 #include "shaders/agaa/sample_readback_comp.h"
 #include "shaders/agaa/scene_vert.h"
 #include "shaders/agaa/visibility_frag.h"
@@ -30,8 +32,10 @@ constexpr VkShaderStageFlags kVsFs = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAG
 } // namespace
 
 AggregateAA::AggregateAA(vk::Device& device, const eng::frame::GpuScene& scene, const AggregateSettings& settings)
-    : m_device(device), m_settings(settings), m_hasEmissive(scene.hasEmissive()) {
+    : m_device(device), m_settings(settings), m_scene(scene.scene()),
+      m_features(effectiveFeatures(scene.scene(), settings.effects)), m_hasEmissive(m_features.hasEmissive()) {
     validate(settings);
+    m_shadow = std::make_unique<ShadowMapPass>(device, scene, m_features, settings.effects, "agaa");
     const vk::Capabilities& caps = device.caps();
     if (!caps.supportsSamples(4))
         throw vk::MissingCapability(caps.deviceName + " lacks 4x MSAA (AGAA rasterises n >= 4 samples as 4x layers)");
@@ -56,9 +60,15 @@ AggregateAA::AggregateAA(vk::Device& device, const eng::frame::GpuScene& scene, 
 
     m_clusterPipeline = vk::createComputePipeline(device, kAgaaClusterComp, m_clusterLayout.layout,
                                                   {{settings.samples, settings.aggregates}}, "agaa.cluster");
-    m_lightingPipeline = vk::createComputePipeline(device, m_hasEmissive ? kAgaaLightingEmissiveComp : kAgaaLightingComp,
-                                                   m_lightingLayout.layout, {{settings.samples, settings.aggregates}},
-                                                   "agaa.lighting");
+    const bool shadows = m_shadow->enabled();
+    std::span<const uint32_t> lighting =
+        m_hasEmissive ? (shadows ? std::span<const uint32_t>(kAgaaLightingEmissiveShadowComp) : kAgaaLightingEmissiveComp)
+                      : (shadows ? std::span<const uint32_t>(kAgaaLightingShadowComp) : kAgaaLightingComp);
+    m_lightingPipeline = vk::createComputePipeline(
+        device, lighting, m_lightingLayout.layout,
+        {effectSpecialization(m_features, settings.samples, settings.aggregates, settings.effects.shadowTaps,
+                              settings.effects.shadowFootprint)},
+        "agaa.lighting");
     m_debugPipeline =
         vk::createComputePipeline(device, kAgaaDebugAggregatesComp, m_debugLayout.layout, {}, "agaa.debug.aggregates");
 }
@@ -88,6 +98,8 @@ void AggregateAA::createLayouts(const eng::frame::GpuScene& scene) {
                              {4, kSsbo, kCs},  {5, kImage, kCs}, {6, kSsbo, kCs},  {7, kImage, kCs},
                              {8, kImage, kCs}, {9, kImage, kCs}};
     if (m_hasEmissive) lighting.pushBindings.push_back({10, kSampled, kCs});
+    lighting.pushBindings.push_back({11, kSampled, kCs}); // shadow maps (pushed for shadowed scenes only)
+    lighting.pushBindings.push_back({12, kUbo, kCs});
     m_lightingLayout = vk::createPipelineLayout(m_device, lighting, "agaa.lighting.layout");
 
     vk::LayoutDesc debug;
@@ -116,21 +128,27 @@ AggregateAA::~AggregateAA() {
     vk::destroyBuffer(m_device, m_constantsBuffer);
 }
 
-VkPipeline AggregateAA::visibilityPipeline(bool alphaTested, bool doubleSided) {
-    VkPipeline& p = m_visibilityPipelines[(alphaTested ? 2 : 0) + (doubleSided ? 1 : 0)];
+VkPipeline AggregateAA::visibilityPipeline(AlphaPath alpha, bool doubleSided) {
+    VkPipeline& p = m_visibilityPipelines[uint32_t(alpha) * 2 + (doubleSided ? 1 : 0)];
     if (p) return p;
     vk::GraphicsPipelineDesc d;
     d.vertex = kAgaaSceneVert;
     d.fragment = kAgaaVisibilityFrag;
     d.layout = m_visibilityLayout.layout;
-    d.specialization.values = {alphaTested ? 1u : 0u};
+    // Paper section 3.6: masked materials sample alpha here only, with alpha-to-coverage; the
+    // generation pass inherits the coverage through its depth EQUAL test.
+    d.specialization.values = {uint32_t(alpha)};
+    d.alphaToCoverage = alpha == AlphaPath::Coverage;
     d.colorFormats = {VK_FORMAT_R8G8_UNORM};
     d.depthFormat = m_depthFormat;
     d.samples = VK_SAMPLE_COUNT_4_BIT;
     d.cullMode = doubleSided ? VK_CULL_MODE_NONE : VK_CULL_MODE_BACK_BIT;
     d.depthCompare = VK_COMPARE_OP_GREATER; // reversed Z
     p = vk::createGraphicsPipeline(m_device, d,
-                                   std::string("agaa.visibility") + (alphaTested ? ".masked" : ".opaque") +
+                                   std::string("agaa.visibility") +
+                                       (alpha == AlphaPath::Coverage ? ".alphaToCoverage"
+                                        : alpha == AlphaPath::Discard ? ".discard"
+                                                                      : ".opaque") +
                                        (doubleSided ? ".twoSided" : ""));
     return p;
 }
@@ -147,6 +165,7 @@ VkPipeline AggregateAA::generationPipeline(bool doubleSided) {
                  : m_hasEmissive ? std::span<const uint32_t>(kAgaaGenerationEmissiveFrag)
                                  : std::span<const uint32_t>(kAgaaGenerationFrag);
     d.layout = recording ? m_recordLayout.layout : m_generationLayout.layout;
+    d.specialization.values = effectSpecialization(m_features, 0, 0, 1); // ids 3, 4: normal-map / emissive fetch
     if (m_hasEmissive) d.colorFormats = {VK_FORMAT_B10G11R11_UFLOAT_PACK32};
     d.depthFormat = m_depthFormat;
     d.samples = VK_SAMPLE_COUNT_4_BIT;
@@ -162,6 +181,16 @@ VkPipeline AggregateAA::generationPipeline(bool doubleSided) {
                                    std::string("agaa.generation") + (recording ? ".record" : "") +
                                        (doubleSided ? ".twoSided" : ""));
     return p;
+}
+
+std::vector<VariantChoice> AggregateAA::variants() const {
+    std::vector<VariantChoice> v = effectVariants(m_features, m_scene, m_settings.samples, m_settings.effects.shadowTaps);
+    for (VariantChoice& choice : v)
+        if (choice.effect == "shadows" && m_features.hasShadows())
+            choice.variant += m_settings.effects.shadowFootprint == EffectSettings::ShadowFootprint::Samples
+                                  ? " at the aggregate's sample positions"
+                                  : " along the aggregate's depth-variance vector";
+    return v;
 }
 
 bool AggregateAA::isStorage(const std::string& name) const { return storageCategory(name) != "transient"; }

@@ -50,9 +50,9 @@ std::vector<VariantChoice> effectVariants(const eng::scene::SceneFeatures& f, co
 }
 
 std::vector<uint32_t> effectSpecialization(const eng::scene::SceneFeatures& f, uint32_t id0, uint32_t id1,
-                                           uint32_t shadowTaps) {
+                                           uint32_t shadowTaps, EffectSettings::ShadowFootprint footprint) {
     return {id0, id1, f.needsLightCulling() ? 1u : 0u, f.hasNormalMaps() ? 1u : 0u, f.hasEmissive() ? 1u : 0u,
-            shadowTaps};
+            shadowTaps, uint32_t(footprint)};
 }
 
 } // namespace agaa

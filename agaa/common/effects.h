@@ -18,6 +18,10 @@ struct EffectSettings {
     // AGAA: taps inside the aggregate's footprint (paper section 3.5.3), 1..4. The per-sample
     // methods take one tap per shading event (their samples are points).
     uint32_t shadowTaps = 4;
+    // AGAA: where the taps go. Statistics: along the aggregate's variance vector from its mean
+    // position and depth variance (paper section 3.5.3). Samples: at up to shadowTaps of the
+    // aggregate's own sample positions (the paper's "more precise filtering").
+    enum class ShadowFootprint : uint32_t { Statistics = 0, Samples = 1 } shadowFootprint = ShadowFootprint::Statistics;
 };
 
 // Throws std::invalid_argument naming the setting and its range.
@@ -43,14 +47,16 @@ inline constexpr uint32_t kSpecTileLightCulling = 2;
 inline constexpr uint32_t kSpecNormalMaps = 3;
 inline constexpr uint32_t kSpecEmissive = 4;
 inline constexpr uint32_t kSpecShadowTaps = 5;
+inline constexpr uint32_t kSpecShadowFootprint = 6; // AGAA lighting only
 
 // Alpha handling of a masked material in a raster pass (specialisation constant 0 of
 // reference/gbuffer.frag and agaa/visibility.frag).
 enum class AlphaPath : uint32_t { Opaque = 0, Discard = 1, Coverage = 2 };
 inline AlphaPath maskedAlphaPath(uint32_t samples) { return samples > 1 ? AlphaPath::Coverage : AlphaPath::Discard; }
 
-// The ids 2..5 above, filled from the features, appended to a pass's own ids 0 and 1.
+// The ids 2..6 above, filled from the features, appended to a pass's own ids 0 and 1.
 std::vector<uint32_t> effectSpecialization(const eng::scene::SceneFeatures& features, uint32_t id0, uint32_t id1,
-                                           uint32_t shadowTaps);
+                                           uint32_t shadowTaps,
+                                           EffectSettings::ShadowFootprint footprint = EffectSettings::ShadowFootprint::Statistics);
 
 } // namespace agaa

@@ -71,10 +71,23 @@ RenderResult FrameRenderer::render(const RenderRequest& request) {
     vk::writeBuffer(m_device, m_frameConstants, std::as_bytes(std::span(&constants, 1)));
     vk::writeBuffer(m_device, m_lights, std::as_bytes(std::span(lights)));
 
-    vk::Buffer hdrHost = eng::frame::createReadbackBuffer(m_device, w, h, VK_FORMAT_R32G32B32A32_SFLOAT, "readback.hdr");
-    vk::Buffer displayHost =
-        eng::frame::createReadbackBuffer(m_device, w, h, VK_FORMAT_R32G32B32A32_SFLOAT, "readback.display");
-    vk::Buffer eventsHost = eng::frame::createReadbackBuffer(m_device, w, h, VK_FORMAT_R32_UINT, "readback.events");
+    // Owned for this call only; released on every path out (a graph error throws mid-way).
+    struct HostBuffers {
+        vk::Device& device;
+        vk::Buffer hdr, display, events;
+        ~HostBuffers() {
+            vkDeviceWaitIdle(device.device());
+            vk::destroyBuffer(device, hdr);
+            vk::destroyBuffer(device, display);
+            vk::destroyBuffer(device, events);
+        }
+    } host{m_device,
+           eng::frame::createReadbackBuffer(m_device, w, h, VK_FORMAT_R32G32B32A32_SFLOAT, "readback.hdr"),
+           eng::frame::createReadbackBuffer(m_device, w, h, VK_FORMAT_R32G32B32A32_SFLOAT, "readback.display"),
+           eng::frame::createReadbackBuffer(m_device, w, h, VK_FORMAT_R32_UINT, "readback.events")};
+    const vk::Buffer& hdrHost = host.hdr;
+    const vk::Buffer& displayHost = host.display;
+    const vk::Buffer& eventsHost = host.events;
 
     rg::Graph graph;
     FrameInputs inputs;
@@ -111,6 +124,8 @@ RenderResult FrameRenderer::render(const RenderRequest& request) {
     result.culledPasses = graph.culledPassNames();
     result.graphDot = graph.dumpDot();
     result.graphJson = graph.dumpJson();
+    result.variants = tech.variants();
+    result.features = eng::scene::describe(eng::scene::deriveSceneFeatures(m_scene), m_scene);
 
     uint64_t storage = 0;
     const double pixels = double(w) * h;
@@ -138,10 +153,6 @@ RenderResult FrameRenderer::render(const RenderRequest& request) {
     result.shadingEventsMean = double(sum) / double(result.shadingEvents.size());
     result.shadingEventsHistogram.assign(result.shadingEventsMax + 1, 0);
     for (uint32_t e : result.shadingEvents) result.shadingEventsHistogram[e] += 1;
-
-    vk::destroyBuffer(m_device, hdrHost);
-    vk::destroyBuffer(m_device, displayHost);
-    vk::destroyBuffer(m_device, eventsHost);
     return result;
 }
 

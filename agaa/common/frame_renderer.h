@@ -50,6 +50,10 @@ struct RenderResult {
     std::vector<uint64_t> shadingEventsHistogram; // [k] = pixels with k shading events
     uint32_t samples = 0;
     std::string graphDot, graphJson;
+    // The shader/pass variants the technique chose from the scene's features, with their causes
+    // (agaa/common/effects.h), and the features themselves in one line.
+    std::vector<VariantChoice> variants;
+    std::string features;
 };
 
 class FrameRenderer {

@@ -13,8 +13,8 @@ namespace rg = eng::rg;
 namespace vk = eng::vk;
 
 SampleGBufferPass::SampleGBufferPass(vk::Device& device, const eng::frame::GpuScene& scene, uint32_t samples,
-                                     std::string name)
-    : m_device(device), m_samples(samples), m_name(std::move(name)) {
+                                     std::string name, const eng::scene::SceneFeatures& features)
+    : m_device(device), m_samples(samples), m_name(std::move(name)), m_features(features) {
     if (!eng::frame::isSupportedSampleCount(samples))
         throw std::invalid_argument("--samples " + std::to_string(samples) + " is not supported (allowed: " +
                                     eng::frame::supportedSampleCounts() + ")");
@@ -37,20 +37,22 @@ SampleGBufferPass::~SampleGBufferPass() {
     vk::destroyPipelineLayout(m_device, m_layout);
 }
 
-VkPipeline SampleGBufferPass::pipeline(bool alphaTested, bool doubleSided) {
-    VkPipeline& p = m_pipelines[(alphaTested ? 2 : 0) + (doubleSided ? 1 : 0)];
+VkPipeline SampleGBufferPass::pipeline(AlphaPath alpha, bool doubleSided) {
+    VkPipeline& p = m_pipelines[uint32_t(alpha) * 2 + (doubleSided ? 1 : 0)];
     if (p) return p;
     vk::GraphicsPipelineDesc d;
     d.vertex = kReferenceGbufferVert;
     d.fragment = kReferenceGbufferFrag;
     d.layout = m_layout.layout;
-    d.specialization.values = {alphaTested ? 1u : 0u};
+    d.specialization.values = effectSpecialization(m_features, uint32_t(alpha), 0, 1);
+    d.alphaToCoverage = alpha == AlphaPath::Coverage;
     d.colorFormats = {kNormalFormat, kAlbedoMetalFormat, kEmissiveRoughnessFormat};
     d.depthFormat = kDepthFormat;
     d.samples = m_samples > 1 ? VK_SAMPLE_COUNT_4_BIT : VK_SAMPLE_COUNT_1_BIT;
     d.cullMode = doubleSided ? VK_CULL_MODE_NONE : VK_CULL_MODE_BACK_BIT;
     d.depthCompare = VK_COMPARE_OP_GREATER; // reversed Z: nearer is larger
-    std::string name = m_name + ".gbuffer" + (alphaTested ? ".masked" : ".opaque") + (doubleSided ? ".twoSided" : "");
+    const char* path = alpha == AlphaPath::Coverage ? ".alphaToCoverage" : alpha == AlphaPath::Discard ? ".discard" : ".opaque";
+    std::string name = m_name + ".gbuffer" + path + (doubleSided ? ".twoSided" : "");
     p = vk::createGraphicsPipeline(m_device, d, name);
     return p;
 }
@@ -70,7 +72,8 @@ SampleGBuffer SampleGBufferPass::add(rg::Graph& graph, const FrameInputs& in) {
     std::vector<VkPipeline> drawPipelines;
     for (const eng::scene::Draw& draw : scene.draws) {
         const eng::scene::Material& m = scene.materials.at(draw.material);
-        drawPipelines.push_back(pipeline(m.alphaMode == eng::scene::AlphaMode::Mask, m.doubleSided));
+        const bool masked = m.alphaMode == eng::scene::AlphaMode::Mask || m_features.forced;
+        drawPipelines.push_back(pipeline(masked ? maskedAlphaPath(m_samples) : AlphaPath::Opaque, m.doubleSided));
     }
     rg::Buffer materials = graph.importBuffer(m_name + ".materials",
                                               {gpuScene->materials().buffer, gpuScene->materials().size},

@@ -30,7 +30,10 @@ public:
 
     // Throws std::invalid_argument for an unsupported n, MissingCapability without 4x MSAA.
     // `name` prefixes the pass, its pipelines and its resources ("<name>.gbuffer.*").
-    SampleGBufferPass(eng::vk::Device& device, const eng::frame::GpuScene& scene, uint32_t samples, std::string name);
+    // `features`: the scene's (agaa/common/effects.h); they pick the alpha path of masked draws
+    // (alpha-to-coverage at n > 1, discard at 1) and the normal-map / emissive fetch variants.
+    SampleGBufferPass(eng::vk::Device& device, const eng::frame::GpuScene& scene, uint32_t samples, std::string name,
+                      const eng::scene::SceneFeatures& features);
     ~SampleGBufferPass();
     SampleGBufferPass(const SampleGBufferPass&) = delete;
     SampleGBufferPass& operator=(const SampleGBufferPass&) = delete;
@@ -41,13 +44,14 @@ public:
     uint32_t samples() const { return m_samples; }
 
 private:
-    VkPipeline pipeline(bool alphaTested, bool doubleSided); // [alpha-tested][double-sided], made on first use
+    VkPipeline pipeline(AlphaPath alpha, bool doubleSided); // [alpha path][double-sided], made on first use
 
     eng::vk::Device& m_device;
     uint32_t m_samples;
     std::string m_name;
     eng::vk::PipelineLayout m_layout;
-    std::array<VkPipeline, 4> m_pipelines{};
+    eng::scene::SceneFeatures m_features;
+    std::array<VkPipeline, 6> m_pipelines{};
 };
 
 } // namespace agaa

@@ -44,6 +44,7 @@ struct MethodSettings {
     // AGAA shading position: false = mean of the aggregate's sample positions, true = the UE4
     // shortcut (seed 004): the mean depth on the pixel centre's ray.
     bool pixelCentrePosition = false;
+    EffectSettings effects; // scene-driven shadows, alpha-to-coverage, emissive, normal maps
 };
 
 class Technique {

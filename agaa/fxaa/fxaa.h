@@ -26,6 +26,7 @@ public:
     uint32_t samples() const override { return 1; }
     FrameTargets addPasses(eng::rg::Graph& graph, const FrameInputs& inputs) override;
     bool isStorage(const std::string& resourceName) const override { return m_noaa.isStorage(resourceName); }
+    std::vector<VariantChoice> variants() const override { return m_noaa.variants(); }
 
     // The FXAA pass alone, on any tone-mapped RGBA32F image of width x height; returns the filtered image.
     eng::rg::Texture addFxaaPass(eng::rg::Graph& graph, eng::rg::Texture display, uint32_t width, uint32_t height);

@@ -5,6 +5,8 @@
 #include "engine/vk/resources.h"
 #include "shaders/reference/lighting_ms_comp.h"
 #include "shaders/reference/lighting_ss_comp.h"
+#include "shaders/reference/lighting_ms_shadow_comp.h"
+#include "shaders/reference/lighting_ss_shadow_comp.h"
 #include "shared/frame.h"
 
 #include <stdexcept>
@@ -16,7 +18,9 @@ namespace vk = eng::vk;
 Reference::Reference(vk::Device& device, const eng::frame::GpuScene& scene, const ReferenceSettings& settings,
                      std::string name)
     : m_device(device), m_settings(settings), m_name(std::move(name)),
-      m_gbuffer(device, scene, settings.samples, m_name) { // validates n and 4x MSAA support
+      m_scene(scene.scene()), m_features(effectiveFeatures(scene.scene(), settings.effects)),
+      m_gbuffer(device, scene, settings.samples, m_name, m_features), // validates n and 4x MSAA support
+      m_shadow(device, scene, m_features, settings.effects, m_name) {
 
     vk::LayoutDesc lighting;
     const VkShaderStageFlags cs = VK_SHADER_STAGE_COMPUTE_BIT;
@@ -28,11 +32,18 @@ Reference::Reference(vk::Device& device, const eng::frame::GpuScene& scene, cons
                              {5, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, cs},
                              {6, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs},
                              {7, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs},
-                             {8, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs}};
+                             {8, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs},
+                             {9, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, cs}, // shadow maps (shadowed scenes)
+                             {10, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, cs}};
     m_lightingLayout = vk::createPipelineLayout(device, lighting, m_name + ".lighting.layout");
-    std::span<const uint32_t> code = settings.samples > 1 ? kReferenceLightingMsComp : kReferenceLightingSsComp;
-    // Specialisation: id 1 = n (common/gbuffer_lighting.glsl); id 0 is unused here.
-    m_lightingPipeline = vk::createComputePipeline(device, code, m_lightingLayout.layout, {{0u, settings.samples}},
+    const bool shadows = m_shadow.enabled();
+    std::span<const uint32_t> code = settings.samples > 1
+                                         ? (shadows ? kReferenceLightingMsShadowComp : kReferenceLightingMsComp)
+                                         : (shadows ? kReferenceLightingSsShadowComp : kReferenceLightingSsComp);
+    // Specialisation: id 1 = n (common/gbuffer_lighting.glsl); id 0 is unused here; 2.. the
+    // scene's effects, one shadow tap per shading event (agaa/common/effects.h).
+    m_lightingPipeline = vk::createComputePipeline(device, code, m_lightingLayout.layout,
+                                                   {effectSpecialization(m_features, 0u, settings.samples, 1)},
                                                    m_name + ".lighting");
     m_fetchSampler = vk::createSampler(device, VK_FILTER_NEAREST, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE, 0.0f,
                                        m_name + ".fetchSampler");
@@ -48,12 +59,20 @@ Reference::~Reference() {
 
 bool Reference::isStorage(const std::string& resourceName) const { return m_gbuffer.isStorage(resourceName); }
 
+std::vector<VariantChoice> Reference::variants() const {
+    return effectVariants(m_features, m_scene, m_settings.samples, 1);
+}
+
 FrameTargets Reference::addPasses(rg::Graph& graph, const FrameInputs& in) {
     const SampleGBuffer g = m_gbuffer.add(graph, in);
+    // Added only for a scene with a shadowed light; lighting then reads it.
+    const bool shadows = m_shadow.enabled();
+    ShadowMaps shadowMaps;
+    if (shadows) shadowMaps = m_shadow.add(graph, in);
 
     struct Lighting {
-        rg::Buffer frame, lights;
-        rg::Texture depth, normal, albedoMetal, emissiveRoughness;
+        rg::Buffer frame, lights, shadowConstants;
+        rg::Texture depth, normal, albedoMetal, emissiveRoughness, shadowMap;
         rg::Texture hdr, display, events;
     };
     const rg::TextureDesc out{VK_FORMAT_R32G32B32A32_SFLOAT, in.width, in.height, 1, VK_SAMPLE_COUNT_1_BIT};
@@ -67,15 +86,22 @@ FrameTargets Reference::addPasses(rg::Graph& graph, const FrameInputs& in) {
             d.normal = b.read(g.normal, rg::Use::SampledCompute);
             d.albedoMetal = b.read(g.albedoMetal, rg::Use::SampledCompute);
             d.emissiveRoughness = b.read(g.emissiveRoughness, rg::Use::SampledCompute);
+            if (shadows) {
+                d.shadowMap = b.read(shadowMaps.map, rg::Use::SampledCompute);
+                d.shadowConstants = b.read(shadowMaps.constants, rg::Use::UniformRead);
+            }
             d.hdr = b.write(b.create(m_name + ".hdr", out), rg::Use::StorageImageWriteCompute);
             d.display = b.write(b.create(m_name + ".display", out), rg::Use::StorageImageWriteCompute);
             d.events = b.write(b.create(m_name + ".shadingEvents", eventsDesc), rg::Use::StorageImageWriteCompute);
         },
-        [this, w = in.width, h = in.height](const rg::Context& ctx, const Lighting& d) {
+        [this, shadows, w = in.width, h = in.height](const rg::Context& ctx, const Lighting& d) {
             VkCommandBuffer cmd = ctx.cmd();
             vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, m_lightingPipeline);
-            vk::PushDescriptors()
-                .uniform(0, ctx.buffer(d.frame).buffer)
+            vk::PushDescriptors pd;
+            if (shadows)
+                pd.sampled(9, m_shadow.sampler(), ctx.texture(d.shadowMap).sampledView)
+                    .uniform(10, ctx.buffer(d.shadowConstants).buffer);
+            pd.uniform(0, ctx.buffer(d.frame).buffer)
                 .storage(1, ctx.buffer(d.lights).buffer)
                 .sampled(2, m_fetchSampler, ctx.texture(d.depth).sampledView)
                 .sampled(3, m_fetchSampler, ctx.texture(d.normal).sampledView)

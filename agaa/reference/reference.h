@@ -7,6 +7,7 @@
 #include "agaa/common/sample_gbuffer.h"
 #include "agaa/common/technique.h"
 #include "engine/vk/device.h"
+#include "agaa/common/shadow_map.h"
 #include "engine/vk/pipeline.h"
 
 #include <array>
@@ -15,6 +16,7 @@ namespace agaa {
 
 struct ReferenceSettings {
     uint32_t samples = 8;
+    EffectSettings effects; // scene-driven shadows, alpha-to-coverage, emissive, normal maps
 };
 
 class Reference final : public Technique {
@@ -27,12 +29,16 @@ public:
     uint32_t samples() const override { return m_settings.samples; }
     FrameTargets addPasses(eng::rg::Graph& graph, const FrameInputs& inputs) override;
     bool isStorage(const std::string& resourceName) const override;
+    std::vector<VariantChoice> variants() const override;
 
 private:
     eng::vk::Device& m_device;
     ReferenceSettings m_settings;
     std::string m_name;
+    const eng::scene::Scene& m_scene;
+    eng::scene::SceneFeatures m_features; // before the passes built from it
     SampleGBufferPass m_gbuffer;
+    ShadowMapPass m_shadow;
     eng::vk::PipelineLayout m_lightingLayout;
     VkPipeline m_lightingPipeline = VK_NULL_HANDLE;
     VkSampler m_fetchSampler = VK_NULL_HANDLE;

@@ -4,6 +4,8 @@
 #include "engine/vk/check.h"
 #include "engine/vk/resources.h"
 #include "shaders/simple_complex/gbuffer_export_comp.h"
+#include "shaders/simple_complex/lighting_ms_shadow_comp.h"
+#include "shaders/simple_complex/lighting_ss_shadow_comp.h"
 #include "shaders/simple_complex/lighting_ms_comp.h"
 #include "shaders/simple_complex/lighting_ss_comp.h"
 #include "shared/frame.h"
@@ -36,7 +38,9 @@ void checkSettings(const SimpleComplexSettings& s) {
 SimpleComplex::SimpleComplex(vk::Device& device, const eng::frame::GpuScene& scene,
                              const SimpleComplexSettings& settings, std::string name)
     : m_device(device), m_settings(settings), m_name(std::move(name)),
-      m_gbuffer(device, scene, settings.samples, m_name) {
+      m_scene(scene.scene()), m_features(effectiveFeatures(scene.scene(), settings.effects)),
+      m_gbuffer(device, scene, settings.samples, m_name, m_features),
+      m_shadow(device, scene, m_features, settings.effects, m_name) {
     checkSettings(settings);
     vk::LayoutDesc lighting;
     const VkShaderStageFlags cs = VK_SHADER_STAGE_COMPUTE_BIT;
@@ -48,12 +52,19 @@ SimpleComplex::SimpleComplex(vk::Device& device, const eng::frame::GpuScene& sce
                              {5, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, cs},
                              {6, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs},
                              {7, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs},
-                             {8, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs}};
+                             {8, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs},
+                             {9, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, cs}, // shadow maps (shadowed scenes)
+                             {10, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, cs}};
     lighting.pushConstantBytes = sizeof(shared::SimpleComplexParams);
     m_lightingLayout = vk::createPipelineLayout(device, lighting, m_name + ".lighting.layout");
-    std::span<const uint32_t> code = settings.samples > 1 ? kSimpleComplexLightingMsComp : kSimpleComplexLightingSsComp;
+    const bool shadows = m_shadow.enabled();
+    std::span<const uint32_t> code = settings.samples > 1
+                                         ? (shadows ? kSimpleComplexLightingMsShadowComp : kSimpleComplexLightingMsComp)
+                                         : (shadows ? kSimpleComplexLightingSsShadowComp : kSimpleComplexLightingSsComp);
+    // One shadow tap per shading event, as the reference (agaa/common/effects.h).
     m_lightingPipeline = vk::createComputePipeline(device, code, m_lightingLayout.layout,
-                                                   {{uint32_t(settings.schedule), settings.samples}},
+                                                   {effectSpecialization(m_features, uint32_t(settings.schedule),
+                                                                         settings.samples, 1)},
                                                    m_name + ".lighting");
     m_fetchSampler = vk::createSampler(device, VK_FILTER_NEAREST, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE, 0.0f,
                                        m_name + ".fetchSampler");
@@ -73,9 +84,18 @@ FrameTargets SimpleComplex::addPasses(rg::Graph& graph, const FrameInputs& in) {
     return addLighting(graph, in, addGBuffer(graph, in));
 }
 
+std::vector<VariantChoice> SimpleComplex::variants() const {
+    return effectVariants(m_features, m_scene, m_settings.samples, 1);
+}
+
 FrameTargets SimpleComplex::addLighting(rg::Graph& graph, const FrameInputs& in, const SampleGBuffer& gbuffer) {
+    // Added only for a scene with a shadowed light; lighting then reads it.
+    const bool shadows = m_shadow.enabled();
+    ShadowMaps shadowMaps;
+    if (shadows) shadowMaps = m_shadow.add(graph, in);
     struct Lighting {
-        rg::Buffer frame, lights;
+        rg::Buffer frame, lights, shadowConstants;
+        rg::Texture shadowMap;
         SampleGBuffer g;
         rg::Texture hdr, display, events;
     };
@@ -93,15 +113,22 @@ FrameTargets SimpleComplex::addLighting(rg::Graph& graph, const FrameInputs& in,
             d.g.normal = b.read(gbuffer.normal, rg::Use::SampledCompute);
             d.g.albedoMetal = b.read(gbuffer.albedoMetal, rg::Use::SampledCompute);
             d.g.emissiveRoughness = b.read(gbuffer.emissiveRoughness, rg::Use::SampledCompute);
+            if (shadows) {
+                d.shadowMap = b.read(shadowMaps.map, rg::Use::SampledCompute);
+                d.shadowConstants = b.read(shadowMaps.constants, rg::Use::UniformRead);
+            }
             d.hdr = b.write(b.create(m_name + ".hdr", out), rg::Use::StorageImageWriteCompute);
             d.display = b.write(b.create(m_name + ".display", out), rg::Use::StorageImageWriteCompute);
             d.events = b.write(b.create(m_name + ".shadingEvents", eventsDesc), rg::Use::StorageImageWriteCompute);
         },
-        [this, params, w = in.width, h = in.height](const rg::Context& ctx, const Lighting& d) {
+        [this, params, shadows, w = in.width, h = in.height](const rg::Context& ctx, const Lighting& d) {
             VkCommandBuffer cmd = ctx.cmd();
             vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, m_lightingPipeline);
-            eng::vk::PushDescriptors()
-                .uniform(0, ctx.buffer(d.frame).buffer)
+            eng::vk::PushDescriptors pd;
+            if (shadows)
+                pd.sampled(9, m_shadow.sampler(), ctx.texture(d.shadowMap).sampledView)
+                    .uniform(10, ctx.buffer(d.shadowConstants).buffer);
+            pd.uniform(0, ctx.buffer(d.frame).buffer)
                 .storage(1, ctx.buffer(d.lights).buffer)
                 .sampled(2, m_fetchSampler, ctx.texture(d.g.depth).sampledView)
                 .sampled(3, m_fetchSampler, ctx.texture(d.g.normal).sampledView)

@@ -7,6 +7,7 @@
 // samples only of complex pixels.
 
 #include "agaa/common/sample_gbuffer.h"
+#include "agaa/common/shadow_map.h"
 #include "agaa/common/technique.h"
 #include "engine/vk/device.h"
 #include "engine/vk/pipeline.h"
@@ -38,6 +39,7 @@ struct SimpleComplexSettings {
     float depthSlopeScale = 1.0f;
     SimpleComplexSchedule schedule = SimpleComplexSchedule::DeferPerSample;
     SimpleComplexDebugView debugView = SimpleComplexDebugView::None;
+    EffectSettings effects; // scene-driven shadows, alpha-to-coverage, emissive, normal maps
 };
 
 class SimpleComplex final : public Technique {
@@ -53,6 +55,7 @@ public:
     FrameTargets addPasses(eng::rg::Graph& graph, const FrameInputs& inputs) override;
     bool isStorage(const std::string& resourceName) const override { return m_gbuffer.isStorage(resourceName); }
     const SimpleComplexSettings& settings() const { return m_settings; }
+    std::vector<VariantChoice> variants() const override;
 
     // The two halves of addPasses, for hosts and tests that need the G-buffer itself.
     SampleGBuffer addGBuffer(eng::rg::Graph& graph, const FrameInputs& inputs) { return m_gbuffer.add(graph, inputs); }
@@ -68,7 +71,10 @@ private:
     eng::vk::Device& m_device;
     SimpleComplexSettings m_settings;
     std::string m_name;
+    const eng::scene::Scene& m_scene;
+    eng::scene::SceneFeatures m_features; // before the passes built from it
     SampleGBufferPass m_gbuffer;
+    ShadowMapPass m_shadow; // adds its pass in addLighting() when the scene has a shadowed light
     eng::vk::PipelineLayout m_lightingLayout;
     VkPipeline m_lightingPipeline = VK_NULL_HANDLE;
     eng::vk::PipelineLayout m_exportLayout; // made on first use

@@ -7,6 +7,8 @@
 #include "engine/vk/pipeline.h"
 #include "shared/frame.h"
 
+#include <glm/glm.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <cstring>
@@ -22,6 +24,47 @@ struct MipLevel {
     uint32_t width, height;
     std::vector<uint8_t> rgba;
 };
+
+// Toksvig pre-filtering of a normal map's MIP chain (Toksvig 2005; seed 004): a texel of level
+// k+1 holds the mean of the tangent-space normals beneath it. RGB stores that mean's direction
+// (renormalised, so bilinear taps stay well-conditioned) and A its length |Na| in [0, 1]: 1 at
+// level 0 by construction, shorter where the normals below disagree. common/material.glsl turns
+// the fetched length into extra roughness, so each sample's normal carries its variance into
+// the aggregate. The mean is built from the stored (direction * length) of the level above, so
+// the chain is the exact box-filtered mean of level 0 up to 8-bit rounding.
+std::vector<MipLevel> buildNormalMips(const scene::Texture& t) {
+    std::vector<MipLevel> mips{{t.width, t.height, t.rgba8}};
+    auto decode = [](const uint8_t* p) {
+        return glm::vec3(p[0], p[1], p[2]) / 255.0f * 2.0f - 1.0f;
+    };
+    for (size_t i = 0; i + 3 < mips[0].rgba.size(); i += 4) mips[0].rgba[i + 3] = 255; // glTF ignores alpha here
+    while (mips.back().width > 1 || mips.back().height > 1) {
+        const MipLevel& src = mips.back();
+        MipLevel dst{std::max(1u, src.width / 2), std::max(1u, src.height / 2), {}};
+        dst.rgba.resize(size_t(dst.width) * dst.height * 4);
+        for (uint32_t y = 0; y < dst.height; ++y)
+            for (uint32_t x = 0; x < dst.width; ++x) {
+                glm::vec3 sum(0.0f);
+                for (uint32_t dy = 0; dy < 2; ++dy)
+                    for (uint32_t dx = 0; dx < 2; ++dx) {
+                        uint32_t sx = std::min(src.width - 1, 2 * x + dx), sy = std::min(src.height - 1, 2 * y + dy);
+                        const uint8_t* p = &src.rgba[(size_t(sy) * src.width + sx) * 4];
+                        glm::vec3 n = decode(p);
+                        float len = glm::length(n);
+                        // Stored direction times stored length; a zero vector has no direction.
+                        if (len > 1e-6f) sum += n / len * (p[3] / 255.0f);
+                    }
+                glm::vec3 mean = sum * 0.25f;
+                float len = glm::length(mean);
+                glm::vec3 dir = len > 1e-6f ? mean / len : glm::vec3(0.0f, 0.0f, 1.0f);
+                uint8_t* q = &dst.rgba[(size_t(y) * dst.width + x) * 4];
+                for (int c = 0; c < 3; ++c) q[c] = uint8_t(std::lround(std::clamp(dir[c] * 0.5f + 0.5f, 0.0f, 1.0f) * 255.0f));
+                q[3] = uint8_t(std::lround(std::clamp(len, 0.0f, 1.0f) * 255.0f));
+            }
+        mips.push_back(std::move(dst));
+    }
+    return mips;
+}
 
 // 2x2 box filter down to 1x1; sRGB colour averaged in linear space so dark/bright edges keep their weight.
 std::vector<MipLevel> buildMips(const scene::Texture& t) {
@@ -115,8 +158,22 @@ void GpuScene::uploadTextures() {
     };
     std::vector<Pending> pending;
     VkDeviceSize total = 0;
-    for (const scene::Texture& t : sources) {
-        Pending p{buildMips(t), total};
+    // Textures used only as normal maps get the Toksvig chain; one shared with a colour slot keeps
+    // the plain box filter (its alpha may mean something there).
+    std::vector<int> normalUse(sources.size(), 0), otherUse(sources.size(), 0);
+    for (const scene::Material& m : m_scene.materials) {
+        auto mark = [&](int32_t index, std::vector<int>& use) {
+            if (index >= 0 && size_t(index) < use.size()) use[size_t(index)] = 1;
+        };
+        mark(m.normalTexture, normalUse);
+        mark(m.baseColorTexture, otherUse);
+        mark(m.metallicRoughnessTexture, otherUse);
+        mark(m.emissiveTexture, otherUse);
+    }
+    for (size_t i = 0; i < sources.size(); ++i) {
+        const scene::Texture& t = sources[i];
+        const bool normalMap = normalUse[i] && !otherUse[i] && !t.srgb;
+        Pending p{normalMap ? buildNormalMips(t) : buildMips(t), total};
         for (const MipLevel& m : p.mips) total += m.rgba.size();
         pending.push_back(std::move(p));
     }

@@ -53,7 +53,7 @@ const char* kUsage =
     "                   [--width W] [--height H] [--camera I] [--exposure E] [--out PREFIX] [--debug VIEW]\n"
     "                   [--stats FILE.json] [--graph FILE.dot] [--frames K] [--warmup K]\n"
     "                   [--characteristic-length K] [--seed-threshold T] [--agaa-position mean|centre]\n"
-    "                   [--effects scene|all] [--shadow-taps N] [--shadow-map-size N] [--shadow-casters scene|none]\n"
+    "                   [--effects scene|all] [--shadow-taps N] [--shadow-footprint F] [--shadow-map-size N] [--shadow-casters scene|none]\n"
     "                   [--validate] [--device NAME] [--caps] [--help]\n"
     "\n"
     "  --scene FILE      glTF 2.0 scene (.gltf or .glb)\n"
@@ -71,6 +71,8 @@ const char* kUsage =
     "  --effects scene|all  passes and shader variants from the scene's features (default), or every\n"
     "                    effect forced on (shadows, alpha-to-coverage, emissive, normal maps, light culling)\n"
     "  --shadow-taps N   AGAA shadow taps inside each aggregate's footprint, 1..4 (default 4)\n"
+    "  --shadow-footprint statistics|samples  AGAA shadow taps along the aggregate's depth variance\n"
+    "                    (default) or at its own sample positions\n"
     "  --shadow-map-size N  texels per side of each shadow map, 64..4096 (default 1024)\n"
     "  --shadow-casters scene|none  none: the scene's lights cast no shadows (a scene without shadows)\n"
     "  --out PREFIX      writes PREFIX.exr (linear HDR) and PREFIX.png (tone-mapped sRGB)\n"
@@ -135,7 +137,13 @@ Options parse(int argc, char** argv) {
             if (v != "scene" && v != "all") throw BadArgument("--effects '" + v + "' is not one of: scene, all");
             r.settings.effects.forceAll = v == "all";
         } else if (a == "--shadow-taps") r.settings.effects.shadowTaps = parseUint(a, value(), 1, 4);
-        else if (a == "--shadow-map-size") r.settings.effects.shadowMapSize = parseUint(a, value(), 64, 4096);
+        else if (a == "--shadow-footprint") {
+            std::string v = value();
+            if (v != "statistics" && v != "samples")
+                throw BadArgument("--shadow-footprint '" + v + "' is not one of: statistics, samples");
+            r.settings.effects.shadowFootprint = v == "samples" ? agaa::EffectSettings::ShadowFootprint::Samples
+                                                                : agaa::EffectSettings::ShadowFootprint::Statistics;
+        } else if (a == "--shadow-map-size") r.settings.effects.shadowMapSize = parseUint(a, value(), 64, 4096);
         else if (a == "--shadow-casters") {
             std::string v = value();
             if (v != "scene" && v != "none") throw BadArgument("--shadow-casters '" + v + "' is not one of: scene, none");

@@ -4,6 +4,7 @@
 //   scenegen --list | --help
 // Exit codes: 0 success, 1 write or generation failure, 2 bad arguments.
 
+#include "engine/scene/adversarial_scenes.h"
 #include "engine/scene/scenegen.h"
 
 #include <tiny_gltf.h>
@@ -43,6 +44,8 @@ std::string kindList() {
     for (const std::string& k : eng::scene::sceneKinds()) {
         s += (s.empty() ? "" : ", ") + k;
     }
+    s += "; adversarial (tests/hard):";
+    for (const std::string& k : eng::scene::hardSceneKinds()) s += " " + k;
     return s;
 }
 
@@ -76,7 +79,7 @@ Args parse(int argc, char** argv) {
         if (flag == "--kind") {
             const std::string kind = value();
             const auto kinds = eng::scene::sceneKinds();
-            if (std::find(kinds.begin(), kinds.end(), kind) == kinds.end()) {
+            if (std::find(kinds.begin(), kinds.end(), kind) == kinds.end() && !eng::scene::isHardSceneKind(kind)) {
                 throw UsageError{"--kind: '" + kind + "' is not one of " + kindList()};
             }
             args.kind = kind;
@@ -169,6 +172,7 @@ int main(int argc, char** argv) {
         for (const std::string& k : eng::scene::sceneKinds()) {
             std::cout << k << "\n";
         }
+        for (const std::string& k : eng::scene::hardSceneKinds()) std::cout << k << " (adversarial)\n";
         return kExitOk;
     }
     try {

@@ -34,6 +34,17 @@ layout(set = 0, binding = 9, r32ui) uniform writeonly uimage2D outShadingEvents;
 layout(set = 0, binding = 10) uniform sampler2DMSArray emissiveSamples;
 #endif
 
+#ifndef AGAA_SHADOWS
+#define AGAA_SHADOWS 0
+#endif
+#if AGAA_SHADOWS
+// Shadow maps of the scene's shadowed lights (agaa/common/shadow_map.h), filtered inside each
+// aggregate's footprint (paper section 3.5.3, common/shadow.glsl).
+#define SHADOW_MAP_BINDING 11
+#define SHADOW_CONSTANTS_BINDING 12
+#include "common/shadow.glsl"
+#endif
+
 #include "common/brdf.glsl"
 #include "common/depth.glsl"
 #include "common/lights.glsl"
@@ -46,6 +57,34 @@ uint sampleAggregate(uint s, uint pixelIndex) {
     const uint c = kAggregates;
     return unpackMetadata(metadata[pixelIndex * words + (s * metadataBits(c)) / 32u], s, c);
 }
+
+#if AGAA_SHADOWS
+// Specialisation id 6 (agaa/common/effects.h ShadowFootprint): 0 the statistical footprint
+// (common/shadow.glsl shadowVisibilityAggregate), 1 taps at the aggregate's own sample positions.
+layout(constant_id = 6) const uint kShadowFootprint = 0u;
+
+// The paper's "more precise" footprint (section 3.5.3): min(taps, k) of the aggregate's k samples,
+// evenly spread in sample order (ranks (2j + 1) k / (2 taps)), each tapped at its own position.
+float shadowVisibilityAggregateSamples(uint light, ivec2 pixel, uint pixelIndex, uint a, uint k, vec3 N) {
+    int layer = shadowLayer(light);
+    if (layer < 0 || k == 0u) return 1.0;
+    uint taps = min(kShadowTaps, k);
+    uint rank = 0u, j = 0u;
+    float sum = 0.0;
+    for (uint s = 0u; s < kSamples && j < taps; ++s) {
+        float d = texelFetch(visibilityDepth, ivec3(pixel, s / 4u), int(s % 4u)).r;
+        if (isSky(d) || sampleAggregate(s, pixelIndex) != a) continue;
+        if (rank == ((2u * j + 1u) * k) / (2u * taps)) {
+            vec3 Ps = viewPositionFromDepth(vec2(pixel) + frame.samplePositions[s].xy, d, frame.extent,
+                                            frame.depthParams, frame.projParams);
+            sum += shadowTap(layer, shadowReceiver(layer, Ps, N));
+            ++j;
+        }
+        ++rank;
+    }
+    return sum / float(max(j, 1u));
+}
+#endif
 
 void main() {
     ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
@@ -132,9 +171,20 @@ void main() {
         events += 1u;
         vec3 P = positions[a];
         vec3 V = normalize(-P);
+#if AGAA_SHADOWS
+        // The aggregate's footprint: depth standard deviation along the ray, one pixel across.
+        float sigma = sqrt(depthVariance[a]);
+        float pixelSize = -P.z * 2.0 * frame.extent.w / frame.projParams.y;
+#endif
         for (uint i = nextTileLight(0u); i < kMaxLights; i = nextTileLight(i + 1u)) {
             vec3 L, irradiance;
-            if (lightIncidence(lights[i], P, L, irradiance)) radiance[a] += evaluateBrdf(surfaces[a], V, L, irradiance);
+            if (!lightIncidence(lights[i], P, L, irradiance)) continue;
+#if AGAA_SHADOWS
+            irradiance *= kShadowFootprint == 1u
+                              ? shadowVisibilityAggregateSamples(i, pixel, pixelIndex, a, samplesIn[a], surfaces[a].normal)
+                              : shadowVisibilityAggregate(i, P, surfaces[a].normal, sigma, pixelSize);
+#endif
+            radiance[a] += evaluateBrdf(surfaces[a], V, L, irradiance);
         }
     }
 

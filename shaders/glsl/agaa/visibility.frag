@@ -6,7 +6,8 @@
 #include "shared/agaa.h"
 #include "shared/frame.h"
 
-layout(constant_id = 0) const uint kAlphaTested = 0u;
+// Masked materials: 0 opaque, 1 discard, 2 alpha-to-coverage (common/alpha_coverage.glsl).
+layout(constant_id = 0) const uint kAlphaPath = 0u;
 
 layout(set = 0, binding = 0) uniform Frame { FrameConstants frame; };
 layout(set = 0, binding = 1, std430) readonly buffer Materials { GpuMaterial materials[]; };
@@ -17,6 +18,7 @@ layout(push_constant) uniform Push { uint material; } pc;
 #include "common/face_normal.glsl"
 #include "common/hemisphere_normal.glsl"
 #include "common/material.glsl"
+#include "common/alpha_coverage.glsl"
 
 layout(location = 0) in vec3 inNormal;
 layout(location = 1) in vec4 inTangent;
@@ -24,15 +26,16 @@ layout(location = 2) in vec2 inUv;
 layout(location = 3) flat in uint inLayer;
 layout(location = 4) in vec3 inViewPosition;
 
-layout(location = 0) out vec2 outNormal;
+layout(location = 0) out vec4 outNormal; // xy encoded normal; w coverage alpha (alpha-to-coverage)
 
 void main() {
     // Derivatives first: they must be taken in uniform control flow, before any discard.
     vec3 V = pixelToCamera(uvec2(gl_FragCoord.xy), agaa.ndcParams);
     vec3 N = viewFaceNormal(inViewPosition, V);
-    if (kAlphaTested != 0u) {
+    float coverage = 1.0;
+    if (kAlphaPath != 0u) {
         GpuMaterial m = materials[pc.material];
-        if (materialAlpha(m, inUv) < m.emissive.w) discard;
+        coverage = maskedCoverage(kAlphaPath, materialAlpha(m, inUv), m.emissive.w);
     }
-    outNormal = vec2(encodeHemisphereNormal(N, V)) / 255.0;
+    outNormal = vec4(vec2(encodeHemisphereNormal(N, V)) / 255.0, 0.0, coverage);
 }

@@ -15,6 +15,17 @@
 #include "common/tile_culling.glsl"
 #include "common/tonemap.glsl"
 
+// GBUFFER_SHADOWS (1: the scene has a shadowed light, agaa/common/shadow_map.h): the shadow-map
+// array and its constants at bindings 9 and 10, one tap per shading event.
+#ifndef GBUFFER_SHADOWS
+#define GBUFFER_SHADOWS 0
+#endif
+#if GBUFFER_SHADOWS
+#define SHADOW_MAP_BINDING 9
+#define SHADOW_CONSTANTS_BINDING 10
+#include "common/shadow.glsl"
+#endif
+
 #if GBUFFER_MS
 layout(set = 0, binding = 2) uniform sampler2DMSArray gDepth;
 layout(set = 0, binding = 3) uniform sampler2DMSArray gNormal;
@@ -71,11 +82,58 @@ void shadeGBufferSurface(ivec2 pixel, uint s, vec3 P, out vec3 radiance, out vec
     vec3 lit = vec3(0.0);
     for (uint i = nextTileLight(0u); i < kMaxLights; i = nextTileLight(i + 1u)) {
         vec3 L, irradiance;
-        if (lightIncidence(lights[i], P, L, irradiance)) lit += evaluateBrdf(surface, V, L, irradiance);
+        if (!lightIncidence(lights[i], P, L, irradiance)) continue;
+#if GBUFFER_SHADOWS
+        irradiance *= shadowVisibilityPoint(i, P, surface.normal);
+#endif
+        lit += evaluateBrdf(surface, V, L, irradiance);
     }
     radiance = min((lit + er.rgb) * frame.depthParams.z, vec3(kMaxRadiance));
     display = toneMapAces(radiance);
 }
+
+#if GBUFFER_SHADOWS
+// One shading event standing for every sample of a flat pixel (Simple/Complex's simple pixels):
+// the BRDF is evaluated once per light at P with sample s's surface, but the shadow is taken per
+// sample (one tap at each sample's own position: the "shadowing per sample" option of paper
+// section 3.5.3), and the pixel resolves per sample like the reference's, so a shadow edge
+// crossing a flat pixel does not make it depart from the reference. Every sample must be covered.
+void shadeGBufferSurfaceShadowedPerSample(ivec2 pixel, uint s, vec3 P, out vec3 radiance, out vec3 display) {
+    vec3 V = normalize(-P); // |P| >= znear > 0
+    SurfaceInputs surface;
+    surface.normal = gbufferNormal(pixel, s);
+    vec4 am = FETCH_SAMPLE(gAlbedoMetal, pixel, s);
+    vec4 er = FETCH_SAMPLE(gEmissiveRoughness, pixel, s);
+    surface.albedo = am.rgb;
+    surface.metallic = am.a;
+    surface.roughness = er.a;
+    vec3 unshadowed = er.rgb;
+    vec3 shadowedLight[kMaxShadowMaps] = vec3[](vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0));
+    for (uint i = nextTileLight(0u); i < kMaxLights; i = nextTileLight(i + 1u)) {
+        vec3 L, irradiance;
+        if (!lightIncidence(lights[i], P, L, irradiance)) continue;
+        vec3 c = evaluateBrdf(surface, V, L, irradiance);
+        int layer = shadowLayer(i);
+        if (layer < 0) unshadowed += c;
+        else shadowedLight[layer] += c;
+    }
+    uint maps = uint(shadow.params.x);
+    radiance = vec3(0.0);
+    display = vec3(0.0);
+    float weight = 1.0 / float(kSampleCount);
+    for (uint k = 0u; k < kSampleCount; ++k) {
+        vec2 pixelPos = vec2(pixel) + frame.samplePositions[k].xy;
+        vec3 Pk = viewPositionFromDepth(pixelPos, gbufferDepth(pixel, k), frame.extent, frame.depthParams,
+                                        frame.projParams);
+        vec3 lk = unshadowed;
+        for (uint l = 0u; l < maps; ++l)
+            lk += shadowedLight[l] * shadowTap(int(l), shadowReceiver(int(l), Pk, surface.normal));
+        vec3 rk = min(lk * frame.depthParams.z, vec3(kMaxRadiance));
+        radiance += weight * rk;
+        display += weight * toneMapAces(rk);
+    }
+}
+#endif
 
 // Sample s of `pixel` shaded at its own position; a sky sample gets the sky.
 // Returns false for sky (not a shading event).

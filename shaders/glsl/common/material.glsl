@@ -4,6 +4,24 @@
 #include "shared/frame.h"
 // What a classic G-buffer holds, evaluated from a glTF material at one fragment.
 // Requires: `textures` (sampler2D array, set 1) declared by the includer.
+//
+// Scene-driven variants (agaa/common/effects.h): specialisation ids 3 and 4 switch the normal-map
+// fetch and the emissive fetch off for scenes without normal-mapped or emissive materials.
+layout(constant_id = 3) const uint kNormalMaps = 1u;
+layout(constant_id = 4) const uint kEmissiveMaterials = 1u;
+
+// Toksvig (2005) from a normal-map texel's pre-filtered length |Na| (engine/frame/gpu_scene.cpp
+// stores it in alpha): with the GGX alpha a = r^2 and its Blinn-Phong exponent s = 2/a^2 - 2,
+// f = |Na| / (|Na| + s (1 - |Na|)), s' = f s, a' = sqrt(2 / (s' + 2)), r' = sqrt(a'). |Na| = 1
+// keeps r; |Na| -> 0 gives a' = 1.
+float toksvigRoughness(float roughness, float normalLength) {
+    float len = clamp(normalLength, 0.0, 1.0);
+    float a = max(roughness * roughness, kMinGgxAlpha);
+    float s = 2.0 / (a * a) - 2.0; // a <= 1: s >= 0
+    float f = len / max(len + s * (1.0 - len), kMinNormalLength);
+    float a2 = sqrt(2.0 / (f * s + 2.0)); // f s + 2 >= 2
+    return sqrt(max(a2, a)); // never smoother than the material
+}
 
 struct MaterialSample {
     vec3 albedo;
@@ -30,19 +48,21 @@ MaterialSample evaluateMaterial(GpuMaterial m, vec2 uv, vec3 geometricNormal, ve
     vec4 mr = sampleTexture(m.textures.y, uv, vec4(1.0)); // glTF: G roughness, B metallic
     s.metallic = clamp(m.params.x * mr.b, 0.0, 1.0);
     s.roughness = clamp(m.params.y * mr.g, 0.0, 1.0);
-    s.emissive = m.emissive.rgb * sampleTexture(m.textures.w, uv, vec4(1.0)).rgb;
+    s.emissive = kEmissiveMaterials != 0u ? m.emissive.rgb * sampleTexture(m.textures.w, uv, vec4(1.0)).rgb : vec3(0.0);
 
     // Interpolated normals can shrink to zero between opposing vertex normals.
     float nlen = length(geometricNormal);
     vec3 N = nlen > kMinNormalLength ? geometricNormal / nlen : vec3(0.0, 0.0, 1.0);
     if (!frontFacing) N = -N; // double-sided: the back face shades with the flipped normal
-    if (m.textures.z >= 0) {
+    if (kNormalMaps != 0u && m.textures.z >= 0) {
         vec3 t = tangent.xyz - N * dot(N, tangent.xyz);
         float tlen = length(t);
         if (tlen > kMinNormalLength) {
             t /= tlen;
             vec3 b = cross(N, t) * (tangent.w < 0.0 ? -1.0 : 1.0);
-            vec3 tn = texture(textures[m.textures.z], uv).xyz * 2.0 - 1.0;
+            vec4 texel = texture(textures[m.textures.z], uv);
+            vec3 tn = texel.xyz * 2.0 - 1.0;
+            s.roughness = toksvigRoughness(s.roughness, texel.a);
             tn.xy *= m.params.z;
             vec3 mapped = t * tn.x + b * tn.y + N * tn.z;
             float mlen = length(mapped);

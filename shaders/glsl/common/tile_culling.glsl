@@ -7,6 +7,10 @@
 // sums are bit-identical run to run (an atomic append would order them by timing).
 // Requires: `frame` (FrameConstants) and `lights` (GpuLight[]) declared by the includer.
 
+// Specialisation id 2 (agaa/common/effects.h): 0 when the scene has no point or spot light,
+// so every light touches every tile and the per-tile frustum box is not built.
+layout(constant_id = 2) const uint kTileLightCulling = 1u;
+
 shared uint sTileMinBits;
 shared uint sTileMaxBits;
 shared uint sLightMask[kMaxLights / 32u];
@@ -40,6 +44,11 @@ bool sphereTouchesBox(vec3 c, float r, vec3 lo, vec3 hi) {
 // Culls every light against this workgroup's tile.
 void tileCullLights() {
     if (!tileHasGeometry()) return; // sky-only tile: nothing is lit
+    if (kTileLightCulling == 0u) {
+        for (uint i = gl_LocalInvocationIndex; i < frame.counts.w; i += kTileSize * kTileSize)
+            atomicOr(sLightMask[i / 32u], 1u << (i % 32u));
+        return;
+    }
     float tmin = uintBitsToFloat(sTileMinBits);
     float tmax = uintBitsToFloat(sTileMaxBits);
     vec2 lo = vec2(gl_WorkGroupID.xy * kTileSize) * frame.extent.zw * 2.0 - 1.0;

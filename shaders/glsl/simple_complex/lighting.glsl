@@ -79,8 +79,17 @@ void main() {
     if (inside) {
         vec3 radiance, toneMapped;
         bool covered = shadeGBufferSample(pixel, 0u, radiance, toneMapped);
-        if (covered && !complexPixel)
-            shadeGBufferSurface(pixel, 0u, simplePixelShadingPoint(pixel, params.thresholds.y), radiance, toneMapped);
+        if (covered && !complexPixel) {
+#if GBUFFER_SHADOWS
+            // Shadow taps per sample, one BRDF evaluation (common/gbuffer_lighting.glsl).
+            if (n > 1u)
+                shadeGBufferSurfaceShadowedPerSample(pixel, 0u, simplePixelShadingPoint(pixel, params.thresholds.y),
+                                                     radiance, toneMapped);
+            else
+#endif
+                shadeGBufferSurface(pixel, 0u, simplePixelShadingPoint(pixel, params.thresholds.y), radiance,
+                                    toneMapped);
+        }
         float w0 = complexPixel ? weight : 1.0;
         display += w0 * toneMapped;
         hdr += w0 * radiance;

@@ -1,0 +1,67 @@
+#pragma once
+// Shadow maps for the scene's shadowed directional and spot lights (issue 8): one D32 layer
+// per light in one array texture, rendered by one graph pass ("<name>.shadow", instanced: draw
+// instance l goes to layer l) that techniques add only when the scene has a shadowed light
+// (eng::scene::SceneFeatures). Lighting passes read the map and the ShadowConstants buffer and
+// include shaders/glsl/common/shadow.glsl.
+//
+// Fitting (documented in agaa/common/README.md):
+//  - directional: orthographic, looking along the light; x/y cover the intersection of the
+//    camera frustum's and the scene bounds' boxes in light space, z covers the whole scene
+//    bounds (casters outside the view still cast);
+//  - spot: perspective from the light, field of view 2 x outer cone, far plane at the range or
+//    the farthest scene-bounds corner.
+
+#include "agaa/common/effects.h"
+#include "agaa/common/technique.h"
+#include "engine/vk/device.h"
+#include "engine/vk/pipeline.h"
+#include "engine/vk/resources.h"
+#include "shared/shadow.h"
+
+#include <array>
+#include <string>
+
+namespace agaa {
+
+struct ShadowMaps {
+    eng::rg::Texture map; // D32 2D array, one layer per shadowed light (at least 2: array view)
+    eng::rg::Buffer constants; // shared::ShadowConstants, uniform
+};
+
+class ShadowMapPass {
+public:
+    static constexpr VkFormat kFormat = VK_FORMAT_D32_SFLOAT;
+
+    ShadowMapPass(eng::vk::Device& device, const eng::frame::GpuScene& scene, const eng::scene::SceneFeatures& features,
+                  const EffectSettings& settings, std::string name);
+    ~ShadowMapPass();
+    ShadowMapPass(const ShadowMapPass&) = delete;
+    ShadowMapPass& operator=(const ShadowMapPass&) = delete;
+
+    bool enabled() const { return m_mapCount > 0; }
+    // Adds "<name>.shadow" (only call when enabled()). Writes the frame's ShadowConstants.
+    ShadowMaps add(eng::rg::Graph& graph, const FrameInputs& inputs);
+    VkSampler sampler() const { return m_sampler; }
+    const shared::ShadowConstants& constants() const { return m_constants; }
+
+    // The light-space fit, exposed for tests: world -> shadow clip (z in [0, 1], 0 near).
+    // frame: the camera, to fit a directional map to the visible part of the scene; nullptr
+    // fits it to the whole scene bounds.
+    static glm::mat4 fitLight(const eng::scene::Scene& scene, const eng::scene::Light& light,
+                              const shared::FrameConstants* frame, float* texelMetres);
+
+private:
+    eng::vk::Device& m_device;
+    std::string m_name;
+    EffectSettings m_settings;
+    std::vector<uint32_t> m_lights; // scene light indices, one per layer
+    uint32_t m_mapCount = 0;
+    eng::vk::PipelineLayout m_layout;
+    std::array<VkPipeline, 2> m_pipelines{}; // [masked]
+    VkSampler m_sampler = VK_NULL_HANDLE;
+    eng::vk::Buffer m_constantsBuffer;
+    shared::ShadowConstants m_constants{};
+};
+
+} // namespace agaa

@@ -1,0 +1,54 @@
+#pragma once
+// What a loaded scene calls for (DESIGN section 1, "simulate only the effects a scene calls
+// for"): the techniques assemble their passes and pick their shader variants from this, and
+// the stats report it. Pure CPU, derived from the scene's content only.
+
+#include "engine/scene/scene.h"
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace eng::scene {
+
+// Shadow maps live in the layers of one array texture; at most this many lights get one.
+inline constexpr uint32_t kMaxShadowedLights = 4;
+
+struct SceneFeatures {
+    // Indices into Scene::lights of the directional and spot lights with castsShadows, in light
+    // order, at most kMaxShadowedLights. Point lights would need cube maps: not supported, counted
+    // in shadowedLightsIgnored with the lights over the cap.
+    std::vector<uint32_t> shadowedLights;
+    uint32_t shadowedLightsIgnored = 0;
+    // Materials used by at least one non-empty draw.
+    uint32_t maskedMaterials = 0; // AlphaMode::Mask: alpha-to-coverage / discard
+    uint32_t blendedMaterials = 0; // AlphaMode::Blend: drawn opaque (no sorted transparency)
+    uint32_t emissiveMaterials = 0; // emissiveFactor * strength > 0
+    uint32_t normalMappedMaterials = 0; // normalTexture >= 0
+    uint32_t directionalLights = 0, pointLights = 0, spotLights = 0;
+    // Conservative: true unless the scene's geometry provably covers every view direction,
+    // which this cheap estimate never claims (a prepass would be needed). Reported, never used
+    // to skip work.
+    bool skyVisible = true;
+    bool forced = false; // every effect forced on (benchmark), not derived
+
+    bool hasShadows() const { return !shadowedLights.empty(); }
+    bool hasMasked() const { return maskedMaterials > 0; }
+    bool hasEmissive() const { return emissiveMaterials > 0; }
+    bool hasNormalMaps() const { return normalMappedMaterials > 0; }
+    // Tile light culling only prunes point and spot lights; directional lights touch every tile.
+    bool needsLightCulling() const { return forced || pointLights + spotLights > 0; }
+};
+
+SceneFeatures deriveSceneFeatures(const Scene& scene);
+
+// Every effect on, whatever the scene holds (the "force every effect" benchmark): every
+// directional and spot light shadowed (up to the cap), every draw alpha-tested, normal-map and
+// emissive paths and tile culling enabled. The image changes only where the forced shadows fall.
+SceneFeatures forceAllSceneFeatures(const Scene& scene);
+
+// One line for logs: "shadowed lights 1 (sun), masked 2, blended 0, emissive 0, normal-mapped 0,
+// lights 1 directional / 0 point / 0 spot, sky visible".
+std::string describe(const SceneFeatures& features, const Scene& scene);
+
+} // namespace eng::scene

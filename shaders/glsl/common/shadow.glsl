@@ -1,0 +1,78 @@
+#ifndef AGAA_SHADOW_GLSL
+#define AGAA_SHADOW_GLSL
+// Shadow-map visibility for the lighting passes (issue 8; paper section 3.5.3 for AGAA).
+// Requires, defined by the includer: SHADOW_MAP_BINDING, SHADOW_CONSTANTS_BINDING (set 0).
+// The map is an array with one D32 layer per shadowed light (shared/shadow.h); a tap is a
+// depth comparison with the nearest texel (no hardware PCF: a tap is one binary visibility).
+#include "shared/shadow.h"
+
+layout(set = 0, binding = SHADOW_MAP_BINDING) uniform sampler2DArray shadowMap;
+layout(set = 0, binding = SHADOW_CONSTANTS_BINDING) uniform Shadow { ShadowConstants shadow; };
+const float kMinTangentLength = 1.0e-3; // view ray along the normal: no depth gradient in the plane
+const float kMaxFootprintStretch = 16.0; // grazing surfaces: at most 16 m along g per metre of depth
+// Taps per shading event (specialisation id 5, agaa/common/effects.h): 1..4.
+layout(constant_id = 5) const uint kShadowTaps = 4u;
+
+// The shadow-map layer of light i, or -1 when it casts none.
+int shadowLayer(uint light) {
+    // Unused entries hold kMaxLights, which no light index equals: a constant trip count.
+    uvec4 match = uvec4(equal(shadow.lightIndex, uvec4(light)));
+    if (match == uvec4(0u)) return -1;
+    return match.x != 0u ? 0 : (match.y != 0u ? 1 : (match.z != 0u ? 2 : 3));
+}
+
+// 1 where the view-space point P is lit by the light of `layer`, 0 where occluded. Points
+// outside the map's volume are lit (nothing was rendered there to occlude them).
+float shadowTap(int layer, vec3 P) {
+    vec4 c = shadow.viewToShadow[layer] * vec4(P, 1.0);
+    if (c.w <= 0.0) return 1.0; // behind a spot light
+    vec3 p = c.xyz / c.w;
+    vec2 uv = p.xy * 0.5 + 0.5;
+    if (any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0))) || p.z >= 1.0) return 1.0;
+    // Nearest texel by integer fetch (no sampler filtering path: cheaper on lavapipe).
+    ivec2 texel = min(ivec2(uv / shadow.params.y), ivec2(1.0 / shadow.params.y) - 1);
+    float occluder = texelFetch(shadowMap, ivec3(texel, layer), 0).r;
+    return p.z - shadow.params.z <= occluder ? 1.0 : 0.0;
+}
+
+// Receiver moved along its normal by ~1.5 texels (normal-offset bias against acne).
+vec3 shadowReceiver(int layer, vec3 P, vec3 N) { return P + N * shadow.normalOffset[layer]; }
+
+// Per-sample methods: one tap at the shading event's own position (its footprint is a point).
+float shadowVisibilityPoint(uint light, vec3 P, vec3 N) {
+    int layer = shadowLayer(light);
+    return layer < 0 ? 1.0 : shadowTap(layer, shadowReceiver(layer, P, N));
+}
+
+// AGAA (paper section 3.5.3): visibility filtered inside the aggregate's footprint. Its mean
+// position P and depth standard deviation sigma give the "variance vector": the direction g in
+// the aggregate's mean tangent plane (normal N) along which view depth changes fastest, scaled
+// so the taps' depths have the aggregate's variance. Staying in the tangent plane keeps the taps
+// on the surface (taps along the view ray would go under a slanted plane and shadow it). Tap j
+// sits at u_j * a along g with u = {-1, -1/3, 1/3, 1}, a = 3 sigma / sqrt(5) for 4 taps
+// ({-1, 0, 1}, a = sqrt(3/2) sigma for 3; {-1, 1}, a = sigma for 2: equal weights, the taps'
+// depth variance is sigma^2), and at a rotated-grid offset across the pixel (`pixelSize`
+// metres at P) along b = N x g, the tangent direction of constant depth.
+float shadowVisibilityAggregate(uint light, vec3 P, vec3 N, float sigma, float pixelSize) {
+    int layer = shadowLayer(light);
+    if (layer < 0) return 1.0;
+    vec3 base = shadowReceiver(layer, P, N);
+    if (kShadowTaps <= 1u) return shadowTap(layer, base);
+    vec3 ray = normalize(P); // |P| >= znear > 0
+    vec3 g = ray - N * dot(N, ray); // |g|: depth change per metre along g/|g|
+    float glen = length(g);
+    vec3 gdir = glen > kMinTangentLength ? g / glen : vec3(0.0);
+    vec3 bdir = glen > kMinTangentLength ? cross(N, gdir) : vec3(0.0);
+    // Metres along g per metre of depth, bounded: a surface seen edge-on has an unbounded footprint.
+    float stretch = glen > kMinTangentLength ? min(1.0 / glen, kMaxFootprintStretch) : 0.0;
+    const vec2 grid[4] = vec2[](vec2(-0.125, -0.375), vec2(0.375, -0.125), vec2(0.125, 0.375), vec2(-0.375, 0.125));
+    float spread = kShadowTaps == 2u ? sigma : (kShadowTaps == 3u ? sqrt(1.5) * sigma : 3.0 * sigma / sqrt(5.0));
+    float sum = 0.0;
+    for (uint j = 0u; j < kShadowTaps; ++j) {
+        float u = -1.0 + 2.0 * float(j) / float(kShadowTaps - 1u);
+        vec3 q = base + gdir * (u * spread * stretch) + bdir * (grid[j].x * pixelSize);
+        sum += shadowTap(layer, q);
+    }
+    return sum / float(kShadowTaps);
+}
+#endif

@@ -1,0 +1,18 @@
+#version 460
+#extension GL_GOOGLE_include_directive : require
+// Masked casters of the shadow-map pass: the alpha test of the material (1 sample per texel:
+// discard, no coverage). Opaque casters use no fragment shader at all.
+#include "shared/frame.h"
+
+layout(set = 0, binding = 1, std430) readonly buffer Materials { GpuMaterial materials[]; };
+layout(set = 1, binding = 0) uniform sampler2D textures[kMaxSceneTextures];
+layout(push_constant) uniform Push { uint material; } pc;
+
+#include "common/material.glsl"
+
+layout(location = 0) in vec2 inUv;
+
+void main() {
+    GpuMaterial m = materials[pc.material];
+    if (materialAlpha(m, inUv) < m.emissive.w) discard;
+}

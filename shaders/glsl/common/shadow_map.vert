@@ -1,0 +1,23 @@
+#version 460
+#extension GL_GOOGLE_include_directive : require
+#extension GL_ARB_shader_viewport_layer_array : require
+// Depth-only shadow-map pass (agaa/common/shadow_map.cpp): instance l of each draw renders
+// into layer l of the shadow-map array, seen from shadowed light l.
+#include "shared/frame.h"
+#include "shared/shadow.h"
+
+layout(set = 0, binding = 0) uniform Shadow { ShadowConstants shadow; };
+
+layout(location = 0) in vec3 inPosition;
+// The scene's vertex layout has all four attributes; declared so every one is consumed.
+layout(location = 1) in vec3 inNormal;
+layout(location = 2) in vec4 inTangent;
+layout(location = 3) in vec2 inUv;
+layout(location = 0) out vec2 outUv;
+
+void main() {
+    uint layer = uint(gl_InstanceIndex);
+    gl_Position = shadow.worldToShadow[layer] * vec4(inPosition, 1.0);
+    gl_Layer = int(layer);
+    outUv = inUv;
+}

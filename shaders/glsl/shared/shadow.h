@@ -1,0 +1,23 @@
+#ifndef AGAA_SHARED_SHADOW_H
+#define AGAA_SHARED_SHADOW_H
+#include "shared/glsl_cpp.h"
+
+SHARED_BEGIN
+
+// One D32 layer of the shadow-map array per shadowed light (agaa/common/shadow_map.h).
+SHARED_CONST kMaxShadowMaps = 4u;
+
+// Written by the host with the frame (agaa/common/shadow_map.cpp), read by the shadow-map pass
+// (worldToShadow) and by lighting (viewToShadow). Shadow clip space: x, y in [-1, 1], z in
+// [0, 1] with 0 nearest the light (standard depth: the map is cleared to 1, tested LESS).
+struct ShadowConstants {
+    mat4 worldToShadow[kMaxShadowMaps];
+    mat4 viewToShadow[kMaxShadowMaps];
+    uvec4 lightIndex; // lights[] index of map l (kMaxLights when unused)
+    // x maps in use, y 1/map size (texel in uv), z depth bias (shadow clip z units), w unused
+    vec4 params;
+    vec4 normalOffset; // per map: metres the receiver moves along its normal (1.5 texels)
+};
+
+SHARED_END
+#endif
