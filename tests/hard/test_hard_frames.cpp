@@ -183,7 +183,9 @@ TEST_P(HardScene, EveryMethodFiniteBoundedDeterministicAndCovered) {
         EXPECT_EQ(a.hdr.rgba, b.hdr.rgba) << label << ": two runs differ (HDR)";
         EXPECT_EQ(a.display.rgba, b.display.rgba) << label << ": two runs differ (display)";
         EXPECT_EQ(a.shadingEvents, b.shadingEvents) << label << ": two runs differ (shading events)";
-        if (readback) EXPECT_EQ(readback->check(label, a.shadingEvents), 0u) << label << ": AG-buffer invariants";
+        if (readback) {
+            EXPECT_EQ(readback->check(label, a.shadingEvents), 0u) << label << ": AG-buffer invariants";
+        }
         std::printf("[ measured ] %-30s max HDR %.4g (bound %.4g), events mean %.2f max %u\n", label.c_str(),
                     checkRange(a.hdr, 1e30).maxValue, bound, a.shadingEventsMean, a.shadingEventsMax);
     }
@@ -213,7 +215,9 @@ TEST(HardSizes, OddSizesEveryMethod) {
                 const agaa::RenderResult a = readback ? renderWithReadback(renderer, r, *readback) : renderer.render(r);
                 ASSERT_EQ(a.hdr.width * a.hdr.height, w * h) << label;
                 checkFrame(label, a, hdrBound(scene, r.view), maxEvents(m, kSamples, kAggregates));
-                if (readback) EXPECT_EQ(readback->check(label, a.shadingEvents), 0u) << label << ": AG-buffer invariants";
+                if (readback) {
+            EXPECT_EQ(readback->check(label, a.shadingEvents), 0u) << label << ": AG-buffer invariants";
+        }
             }
         }
     }
