@@ -226,7 +226,9 @@ TEST(FeaturesGpu, MaskedMaterialsUseAlphaToCoverageWithMsaaAndDiscardAtOneSample
             float l = luminance(r.display, {x, left.y});
             partial += (l > dark + 0.2f * (bright - dark) && l < dark + 0.8f * (bright - dark)) ? 1u : 0u;
         }
-        if (n > 1) EXPECT_GE(partial, 1u) << method << ": alpha-to-coverage anti-aliases the alpha edge";
+        if (n > 1) {
+            EXPECT_GE(partial, 1u) << method << ": alpha-to-coverage anti-aliases the alpha edge";
+        }
         else EXPECT_EQ(partial, 0u) << method << ": discard leaves a hard alpha edge";
         EXPECT_TRUE(eng::io::allFinite(r.display)) << method;
     }
