@@ -6,7 +6,8 @@
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
 cd "$root"
-tools/deps.sh
+# --browser: Chromium for the report's browser test (label `browser`), part of the whole suite.
+tools/deps.sh --browser
 build="${AGAA_BUILD_DIR:-build/test}"
 cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DAGAA_BUILD_TESTS=ON -DAGAA_WERROR=ON >/dev/null
 cmake --build "$build" -j"$(nproc)"
