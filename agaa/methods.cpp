@@ -11,15 +11,25 @@ namespace agaa {
 
 const std::vector<MethodInfo>& knownMethods() {
     static const std::vector<MethodInfo> methods = {
-        {"reference", "per-sample deferred shading: every covered sample lit (ground truth at the same n)", true, false},
+        {"reference", "per-sample deferred shading: every covered sample lit (ground truth at the same n)",
+         true, false},
         {"noaa", "one sample, one shading event per pixel", false, false},
         {"simple-complex",
-         "Simple/Complex deferred MSAA (Lauritzen 2010): sample 0 lit everywhere, every sample of complex pixels",
-         true, false, {"complex"}},
-        {"simple-complex-naive", "simple-complex with per-pixel sample loops instead of per-tile packing (timing)", true,
-         false, {"complex"}},
+         "Simple/Complex deferred MSAA (Lauritzen 2010): sample 0 lit everywhere, every sample of complex "
+         "pixels",
+         true,
+         false,
+         {"complex"}},
+        {"simple-complex-naive",
+         "simple-complex with per-pixel sample loops instead of per-tile packing (timing)",
+         true,
+         false,
+         {"complex"}},
         {"fxaa", "FXAA 3.11 quality (Lottes 2009), preset 39, on the no-AA image", false, false},
-        {"agaa", "aggregate G-buffer anti-aliasing: n visibility samples, c aggregates lit once each", true, true,
+        {"agaa",
+         "aggregate G-buffer anti-aliasing: n visibility samples, c aggregates lit once each",
+         true,
+         true,
          {"aggregates"}},
     };
     return methods;
@@ -27,7 +37,8 @@ const std::vector<MethodInfo>& knownMethods() {
 
 std::string knownMethodNames() {
     std::string s;
-    for (const MethodInfo& m : knownMethods()) s += (s.empty() ? "" : ", ") + m.name;
+    for (const MethodInfo& m : knownMethods())
+        s += (s.empty() ? "" : ", ") + m.name;
     return s;
 }
 
@@ -38,10 +49,13 @@ bool isKnownMethod(const std::string& name) {
 }
 
 std::unique_ptr<Technique> createTechnique(const std::string& method, eng::vk::Device& device,
-                                           const eng::frame::GpuScene& scene, const MethodSettings& settings) {
+                                           const eng::frame::GpuScene& scene,
+                                           const MethodSettings& settings) {
     if (method == "reference")
-        return std::make_unique<Reference>(device, scene, ReferenceSettings{settings.samples, settings.effects});
-    if (method == "noaa") return std::make_unique<Reference>(device, scene, ReferenceSettings{1, settings.effects}, "noaa");
+        return std::make_unique<Reference>(device, scene,
+                                           ReferenceSettings{settings.samples, settings.effects});
+    if (method == "noaa")
+        return std::make_unique<Reference>(device, scene, ReferenceSettings{1, settings.effects}, "noaa");
     if (method == "simple-complex" || method == "simple-complex-naive") {
         SimpleComplexSettings s; // thresholds: the documented defaults (simple_complex.h)
         s.samples = settings.samples;
@@ -59,7 +73,8 @@ std::unique_ptr<Technique> createTechnique(const std::string& method, eng::vk::D
         s.samples = settings.samples;
         s.aggregates = settings.aggregates;
         s.effects = settings.effects;
-        s.debugView = settings.debug == "aggregates" ? AggregateDebugView::Aggregates : AggregateDebugView::None;
+        s.debugView =
+            settings.debug == "aggregates" ? AggregateDebugView::Aggregates : AggregateDebugView::None;
         if (settings.characteristicLength >= 0.0f) s.characteristicLength = settings.characteristicLength;
         if (settings.seedThreshold >= 0.0f) s.seedThreshold = settings.seedThreshold;
         if (settings.pixelCentrePosition) s.position = AggregatePosition::PixelCentre;

@@ -15,8 +15,8 @@ namespace agaa {
 struct MethodInfo {
     std::string name;
     std::string summary;
-    bool usesSamples = true; // --samples matters
-    bool usesAggregates = false; // --aggregates matters
+    bool usesSamples = true;             // --samples matters
+    bool usesAggregates = false;         // --aggregates matters
     std::vector<std::string> debugViews; // values --debug accepts for this method
 };
 

@@ -29,10 +29,13 @@ int main(int argc, char** argv) {
     uint32_t size = 96;
     for (int i = 1; i + 1 < argc; i += 2) {
         std::string flag = argv[i];
-        if (flag == "--builtin") sceneName = argv[i + 1];
-        else if (flag == "--size") size = uint32_t(std::max(1, std::atoi(argv[i + 1])));
+        if (flag == "--builtin")
+            sceneName = argv[i + 1];
+        else if (flag == "--size")
+            size = uint32_t(std::max(1, std::atoi(argv[i + 1])));
         else {
-            std::fprintf(stderr, "embed_node: unknown argument '%s' (allowed: --builtin NAME, --size N)\n", argv[i]);
+            std::fprintf(stderr, "embed_node: unknown argument '%s' (allowed: --builtin NAME, --size N)\n",
+                         argv[i]);
             return 2;
         }
     }
@@ -51,10 +54,12 @@ int main(int argc, char** argv) {
         shared::FrameConstants constants =
             eng::frame::makeFrameConstants(scene, view, eng::frame::makeSamplePattern(settings.samples));
         auto lights = eng::frame::makeGpuLights(scene, constants.view);
-        vk::Buffer frameBuffer = vk::createBuffer(device, sizeof constants, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
-                                                  vk::MemoryUse::Upload, "host.frame");
-        vk::Buffer lightBuffer = vk::createBuffer(device, lights.size() * sizeof(shared::GpuLight),
-                                                  VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, vk::MemoryUse::Upload, "host.lights");
+        vk::Buffer frameBuffer =
+            vk::createBuffer(device, sizeof constants, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
+                             vk::MemoryUse::Upload, "host.frame");
+        vk::Buffer lightBuffer =
+            vk::createBuffer(device, lights.size() * sizeof(shared::GpuLight),
+                             VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, vk::MemoryUse::Upload, "host.lights");
         vk::writeBuffer(device, frameBuffer, std::as_bytes(std::span(&constants, 1)));
         vk::writeBuffer(device, lightBuffer, std::as_bytes(std::span(lights)));
 
@@ -66,10 +71,10 @@ int main(int argc, char** argv) {
         inputs.scene = &gpuScene;
         inputs.constants = &constants;
         inputs.width = inputs.height = size;
-        inputs.frameConstants = graph.importBuffer("host.frame", {frameBuffer.buffer, frameBuffer.size}, std::nullopt,
-                                                   std::nullopt);
-        inputs.lights = graph.importBuffer("host.lights", {lightBuffer.buffer, lightBuffer.size}, std::nullopt,
-                                           std::nullopt);
+        inputs.frameConstants = graph.importBuffer("host.frame", {frameBuffer.buffer, frameBuffer.size},
+                                                   std::nullopt, std::nullopt);
+        inputs.lights = graph.importBuffer("host.lights", {lightBuffer.buffer, lightBuffer.size},
+                                           std::nullopt, std::nullopt);
         agaa::FrameTargets targets = node.addPasses(graph, inputs);
 
         // The host's own pass consumes the node's HDR output.
@@ -80,16 +85,19 @@ int main(int argc, char** argv) {
         eng::frame::FrameRunner runner(device);
         eng::frame::FrameTiming timing = runner.run(graph);
         std::printf("passes run:");
-        for (const auto& p : timing.passes) std::printf(" %s (%.1f ms)", p.name.c_str(), p.gpuMs);
+        for (const auto& p : timing.passes)
+            std::printf(" %s (%.1f ms)", p.name.c_str(), p.gpuMs);
         std::printf("\npasses culled:");
-        for (const auto& p : graph.culledPassNames()) std::printf(" %s", p.c_str());
+        for (const auto& p : graph.culledPassNames())
+            std::printf(" %s", p.c_str());
         vk::invalidateBuffer(device, hostImage);
         const float* px = static_cast<const float*>(hostImage.mapped);
         double mean = 0.0;
         bool finite = true;
         for (uint32_t i = 0; i < size * size; ++i) {
             mean += (px[4 * i] + px[4 * i + 1] + px[4 * i + 2]) / 3.0;
-            finite &= std::isfinite(px[4 * i]) && std::isfinite(px[4 * i + 1]) && std::isfinite(px[4 * i + 2]);
+            finite &=
+                std::isfinite(px[4 * i]) && std::isfinite(px[4 * i + 1]) && std::isfinite(px[4 * i + 2]);
         }
         std::printf("\nhost output: %ux%u, mean radiance %.4f, %s, %u validation error(s)\n", size, size,
                     mean / (size * size), finite ? "finite" : "NOT FINITE", device.validationErrors());

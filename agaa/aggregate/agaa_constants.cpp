@@ -35,8 +35,8 @@ shared::AgaaConstants makeAgaaConstants(const AggregateSettings& s, const shared
     float znear = frame.depthParams.x, zfar = frame.depthParams.y;
     c.clustering = {1.0f / s.characteristicLength, s.seedThreshold, znear * zfar, zfar - znear};
     c.ndcParams = {2.0f / frame.extent.x, 2.0f / frame.extent.y, frame.projParams.x, frame.projParams.y};
-    c.shape = {s.aggregates, shared::metadataBits(s.aggregates), shared::metadataWords(s.samples, s.aggregates),
-               s.samples};
+    c.shape = {s.aggregates, shared::metadataBits(s.aggregates),
+               shared::metadataWords(s.samples, s.aggregates), s.samples};
     // Toksvig with roughness injected as variance (agaa/aggregate/README.md): the reference
     // Blinn-Phong exponent of the smoothest representable surface.
     float smax = 2.0f / (kMinGgxAlpha * kMinGgxAlpha) - 2.0f;

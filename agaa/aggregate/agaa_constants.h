@@ -16,8 +16,8 @@ enum class AggregateDebugView : uint32_t { None = 0, Aggregates = 1 };
 enum class AggregatePosition : uint32_t { SampleMean = 0, PixelCentre = 1 };
 
 struct AggregateSettings {
-    uint32_t samples = 8; // n
-    uint32_t aggregates = 2; // c
+    uint32_t samples = 8;              // n
+    uint32_t aggregates = 2;           // c
     float characteristicLength = 0.1f; // k, metres (paper: 10 cm)
     // t in Equation 1 units: a further aggregate is only created from samples farther than t
     // from every seed. Default measured on the scenegen scenes (agaa/aggregate/README.md).
@@ -35,6 +35,7 @@ inline constexpr float kMaxGgxAlpha = 0.9f;
 // Throws std::invalid_argument naming the setting and its allowed range.
 void validate(const AggregateSettings&);
 
-shared::AgaaConstants makeAgaaConstants(const AggregateSettings&, const shared::FrameConstants&, bool hasEmissive);
+shared::AgaaConstants makeAgaaConstants(const AggregateSettings&, const shared::FrameConstants&,
+                                        bool hasEmissive);
 
 } // namespace agaa

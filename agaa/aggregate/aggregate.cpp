@@ -18,7 +18,9 @@ rg::Buffer importScene(rg::Graph& graph, const char* name, const vk::Buffer& b) 
     return graph.importBuffer(name, {b.buffer, b.size}, std::nullopt, std::nullopt);
 }
 
-uint32_t groups(uint32_t size, uint32_t group) { return (size + group - 1) / group; }
+uint32_t groups(uint32_t size, uint32_t group) {
+    return (size + group - 1) / group;
+}
 
 VkRenderingAttachmentInfo attachment(VkImageView view, VkImageLayout layout, VkAttachmentLoadOp load) {
     VkRenderingAttachmentInfo a{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
@@ -43,17 +45,18 @@ FrameTargets AggregateAA::addPasses(rg::Graph& graph, const FrameInputs& in) {
     for (const eng::scene::Draw& draw : scene->scene().draws) {
         const eng::scene::Material& m = scene->scene().materials.at(draw.material);
         const bool masked = m.alphaMode == eng::scene::AlphaMode::Mask || m_features.forced;
-        visibilityPipelines.push_back(
-            visibilityPipeline(masked ? maskedAlphaPath(m_settings.samples) : AlphaPath::Opaque, m.doubleSided));
+        visibilityPipelines.push_back(visibilityPipeline(
+            masked ? maskedAlphaPath(m_settings.samples) : AlphaPath::Opaque, m.doubleSided));
         generationPipelines.push_back(generationPipeline(m.doubleSided));
     }
 
-    rg::Buffer agaaConstants = graph.importBuffer("agaa.constants", {m_constantsBuffer.buffer, m_constantsBuffer.size},
-                                                  std::nullopt, std::nullopt);
+    rg::Buffer agaaConstants = graph.importBuffer(
+        "agaa.constants", {m_constantsBuffer.buffer, m_constantsBuffer.size}, std::nullopt, std::nullopt);
     rg::Buffer materials = importScene(graph, "scene.materials", scene->materials());
     m_resources.agaaConstants = agaaConstants;
 
-    auto drawScene = [scene, layers](VkCommandBuffer cmd, VkPipelineLayout layout, const std::vector<VkPipeline>& pipes) {
+    auto drawScene = [scene, layers](VkCommandBuffer cmd, VkPipelineLayout layout,
+                                     const std::vector<VkPipeline>& pipes) {
         VkDeviceSize offset = 0;
         VkBuffer vb = scene->vertexBuffer();
         vkCmdBindVertexBuffers(cmd, 0, 1, &vb, &offset);
@@ -67,7 +70,8 @@ FrameTargets AggregateAA::addPasses(rg::Graph& graph, const FrameInputs& in) {
             if (pipes[i] != bound) vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, bound = pipes[i]);
             uint32_t material = draws[i].material;
             vkCmdPushConstants(cmd, layout, VK_SHADER_STAGE_ALL, 0, sizeof material, &material);
-            vkCmdDrawIndexed(cmd, draws[i].indexCount, layers, draws[i].firstIndex, 0, 0); // one instance per layer
+            vkCmdDrawIndexed(cmd, draws[i].indexCount, layers, draws[i].firstIndex, 0,
+                             0); // one instance per layer
         }
     };
     auto beginRendering = [](VkCommandBuffer cmd, uint32_t w, uint32_t h, uint32_t layerCount,
@@ -103,15 +107,19 @@ FrameTargets AggregateAA::addPasses(rg::Graph& graph, const FrameInputs& in) {
             d.frame = b.read(in.frameConstants, rg::Use::UniformRead);
             d.agaa = b.read(agaaConstants, rg::Use::UniformRead);
             d.materials = b.read(materials, rg::Use::StorageReadFragment);
-            d.depth = b.write(b.create("agaa.visibility.depth", desc(m_depthFormat)), rg::Use::DepthStencilWrite);
-            d.normal = b.write(b.create("agaa.visibility.normal", desc(VK_FORMAT_R8G8_UNORM)), rg::Use::ColorAttachment);
+            d.depth =
+                b.write(b.create("agaa.visibility.depth", desc(m_depthFormat)), rg::Use::DepthStencilWrite);
+            d.normal = b.write(b.create("agaa.visibility.normal", desc(VK_FORMAT_R8G8_UNORM)),
+                               rg::Use::ColorAttachment);
         },
         [=, this](const rg::Context& ctx, const Visibility& d) {
             VkCommandBuffer cmd = ctx.cmd();
-            VkRenderingAttachmentInfo color = attachment(ctx.texture(d.normal).view,
-                                                         VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_ATTACHMENT_LOAD_OP_CLEAR);
-            VkRenderingAttachmentInfo depth = attachment(
-                ctx.texture(d.depth).view, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL, VK_ATTACHMENT_LOAD_OP_CLEAR);
+            VkRenderingAttachmentInfo color =
+                attachment(ctx.texture(d.normal).view, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+                           VK_ATTACHMENT_LOAD_OP_CLEAR);
+            VkRenderingAttachmentInfo depth =
+                attachment(ctx.texture(d.depth).view, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL,
+                           VK_ATTACHMENT_LOAD_OP_CLEAR);
             depth.clearValue.depthStencil = {0.0f, 0}; // reversed Z: 0 = far (sky); stencil 0 for generation
             beginRendering(cmd, in.width, in.height, layers, &color, depth);
             vk::PushDescriptors()
@@ -137,10 +145,11 @@ FrameTargets AggregateAA::addPasses(rg::Graph& graph, const FrameInputs& in) {
             d.depth = b.read(vis.depth, rg::Use::SampledCompute);
             d.normal = b.read(vis.normal, rg::Use::SampledCompute);
             // c = 1 needs no metadata bits; keep a minimal buffer so the binding stays valid.
-            d.metadata = b.write(b.create("agaa.metadata", {std::max<VkDeviceSize>(4, VkDeviceSize(pixels) * words * 4)}),
-                                 rg::Use::StorageWriteCompute);
-            d.count = b.write(b.create("agaa.aggregateCount", {VK_FORMAT_R8_UINT, in.width, in.height, 1,
-                                                                VK_SAMPLE_COUNT_1_BIT}),
+            d.metadata = b.write(
+                b.create("agaa.metadata", {std::max<VkDeviceSize>(4, VkDeviceSize(pixels) * words * 4)}),
+                rg::Use::StorageWriteCompute);
+            d.count = b.write(b.create("agaa.aggregateCount",
+                                       {VK_FORMAT_R8_UINT, in.width, in.height, 1, VK_SAMPLE_COUNT_1_BIT}),
                               rg::Use::StorageImageWriteCompute);
         },
         [=, this](const rg::Context& ctx, const Cluster& d) {
@@ -161,7 +170,8 @@ FrameTargets AggregateAA::addPasses(rg::Graph& graph, const FrameInputs& in) {
     m_resources.metadata = cl.metadata;
     m_resources.aggregateCount = cl.count;
 
-    const rg::TextureDesc outDesc{VK_FORMAT_R32G32B32A32_SFLOAT, in.width, in.height, 1, VK_SAMPLE_COUNT_1_BIT};
+    const rg::TextureDesc outDesc{VK_FORMAT_R32G32B32A32_SFLOAT, in.width, in.height, 1,
+                                  VK_SAMPLE_COUNT_1_BIT};
     const rg::TextureDesc eventsDesc{VK_FORMAT_R32_UINT, in.width, in.height, 1, VK_SAMPLE_COUNT_1_BIT};
 
     // ---- shadow maps: added whenever the scene has a shadowed light; lighting reads them (the
@@ -184,8 +194,10 @@ FrameTargets AggregateAA::addPasses(rg::Graph& graph, const FrameInputs& in) {
                 d.count = b.read(cl.count, rg::Use::StorageImageReadCompute);
                 d.depth = b.read(vis.depth, rg::Use::SampledCompute);
                 d.hdr = b.write(b.create("agaa.debug.hdr", outDesc), rg::Use::StorageImageWriteCompute);
-                d.display = b.write(b.create("agaa.debug.display", outDesc), rg::Use::StorageImageWriteCompute);
-                d.events = b.write(b.create("agaa.debug.events", eventsDesc), rg::Use::StorageImageWriteCompute);
+                d.display =
+                    b.write(b.create("agaa.debug.display", outDesc), rg::Use::StorageImageWriteCompute);
+                d.events =
+                    b.write(b.create("agaa.debug.events", eventsDesc), rg::Use::StorageImageWriteCompute);
             },
             [=, this](const rg::Context& ctx, const Debug& d) {
                 VkCommandBuffer cmd = ctx.cmd();
@@ -223,14 +235,18 @@ FrameTargets AggregateAA::addPasses(rg::Graph& graph, const FrameInputs& in) {
         struct ClearRecords {
             rg::Buffer records;
         };
-        rg::Buffer imported = graph.importBuffer("agaa.fragmentRecords", {m_recordTarget->buffer, m_recordTarget->size},
-                                                 std::nullopt, std::nullopt);
-        records = graph.addPass<ClearRecords>(
-                           "agaa.clearRecords", rg::PassKind::Transfer,
-                           [&](rg::Builder& b, ClearRecords& d) { d.records = b.write(imported, rg::Use::TransferDst); },
-                           [](const rg::Context& ctx, const ClearRecords& d) {
-                               vkCmdFillBuffer(ctx.cmd(), ctx.buffer(d.records).buffer, 0, 4, 0); // count only
-                           })
+        rg::Buffer imported =
+            graph.importBuffer("agaa.fragmentRecords", {m_recordTarget->buffer, m_recordTarget->size},
+                               std::nullopt, std::nullopt);
+        records = graph
+                      .addPass<ClearRecords>(
+                          "agaa.clearRecords", rg::PassKind::Transfer,
+                          [&](rg::Builder& b, ClearRecords& d) {
+                              d.records = b.write(imported, rg::Use::TransferDst);
+                          },
+                          [](const rg::Context& ctx, const ClearRecords& d) {
+                              vkCmdFillBuffer(ctx.cmd(), ctx.buffer(d.records).buffer, 0, 4, 0); // count only
+                          })
                       .records;
     }
     struct Generation {
@@ -256,8 +272,9 @@ FrameTargets AggregateAA::addPasses(rg::Graph& graph, const FrameInputs& in) {
         },
         [=, this](const rg::Context& ctx, const Generation& d) {
             VkCommandBuffer cmd = ctx.cmd();
-            VkRenderingAttachmentInfo depth = attachment(
-                ctx.texture(d.depth).view, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL, VK_ATTACHMENT_LOAD_OP_LOAD);
+            VkRenderingAttachmentInfo depth =
+                attachment(ctx.texture(d.depth).view, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL,
+                           VK_ATTACHMENT_LOAD_OP_LOAD);
             VkRenderingAttachmentInfo color{};
             if (emissive)
                 color = attachment(ctx.texture(d.emissive).view, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
@@ -327,10 +344,10 @@ FrameTargets AggregateAA::addPasses(rg::Graph& graph, const FrameInputs& in) {
 
 void AggregateAA::addSampleReadback(rg::Graph& graph, const FrameInputs& in, const vk::Buffer& host) {
     if (!m_readbackPipeline)
-        m_readbackPipeline = vk::createComputePipeline(m_device, kAgaaSampleReadbackComp, m_readbackLayout.layout, {},
-                                                       "agaa.sampleReadback");
-    rg::Buffer target = graph.importBuffer("agaa.sampleReadback.host", {host.buffer, host.size}, std::nullopt,
-                                           std::nullopt);
+        m_readbackPipeline = vk::createComputePipeline(m_device, kAgaaSampleReadbackComp,
+                                                       m_readbackLayout.layout, {}, "agaa.sampleReadback");
+    rg::Buffer target =
+        graph.importBuffer("agaa.sampleReadback.host", {host.buffer, host.size}, std::nullopt, std::nullopt);
     struct Data {
         rg::Buffer frame, agaa, target;
         rg::Texture depth, normal;

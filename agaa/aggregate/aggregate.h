@@ -30,8 +30,9 @@ struct AggregateResources {
 };
 
 class AggregateAA final : public Technique {
-public:
-    AggregateAA(eng::vk::Device& device, const eng::frame::GpuScene& scene, const AggregateSettings& settings);
+  public:
+    AggregateAA(eng::vk::Device& device, const eng::frame::GpuScene& scene,
+                const AggregateSettings& settings);
     ~AggregateAA() override;
 
     std::string name() const override { return "agaa"; }
@@ -57,7 +58,7 @@ public:
     // bits, theta | phi << 8) into `host` (pixels * n * 8 bytes). Call after addPasses().
     void addSampleReadback(eng::rg::Graph& graph, const FrameInputs& inputs, const eng::vk::Buffer& host);
 
-private:
+  private:
     VkPipeline visibilityPipeline(AlphaPath alpha, bool doubleSided);
     VkPipeline generationPipeline(bool doubleSided);
     void createLayouts(const eng::frame::GpuScene& scene);
@@ -70,8 +71,8 @@ private:
     VkFormat m_depthFormat = VK_FORMAT_D24_UNORM_S8_UINT;
     shared::AgaaConstants m_constants{};
     eng::vk::Buffer m_constantsBuffer;
-    eng::vk::PipelineLayout m_visibilityLayout, m_generationLayout, m_recordLayout, m_clusterLayout, m_lightingLayout, m_debugLayout,
-        m_readbackLayout;
+    eng::vk::PipelineLayout m_visibilityLayout, m_generationLayout, m_recordLayout, m_clusterLayout,
+        m_lightingLayout, m_debugLayout, m_readbackLayout;
     std::array<VkPipeline, 6> m_visibilityPipelines{}; // [alpha path][double-sided]
     std::unique_ptr<ShadowMapPass> m_shadow;
     std::array<VkPipeline, 4> m_generationPipelines{}; // [recording][double-sided]

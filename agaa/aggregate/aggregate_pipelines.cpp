@@ -31,46 +31,53 @@ constexpr VkShaderStageFlags kFs = VK_SHADER_STAGE_FRAGMENT_BIT;
 constexpr VkShaderStageFlags kVsFs = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
 } // namespace
 
-AggregateAA::AggregateAA(vk::Device& device, const eng::frame::GpuScene& scene, const AggregateSettings& settings)
+AggregateAA::AggregateAA(vk::Device& device, const eng::frame::GpuScene& scene,
+                         const AggregateSettings& settings)
     : m_device(device), m_settings(settings), m_scene(scene.scene()),
-      m_features(effectiveFeatures(scene.scene(), settings.effects)), m_hasEmissive(m_features.hasEmissive()) {
+      m_features(effectiveFeatures(scene.scene(), settings.effects)),
+      m_hasEmissive(m_features.hasEmissive()) {
     validate(settings);
     m_shadow = std::make_unique<ShadowMapPass>(device, scene, m_features, settings.effects, "agaa");
     const vk::Capabilities& caps = device.caps();
     if (!caps.supportsSamples(4))
-        throw vk::MissingCapability(caps.deviceName + " lacks 4x MSAA (AGAA rasterises n >= 4 samples as 4x layers)");
+        throw vk::MissingCapability(caps.deviceName +
+                                    " lacks 4x MSAA (AGAA rasterises n >= 4 samples as 4x layers)");
     if (!caps.postDepthCoverage)
         throw vk::MissingCapability(caps.deviceName +
                                     " lacks VK_EXT_post_depth_coverage (the accumulation kernel needs the "
                                     "post-depth-test sample mask)");
     // The paper's 4-byte depth + stencil per sample; D32S8 where D24S8 is not offered at 4x.
-    const VkImageUsageFlags depthUsage = VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT;
+    const VkImageUsageFlags depthUsage =
+        VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT;
     if (vk::supportsImage(device, VK_FORMAT_D24_UNORM_S8_UINT, depthUsage, VK_SAMPLE_COUNT_4_BIT))
         m_depthFormat = VK_FORMAT_D24_UNORM_S8_UINT;
     else if (vk::supportsImage(device, VK_FORMAT_D32_SFLOAT_S8_UINT, depthUsage, VK_SAMPLE_COUNT_4_BIT))
         m_depthFormat = VK_FORMAT_D32_SFLOAT_S8_UINT;
     else
-        throw vk::MissingCapability(caps.deviceName + " offers no 4x sampled depth-stencil format (D24S8 or D32S8)");
+        throw vk::MissingCapability(caps.deviceName +
+                                    " offers no 4x sampled depth-stencil format (D24S8 or D32S8)");
 
-    m_constantsBuffer = vk::createBuffer(device, sizeof(shared::AgaaConstants), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
-                                         vk::MemoryUse::Upload, "agaa.constants");
-    m_fetchSampler =
-        vk::createSampler(device, VK_FILTER_NEAREST, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE, 0.0f, "agaa.fetchSampler");
+    m_constantsBuffer =
+        vk::createBuffer(device, sizeof(shared::AgaaConstants), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
+                         vk::MemoryUse::Upload, "agaa.constants");
+    m_fetchSampler = vk::createSampler(device, VK_FILTER_NEAREST, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE, 0.0f,
+                                       "agaa.fetchSampler");
     createLayouts(scene);
 
     m_clusterPipeline = vk::createComputePipeline(device, kAgaaClusterComp, m_clusterLayout.layout,
                                                   {{settings.samples, settings.aggregates}}, "agaa.cluster");
     const bool shadows = m_shadow->enabled();
     std::span<const uint32_t> lighting =
-        m_hasEmissive ? (shadows ? std::span<const uint32_t>(kAgaaLightingEmissiveShadowComp) : kAgaaLightingEmissiveComp)
+        m_hasEmissive ? (shadows ? std::span<const uint32_t>(kAgaaLightingEmissiveShadowComp)
+                                 : kAgaaLightingEmissiveComp)
                       : (shadows ? std::span<const uint32_t>(kAgaaLightingShadowComp) : kAgaaLightingComp);
     m_lightingPipeline = vk::createComputePipeline(
         device, lighting, m_lightingLayout.layout,
         {effectSpecialization(m_features, settings.samples, settings.aggregates, settings.effects.shadowTaps,
                               settings.effects.shadowFootprint)},
         "agaa.lighting");
-    m_debugPipeline =
-        vk::createComputePipeline(device, kAgaaDebugAggregatesComp, m_debugLayout.layout, {}, "agaa.debug.aggregates");
+    m_debugPipeline = vk::createComputePipeline(device, kAgaaDebugAggregatesComp, m_debugLayout.layout, {},
+                                                "agaa.debug.aggregates");
 }
 
 void AggregateAA::createLayouts(const eng::frame::GpuScene& scene) {
@@ -81,7 +88,8 @@ void AggregateAA::createLayouts(const eng::frame::GpuScene& scene) {
     m_visibilityLayout = vk::createPipelineLayout(m_device, visibility, "agaa.visibility.layout");
 
     vk::LayoutDesc generation;
-    generation.pushBindings = {{0, kUbo, kVsFs}, {1, kSsbo, kFs}, {2, kUbo, kFs}, {3, kSsbo, kFs}, {4, kSsbo, kFs}};
+    generation.pushBindings = {
+        {0, kUbo, kVsFs}, {1, kSsbo, kFs}, {2, kUbo, kFs}, {3, kSsbo, kFs}, {4, kSsbo, kFs}};
     generation.extraSets = {scene.textureSetLayout()};
     generation.pushConstantBytes = 4;
     m_generationLayout = vk::createPipelineLayout(m_device, generation, "agaa.generation.layout");
@@ -89,13 +97,13 @@ void AggregateAA::createLayouts(const eng::frame::GpuScene& scene) {
     m_recordLayout = vk::createPipelineLayout(m_device, generation, "agaa.generation.record.layout");
 
     vk::LayoutDesc cluster;
-    cluster.pushBindings = {{0, kUbo, kCs}, {1, kUbo, kCs}, {2, kSampled, kCs}, {3, kSampled, kCs}, {4, kSsbo, kCs},
-                            {5, kImage, kCs}};
+    cluster.pushBindings = {{0, kUbo, kCs},     {1, kUbo, kCs},  {2, kSampled, kCs},
+                            {3, kSampled, kCs}, {4, kSsbo, kCs}, {5, kImage, kCs}};
     m_clusterLayout = vk::createPipelineLayout(m_device, cluster, "agaa.cluster.layout");
 
     vk::LayoutDesc lighting;
-    lighting.pushBindings = {{0, kUbo, kCs},   {1, kSsbo, kCs},  {2, kUbo, kCs},   {3, kSampled, kCs},
-                             {4, kSsbo, kCs},  {5, kImage, kCs}, {6, kSsbo, kCs},  {7, kImage, kCs},
+    lighting.pushBindings = {{0, kUbo, kCs},   {1, kSsbo, kCs},  {2, kUbo, kCs},  {3, kSampled, kCs},
+                             {4, kSsbo, kCs},  {5, kImage, kCs}, {6, kSsbo, kCs}, {7, kImage, kCs},
                              {8, kImage, kCs}, {9, kImage, kCs}};
     if (m_hasEmissive) lighting.pushBindings.push_back({10, kSampled, kCs});
     lighting.pushBindings.push_back({11, kSampled, kCs}); // shadow maps (pushed for shadowed scenes only)
@@ -108,7 +116,8 @@ void AggregateAA::createLayouts(const eng::frame::GpuScene& scene) {
     m_debugLayout = vk::createPipelineLayout(m_device, debug, "agaa.debug.layout");
 
     vk::LayoutDesc readback;
-    readback.pushBindings = {{0, kUbo, kCs}, {1, kUbo, kCs}, {2, kSampled, kCs}, {3, kSampled, kCs}, {4, kSsbo, kCs}};
+    readback.pushBindings = {
+        {0, kUbo, kCs}, {1, kUbo, kCs}, {2, kSampled, kCs}, {3, kSampled, kCs}, {4, kSsbo, kCs}};
     m_readbackLayout = vk::createPipelineLayout(m_device, readback, "agaa.sampleReadback.layout");
 }
 
@@ -122,8 +131,8 @@ AggregateAA::~AggregateAA() {
     for (VkPipeline p : {m_clusterPipeline, m_lightingPipeline, m_debugPipeline, m_readbackPipeline})
         if (p) vkDestroyPipeline(d, p, nullptr);
     vkDestroySampler(d, m_fetchSampler, nullptr);
-    for (vk::PipelineLayout* l : {&m_visibilityLayout, &m_generationLayout, &m_recordLayout, &m_clusterLayout, &m_lightingLayout,
-                                  &m_debugLayout, &m_readbackLayout})
+    for (vk::PipelineLayout* l : {&m_visibilityLayout, &m_generationLayout, &m_recordLayout, &m_clusterLayout,
+                                  &m_lightingLayout, &m_debugLayout, &m_readbackLayout})
         vk::destroyPipelineLayout(m_device, *l);
     vk::destroyBuffer(m_device, m_constantsBuffer);
 }
@@ -146,7 +155,7 @@ VkPipeline AggregateAA::visibilityPipeline(AlphaPath alpha, bool doubleSided) {
     d.depthCompare = VK_COMPARE_OP_GREATER; // reversed Z
     p = vk::createGraphicsPipeline(m_device, d,
                                    std::string("agaa.visibility") +
-                                       (alpha == AlphaPath::Coverage ? ".alphaToCoverage"
+                                       (alpha == AlphaPath::Coverage  ? ".alphaToCoverage"
                                         : alpha == AlphaPath::Discard ? ".discard"
                                                                       : ".opaque") +
                                        (doubleSided ? ".twoSided" : ""));
@@ -161,11 +170,12 @@ VkPipeline AggregateAA::generationPipeline(bool doubleSided) {
         throw std::logic_error("agaa: fragment recording supports scenes without emissive materials only");
     vk::GraphicsPipelineDesc d;
     d.vertex = kAgaaSceneVert;
-    d.fragment = recording     ? std::span<const uint32_t>(kAgaaGenerationRecordFrag)
+    d.fragment = recording       ? std::span<const uint32_t>(kAgaaGenerationRecordFrag)
                  : m_hasEmissive ? std::span<const uint32_t>(kAgaaGenerationEmissiveFrag)
                                  : std::span<const uint32_t>(kAgaaGenerationFrag);
     d.layout = recording ? m_recordLayout.layout : m_generationLayout.layout;
-    d.specialization.values = effectSpecialization(m_features, 0, 0, 1); // ids 3, 4: normal-map / emissive fetch
+    d.specialization.values =
+        effectSpecialization(m_features, 0, 0, 1); // ids 3, 4: normal-map / emissive fetch
     if (m_hasEmissive) d.colorFormats = {VK_FORMAT_B10G11R11_UFLOAT_PACK32};
     d.depthFormat = m_depthFormat;
     d.samples = VK_SAMPLE_COUNT_4_BIT;
@@ -175,8 +185,13 @@ VkPipeline AggregateAA::generationPipeline(bool doubleSided) {
     d.depthCompare = VK_COMPARE_OP_EQUAL;
     d.depthWrite = false;
     d.stencilTest = true;
-    d.stencil = {VK_STENCIL_OP_KEEP, VK_STENCIL_OP_INCREMENT_AND_CLAMP, VK_STENCIL_OP_KEEP, VK_COMPARE_OP_GREATER,
-                 0xFF, 0xFF, 1};
+    d.stencil = {VK_STENCIL_OP_KEEP,
+                 VK_STENCIL_OP_INCREMENT_AND_CLAMP,
+                 VK_STENCIL_OP_KEEP,
+                 VK_COMPARE_OP_GREATER,
+                 0xFF,
+                 0xFF,
+                 1};
     p = vk::createGraphicsPipeline(m_device, d,
                                    std::string("agaa.generation") + (recording ? ".record" : "") +
                                        (doubleSided ? ".twoSided" : ""));
@@ -184,7 +199,8 @@ VkPipeline AggregateAA::generationPipeline(bool doubleSided) {
 }
 
 std::vector<VariantChoice> AggregateAA::variants() const {
-    std::vector<VariantChoice> v = effectVariants(m_features, m_scene, m_settings.samples, m_settings.effects.shadowTaps);
+    std::vector<VariantChoice> v =
+        effectVariants(m_features, m_scene, m_settings.samples, m_settings.effects.shadowTaps);
     for (VariantChoice& choice : v)
         if (choice.effect == "shadows" && m_features.hasShadows())
             choice.variant += m_settings.effects.shadowFootprint == EffectSettings::ShadowFootprint::Samples
@@ -193,7 +209,9 @@ std::vector<VariantChoice> AggregateAA::variants() const {
     return v;
 }
 
-bool AggregateAA::isStorage(const std::string& name) const { return storageCategory(name) != "transient"; }
+bool AggregateAA::isStorage(const std::string& name) const {
+    return storageCategory(name) != "transient";
+}
 
 std::string AggregateAA::storageCategory(const std::string& name) const {
     auto starts = [&](const char* prefix) { return name.rfind(prefix, 0) == 0; };

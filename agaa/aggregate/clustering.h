@@ -15,7 +15,7 @@ namespace agaa {
 
 // One pixel's samples as the clustering kernel sees them.
 struct PixelSamples {
-    std::array<float, shared::kMaxSamples> depth{}; // reversed Z, 0 = sky
+    std::array<float, shared::kMaxSamples> depth{};   // reversed Z, 0 = sky
     std::array<uint8_t, shared::kMaxSamples> theta{}; // encoded face normal
     std::array<uint8_t, shared::kMaxSamples> phi{};
 };

@@ -6,14 +6,17 @@ namespace agaa {
 
 void validate(const EffectSettings& s) {
     if (s.shadowMapSize < 64 || s.shadowMapSize > 4096)
-        throw std::invalid_argument("--shadow-map-size " + std::to_string(s.shadowMapSize) + " is out of range (64..4096)");
+        throw std::invalid_argument("--shadow-map-size " + std::to_string(s.shadowMapSize) +
+                                    " is out of range (64..4096)");
     if (s.shadowTaps < 1 || s.shadowTaps > 4)
-        throw std::invalid_argument("--shadow-taps " + std::to_string(s.shadowTaps) + " is out of range (1..4)");
+        throw std::invalid_argument("--shadow-taps " + std::to_string(s.shadowTaps) +
+                                    " is out of range (1..4)");
 }
 
 eng::scene::SceneFeatures effectiveFeatures(const eng::scene::Scene& scene, const EffectSettings& settings) {
     validate(settings);
-    return settings.forceAll ? eng::scene::forceAllSceneFeatures(scene) : eng::scene::deriveSceneFeatures(scene);
+    return settings.forceAll ? eng::scene::forceAllSceneFeatures(scene)
+                             : eng::scene::deriveSceneFeatures(scene);
 }
 
 std::vector<VariantChoice> effectVariants(const eng::scene::SceneFeatures& f, const eng::scene::Scene& scene,
@@ -24,22 +27,27 @@ std::vector<VariantChoice> effectVariants(const eng::scene::SceneFeatures& f, co
     if (f.hasShadows()) {
         std::string names;
         for (uint32_t i : f.shadowedLights)
-            names += (names.empty() ? "" : ", ") +
-                     (scene.lights[i].name.empty() ? "light " + std::to_string(i) : "'" + scene.lights[i].name + "'");
-        v.push_back({"shadows", "shadow map x" + std::to_string(f.shadowedLights.size()) + ", " +
-                                    std::to_string(shadowTaps) + (shadowTaps == 1 ? " tap" : " taps") + " per shading event",
+            names += (names.empty() ? "" : ", ") + (scene.lights[i].name.empty()
+                                                        ? "light " + std::to_string(i)
+                                                        : "'" + scene.lights[i].name + "'");
+        v.push_back({"shadows",
+                     "shadow map x" + std::to_string(f.shadowedLights.size()) + ", " +
+                         std::to_string(shadowTaps) + (shadowTaps == 1 ? " tap" : " taps") +
+                         " per shading event",
                      forced + "casts shadows: " + names});
     } else {
         v.push_back({"shadows", "off", "no directional or spot light casts shadows"});
     }
     if (f.hasMasked())
-        v.push_back({"alpha", maskedAlphaPath(samples) == AlphaPath::Coverage ? "alpha-to-coverage" : "discard",
+        v.push_back({"alpha",
+                     maskedAlphaPath(samples) == AlphaPath::Coverage ? "alpha-to-coverage" : "discard",
                      forced + count(f.maskedMaterials, "masked materials") +
                          (samples > 1 ? "" : "; 1 sample per pixel: no coverage to dither")});
     else
         v.push_back({"alpha", "opaque only", "no masked materials"});
     v.push_back({"emissive", f.hasEmissive() ? "per-sample emissive" : "off",
-                 f.hasEmissive() ? forced + count(f.emissiveMaterials, "emissive materials") : "no emissive materials"});
+                 f.hasEmissive() ? forced + count(f.emissiveMaterials, "emissive materials")
+                                 : "no emissive materials"});
     v.push_back({"normal-maps", f.hasNormalMaps() ? "fetch + Toksvig roughness" : "off",
                  f.hasNormalMaps() ? forced + count(f.normalMappedMaterials, "normal-mapped materials")
                                    : "no normal-mapped materials"});
@@ -51,8 +59,13 @@ std::vector<VariantChoice> effectVariants(const eng::scene::SceneFeatures& f, co
 
 std::vector<uint32_t> effectSpecialization(const eng::scene::SceneFeatures& f, uint32_t id0, uint32_t id1,
                                            uint32_t shadowTaps, EffectSettings::ShadowFootprint footprint) {
-    return {id0, id1, f.needsLightCulling() ? 1u : 0u, f.hasNormalMaps() ? 1u : 0u, f.hasEmissive() ? 1u : 0u,
-            shadowTaps, uint32_t(footprint)};
+    return {id0,
+            id1,
+            f.needsLightCulling() ? 1u : 0u,
+            f.hasNormalMaps() ? 1u : 0u,
+            f.hasEmissive() ? 1u : 0u,
+            shadowTaps,
+            uint32_t(footprint)};
 }
 
 } // namespace agaa

@@ -13,7 +13,7 @@
 namespace agaa {
 
 struct EffectSettings {
-    bool forceAll = false; // every effect on, whatever the scene holds (benchmark baseline)
+    bool forceAll = false;         // every effect on, whatever the scene holds (benchmark baseline)
     uint32_t shadowMapSize = 1024; // texels per side of each shadow map, 64..4096
     // AGAA: taps inside the aggregate's footprint (paper section 3.5.3), 1..4. The per-sample
     // methods take one tap per shading event (their samples are points).
@@ -21,16 +21,19 @@ struct EffectSettings {
     // AGAA: where the taps go. Statistics: along the aggregate's variance vector from its mean
     // position and depth variance (paper section 3.5.3). Samples: at up to shadowTaps of the
     // aggregate's own sample positions (the paper's "more precise filtering").
-    enum class ShadowFootprint : uint32_t { Statistics = 0, Samples = 1 } shadowFootprint = ShadowFootprint::Statistics;
+    enum class ShadowFootprint : uint32_t {
+        Statistics = 0,
+        Samples = 1
+    } shadowFootprint = ShadowFootprint::Statistics;
 };
 
 // Throws std::invalid_argument naming the setting and its range.
 void validate(const EffectSettings& settings);
 
 struct VariantChoice {
-    std::string effect; // "shadows", "alpha", "emissive", "normal-maps", "light-culling"
+    std::string effect;  // "shadows", "alpha", "emissive", "normal-maps", "light-culling"
     std::string variant; // what runs, e.g. "alpha-to-coverage", "off"
-    std::string cause; // the scene feature behind it, e.g. "2 masked materials"
+    std::string cause;   // the scene feature behind it, e.g. "2 masked materials"
 };
 
 eng::scene::SceneFeatures effectiveFeatures(const eng::scene::Scene& scene, const EffectSettings& settings);
@@ -38,8 +41,9 @@ eng::scene::SceneFeatures effectiveFeatures(const eng::scene::Scene& scene, cons
 // The choices the shared effects make for a technique rasterising `samples` per pixel;
 // `prefix` names the technique's passes ("reference", "agaa"). shadowTaps: taps per shading
 // event of this technique.
-std::vector<VariantChoice> effectVariants(const eng::scene::SceneFeatures& features, const eng::scene::Scene& scene,
-                                          uint32_t samples, uint32_t shadowTaps);
+std::vector<VariantChoice> effectVariants(const eng::scene::SceneFeatures& features,
+                                          const eng::scene::Scene& scene, uint32_t samples,
+                                          uint32_t shadowTaps);
 
 // Specialisation-constant ids shared by every shader that includes common/material.glsl,
 // common/tile_culling.glsl or common/shadow.glsl (ids 0 and 1 belong to each pass).
@@ -52,11 +56,14 @@ inline constexpr uint32_t kSpecShadowFootprint = 6; // AGAA lighting only
 // Alpha handling of a masked material in a raster pass (specialisation constant 0 of
 // reference/gbuffer.frag and agaa/visibility.frag).
 enum class AlphaPath : uint32_t { Opaque = 0, Discard = 1, Coverage = 2 };
-inline AlphaPath maskedAlphaPath(uint32_t samples) { return samples > 1 ? AlphaPath::Coverage : AlphaPath::Discard; }
+inline AlphaPath maskedAlphaPath(uint32_t samples) {
+    return samples > 1 ? AlphaPath::Coverage : AlphaPath::Discard;
+}
 
 // The ids 2..6 above, filled from the features, appended to a pass's own ids 0 and 1.
-std::vector<uint32_t> effectSpecialization(const eng::scene::SceneFeatures& features, uint32_t id0, uint32_t id1,
-                                           uint32_t shadowTaps,
-                                           EffectSettings::ShadowFootprint footprint = EffectSettings::ShadowFootprint::Statistics);
+std::vector<uint32_t>
+effectSpecialization(const eng::scene::SceneFeatures& features, uint32_t id0, uint32_t id1,
+                     uint32_t shadowTaps,
+                     EffectSettings::ShadowFootprint footprint = EffectSettings::ShadowFootprint::Statistics);
 
 } // namespace agaa

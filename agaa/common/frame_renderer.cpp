@@ -34,12 +34,14 @@ FrameRenderer::FrameRenderer(vk::Device& device, const eng::scene::Scene& scene)
     : m_device(device), m_scene(scene), m_gpuScene(device, scene), m_runner(device) {
     if (scene.lights.size() > shared::kMaxLights)
         throw std::invalid_argument(scene.source + ": " + std::to_string(scene.lights.size()) +
-                                    " lights; at most " + std::to_string(shared::kMaxLights) + " are supported");
-    m_frameConstants = vk::createBuffer(device, sizeof(shared::FrameConstants), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
-                                        vk::MemoryUse::Upload, "frame.constants");
+                                    " lights; at most " + std::to_string(shared::kMaxLights) +
+                                    " are supported");
+    m_frameConstants =
+        vk::createBuffer(device, sizeof(shared::FrameConstants), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
+                         vk::MemoryUse::Upload, "frame.constants");
     size_t lightCount = std::max<size_t>(1, scene.lights.size());
-    m_lights = vk::createBuffer(device, lightCount * sizeof(shared::GpuLight), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
-                                vk::MemoryUse::Upload, "frame.lights");
+    m_lights = vk::createBuffer(device, lightCount * sizeof(shared::GpuLight),
+                                VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, vk::MemoryUse::Upload, "frame.lights");
 }
 
 FrameRenderer::~FrameRenderer() {
@@ -50,9 +52,10 @@ FrameRenderer::~FrameRenderer() {
 }
 
 Technique& FrameRenderer::technique(const RenderRequest& r) {
-    std::string key = r.method + "/" + std::to_string(r.settings.samples) + "/" + std::to_string(r.settings.aggregates) +
-                      "/" + r.settings.debug + "/" + std::to_string(r.settings.characteristicLength) + "/" +
-                      std::to_string(r.settings.seedThreshold) + (r.settings.pixelCentrePosition ? "/centre" : "");
+    std::string key =
+        r.method + "/" + std::to_string(r.settings.samples) + "/" + std::to_string(r.settings.aggregates) +
+        "/" + r.settings.debug + "/" + std::to_string(r.settings.characteristicLength) + "/" +
+        std::to_string(r.settings.seedThreshold) + (r.settings.pixelCentrePosition ? "/centre" : "");
     auto it = m_techniques.find(key);
     if (it == m_techniques.end())
         it = m_techniques.emplace(key, createTechnique(r.method, m_device, m_gpuScene, r.settings)).first;
@@ -81,10 +84,11 @@ RenderResult FrameRenderer::render(const RenderRequest& request) {
             vk::destroyBuffer(device, display);
             vk::destroyBuffer(device, events);
         }
-    } host{m_device,
-           eng::frame::createReadbackBuffer(m_device, w, h, VK_FORMAT_R32G32B32A32_SFLOAT, "readback.hdr"),
-           eng::frame::createReadbackBuffer(m_device, w, h, VK_FORMAT_R32G32B32A32_SFLOAT, "readback.display"),
-           eng::frame::createReadbackBuffer(m_device, w, h, VK_FORMAT_R32_UINT, "readback.events")};
+    } host{
+        m_device,
+        eng::frame::createReadbackBuffer(m_device, w, h, VK_FORMAT_R32G32B32A32_SFLOAT, "readback.hdr"),
+        eng::frame::createReadbackBuffer(m_device, w, h, VK_FORMAT_R32G32B32A32_SFLOAT, "readback.display"),
+        eng::frame::createReadbackBuffer(m_device, w, h, VK_FORMAT_R32_UINT, "readback.events")};
     const vk::Buffer& hdrHost = host.hdr;
     const vk::Buffer& displayHost = host.display;
     const vk::Buffer& eventsHost = host.events;
@@ -96,9 +100,10 @@ RenderResult FrameRenderer::render(const RenderRequest& request) {
     inputs.width = w;
     inputs.height = h;
     // Host-written before submission (the submit makes them visible): no prior GPU use.
-    inputs.frameConstants = graph.importBuffer("frame.constants", {m_frameConstants.buffer, m_frameConstants.size},
-                                               std::nullopt, std::nullopt);
-    inputs.lights = graph.importBuffer("frame.lights", {m_lights.buffer, m_lights.size}, std::nullopt, std::nullopt);
+    inputs.frameConstants = graph.importBuffer(
+        "frame.constants", {m_frameConstants.buffer, m_frameConstants.size}, std::nullopt, std::nullopt);
+    inputs.lights =
+        graph.importBuffer("frame.lights", {m_lights.buffer, m_lights.size}, std::nullopt, std::nullopt);
     FrameTargets targets = tech.addPasses(graph, inputs);
     if (request.extraPasses) request.extraPasses(graph, tech, inputs);
     eng::frame::addReadbackPass(graph, targets.hdr, hdrHost, "readback.hdr");
@@ -108,18 +113,22 @@ RenderResult FrameRenderer::render(const RenderRequest& request) {
 
     RenderResult result;
     result.samples = tech.samples();
-    for (uint32_t i = 0; i < request.warmupFrames; ++i) m_runner.run(graph);
+    for (uint32_t i = 0; i < request.warmupFrames; ++i)
+        m_runner.run(graph);
     std::vector<eng::frame::FrameTiming> timings;
-    for (uint32_t i = 0; i < std::max(1u, request.timedFrames); ++i) timings.push_back(m_runner.run(graph));
+    for (uint32_t i = 0; i < std::max(1u, request.timedFrames); ++i)
+        timings.push_back(m_runner.run(graph));
 
     for (size_t p = 0; p < timings[0].passes.size(); ++p) {
         std::vector<double> samples;
-        for (const auto& t : timings) samples.push_back(t.passes[p].gpuMs);
+        for (const auto& t : timings)
+            samples.push_back(t.passes[p].gpuMs);
         result.passes.push_back({timings[0].passes[p].name, median(samples)});
         result.passSamples.push_back(samples);
     }
     std::vector<double> frames;
-    for (const auto& t : timings) frames.push_back(t.frameMs);
+    for (const auto& t : timings)
+        frames.push_back(t.frameMs);
     result.frameGpuMs = median(frames);
     result.culledPasses = graph.culledPassNames();
     result.graphDot = graph.dumpDot();
@@ -152,7 +161,8 @@ RenderResult FrameRenderer::render(const RenderRequest& request) {
     }
     result.shadingEventsMean = double(sum) / double(result.shadingEvents.size());
     result.shadingEventsHistogram.assign(result.shadingEventsMax + 1, 0);
-    for (uint32_t e : result.shadingEvents) result.shadingEventsHistogram[e] += 1;
+    for (uint32_t e : result.shadingEvents)
+        result.shadingEventsHistogram[e] += 1;
     return result;
 }
 

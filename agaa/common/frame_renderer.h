@@ -25,19 +25,19 @@ struct RenderRequest {
     MethodSettings settings;
     eng::frame::ViewSettings view;
     uint32_t warmupFrames = 0; // lavapipe JIT-compiles pipelines on first use: warm up before timing
-    uint32_t timedFrames = 1; // per-pass times are the median over these
+    uint32_t timedFrames = 1;  // per-pass times are the median over these
     // Tools and tests add their own passes (readbacks of intermediate resources) after the
     // technique's; they run in every frame of this request.
     std::function<void(eng::rg::Graph&, Technique&, const FrameInputs&)> extraPasses;
 };
 
 struct RenderResult {
-    eng::io::ImageF hdr; // linear radiance
-    eng::io::ImageF display; // tone-mapped resolve, linear [0,1] (sRGB-encode for viewing)
-    std::vector<uint32_t> shadingEvents; // per pixel
+    eng::io::ImageF hdr;                        // linear radiance
+    eng::io::ImageF display;                    // tone-mapped resolve, linear [0,1] (sRGB-encode for viewing)
+    std::vector<uint32_t> shadingEvents;        // per pixel
     std::vector<eng::frame::PassTiming> passes; // median gpu ms per pass
     std::vector<std::vector<double>> passSamples; // every timed frame's ms, per pass
-    double frameGpuMs = 0.0; // median
+    double frameGpuMs = 0.0;                      // median
     std::vector<std::string> culledPasses;
     std::map<std::string, uint64_t> storageBytes; // the technique's own resources
     double bytesPerPixel = 0.0;
@@ -57,7 +57,7 @@ struct RenderResult {
 };
 
 class FrameRenderer {
-public:
+  public:
     FrameRenderer(eng::vk::Device& device, const eng::scene::Scene& scene);
     ~FrameRenderer();
     RenderResult render(const RenderRequest& request);
@@ -66,7 +66,7 @@ public:
     Technique& technique(const RenderRequest& request);
     const eng::scene::Scene& scene() const { return m_scene; }
 
-private:
+  private:
     eng::vk::Device& m_device;
     const eng::scene::Scene& m_scene;
     eng::frame::GpuScene m_gpuScene;

@@ -1,8 +1,8 @@
 #include "agaa/common/sample_gbuffer.h"
 
-#include "engine/vk/descriptors.h"
 #include "engine/frame/sample_pattern.h"
 #include "engine/vk/check.h"
+#include "engine/vk/descriptors.h"
 #include "shaders/reference/gbuffer_frag.h"
 #include "shaders/reference/gbuffer_vert.h"
 
@@ -19,11 +19,13 @@ SampleGBufferPass::SampleGBufferPass(vk::Device& device, const eng::frame::GpuSc
         throw std::invalid_argument("--samples " + std::to_string(samples) + " is not supported (allowed: " +
                                     eng::frame::supportedSampleCounts() + ")");
     if (samples > 1 && !device.caps().supportsSamples(4))
-        throw vk::MissingCapability(device.caps().deviceName + " lacks 4x MSAA colour/depth (needed for --samples " +
+        throw vk::MissingCapability(device.caps().deviceName +
+                                    " lacks 4x MSAA colour/depth (needed for --samples " +
                                     std::to_string(samples) + ")");
     vk::LayoutDesc layout;
-    layout.pushBindings = {{0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT},
-                           {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_FRAGMENT_BIT}};
+    layout.pushBindings = {
+        {0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT},
+        {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_FRAGMENT_BIT}};
     layout.extraSets = {scene.textureSetLayout()};
     layout.pushConstantBytes = 4; // material index
     m_layout = vk::createPipelineLayout(device, layout, m_name + ".gbuffer.layout");
@@ -51,7 +53,9 @@ VkPipeline SampleGBufferPass::pipeline(AlphaPath alpha, bool doubleSided) {
     d.samples = m_samples > 1 ? VK_SAMPLE_COUNT_4_BIT : VK_SAMPLE_COUNT_1_BIT;
     d.cullMode = doubleSided ? VK_CULL_MODE_NONE : VK_CULL_MODE_BACK_BIT;
     d.depthCompare = VK_COMPARE_OP_GREATER; // reversed Z: nearer is larger
-    const char* path = alpha == AlphaPath::Coverage ? ".alphaToCoverage" : alpha == AlphaPath::Discard ? ".discard" : ".opaque";
+    const char* path = alpha == AlphaPath::Coverage  ? ".alphaToCoverage"
+                       : alpha == AlphaPath::Discard ? ".discard"
+                                                     : ".opaque";
     std::string name = m_name + ".gbuffer" + path + (doubleSided ? ".twoSided" : "");
     p = vk::createGraphicsPipeline(m_device, d, name);
     return p;
@@ -63,8 +67,11 @@ bool SampleGBufferPass::isStorage(const std::string& resourceName) const {
 
 SampleGBuffer SampleGBufferPass::add(rg::Graph& graph, const FrameInputs& in) {
     const eng::frame::SamplePattern pattern = eng::frame::makeSamplePattern(m_samples);
-    const VkSampleCountFlagBits hwSamples = pattern.samplesPerLayer == 4 ? VK_SAMPLE_COUNT_4_BIT : VK_SAMPLE_COUNT_1_BIT;
-    auto desc = [&](VkFormat f) { return rg::TextureDesc{f, in.width, in.height, pattern.layers, hwSamples}; };
+    const VkSampleCountFlagBits hwSamples =
+        pattern.samplesPerLayer == 4 ? VK_SAMPLE_COUNT_4_BIT : VK_SAMPLE_COUNT_1_BIT;
+    auto desc = [&](VkFormat f) {
+        return rg::TextureDesc{f, in.width, in.height, pattern.layers, hwSamples};
+    };
 
     // Variants each draw needs, chosen up front so pipeline creation never happens mid-recording.
     const eng::frame::GpuScene* gpuScene = in.scene;
@@ -73,11 +80,12 @@ SampleGBuffer SampleGBufferPass::add(rg::Graph& graph, const FrameInputs& in) {
     for (const eng::scene::Draw& draw : scene.draws) {
         const eng::scene::Material& m = scene.materials.at(draw.material);
         const bool masked = m.alphaMode == eng::scene::AlphaMode::Mask || m_features.forced;
-        drawPipelines.push_back(pipeline(masked ? maskedAlphaPath(m_samples) : AlphaPath::Opaque, m.doubleSided));
+        drawPipelines.push_back(
+            pipeline(masked ? maskedAlphaPath(m_samples) : AlphaPath::Opaque, m.doubleSided));
     }
-    rg::Buffer materials = graph.importBuffer(m_name + ".materials",
-                                              {gpuScene->materials().buffer, gpuScene->materials().size},
-                                              std::nullopt, std::nullopt);
+    rg::Buffer materials =
+        graph.importBuffer(m_name + ".materials", {gpuScene->materials().buffer, gpuScene->materials().size},
+                           std::nullopt, std::nullopt);
     struct Data {
         rg::Buffer frame, materials;
         SampleGBuffer g;
@@ -87,15 +95,18 @@ SampleGBuffer SampleGBufferPass::add(rg::Graph& graph, const FrameInputs& in) {
         [&](rg::Builder& b, Data& d) {
             d.frame = b.read(in.frameConstants, rg::Use::UniformRead);
             d.materials = b.read(materials, rg::Use::StorageReadFragment);
-            d.g.depth = b.write(b.create(m_name + ".gbuffer.depth", desc(kDepthFormat)), rg::Use::DepthStencilWrite);
-            d.g.normal = b.write(b.create(m_name + ".gbuffer.normal", desc(kNormalFormat)), rg::Use::ColorAttachment);
-            d.g.albedoMetal =
-                b.write(b.create(m_name + ".gbuffer.albedoMetal", desc(kAlbedoMetalFormat)), rg::Use::ColorAttachment);
-            d.g.emissiveRoughness = b.write(
-                b.create(m_name + ".gbuffer.emissiveRoughness", desc(kEmissiveRoughnessFormat)), rg::Use::ColorAttachment);
+            d.g.depth =
+                b.write(b.create(m_name + ".gbuffer.depth", desc(kDepthFormat)), rg::Use::DepthStencilWrite);
+            d.g.normal =
+                b.write(b.create(m_name + ".gbuffer.normal", desc(kNormalFormat)), rg::Use::ColorAttachment);
+            d.g.albedoMetal = b.write(b.create(m_name + ".gbuffer.albedoMetal", desc(kAlbedoMetalFormat)),
+                                      rg::Use::ColorAttachment);
+            d.g.emissiveRoughness =
+                b.write(b.create(m_name + ".gbuffer.emissiveRoughness", desc(kEmissiveRoughnessFormat)),
+                        rg::Use::ColorAttachment);
         },
-        [this, gpuScene, drawPipelines, layers = pattern.layers, w = in.width, h = in.height](const rg::Context& ctx,
-                                                                                          const Data& d) {
+        [this, gpuScene, drawPipelines, layers = pattern.layers, w = in.width,
+         h = in.height](const rg::Context& ctx, const Data& d) {
             VkCommandBuffer cmd = ctx.cmd();
             VkRenderingAttachmentInfo colors[3];
             const rg::Texture targets[3] = {d.g.normal, d.g.albedoMetal, d.g.emissiveRoughness};
@@ -132,7 +143,8 @@ SampleGBuffer SampleGBufferPass::add(rg::Graph& graph, const FrameInputs& in) {
                 .storage(1, ctx.buffer(d.materials).buffer)
                 .push(m_device, cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, m_layout.layout);
             VkDescriptorSet textures = gpuScene->textureSet();
-            vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, m_layout.layout, 1, 1, &textures, 0, nullptr);
+            vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, m_layout.layout, 1, 1, &textures, 0,
+                                    nullptr);
             VkPipeline bound = VK_NULL_HANDLE;
             const auto& draws = gpuScene->scene().draws;
             for (size_t i = 0; i < draws.size(); ++i) {

@@ -15,14 +15,14 @@
 namespace agaa {
 
 struct SampleGBuffer {
-    eng::rg::Texture depth; // D32, reversed Z, 0 = sky
-    eng::rg::Texture normal; // RG16_SNORM octahedral, view space
-    eng::rg::Texture albedoMetal; // RGBA8_SRGB
+    eng::rg::Texture depth;             // D32, reversed Z, 0 = sky
+    eng::rg::Texture normal;            // RG16_SNORM octahedral, view space
+    eng::rg::Texture albedoMetal;       // RGBA8_SRGB
     eng::rg::Texture emissiveRoughness; // RGBA16F
 };
 
 class SampleGBufferPass {
-public:
+  public:
     static constexpr VkFormat kDepthFormat = VK_FORMAT_D32_SFLOAT;
     static constexpr VkFormat kNormalFormat = VK_FORMAT_R16G16_SNORM;
     static constexpr VkFormat kAlbedoMetalFormat = VK_FORMAT_R8G8B8A8_SRGB;
@@ -32,8 +32,8 @@ public:
     // `name` prefixes the pass, its pipelines and its resources ("<name>.gbuffer.*").
     // `features`: the scene's (agaa/common/effects.h); they pick the alpha path of masked draws
     // (alpha-to-coverage at n > 1, discard at 1) and the normal-map / emissive fetch variants.
-    SampleGBufferPass(eng::vk::Device& device, const eng::frame::GpuScene& scene, uint32_t samples, std::string name,
-                      const eng::scene::SceneFeatures& features);
+    SampleGBufferPass(eng::vk::Device& device, const eng::frame::GpuScene& scene, uint32_t samples,
+                      std::string name, const eng::scene::SceneFeatures& features);
     ~SampleGBufferPass();
     SampleGBufferPass(const SampleGBufferPass&) = delete;
     SampleGBufferPass& operator=(const SampleGBufferPass&) = delete;
@@ -43,7 +43,7 @@ public:
     bool isStorage(const std::string& resourceName) const;
     uint32_t samples() const { return m_samples; }
 
-private:
+  private:
     VkPipeline pipeline(AlphaPath alpha, bool doubleSided); // [alpha path][double-sided], made on first use
 
     eng::vk::Device& m_device;

@@ -18,7 +18,8 @@ namespace {
 
 std::array<glm::vec3, 8> boxCorners(glm::vec3 lo, glm::vec3 hi) {
     std::array<glm::vec3, 8> c;
-    for (int i = 0; i < 8; ++i) c[i] = {(i & 1) ? hi.x : lo.x, (i & 2) ? hi.y : lo.y, (i & 4) ? hi.z : lo.z};
+    for (int i = 0; i < 8; ++i)
+        c[i] = {(i & 1) ? hi.x : lo.x, (i & 2) ? hi.y : lo.y, (i & 4) ? hi.z : lo.z};
     return c;
 }
 
@@ -38,12 +39,14 @@ glm::mat4 ShadowMapPass::fitLight(const eng::scene::Scene& scene, const eng::sce
     if (light.type == eng::scene::LightType::Spot) {
         const glm::mat4 view = glm::lookAt(light.position, light.position + d, anyPerpendicular(d));
         float far = 0.0f;
-        for (const glm::vec3& c : boxCorners(lo, hi)) far = std::max(far, glm::length(c - light.position));
+        for (const glm::vec3& c : boxCorners(lo, hi))
+            far = std::max(far, glm::length(c - light.position));
         if (light.range > 0.0f) far = std::min(far, light.range);
         far = std::max(far, 0.1f);
         const float near = std::max(0.01f, far * 1e-3f);
         const float fov = std::clamp(2.0f * light.outerConeAngle, 0.02f, 2.9f);
-        if (texelMetres) *texelMetres = 2.0f * std::tan(0.5f * fov) * glm::length(centre - light.position) / 1024.0f;
+        if (texelMetres)
+            *texelMetres = 2.0f * std::tan(0.5f * fov) * glm::length(centre - light.position) / 1024.0f;
         return glm::perspectiveRH_ZO(fov, 1.0f, near, far) * view;
     }
     const glm::mat4 view = glm::lookAt(centre - d * (2.0f * radius), centre, anyPerpendicular(d));
@@ -79,7 +82,8 @@ glm::mat4 ShadowMapPass::fitLight(const eng::scene::Scene& scene, const eng::sce
 }
 
 ShadowMapPass::ShadowMapPass(vk::Device& device, const eng::frame::GpuScene& scene,
-                             const eng::scene::SceneFeatures& features, const EffectSettings& settings, std::string name)
+                             const eng::scene::SceneFeatures& features, const EffectSettings& settings,
+                             std::string name)
     : m_device(device), m_name(std::move(name)), m_settings(settings), m_lights(features.shadowedLights),
       m_mapCount(uint32_t(std::min<size_t>(features.shadowedLights.size(), shared::kMaxShadowMaps))) {
     validate(settings);
@@ -96,14 +100,16 @@ ShadowMapPass::ShadowMapPass(vk::Device& device, const eng::frame::GpuScene& sce
         if (masked) d.fragment = kCommonShadowMapFrag;
         d.layout = m_layout.layout;
         d.depthFormat = kFormat;
-        d.cullMode = VK_CULL_MODE_NONE; // both faces cast: thin and open meshes do not leak light
+        d.cullMode = VK_CULL_MODE_NONE;      // both faces cast: thin and open meshes do not leak light
         d.depthCompare = VK_COMPARE_OP_LESS; // standard depth: 0 nearest the light
-        m_pipelines[masked] = vk::createGraphicsPipeline(device, d, m_name + ".shadow" + (masked ? ".masked" : ".opaque"));
+        m_pipelines[masked] =
+            vk::createGraphicsPipeline(device, d, m_name + ".shadow" + (masked ? ".masked" : ".opaque"));
     }
     m_sampler = vk::createSampler(device, VK_FILTER_NEAREST, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE, 0.0f,
                                   m_name + ".shadow.sampler");
-    m_constantsBuffer = vk::createBuffer(device, sizeof(shared::ShadowConstants), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
-                                         vk::MemoryUse::Upload, m_name + ".shadow.constants");
+    m_constantsBuffer =
+        vk::createBuffer(device, sizeof(shared::ShadowConstants), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
+                         vk::MemoryUse::Upload, m_name + ".shadow.constants");
 }
 
 ShadowMapPass::~ShadowMapPass() {
@@ -124,8 +130,8 @@ ShadowMaps ShadowMapPass::add(rg::Graph& graph, const FrameInputs& in) {
     m_constants.lightIndex = glm::uvec4(shared::kMaxLights);
     // Hosts that fill only the frame-constants buffer (in.constants == nullptr) render scene
     // camera 0 (what makeFrameConstants builds by default); the fit then covers the whole scene.
-    const glm::mat4 view = in.constants ? in.constants->view
-                                        : (scene.cameras.empty() ? glm::mat4(1.0f) : scene.cameras[0].view);
+    const glm::mat4 view =
+        in.constants ? in.constants->view : (scene.cameras.empty() ? glm::mat4(1.0f) : scene.cameras[0].view);
     const glm::mat4 viewToWorld = glm::inverse(view);
     for (uint32_t l = 0; l < m_mapCount; ++l) {
         float texel = 0.0f;
@@ -146,11 +152,12 @@ ShadowMaps ShadowMapPass::add(rg::Graph& graph, const FrameInputs& in) {
         const eng::scene::Material& m = scene.materials.at(draw.material);
         drawPipelines.push_back(m_pipelines[m.alphaMode == eng::scene::AlphaMode::Mask ? 1 : 0]);
     }
-    rg::Buffer constants = graph.importBuffer(m_name + ".shadow.constants",
-                                              {m_constantsBuffer.buffer, m_constantsBuffer.size}, std::nullopt, std::nullopt);
+    rg::Buffer constants =
+        graph.importBuffer(m_name + ".shadow.constants", {m_constantsBuffer.buffer, m_constantsBuffer.size},
+                           std::nullopt, std::nullopt);
     rg::Buffer materials = graph.importBuffer(m_name + ".shadow.materials",
-                                              {gpuScene->materials().buffer, gpuScene->materials().size}, std::nullopt,
-                                              std::nullopt);
+                                              {gpuScene->materials().buffer, gpuScene->materials().size},
+                                              std::nullopt, std::nullopt);
     // An array view needs two layers under the transient pool's view rule (1 layer: a 2D view).
     const uint32_t layers = std::max(2u, m_mapCount);
     struct Data {
@@ -162,8 +169,9 @@ ShadowMaps ShadowMapPass::add(rg::Graph& graph, const FrameInputs& in) {
         [&](rg::Builder& b, Data& d) {
             d.constants = b.read(constants, rg::Use::UniformRead);
             d.materials = b.read(materials, rg::Use::StorageReadFragment);
-            d.map = b.write(b.create(m_name + ".shadow.map", {kFormat, size, size, layers, VK_SAMPLE_COUNT_1_BIT}),
-                            rg::Use::DepthStencilWrite);
+            d.map = b.write(
+                b.create(m_name + ".shadow.map", {kFormat, size, size, layers, VK_SAMPLE_COUNT_1_BIT}),
+                rg::Use::DepthStencilWrite);
         },
         [this, gpuScene, drawPipelines, size, layers](const rg::Context& ctx, const Data& d) {
             VkCommandBuffer cmd = ctx.cmd();
@@ -191,15 +199,18 @@ ShadowMaps ShadowMapPass::add(rg::Graph& graph, const FrameInputs& in) {
                 .storage(1, ctx.buffer(d.materials).buffer)
                 .push(m_device, cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, m_layout.layout);
             VkDescriptorSet textures = gpuScene->textureSet();
-            vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, m_layout.layout, 1, 1, &textures, 0, nullptr);
+            vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, m_layout.layout, 1, 1, &textures, 0,
+                                    nullptr);
             VkPipeline bound = VK_NULL_HANDLE;
             const auto& draws = gpuScene->scene().draws;
             for (size_t i = 0; i < draws.size(); ++i) {
                 if (draws[i].indexCount == 0) continue;
-                if (drawPipelines[i] != bound) vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, bound = drawPipelines[i]);
+                if (drawPipelines[i] != bound)
+                    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, bound = drawPipelines[i]);
                 uint32_t material = draws[i].material;
                 vkCmdPushConstants(cmd, m_layout.layout, VK_SHADER_STAGE_ALL, 0, 4, &material);
-                vkCmdDrawIndexed(cmd, draws[i].indexCount, m_mapCount, draws[i].firstIndex, 0, 0); // instance = layer
+                vkCmdDrawIndexed(cmd, draws[i].indexCount, m_mapCount, draws[i].firstIndex, 0,
+                                 0); // instance = layer
             }
             vkCmdEndRendering(cmd);
         });

@@ -25,16 +25,17 @@
 namespace agaa {
 
 struct ShadowMaps {
-    eng::rg::Texture map; // D32 2D array, one layer per shadowed light (at least 2: array view)
+    eng::rg::Texture map;      // D32 2D array, one layer per shadowed light (at least 2: array view)
     eng::rg::Buffer constants; // shared::ShadowConstants, uniform
 };
 
 class ShadowMapPass {
-public:
+  public:
     static constexpr VkFormat kFormat = VK_FORMAT_D32_SFLOAT;
 
-    ShadowMapPass(eng::vk::Device& device, const eng::frame::GpuScene& scene, const eng::scene::SceneFeatures& features,
-                  const EffectSettings& settings, std::string name);
+    ShadowMapPass(eng::vk::Device& device, const eng::frame::GpuScene& scene,
+                  const eng::scene::SceneFeatures& features, const EffectSettings& settings,
+                  std::string name);
     ~ShadowMapPass();
     ShadowMapPass(const ShadowMapPass&) = delete;
     ShadowMapPass& operator=(const ShadowMapPass&) = delete;
@@ -51,7 +52,7 @@ public:
     static glm::mat4 fitLight(const eng::scene::Scene& scene, const eng::scene::Light& light,
                               const shared::FrameConstants* frame, float* texelMetres);
 
-private:
+  private:
     eng::vk::Device& m_device;
     std::string m_name;
     EffectSettings m_settings;

@@ -19,8 +19,8 @@ namespace agaa {
 struct FrameInputs {
     const eng::frame::GpuScene* scene = nullptr;
     const shared::FrameConstants* constants = nullptr; // the values behind frameConstants
-    eng::rg::Buffer frameConstants; // shared::FrameConstants, uniform
-    eng::rg::Buffer lights; // shared::GpuLight[], storage
+    eng::rg::Buffer frameConstants;                    // shared::FrameConstants, uniform
+    eng::rg::Buffer lights;                            // shared::GpuLight[], storage
     uint32_t width = 0;
     uint32_t height = 0;
 };
@@ -28,15 +28,16 @@ struct FrameInputs {
 // Outputs every technique produces, with the same meaning (DESIGN section 6).
 struct FrameTargets {
     eng::rg::Texture hdr; // RGBA32F linear radiance, box-resolved
-    eng::rg::Texture display; // RGBA32F: each shading event tone-mapped, weighted by its sample fraction, summed
+    eng::rg::Texture
+        display; // RGBA32F: each shading event tone-mapped, weighted by its sample fraction, summed
     eng::rg::Texture shadingEvents; // R32_UINT: shading events per pixel
 };
 
 // Settings every method understands; a method ignores the ones it has no use for.
 struct MethodSettings {
-    uint32_t samples = 8; // n: visibility samples per pixel
+    uint32_t samples = 8;    // n: visibility samples per pixel
     uint32_t aggregates = 2; // c: AGAA aggregates per pixel
-    std::string debug; // a method's debug view ("" = none), e.g. "aggregates" for agaa
+    std::string debug;       // a method's debug view ("" = none), e.g. "aggregates" for agaa
     // AGAA clustering (Equation 1): characteristic length k in metres and the seed threshold t;
     // negative = the method's documented default.
     float characteristicLength = -1.0f;
@@ -48,7 +49,7 @@ struct MethodSettings {
 };
 
 class Technique {
-public:
+  public:
     virtual ~Technique() = default;
     virtual std::string name() const = 0;
     // Visibility samples per pixel this technique rasterises (selects the sample pattern).

@@ -31,16 +31,18 @@ FxaaSettings checked(const FxaaSettings& s) {
 
 } // namespace
 
-Fxaa::Fxaa(vk::Device& device, const eng::frame::GpuScene& scene, const FxaaSettings& settings, std::string name)
+Fxaa::Fxaa(vk::Device& device, const eng::frame::GpuScene& scene, const FxaaSettings& settings,
+           std::string name)
     : m_device(device), m_settings(checked(settings)), m_name(std::move(name)),
       m_noaa(device, scene, ReferenceSettings{1}, m_name + ".noaa") {
     vk::LayoutDesc layout;
     const VkShaderStageFlags cs = VK_SHADER_STAGE_COMPUTE_BIT;
-    layout.pushBindings = {{0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, cs}, {1, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs}};
+    layout.pushBindings = {{0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, cs},
+                           {1, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs}};
     layout.pushConstantBytes = sizeof(shared::FxaaParams);
     m_layout = vk::createPipelineLayout(device, layout, m_name + ".layout");
-    m_pipeline = vk::createComputePipeline(device, kFxaaFxaaComp, m_layout.layout, presetSpecialization(settings.preset),
-                                           m_name + ".filter");
+    m_pipeline = vk::createComputePipeline(device, kFxaaFxaaComp, m_layout.layout,
+                                           presetSpecialization(settings.preset), m_name + ".filter");
     m_fetchSampler = vk::createSampler(device, VK_FILTER_NEAREST, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE, 0.0f,
                                        m_name + ".fetchSampler");
 }
@@ -68,7 +70,8 @@ rg::Texture Fxaa::addFxaaPass(rg::Graph& graph, rg::Texture display, uint32_t wi
         m_name + ".filter",
         [&](rg::Builder& b, Data& d) {
             d.input = b.read(display, rg::Use::SampledCompute);
-            const rg::TextureDesc desc{VK_FORMAT_R32G32B32A32_SFLOAT, width, height, 1, VK_SAMPLE_COUNT_1_BIT};
+            const rg::TextureDesc desc{VK_FORMAT_R32G32B32A32_SFLOAT, width, height, 1,
+                                       VK_SAMPLE_COUNT_1_BIT};
             d.output = b.write(b.create(m_name + ".display", desc), rg::Use::StorageImageWriteCompute);
         },
         [this, params](const rg::Context& ctx, const Data& d) {

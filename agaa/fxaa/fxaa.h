@@ -16,7 +16,7 @@
 namespace agaa {
 
 class Fxaa final : public Technique {
-public:
+  public:
     // Throws std::invalid_argument for settings out of range (naming the setting).
     Fxaa(eng::vk::Device& device, const eng::frame::GpuScene& scene, const FxaaSettings& settings,
          std::string name = "fxaa");
@@ -29,9 +29,10 @@ public:
     std::vector<VariantChoice> variants() const override { return m_noaa.variants(); }
 
     // The FXAA pass alone, on any tone-mapped RGBA32F image of width x height; returns the filtered image.
-    eng::rg::Texture addFxaaPass(eng::rg::Graph& graph, eng::rg::Texture display, uint32_t width, uint32_t height);
+    eng::rg::Texture addFxaaPass(eng::rg::Graph& graph, eng::rg::Texture display, uint32_t width,
+                                 uint32_t height);
 
-private:
+  private:
     eng::vk::Device& m_device;
     FxaaSettings m_settings;
     std::string m_name;

@@ -64,13 +64,14 @@ struct Reader {
 std::span<const float> fxaaPresetSteps(uint32_t preset) {
     for (const Preset& p : kPresets)
         if (p.id == preset) return {p.steps.data(), p.count};
-    throw std::invalid_argument("fxaa: quality preset " + std::to_string(preset) + " is unknown (allowed: " +
-                                fxaaPresetNames() + ")");
+    throw std::invalid_argument("fxaa: quality preset " + std::to_string(preset) +
+                                " is unknown (allowed: " + fxaaPresetNames() + ")");
 }
 
 std::string fxaaPresetNames() {
     std::string s;
-    for (const Preset& p : kPresets) s += (s.empty() ? "" : ", ") + std::to_string(p.id);
+    for (const Preset& p : kPresets)
+        s += (s.empty() ? "" : ", ") + std::to_string(p.id);
     return s;
 }
 
@@ -79,7 +80,8 @@ void checkFxaaSettings(const FxaaSettings& s) {
     if (!(s.subpix >= 0.0f && s.subpix <= 1.0f))
         throw std::invalid_argument("fxaa: subpix " + std::to_string(s.subpix) + " is out of range [0, 1]");
     if (!(s.edgeThreshold >= 0.0f && s.edgeThreshold <= 1.0f))
-        throw std::invalid_argument("fxaa: edgeThreshold " + std::to_string(s.edgeThreshold) + " is out of range [0, 1]");
+        throw std::invalid_argument("fxaa: edgeThreshold " + std::to_string(s.edgeThreshold) +
+                                    " is out of range [0, 1]");
     // > 0 keeps 1/range finite in the sub-pixel step (range >= edgeThresholdMin there).
     if (!(s.edgeThresholdMin > 0.0f && s.edgeThresholdMin <= 1.0f))
         throw std::invalid_argument("fxaa: edgeThresholdMin " + std::to_string(s.edgeThresholdMin) +
@@ -121,14 +123,17 @@ eng::io::ImageF fxaaReference(const eng::io::ImageF& display, const FxaaSettings
             float lumaNW = r.luma(x - 1, y - 1), lumaNE = r.luma(x + 1, y - 1);
             float lumaSW = r.luma(x - 1, y + 1), lumaSE = r.luma(x + 1, y + 1);
             // 2. sub-pixel aliasing
-            float lowpass = (2.0f * (lumaN + lumaS + lumaW + lumaE) + (lumaNW + lumaNE + lumaSW + lumaSE)) / 12.0f;
+            float lowpass =
+                (2.0f * (lumaN + lumaS + lumaW + lumaE) + (lumaNW + lumaNE + lumaSW + lumaSE)) / 12.0f;
             float subpixC = std::clamp(std::abs(lowpass - lumaM) / range, 0.0f, 1.0f);
             float subpixF = (-2.0f * subpixC + 3.0f) * subpixC * subpixC;
             float subpixBlend = subpixF * subpixF * s.subpix;
             // 3. orientation
-            float edgeHorz = std::abs(-2.0f * lumaW + lumaNW + lumaSW) + 2.0f * std::abs(-2.0f * lumaM + lumaN + lumaS) +
+            float edgeHorz = std::abs(-2.0f * lumaW + lumaNW + lumaSW) +
+                             2.0f * std::abs(-2.0f * lumaM + lumaN + lumaS) +
                              std::abs(-2.0f * lumaE + lumaNE + lumaSE);
-            float edgeVert = std::abs(-2.0f * lumaN + lumaNW + lumaNE) + 2.0f * std::abs(-2.0f * lumaM + lumaW + lumaE) +
+            float edgeVert = std::abs(-2.0f * lumaN + lumaNW + lumaNE) +
+                             2.0f * std::abs(-2.0f * lumaM + lumaW + lumaE) +
                              std::abs(-2.0f * lumaS + lumaSW + lumaSE);
             bool horzSpan = edgeHorz >= edgeVert;
             int acrossX = horzSpan ? 0 : 1, acrossY = horzSpan ? 1 : 0;
@@ -170,7 +175,8 @@ eng::io::ImageF fxaaReference(const eng::io::ImageF& display, const FxaaSettings
             int sx = negativeSide ? -acrossX : acrossX, sy = negativeSide ? -acrossY : acrossY;
             const float* m = r.texel(x, y);
             const float* nb = r.texel(x + sx, y + sy);
-            for (int c = 0; c < 3; ++c) o[c] = m[c] + (nb[c] - m[c]) * offset;
+            for (int c = 0; c < 3; ++c)
+                o[c] = m[c] + (nb[c] - m[c]) * offset;
         }
     return out;
 }

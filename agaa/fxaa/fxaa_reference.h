@@ -14,9 +14,10 @@ namespace agaa {
 struct FxaaSettings {
     // Quality preset as in FXAA 3.11: 10..15 (medium dither), 20..29 (low dither), 39 (extreme).
     uint32_t preset = 39;
-    float subpix = 0.75f; // sub-pixel aliasing removal: 0 off .. 1 softest (FXAA 3.11 default 0.75)
+    float subpix = 0.75f;         // sub-pixel aliasing removal: 0 off .. 1 softest (FXAA 3.11 default 0.75)
     float edgeThreshold = 0.166f; // local contrast needed, relative to the local max luma (default 0.166)
-    float edgeThresholdMin = 0.0833f; // and at least this absolute luma, so darks are left alone (default 0.0833)
+    float edgeThresholdMin =
+        0.0833f; // and at least this absolute luma, so darks are left alone (default 0.0833)
 };
 
 // The end-of-edge search steps of a preset, in pixels (FXAA 3.11 FXAA_QUALITY__P0..P11).

@@ -1,11 +1,11 @@
 #include "agaa/reference/reference.h"
 
-#include "engine/vk/descriptors.h"
 #include "engine/vk/check.h"
+#include "engine/vk/descriptors.h"
 #include "engine/vk/resources.h"
 #include "shaders/reference/lighting_ms_comp.h"
-#include "shaders/reference/lighting_ss_comp.h"
 #include "shaders/reference/lighting_ms_shadow_comp.h"
+#include "shaders/reference/lighting_ss_comp.h"
 #include "shaders/reference/lighting_ss_shadow_comp.h"
 #include "shared/frame.h"
 
@@ -17,34 +17,35 @@ namespace vk = eng::vk;
 
 Reference::Reference(vk::Device& device, const eng::frame::GpuScene& scene, const ReferenceSettings& settings,
                      std::string name)
-    : m_device(device), m_settings(settings), m_name(std::move(name)),
-      m_scene(scene.scene()), m_features(effectiveFeatures(scene.scene(), settings.effects)),
+    : m_device(device), m_settings(settings), m_name(std::move(name)), m_scene(scene.scene()),
+      m_features(effectiveFeatures(scene.scene(), settings.effects)),
       m_gbuffer(device, scene, settings.samples, m_name, m_features), // validates n and 4x MSAA support
       m_shadow(device, scene, m_features, settings.effects, m_name) {
 
     vk::LayoutDesc lighting;
     const VkShaderStageFlags cs = VK_SHADER_STAGE_COMPUTE_BIT;
-    lighting.pushBindings = {{0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, cs},
-                             {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs},
-                             {2, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, cs},
-                             {3, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, cs},
-                             {4, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, cs},
-                             {5, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, cs},
-                             {6, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs},
-                             {7, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs},
-                             {8, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs},
-                             {9, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, cs}, // shadow maps (shadowed scenes)
-                             {10, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, cs}};
+    lighting.pushBindings = {
+        {0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, cs},
+        {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs},
+        {2, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, cs},
+        {3, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, cs},
+        {4, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, cs},
+        {5, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, cs},
+        {6, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs},
+        {7, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs},
+        {8, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs},
+        {9, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, cs}, // shadow maps (shadowed scenes)
+        {10, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, cs}};
     m_lightingLayout = vk::createPipelineLayout(device, lighting, m_name + ".lighting.layout");
     const bool shadows = m_shadow.enabled();
-    std::span<const uint32_t> code = settings.samples > 1
-                                         ? (shadows ? kReferenceLightingMsShadowComp : kReferenceLightingMsComp)
-                                         : (shadows ? kReferenceLightingSsShadowComp : kReferenceLightingSsComp);
+    std::span<const uint32_t> code =
+        settings.samples > 1 ? (shadows ? kReferenceLightingMsShadowComp : kReferenceLightingMsComp)
+                             : (shadows ? kReferenceLightingSsShadowComp : kReferenceLightingSsComp);
     // Specialisation: id 1 = n (common/gbuffer_lighting.glsl); id 0 is unused here; 2.. the
     // scene's effects, one shadow tap per shading event (agaa/common/effects.h).
-    m_lightingPipeline = vk::createComputePipeline(device, code, m_lightingLayout.layout,
-                                                   {effectSpecialization(m_features, 0u, settings.samples, 1)},
-                                                   m_name + ".lighting");
+    m_lightingPipeline = vk::createComputePipeline(
+        device, code, m_lightingLayout.layout, {effectSpecialization(m_features, 0u, settings.samples, 1)},
+        m_name + ".lighting");
     m_fetchSampler = vk::createSampler(device, VK_FILTER_NEAREST, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE, 0.0f,
                                        m_name + ".fetchSampler");
 }
@@ -57,7 +58,9 @@ Reference::~Reference() {
     vk::destroyPipelineLayout(m_device, m_lightingLayout);
 }
 
-bool Reference::isStorage(const std::string& resourceName) const { return m_gbuffer.isStorage(resourceName); }
+bool Reference::isStorage(const std::string& resourceName) const {
+    return m_gbuffer.isStorage(resourceName);
+}
 
 std::vector<VariantChoice> Reference::variants() const {
     return effectVariants(m_features, m_scene, m_settings.samples, 1);
@@ -92,7 +95,8 @@ FrameTargets Reference::addPasses(rg::Graph& graph, const FrameInputs& in) {
             }
             d.hdr = b.write(b.create(m_name + ".hdr", out), rg::Use::StorageImageWriteCompute);
             d.display = b.write(b.create(m_name + ".display", out), rg::Use::StorageImageWriteCompute);
-            d.events = b.write(b.create(m_name + ".shadingEvents", eventsDesc), rg::Use::StorageImageWriteCompute);
+            d.events =
+                b.write(b.create(m_name + ".shadingEvents", eventsDesc), rg::Use::StorageImageWriteCompute);
         },
         [this, shadows, w = in.width, h = in.height](const rg::Context& ctx, const Lighting& d) {
             VkCommandBuffer cmd = ctx.cmd();

@@ -5,9 +5,9 @@
 // With n = 1 it is the no-AA method: one sample, one shading event per pixel.
 
 #include "agaa/common/sample_gbuffer.h"
+#include "agaa/common/shadow_map.h"
 #include "agaa/common/technique.h"
 #include "engine/vk/device.h"
-#include "agaa/common/shadow_map.h"
 #include "engine/vk/pipeline.h"
 
 #include <array>
@@ -20,7 +20,7 @@ struct ReferenceSettings {
 };
 
 class Reference final : public Technique {
-public:
+  public:
     Reference(eng::vk::Device& device, const eng::frame::GpuScene& scene, const ReferenceSettings& settings,
               std::string name = "reference");
     ~Reference() override;
@@ -31,7 +31,7 @@ public:
     bool isStorage(const std::string& resourceName) const override;
     std::vector<VariantChoice> variants() const override;
 
-private:
+  private:
     eng::vk::Device& m_device;
     ReferenceSettings m_settings;
     std::string m_name;

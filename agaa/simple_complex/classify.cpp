@@ -13,8 +13,12 @@ constexpr float kDepthCompareRelative = 1.0e-4f;
 constexpr float kMinNormalLength = 1.0e-6f;
 
 // common/depth.glsl
-float viewDistanceFromDepth(float d, float znear, float zfar) { return znear * zfar / (d * (zfar - znear) + znear); }
-bool isSky(float d) { return d <= 0.0f; }
+float viewDistanceFromDepth(float d, float znear, float zfar) {
+    return znear * zfar / (d * (zfar - znear) + znear);
+}
+bool isSky(float d) {
+    return d <= 0.0f;
+}
 
 // common/octahedral.glsl
 glm::vec3 decodeOctahedral(glm::vec2 e) {
@@ -41,8 +45,8 @@ float planeDepthTolerance(const shared::FrameConstants& frame, glm::vec2 pixelPo
     return slopeScale * slope + kDepthCompareRelative * t0;
 }
 
-Classification classifyPixel(const shared::FrameConstants& frame, const ClassificationSample* samples, int px, int py,
-                             const ClassificationThresholds& thresholds) {
+Classification classifyPixel(const shared::FrameConstants& frame, const ClassificationSample* samples, int px,
+                             int py, const ClassificationThresholds& thresholds) {
     const uint32_t n = frame.counts.x;
     const float znear = frame.depthParams.x, zfar = frame.depthParams.y;
     Classification c;

@@ -17,7 +17,7 @@ namespace agaa {
 using ClassificationSample = glm::vec4;
 
 struct ClassificationThresholds {
-    float minNormalCos = 0.99f; // a sample whose normal's cosine to sample 0's is below this is different
+    float minNormalCos = 0.99f;   // a sample whose normal's cosine to sample 0's is below this is different
     float depthSlopeScale = 1.0f; // depth tolerance in units of sample 0's plane slope |dz/dx| + |dz/dy|
 };
 
@@ -31,8 +31,8 @@ struct Classification {
 };
 
 // Classifies one pixel from its n samples (frame.counts.x of them, in sample order).
-Classification classifyPixel(const shared::FrameConstants& frame, const ClassificationSample* samples, int px, int py,
-                             const ClassificationThresholds& thresholds);
+Classification classifyPixel(const shared::FrameConstants& frame, const ClassificationSample* samples, int px,
+                             int py, const ClassificationThresholds& thresholds);
 
 // The depth tolerance of sample 0's plane (classify.glsl planeDepthTolerance).
 float planeDepthTolerance(const shared::FrameConstants& frame, glm::vec2 pixelPos0, float t0, glm::vec3 n0,

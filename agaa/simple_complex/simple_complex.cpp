@@ -1,13 +1,13 @@
 #include "agaa/simple_complex/simple_complex.h"
 
-#include "engine/vk/descriptors.h"
 #include "engine/vk/check.h"
+#include "engine/vk/descriptors.h"
 #include "engine/vk/resources.h"
 #include "shaders/simple_complex/gbuffer_export_comp.h"
-#include "shaders/simple_complex/lighting_ms_shadow_comp.h"
-#include "shaders/simple_complex/lighting_ss_shadow_comp.h"
 #include "shaders/simple_complex/lighting_ms_comp.h"
+#include "shaders/simple_complex/lighting_ms_shadow_comp.h"
 #include "shaders/simple_complex/lighting_ss_comp.h"
+#include "shaders/simple_complex/lighting_ss_shadow_comp.h"
 #include "shared/frame.h"
 #include "shared/simple_complex.h"
 
@@ -37,35 +37,36 @@ void checkSettings(const SimpleComplexSettings& s) {
 
 SimpleComplex::SimpleComplex(vk::Device& device, const eng::frame::GpuScene& scene,
                              const SimpleComplexSettings& settings, std::string name)
-    : m_device(device), m_settings(settings), m_name(std::move(name)),
-      m_scene(scene.scene()), m_features(effectiveFeatures(scene.scene(), settings.effects)),
+    : m_device(device), m_settings(settings), m_name(std::move(name)), m_scene(scene.scene()),
+      m_features(effectiveFeatures(scene.scene(), settings.effects)),
       m_gbuffer(device, scene, settings.samples, m_name, m_features),
       m_shadow(device, scene, m_features, settings.effects, m_name) {
     checkSettings(settings);
     vk::LayoutDesc lighting;
     const VkShaderStageFlags cs = VK_SHADER_STAGE_COMPUTE_BIT;
-    lighting.pushBindings = {{0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, cs},
-                             {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs},
-                             {2, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, cs},
-                             {3, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, cs},
-                             {4, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, cs},
-                             {5, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, cs},
-                             {6, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs},
-                             {7, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs},
-                             {8, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs},
-                             {9, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, cs}, // shadow maps (shadowed scenes)
-                             {10, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, cs}};
+    lighting.pushBindings = {
+        {0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, cs},
+        {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs},
+        {2, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, cs},
+        {3, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, cs},
+        {4, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, cs},
+        {5, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, cs},
+        {6, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs},
+        {7, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs},
+        {8, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs},
+        {9, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, cs}, // shadow maps (shadowed scenes)
+        {10, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, cs}};
     lighting.pushConstantBytes = sizeof(shared::SimpleComplexParams);
     m_lightingLayout = vk::createPipelineLayout(device, lighting, m_name + ".lighting.layout");
     const bool shadows = m_shadow.enabled();
-    std::span<const uint32_t> code = settings.samples > 1
-                                         ? (shadows ? kSimpleComplexLightingMsShadowComp : kSimpleComplexLightingMsComp)
-                                         : (shadows ? kSimpleComplexLightingSsShadowComp : kSimpleComplexLightingSsComp);
+    std::span<const uint32_t> code =
+        settings.samples > 1 ? (shadows ? kSimpleComplexLightingMsShadowComp : kSimpleComplexLightingMsComp)
+                             : (shadows ? kSimpleComplexLightingSsShadowComp : kSimpleComplexLightingSsComp);
     // One shadow tap per shading event, as the reference (agaa/common/effects.h).
-    m_lightingPipeline = vk::createComputePipeline(device, code, m_lightingLayout.layout,
-                                                   {effectSpecialization(m_features, uint32_t(settings.schedule),
-                                                                         settings.samples, 1)},
-                                                   m_name + ".lighting");
+    m_lightingPipeline = vk::createComputePipeline(
+        device, code, m_lightingLayout.layout,
+        {effectSpecialization(m_features, uint32_t(settings.schedule), settings.samples, 1)},
+        m_name + ".lighting");
     m_fetchSampler = vk::createSampler(device, VK_FILTER_NEAREST, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE, 0.0f,
                                        m_name + ".fetchSampler");
 }
@@ -88,7 +89,8 @@ std::vector<VariantChoice> SimpleComplex::variants() const {
     return effectVariants(m_features, m_scene, m_settings.samples, 1);
 }
 
-FrameTargets SimpleComplex::addLighting(rg::Graph& graph, const FrameInputs& in, const SampleGBuffer& gbuffer) {
+FrameTargets SimpleComplex::addLighting(rg::Graph& graph, const FrameInputs& in,
+                                        const SampleGBuffer& gbuffer) {
     // Added only for a scene with a shadowed light; lighting then reads it.
     const bool shadows = m_shadow.enabled();
     ShadowMaps shadowMaps;
@@ -119,7 +121,8 @@ FrameTargets SimpleComplex::addLighting(rg::Graph& graph, const FrameInputs& in,
             }
             d.hdr = b.write(b.create(m_name + ".hdr", out), rg::Use::StorageImageWriteCompute);
             d.display = b.write(b.create(m_name + ".display", out), rg::Use::StorageImageWriteCompute);
-            d.events = b.write(b.create(m_name + ".shadingEvents", eventsDesc), rg::Use::StorageImageWriteCompute);
+            d.events =
+                b.write(b.create(m_name + ".shadingEvents", eventsDesc), rg::Use::StorageImageWriteCompute);
         },
         [this, params, shadows, w = in.width, h = in.height](const rg::Context& ctx, const Lighting& d) {
             VkCommandBuffer cmd = ctx.cmd();
@@ -145,10 +148,11 @@ FrameTargets SimpleComplex::addLighting(rg::Graph& graph, const FrameInputs& in,
     return {l.hdr, l.display, l.events};
 }
 
-void SimpleComplex::addClassificationExport(rg::Graph& graph, const FrameInputs& in, const SampleGBuffer& gbuffer,
-                                            rg::Buffer target) {
+void SimpleComplex::addClassificationExport(rg::Graph& graph, const FrameInputs& in,
+                                            const SampleGBuffer& gbuffer, rg::Buffer target) {
     if (m_settings.samples < 4)
-        throw std::invalid_argument("simple-complex: the classification export needs n >= 4 (n = 1 is never complex)");
+        throw std::invalid_argument(
+            "simple-complex: the classification export needs n >= 4 (n = 1 is never complex)");
     if (!m_exportPipeline) {
         vk::LayoutDesc layout;
         const VkShaderStageFlags cs = VK_SHADER_STAGE_COMPUTE_BIT;
@@ -157,8 +161,8 @@ void SimpleComplex::addClassificationExport(rg::Graph& graph, const FrameInputs&
                                {2, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, cs},
                                {3, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs}};
         m_exportLayout = vk::createPipelineLayout(m_device, layout, m_name + ".export.layout");
-        m_exportPipeline = vk::createComputePipeline(m_device, kSimpleComplexGbufferExportComp, m_exportLayout.layout,
-                                                     {}, m_name + ".export");
+        m_exportPipeline = vk::createComputePipeline(m_device, kSimpleComplexGbufferExportComp,
+                                                     m_exportLayout.layout, {}, m_name + ".export");
     }
     struct Export {
         rg::Buffer frame, target;

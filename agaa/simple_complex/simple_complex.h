@@ -43,31 +43,35 @@ struct SimpleComplexSettings {
 };
 
 class SimpleComplex final : public Technique {
-public:
+  public:
     // Throws std::invalid_argument for settings out of range (naming the setting),
     // MissingCapability when n > 1 and the device lacks 4x MSAA.
-    SimpleComplex(eng::vk::Device& device, const eng::frame::GpuScene& scene, const SimpleComplexSettings& settings,
-                  std::string name = "simple-complex");
+    SimpleComplex(eng::vk::Device& device, const eng::frame::GpuScene& scene,
+                  const SimpleComplexSettings& settings, std::string name = "simple-complex");
     ~SimpleComplex() override;
 
     std::string name() const override { return m_name; }
     uint32_t samples() const override { return m_settings.samples; }
     FrameTargets addPasses(eng::rg::Graph& graph, const FrameInputs& inputs) override;
-    bool isStorage(const std::string& resourceName) const override { return m_gbuffer.isStorage(resourceName); }
+    bool isStorage(const std::string& resourceName) const override {
+        return m_gbuffer.isStorage(resourceName);
+    }
     const SimpleComplexSettings& settings() const { return m_settings; }
     std::vector<VariantChoice> variants() const override;
 
     // The two halves of addPasses, for hosts and tests that need the G-buffer itself.
-    SampleGBuffer addGBuffer(eng::rg::Graph& graph, const FrameInputs& inputs) { return m_gbuffer.add(graph, inputs); }
+    SampleGBuffer addGBuffer(eng::rg::Graph& graph, const FrameInputs& inputs) {
+        return m_gbuffer.add(graph, inputs);
+    }
     FrameTargets addLighting(eng::rg::Graph& graph, const FrameInputs& inputs, const SampleGBuffer& gbuffer);
 
     // Test and debug path (n > 1 only): copies what the classification reads, every
     // sample's depth and encoded normal, into `target` (ClassificationSample per sample,
     // pixel-major, classify.h) for the CPU twin of the classification.
-    void addClassificationExport(eng::rg::Graph& graph, const FrameInputs& inputs, const SampleGBuffer& gbuffer,
-                                 eng::rg::Buffer target);
+    void addClassificationExport(eng::rg::Graph& graph, const FrameInputs& inputs,
+                                 const SampleGBuffer& gbuffer, eng::rg::Buffer target);
 
-private:
+  private:
     eng::vk::Device& m_device;
     SimpleComplexSettings m_settings;
     std::string m_name;

@@ -13,7 +13,7 @@ glm::mat4 reversedZPerspective(float yfov, float aspect, float znear, float zfar
     float f = 1.0f / std::tan(yfov * 0.5f);
     glm::mat4 p(0.0f);
     p[0][0] = f / aspect;
-    p[1][1] = -f; // Vulkan: +Y down in framebuffer space
+    p[1][1] = -f;                     // Vulkan: +Y down in framebuffer space
     p[2][2] = znear / (zfar - znear); // z_clip = A z_v + B, w_clip = -z_v
     p[3][2] = znear * zfar / (zfar - znear);
     p[2][3] = -1.0f;
@@ -34,16 +34,19 @@ glm::mat4 orbitView(const glm::mat4& view, const glm::vec3& pivot, float degrees
 shared::FrameConstants makeFrameConstants(const scene::Scene& scene, const ViewSettings& view,
                                           const SamplePattern& pattern) {
     if (view.camera >= scene.cameras.size())
-        throw std::invalid_argument("camera " + std::to_string(view.camera) + " does not exist (the scene has " +
-                                    std::to_string(scene.cameras.size()) + ")");
+        throw std::invalid_argument("camera " + std::to_string(view.camera) +
+                                    " does not exist (the scene has " + std::to_string(scene.cameras.size()) +
+                                    ")");
     const scene::Camera& cam = scene.cameras[view.camera];
     shared::FrameConstants c{};
     float aspect = float(view.width) / float(view.height);
     c.view = view.viewOverride ? *view.viewOverride : cam.view;
     c.proj = reversedZPerspective(cam.yfov, aspect, cam.znear, cam.zfar);
     c.viewProj = c.proj * c.view;
-    for (uint32_t l = 0; l < pattern.layers; ++l) c.layerOffsets[l] = glm::vec4(pattern.layerOffsets[l], 0, 0);
-    for (uint32_t s = 0; s < pattern.samples; ++s) c.samplePositions[s] = glm::vec4(pattern.positions[s], 0, 0);
+    for (uint32_t l = 0; l < pattern.layers; ++l)
+        c.layerOffsets[l] = glm::vec4(pattern.layerOffsets[l], 0, 0);
+    for (uint32_t s = 0; s < pattern.samples; ++s)
+        c.samplePositions[s] = glm::vec4(pattern.positions[s], 0, 0);
     c.skyRadiance = glm::vec4(view.skyRadiance, 0.0f);
     c.extent = {float(view.width), float(view.height), 1.0f / float(view.width), 1.0f / float(view.height)};
     c.depthParams = {cam.znear, cam.zfar, view.exposure, 0.0f};

@@ -30,7 +30,8 @@ FrameTiming FrameRunner::run(rg::Graph& graph) {
     FrameTiming timing;
     std::vector<std::string> names = graph.executedPassNames();
     std::vector<double> ms = m_timestamps.readPairsMs(uint32_t(names.size()));
-    for (size_t i = 0; i < names.size(); ++i) timing.passes.push_back({names[i], ms[i]});
+    for (size_t i = 0; i < names.size(); ++i)
+        timing.passes.push_back({names[i], ms[i]});
     timing.frameMs = m_timestamps.readSpanMs(uint32_t(2 * names.size()));
     return timing;
 }

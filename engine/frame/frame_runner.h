@@ -20,11 +20,11 @@ struct PassTiming {
 
 struct FrameTiming {
     std::vector<PassTiming> passes; // execution order
-    double frameMs = 0.0; // first pass's start to last pass's end
+    double frameMs = 0.0;           // first pass's start to last pass's end
 };
 
 class FrameRunner {
-public:
+  public:
     explicit FrameRunner(vk::Device& device);
     // Compiles the graph if needed, executes it, waits for the GPU. Transients stay realised in
     // the pool (and are reused by the next graph with the same resources).
@@ -32,7 +32,7 @@ public:
     TransientPool& pool() { return m_pool; }
     vk::Device& device() { return m_device; }
 
-private:
+  private:
     vk::Device& m_device;
     TransientPool m_pool;
     vk::TimestampPool m_timestamps;

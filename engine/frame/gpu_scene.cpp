@@ -1,8 +1,8 @@
 #include "engine/frame/gpu_scene.h"
 
 #include "engine/frame/frame_constants.h"
-#include "engine/graph/graph.h"
 #include "engine/frame/transient_pool.h"
+#include "engine/graph/graph.h"
 #include "engine/vk/check.h"
 #include "engine/vk/pipeline.h"
 #include "shared/frame.h"
@@ -17,8 +17,12 @@
 namespace eng::frame {
 namespace {
 
-float srgbToLinear(float c) { return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f); }
-float linearToSrgb(float c) { return c <= 0.0031308f ? c * 12.92f : 1.055f * std::pow(c, 1.0f / 2.4f) - 0.055f; }
+float srgbToLinear(float c) {
+    return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f);
+}
+float linearToSrgb(float c) {
+    return c <= 0.0031308f ? c * 12.92f : 1.055f * std::pow(c, 1.0f / 2.4f) - 0.055f;
+}
 
 struct MipLevel {
     uint32_t width, height;
@@ -34,10 +38,9 @@ struct MipLevel {
 // the chain is the exact box-filtered mean of level 0 up to 8-bit rounding.
 std::vector<MipLevel> buildNormalMips(const scene::Texture& t) {
     std::vector<MipLevel> mips{{t.width, t.height, t.rgba8}};
-    auto decode = [](const uint8_t* p) {
-        return glm::vec3(p[0], p[1], p[2]) / 255.0f * 2.0f - 1.0f;
-    };
-    for (size_t i = 0; i + 3 < mips[0].rgba.size(); i += 4) mips[0].rgba[i + 3] = 255; // glTF ignores alpha here
+    auto decode = [](const uint8_t* p) { return glm::vec3(p[0], p[1], p[2]) / 255.0f * 2.0f - 1.0f; };
+    for (size_t i = 0; i + 3 < mips[0].rgba.size(); i += 4)
+        mips[0].rgba[i + 3] = 255; // glTF ignores alpha here
     while (mips.back().width > 1 || mips.back().height > 1) {
         const MipLevel& src = mips.back();
         MipLevel dst{std::max(1u, src.width / 2), std::max(1u, src.height / 2), {}};
@@ -47,7 +50,8 @@ std::vector<MipLevel> buildNormalMips(const scene::Texture& t) {
                 glm::vec3 sum(0.0f);
                 for (uint32_t dy = 0; dy < 2; ++dy)
                     for (uint32_t dx = 0; dx < 2; ++dx) {
-                        uint32_t sx = std::min(src.width - 1, 2 * x + dx), sy = std::min(src.height - 1, 2 * y + dy);
+                        uint32_t sx = std::min(src.width - 1, 2 * x + dx),
+                                 sy = std::min(src.height - 1, 2 * y + dy);
                         const uint8_t* p = &src.rgba[(size_t(sy) * src.width + sx) * 4];
                         glm::vec3 n = decode(p);
                         float len = glm::length(n);
@@ -58,7 +62,8 @@ std::vector<MipLevel> buildNormalMips(const scene::Texture& t) {
                 float len = glm::length(mean);
                 glm::vec3 dir = len > 1e-6f ? mean / len : glm::vec3(0.0f, 0.0f, 1.0f);
                 uint8_t* q = &dst.rgba[(size_t(y) * dst.width + x) * 4];
-                for (int c = 0; c < 3; ++c) q[c] = uint8_t(std::lround(std::clamp(dir[c] * 0.5f + 0.5f, 0.0f, 1.0f) * 255.0f));
+                for (int c = 0; c < 3; ++c)
+                    q[c] = uint8_t(std::lround(std::clamp(dir[c] * 0.5f + 0.5f, 0.0f, 1.0f) * 255.0f));
                 q[3] = uint8_t(std::lround(std::clamp(len, 0.0f, 1.0f) * 255.0f));
             }
         mips.push_back(std::move(dst));
@@ -79,13 +84,15 @@ std::vector<MipLevel> buildMips(const scene::Texture& t) {
                     float sum = 0.0f;
                     for (uint32_t dy = 0; dy < 2; ++dy)
                         for (uint32_t dx = 0; dx < 2; ++dx) {
-                            uint32_t sx = std::min(src.width - 1, 2 * x + dx), sy = std::min(src.height - 1, 2 * y + dy);
+                            uint32_t sx = std::min(src.width - 1, 2 * x + dx),
+                                     sy = std::min(src.height - 1, 2 * y + dy);
                             float v = src.rgba[(size_t(sy) * src.width + sx) * 4 + c] / 255.0f;
                             sum += (t.srgb && c < 3) ? srgbToLinear(v) : v;
                         }
                     float v = sum * 0.25f;
                     if (t.srgb && c < 3) v = linearToSrgb(v);
-                    dst.rgba[(size_t(y) * dst.width + x) * 4 + c] = uint8_t(std::lround(std::clamp(v, 0.0f, 1.0f) * 255.0f));
+                    dst.rgba[(size_t(y) * dst.width + x) * 4 + c] =
+                        uint8_t(std::lround(std::clamp(v, 0.0f, 1.0f) * 255.0f));
                 }
         mips.push_back(std::move(dst));
     }
@@ -106,22 +113,27 @@ GpuScene::GpuScene(vk::Device& device, const scene::Scene& scene) : m_device(dev
     // Host-visible vertex data: lavapipe's memory is all host-visible; on a discrete GPU this
     // is read over the bus (a staging copy would be the next step there).
     m_vertices = vk::createBuffer(device, std::max<size_t>(16, scene.vertices.size() * sizeof(scene::Vertex)),
-                                  VK_BUFFER_USAGE_VERTEX_BUFFER_BIT | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, vk::MemoryUse::Upload, "scene.vertices");
+                                  VK_BUFFER_USAGE_VERTEX_BUFFER_BIT | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+                                  vk::MemoryUse::Upload, "scene.vertices");
     m_indices = vk::createBuffer(device, std::max<size_t>(16, scene.indices.size() * 4),
-                                 VK_BUFFER_USAGE_INDEX_BUFFER_BIT | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, vk::MemoryUse::Upload, "scene.indices");
+                                 VK_BUFFER_USAGE_INDEX_BUFFER_BIT | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+                                 vk::MemoryUse::Upload, "scene.indices");
     if (!scene.vertices.empty()) vk::writeBuffer(device, m_vertices, bytesOf(scene.vertices));
     if (!scene.indices.empty()) vk::writeBuffer(device, m_indices, bytesOf(scene.indices));
     std::vector<shared::GpuMaterial> materials = makeGpuMaterials(scene);
     if (materials.empty()) materials.push_back(shared::GpuMaterial{});
-    m_materials = vk::createBuffer(device, materials.size() * sizeof(shared::GpuMaterial),
-                                   VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, vk::MemoryUse::Upload, "scene.materials");
+    m_materials =
+        vk::createBuffer(device, materials.size() * sizeof(shared::GpuMaterial),
+                         VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, vk::MemoryUse::Upload, "scene.materials");
     vk::writeBuffer(device, m_materials, bytesOf(materials));
 
-    m_sampler = vk::createSampler(device, VK_FILTER_LINEAR, VK_SAMPLER_ADDRESS_MODE_REPEAT, 16.0f, "scene.sampler");
+    m_sampler =
+        vk::createSampler(device, VK_FILTER_LINEAR, VK_SAMPLER_ADDRESS_MODE_REPEAT, 16.0f, "scene.sampler");
     uploadTextures();
 
     vk::Binding binding{0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
-                        VK_SHADER_STAGE_FRAGMENT_BIT | VK_SHADER_STAGE_COMPUTE_BIT, shared::kMaxSceneTextures};
+                        VK_SHADER_STAGE_FRAGMENT_BIT | VK_SHADER_STAGE_COMPUTE_BIT,
+                        shared::kMaxSceneTextures};
     m_textureSetLayout = vk::createSetLayout(device, std::span(&binding, 1), "scene.textures.layout");
     VkDescriptorPoolSize size{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, shared::kMaxSceneTextures};
     VkDescriptorPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
@@ -174,11 +186,12 @@ void GpuScene::uploadTextures() {
         const scene::Texture& t = sources[i];
         const bool normalMap = normalUse[i] && !otherUse[i] && !t.srgb;
         Pending p{normalMap ? buildNormalMips(t) : buildMips(t), total};
-        for (const MipLevel& m : p.mips) total += m.rgba.size();
+        for (const MipLevel& m : p.mips)
+            total += m.rgba.size();
         pending.push_back(std::move(p));
     }
-    vk::Buffer staging = vk::createBuffer(m_device, total, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, vk::MemoryUse::Upload,
-                                          "scene.textures.staging");
+    vk::Buffer staging = vk::createBuffer(m_device, total, VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
+                                          vk::MemoryUse::Upload, "scene.textures.staging");
     rg::Graph graph;
     std::vector<rg::Texture> handles;
     for (size_t i = 0; i < sources.size(); ++i) {
@@ -188,17 +201,25 @@ void GpuScene::uploadTextures() {
             vk::writeBuffer(m_device, staging, std::as_bytes(std::span(m.rgba)), offset);
             offset += m.rgba.size();
         }
-        vk::ImageDesc desc{t.srgb ? VK_FORMAT_R8G8B8A8_SRGB : VK_FORMAT_R8G8B8A8_UNORM, t.width, t.height, 1,
-                           uint32_t(pending[i].mips.size()), VK_SAMPLE_COUNT_1_BIT,
-                           VK_IMAGE_USAGE_TRANSFER_DST_BIT | VK_IMAGE_USAGE_SAMPLED_BIT, VK_IMAGE_VIEW_TYPE_2D};
-        m_textures.push_back(vk::createImage(m_device, desc, "scene.texture." + (t.name.empty() ? std::to_string(i) : t.name)));
+        vk::ImageDesc desc{t.srgb ? VK_FORMAT_R8G8B8A8_SRGB : VK_FORMAT_R8G8B8A8_UNORM,
+                           t.width,
+                           t.height,
+                           1,
+                           uint32_t(pending[i].mips.size()),
+                           VK_SAMPLE_COUNT_1_BIT,
+                           VK_IMAGE_USAGE_TRANSFER_DST_BIT | VK_IMAGE_USAGE_SAMPLED_BIT,
+                           VK_IMAGE_VIEW_TYPE_2D};
+        m_textures.push_back(vk::createImage(
+            m_device, desc, "scene.texture." + (t.name.empty() ? std::to_string(i) : t.name)));
         const vk::Image& img = m_textures.back();
-        rg::PhysicalTexture physical{img.image, img.view, img.sampledView, {desc.format, t.width, t.height, 1}};
+        rg::PhysicalTexture physical{
+            img.image, img.view, img.sampledView, {desc.format, t.width, t.height, 1}};
         handles.push_back(graph.importTexture("scene.texture." + std::to_string(i), physical, std::nullopt,
                                               rg::Use::SampledFragment));
     }
     rg::PhysicalBuffer stagingPhysical{staging.buffer, staging.size};
-    rg::Buffer stagingHandle = graph.importBuffer("scene.textures.staging", stagingPhysical, std::nullopt, std::nullopt);
+    rg::Buffer stagingHandle =
+        graph.importBuffer("scene.textures.staging", stagingPhysical, std::nullopt, std::nullopt);
     struct Data {
         rg::Buffer staging;
         std::vector<rg::Texture> textures;
@@ -207,7 +228,8 @@ void GpuScene::uploadTextures() {
         "scene.upload", rg::PassKind::Transfer,
         [&](rg::Builder& b, Data& d) {
             d.staging = b.read(stagingHandle, rg::Use::TransferSrc);
-            for (rg::Texture t : handles) d.textures.push_back(b.write(t, rg::Use::TransferDst));
+            for (rg::Texture t : handles)
+                d.textures.push_back(b.write(t, rg::Use::TransferDst));
         },
         [&](const rg::Context& ctx, const Data& d) {
             for (size_t i = 0; i < d.textures.size(); ++i) {
@@ -218,7 +240,8 @@ void GpuScene::uploadTextures() {
                     copy.bufferOffset = offset;
                     copy.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, level, 0, 1};
                     copy.imageExtent = {m.width, m.height, 1};
-                    vkCmdCopyBufferToImage(ctx.cmd(), ctx.buffer(d.staging).buffer, ctx.texture(d.textures[i]).image,
+                    vkCmdCopyBufferToImage(ctx.cmd(), ctx.buffer(d.staging).buffer,
+                                           ctx.texture(d.textures[i]).image,
                                            VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &copy);
                     offset += m.rgba.size();
                 }
@@ -242,7 +265,8 @@ GpuScene::~GpuScene() {
     if (m_pool) vkDestroyDescriptorPool(d, m_pool, nullptr);
     if (m_textureSetLayout) vkDestroyDescriptorSetLayout(d, m_textureSetLayout, nullptr);
     if (m_sampler) vkDestroySampler(d, m_sampler, nullptr);
-    for (auto& t : m_textures) vk::destroyImage(m_device, t);
+    for (auto& t : m_textures)
+        vk::destroyImage(m_device, t);
     vk::destroyBuffer(m_device, m_vertices);
     vk::destroyBuffer(m_device, m_indices);
     vk::destroyBuffer(m_device, m_materials);
@@ -250,14 +274,16 @@ GpuScene::~GpuScene() {
 
 bool GpuScene::hasEmissive() const {
     for (const scene::Material& m : m_scene.materials)
-        if (m.emissiveStrength > 0.0f && (m.emissiveFactor.r > 0.0f || m.emissiveFactor.g > 0.0f || m.emissiveFactor.b > 0.0f))
+        if (m.emissiveStrength > 0.0f &&
+            (m.emissiveFactor.r > 0.0f || m.emissiveFactor.g > 0.0f || m.emissiveFactor.b > 0.0f))
             return true;
     return false;
 }
 
 VkDeviceSize GpuScene::bytes() const {
     VkDeviceSize b = m_vertices.size + m_indices.size + m_materials.size;
-    for (const auto& t : m_textures) b += t.bytes;
+    for (const auto& t : m_textures)
+        b += t.bytes;
     return b;
 }
 

@@ -14,7 +14,7 @@
 namespace eng::frame {
 
 class GpuScene {
-public:
+  public:
     GpuScene(vk::Device& device, const scene::Scene& scene);
     ~GpuScene();
     GpuScene(const GpuScene&) = delete;
@@ -33,7 +33,7 @@ public:
     // Bytes of device memory the scene occupies (not counted as any technique's storage).
     VkDeviceSize bytes() const;
 
-private:
+  private:
     void uploadTextures();
 
     vk::Device& m_device;

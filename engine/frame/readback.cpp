@@ -14,7 +14,8 @@ vk::Buffer createReadbackBuffer(const vk::Device& device, uint32_t width, uint32
 }
 
 void addReadbackPass(rg::Graph& graph, rg::Texture texture, const vk::Buffer& host, const std::string& name) {
-    rg::Buffer target = graph.importBuffer(name + ".host", {host.buffer, host.size}, std::nullopt, std::nullopt);
+    rg::Buffer target =
+        graph.importBuffer(name + ".host", {host.buffer, host.size}, std::nullopt, std::nullopt);
     struct Data {
         rg::Texture source;
         rg::Buffer target;
@@ -36,8 +37,10 @@ void addReadbackPass(rg::Graph& graph, rg::Texture texture, const vk::Buffer& ho
         });
 }
 
-void addBufferReadbackPass(rg::Graph& graph, rg::Buffer buffer, const vk::Buffer& host, const std::string& name) {
-    rg::Buffer target = graph.importBuffer(name + ".host", {host.buffer, host.size}, std::nullopt, std::nullopt);
+void addBufferReadbackPass(rg::Graph& graph, rg::Buffer buffer, const vk::Buffer& host,
+                           const std::string& name) {
+    rg::Buffer target =
+        graph.importBuffer(name + ".host", {host.buffer, host.size}, std::nullopt, std::nullopt);
     struct Data {
         rg::Buffer source, target;
     };

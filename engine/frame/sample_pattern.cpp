@@ -9,26 +9,33 @@ namespace {
 // (x and y offsets moving together would align samples along one line).
 uint32_t yRank(uint32_t layer, uint32_t layers) {
     switch (layers) {
-    case 2: return 1 - layer;
+    case 2:
+        return 1 - layer;
     case 4: {
         constexpr uint32_t perm[4] = {1, 3, 0, 2};
         return perm[layer];
     }
-    case 8: return (3 * layer + 3) % 8; // 3 is coprime with 8: a permutation
-    default: return layer;
+    case 8:
+        return (3 * layer + 3) % 8; // 3 is coprime with 8: a permutation
+    default:
+        return layer;
     }
 }
 
 } // namespace
 
-bool isSupportedSampleCount(uint32_t n) { return n == 1 || n == 4 || n == 8 || n == 16 || n == 32; }
+bool isSupportedSampleCount(uint32_t n) {
+    return n == 1 || n == 4 || n == 8 || n == 16 || n == 32;
+}
 
-std::string supportedSampleCounts() { return "1, 4, 8, 16, 32"; }
+std::string supportedSampleCounts() {
+    return "1, 4, 8, 16, 32";
+}
 
 SamplePattern makeSamplePattern(uint32_t n) {
     if (!isSupportedSampleCount(n))
-        throw std::invalid_argument("samples = " + std::to_string(n) + " is not supported (allowed: " +
-                                    supportedSampleCounts() + ")");
+        throw std::invalid_argument("samples = " + std::to_string(n) +
+                                    " is not supported (allowed: " + supportedSampleCounts() + ")");
     SamplePattern p;
     p.samples = n;
     if (n == 1) {
@@ -49,7 +56,8 @@ SamplePattern makeSamplePattern(uint32_t n) {
         p.layerOffsets.push_back({ox, oy});
     }
     for (uint32_t l = 0; l < m; ++l)
-        for (uint32_t s = 0; s < 4; ++s) p.positions.push_back(kStandard4x[s] - p.layerOffsets[l]);
+        for (uint32_t s = 0; s < 4; ++s)
+            p.positions.push_back(kStandard4x[s] - p.layerOffsets[l]);
     return p;
 }
 

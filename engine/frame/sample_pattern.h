@@ -20,18 +20,19 @@
 namespace eng::frame {
 
 // The standard Vulkan 4x positions (VkPhysicalDeviceLimits::standardSampleLocations).
-inline constexpr glm::vec2 kStandard4x[4] = {{0.375f, 0.125f}, {0.875f, 0.375f}, {0.125f, 0.625f}, {0.625f, 0.875f}};
+inline constexpr glm::vec2 kStandard4x[4] = {
+    {0.375f, 0.125f}, {0.875f, 0.375f}, {0.125f, 0.625f}, {0.625f, 0.875f}};
 
 struct SamplePattern {
-    uint32_t samples = 1; // n
-    uint32_t samplesPerLayer = 1; // hardware rate: 1 or 4
-    uint32_t layers = 1; // m
+    uint32_t samples = 1;                // n
+    uint32_t samplesPerLayer = 1;        // hardware rate: 1 or 4
+    uint32_t layers = 1;                 // m
     std::vector<glm::vec2> layerOffsets; // pixels, per layer
-    std::vector<glm::vec2> positions; // [0,1)^2, per sample s = layer * samplesPerLayer + hardware sample
+    std::vector<glm::vec2> positions;    // [0,1)^2, per sample s = layer * samplesPerLayer + hardware sample
 };
 
-bool isSupportedSampleCount(uint32_t n); // 1, 4, 8, 16, 32
-std::string supportedSampleCounts(); // "1, 4, 8, 16, 32" for messages
+bool isSupportedSampleCount(uint32_t n);           // 1, 4, 8, 16, 32
+std::string supportedSampleCounts();               // "1, 4, 8, 16, 32" for messages
 SamplePattern makeSamplePattern(uint32_t samples); // throws std::invalid_argument for other counts
 
 } // namespace eng::frame

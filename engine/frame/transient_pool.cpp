@@ -2,11 +2,15 @@
 
 namespace eng::frame {
 
-TransientPool::~TransientPool() { destroyAll(); }
+TransientPool::~TransientPool() {
+    destroyAll();
+}
 
 void TransientPool::destroyAll() {
-    for (auto& t : m_textures) vk::destroyImage(m_device, t.image);
-    for (auto& b : m_buffers) vk::destroyBuffer(m_device, b.buffer);
+    for (auto& t : m_textures)
+        vk::destroyImage(m_device, t.image);
+    for (auto& b : m_buffers)
+        vk::destroyBuffer(m_device, b.buffer);
     m_textures.clear();
     m_buffers.clear();
 }
@@ -17,7 +21,7 @@ rg::PhysicalTexture TransientPool::acquireTexture(const std::string& name, const
     for (auto& t : m_textures) {
         const vk::ImageDesc& d = t.image.desc;
         if (!t.inUse && d.format == desc.format && d.width == desc.width && d.height == desc.height &&
-            d.layers == desc.layers && d.samples == desc.samples && d.usage == usage) {  // same view type too
+            d.layers == desc.layers && d.samples == desc.samples && d.usage == usage) { // same view type too
             found = &t;
             break;
         }
@@ -48,7 +52,8 @@ rg::PhysicalBuffer TransientPool::acquireBuffer(const std::string& name, const r
         }
     }
     if (!found) {
-        m_buffers.push_back({vk::createBuffer(m_device, desc.size, usage, vk::MemoryUse::GpuOnly, name), usage, false});
+        m_buffers.push_back(
+            {vk::createBuffer(m_device, desc.size, usage, vk::MemoryUse::GpuOnly, name), usage, false});
         found = &m_buffers.back();
     } else {
         m_device.setName(VK_OBJECT_TYPE_BUFFER, found->buffer.buffer, name);

@@ -15,14 +15,16 @@
 namespace eng::frame {
 
 class TransientPool final : public rg::Allocator {
-public:
+  public:
     explicit TransientPool(const vk::Device& device) : m_device(device) {}
     ~TransientPool() override;
     TransientPool(const TransientPool&) = delete;
     TransientPool& operator=(const TransientPool&) = delete;
 
-    rg::PhysicalTexture acquireTexture(const std::string& name, const rg::TextureDesc&, VkImageUsageFlags) override;
-    rg::PhysicalBuffer acquireBuffer(const std::string& name, const rg::BufferDesc&, VkBufferUsageFlags) override;
+    rg::PhysicalTexture acquireTexture(const std::string& name, const rg::TextureDesc&,
+                                       VkImageUsageFlags) override;
+    rg::PhysicalBuffer acquireBuffer(const std::string& name, const rg::BufferDesc&,
+                                     VkBufferUsageFlags) override;
     void release(const rg::PhysicalTexture&) override;
     void release(const rg::PhysicalBuffer&) override;
 
@@ -32,7 +34,7 @@ public:
     void clearUsage() { m_bytesByName.clear(); }
     void destroyAll();
 
-private:
+  private:
     struct TextureEntry {
         vk::Image image;
         bool inUse = false;

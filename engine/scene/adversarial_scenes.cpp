@@ -13,7 +13,8 @@ namespace eng::scene {
 namespace {
 
 constexpr float kYfov = 0.7f; // radians, as the regular scenes
-constexpr float kAspect = 1.0f; // the suite renders square and 17x13 images; the renderer uses the image's aspect
+constexpr float kAspect =
+    1.0f; // the suite renders square and 17x13 images; the renderer uses the image's aspect
 
 using Builder = void (*)(ModelBuilder&, Prng&);
 
@@ -33,11 +34,14 @@ MaterialDesc material(const std::string& name, glm::vec3 color, float metallic, 
 }
 
 // The glTF "Lambert" the agreement tests need: metallic 0, roughness 1.
-MaterialDesc lambert(const std::string& name, glm::vec3 color) { return material(name, color, 0.0f, 1.0f); }
+MaterialDesc lambert(const std::string& name, glm::vec3 color) {
+    return material(name, color, 0.0f, 1.0f);
+}
 
 // One triangle with its own three vertices and the given vertex normals (not normalised here:
 // the degenerate scene hands zero and NaN normals to the loader on purpose).
-void addTriangle(MeshData& mesh, glm::vec3 a, glm::vec3 b, glm::vec3 c, glm::vec3 na, glm::vec3 nb, glm::vec3 nc) {
+void addTriangle(MeshData& mesh, glm::vec3 a, glm::vec3 b, glm::vec3 c, glm::vec3 na, glm::vec3 nb,
+                 glm::vec3 nc) {
     const auto base = static_cast<uint32_t>(mesh.positions.size());
     mesh.positions.insert(mesh.positions.end(), {a, b, c});
     mesh.normals.insert(mesh.normals.end(), {na, nb, nc});
@@ -77,7 +81,8 @@ MeshData zigzag(float x0, float x1, float y0, float y1, float period, float dept
     for (int i = 0; i < faces; ++i) {
         const float xa = x0 + static_cast<float>(i) * 0.5f * period;
         const float xb = xa + 0.5f * period;
-        const glm::vec3 a(xa, y0, ridgeZ(i)), b(xb, y0, ridgeZ(i + 1)), c(xb, y1, ridgeZ(i + 1)), d(xa, y1, ridgeZ(i));
+        const glm::vec3 a(xa, y0, ridgeZ(i)), b(xb, y0, ridgeZ(i + 1)), c(xb, y1, ridgeZ(i + 1)),
+            d(xa, y1, ridgeZ(i));
         if (flat) {
             addFlatTriangle(m, a, b, c);
             addFlatTriangle(m, a, c, d);
@@ -145,14 +150,16 @@ void buildFold(ModelBuilder& b, Prng&) {
 void buildMirror(ModelBuilder& b, Prng&) {
     MeshData wall;
     addQuad(wall, {-2.0f, -2.0f, -0.5f}, {4.0f, 0.0f, 0.0f}, {0.0f, 4.0f, 0.0f});
-    b.addMesh("mirror.wall", wall, b.addMaterial(material("mirror.chrome", {0.95f, 0.95f, 0.95f}, 1.0f, 0.0f)));
+    b.addMesh("mirror.wall", wall,
+              b.addMaterial(material("mirror.chrome", {0.95f, 0.95f, 0.95f}, 1.0f, 0.0f)));
     MeshData s0, s1, s2;
     addSphere(s0, {-0.35f, 0.2f, 0.0f}, 0.2f, 16, 32);
     addSphere(s1, {0.35f, 0.2f, 0.0f}, 0.2f, 16, 32);
     addSphere(s2, {0.0f, -0.3f, 0.0f}, 0.2f, 16, 32);
     b.addMesh("mirror.metal0", s0, b.addMaterial(material("mirror.gold", {1.0f, 0.8f, 0.4f}, 1.0f, 0.0f)));
     b.addMesh("mirror.rough1", s1, b.addMaterial(material("mirror.rough", {0.6f, 0.6f, 0.6f}, 0.0f, 1.0f)));
-    b.addMesh("mirror.glossy0", s2, b.addMaterial(material("mirror.plastic", {0.1f, 0.3f, 0.8f}, 0.0f, 0.0f)));
+    b.addMesh("mirror.glossy0", s2,
+              b.addMaterial(material("mirror.plastic", {0.1f, 0.3f, 0.8f}, 0.0f, 0.0f)));
     sun(b, {0.0f, 0.0f, -1.0f}, 5.0f);
     b.addPointLight("point", {0.0f, 0.2f, 0.6f}, {1.0f, 1.0f, 1.0f}, 2.0f, 0.0f);
     setCamera(b, {0.0f, 0.0f, 2.0f}, {0.0f, 0.0f, 0.0f}, 0.1f, 10.0f);
@@ -214,16 +221,19 @@ void buildDegenerate(ModelBuilder& b, Prng&) {
             addTriangle(m, p00, p10, p11, n0, n1, n1);
             addTriangle(m, p00, p11, p01, n1, n1, n0);
             addTriangle(m, p00, p10, 0.5f * (p00 + p10), n1, n1, n1); // collinear
-            addTriangle(m, p11, p11, p11, n1, n1, n1); // a point
+            addTriangle(m, p11, p11, p11, n1, n1, n1);                // a point
         }
     // Repeated indices into shared vertices.
     const auto base = static_cast<uint32_t>(m.positions.size());
     m.indices.insert(m.indices.end(), {0u, 0u, 1u, base - 1, base - 1, base - 2});
-    b.addMesh("degenerate.grid", m, b.addMaterial(material("degenerate.paint", {0.8f, 0.5f, 0.2f}, 0.0f, 0.5f)));
+    b.addMesh("degenerate.grid", m,
+              b.addMaterial(material("degenerate.paint", {0.8f, 0.5f, 0.2f}, 0.0f, 0.5f)));
     MeshData sphere;
     addSphere(sphere, {0.4f, 0.4f, 0.3f}, 0.25f, 12, 24);
-    for (size_t i = 0; i < sphere.normals.size(); i += 5) sphere.normals[i] = zero;
-    b.addMesh("degenerate.sphere", sphere, b.addMaterial(material("degenerate.sphere", {0.3f, 0.6f, 0.3f}, 0.0f, 0.3f)));
+    for (size_t i = 0; i < sphere.normals.size(); i += 5)
+        sphere.normals[i] = zero;
+    b.addMesh("degenerate.sphere", sphere,
+              b.addMaterial(material("degenerate.sphere", {0.3f, 0.6f, 0.3f}, 0.0f, 0.3f)));
     sun(b, {0.3f, -0.4f, -1.0f});
     setCamera(b, {0.0f, 0.0f, 2.0f}, {0.0f, 0.0f, 0.0f}, 0.1f, 10.0f);
 }
@@ -235,18 +245,21 @@ void buildFar(ModelBuilder& b, Prng& rng) {
     MeshData bumps, base;
     for (int j = 0; j < 30; ++j)
         for (int i = 0; i < 30; ++i) {
-            const glm::vec3 c = origin + glm::vec3(0.003f * static_cast<float>(i - 15), 0.003f * static_cast<float>(j - 15), 0.0f);
+            const glm::vec3 c = origin + glm::vec3(0.003f * static_cast<float>(i - 15),
+                                                   0.003f * static_cast<float>(j - 15), 0.0f);
             const float h = rng.range(0.0005f, 0.002f);
             const glm::vec3 apex = c + glm::vec3(0.0f, 0.0f, h);
-            const glm::vec3 q[4] = {c + glm::vec3(-0.001f, -0.001f, 0.0f), c + glm::vec3(0.001f, -0.001f, 0.0f),
-                                    c + glm::vec3(0.001f, 0.001f, 0.0f), c + glm::vec3(-0.001f, 0.001f, 0.0f)};
+            const glm::vec3 q[4] = {c + glm::vec3(-0.001f, -0.001f, 0.0f),
+                                    c + glm::vec3(0.001f, -0.001f, 0.0f), c + glm::vec3(0.001f, 0.001f, 0.0f),
+                                    c + glm::vec3(-0.001f, 0.001f, 0.0f)};
             for (int e = 0; e < 4; ++e) {
                 const glm::vec3 a = q[e], bb = q[(e + 1) % 4];
                 const glm::vec3 n = glm::cross(bb - a, apex - a);
                 if (glm::dot(n, n) > 0.0f && std::isfinite(glm::dot(n, n)))
                     addFlatTriangle(bumps, a, bb, apex);
                 else
-                    addTriangle(bumps, a, bb, apex, {0.0f, 0.0f, 1.0f}, {0.0f, 0.0f, 1.0f}, {0.0f, 0.0f, 1.0f});
+                    addTriangle(bumps, a, bb, apex, {0.0f, 0.0f, 1.0f}, {0.0f, 0.0f, 1.0f},
+                                {0.0f, 0.0f, 1.0f});
             }
         }
     addQuad(base, origin + glm::vec3(-0.1f, -0.1f, -0.0005f), {0.2f, 0.0f, 0.0f}, {0.0f, 0.2f, 0.0f});
@@ -262,7 +275,8 @@ void buildFar(ModelBuilder& b, Prng& rng) {
 void buildGrazing(ModelBuilder& b, Prng&) {
     MeshData floor;
     addQuad(floor, {-100.0f, 0.0f, 100.0f}, {200.0f, 0.0f, 0.0f}, {0.0f, 0.0f, -200.0f});
-    b.addMesh("grazing.floor", floor, b.addMaterial(material("grazing.floor", {0.7f, 0.7f, 0.7f}, 0.5f, 0.1f)));
+    b.addMesh("grazing.floor", floor,
+              b.addMaterial(material("grazing.floor", {0.7f, 0.7f, 0.7f}, 0.5f, 0.1f)));
     sun(b, {0.0f, -0.001f, -1.0f});
     b.addPointLight("point.inplane", {0.0f, 0.0f, -1.0f}, {1.0f, 1.0f, 1.0f}, 1.0f, 0.0f);
     setCamera(b, {0.0f, 0.01f, 2.0f}, {0.0f, 0.0f, -200.0f}, 0.001f, 500.0f);
@@ -306,7 +320,8 @@ void buildLightInside(ModelBuilder& b, Prng&) {
     MeshData sphere, floor;
     addSphere(sphere, {0.0f, 0.0f, 0.0f}, 0.3f, 16, 32);
     addQuad(floor, {-1.0f, -0.3f, 1.0f}, {2.0f, 0.0f, 0.0f}, {0.0f, 0.0f, -2.0f});
-    b.addMesh("inside.sphere", sphere, b.addMaterial(material("inside.sphere", {0.8f, 0.8f, 0.8f}, 0.0f, 0.4f)));
+    b.addMesh("inside.sphere", sphere,
+              b.addMaterial(material("inside.sphere", {0.8f, 0.8f, 0.8f}, 0.0f, 0.4f)));
     b.addMesh("inside.floor", floor, b.addMaterial(lambert("inside.floor", {0.5f, 0.5f, 0.5f})));
     // The vertex of the sphere closest to the camera (+Z side).
     glm::vec3 front = sphere.positions[0];
@@ -322,7 +337,8 @@ void buildNoLights(ModelBuilder& b, Prng&) {
     MeshData sphere, wall;
     addSphere(sphere, {0.0f, 0.0f, 0.0f}, 0.4f, 16, 32);
     addQuad(wall, {-2.0f, -2.0f, -0.5f}, {4.0f, 0.0f, 0.0f}, {0.0f, 4.0f, 0.0f});
-    b.addMesh("nolights.sphere", sphere, b.addMaterial(material("nolights.sphere", {0.9f, 0.9f, 0.9f}, 1.0f, 0.0f)));
+    b.addMesh("nolights.sphere", sphere,
+              b.addMaterial(material("nolights.sphere", {0.9f, 0.9f, 0.9f}, 1.0f, 0.0f)));
     b.addMesh("nolights.wall", wall, b.addMaterial(lambert("nolights.wall", {0.8f, 0.8f, 0.8f})));
     setCamera(b, {0.0f, 0.0f, 2.0f}, {0.0f, 0.0f, 0.0f}, 0.1f, 10.0f);
 }
@@ -336,9 +352,11 @@ void buildManyLights(ModelBuilder& b, Prng&) {
     b.addMesh("many.sphere", sphere, b.addMaterial(material("many.sphere", {0.9f, 0.8f, 0.7f}, 0.0f, 0.3f)));
     b.addMesh("many.wall", wall, b.addMaterial(lambert("many.wall", {0.7f, 0.7f, 0.7f})));
     for (int i = 0; i < 1000; ++i) {
-        const glm::vec3 p(-0.9f + 0.2f * static_cast<float>(i % 10), -0.9f + 0.2f * static_cast<float>((i / 10) % 10),
+        const glm::vec3 p(-0.9f + 0.2f * static_cast<float>(i % 10),
+                          -0.9f + 0.2f * static_cast<float>((i / 10) % 10),
                           -0.35f + 0.1f * static_cast<float>(i / 100));
-        const glm::vec3 color(0.3f + 0.7f * static_cast<float>(i % 7) / 6.0f, 0.5f, 1.0f - 0.1f * static_cast<float>(i % 5));
+        const glm::vec3 color(0.3f + 0.7f * static_cast<float>(i % 7) / 6.0f, 0.5f,
+                              1.0f - 0.1f * static_cast<float>(i % 5));
         b.addPointLight("point." + std::to_string(i), p, color, 0.002f, (i % 2) ? 0.5f : 0.0f);
     }
     setCamera(b, {0.0f, 0.0f, 2.0f}, {0.0f, 0.0f, 0.0f}, 0.1f, 10.0f);
@@ -374,7 +392,8 @@ constexpr HardKind kHardKinds[] = {
 
 std::vector<std::string> hardSceneKinds() {
     std::vector<std::string> names;
-    for (const HardKind& k : kHardKinds) names.emplace_back(k.name);
+    for (const HardKind& k : kHardKinds)
+        names.emplace_back(k.name);
     return names;
 }
 
@@ -392,8 +411,10 @@ tinygltf::Model generateHardScene(std::string_view kind, const GenOptions& optio
         return builder.finish();
     }
     std::string known;
-    for (const HardKind& k : kHardKinds) known += (known.empty() ? "" : ", ") + std::string(k.name);
-    throw SceneError("builtin:" + std::string(kind) + ": unknown hard scene kind; known hard kinds are " + known);
+    for (const HardKind& k : kHardKinds)
+        known += (known.empty() ? "" : ", ") + std::string(k.name);
+    throw SceneError("builtin:" + std::string(kind) + ": unknown hard scene kind; known hard kinds are " +
+                     known);
 }
 
 } // namespace eng::scene

@@ -14,8 +14,8 @@ namespace eng::scene {
 
 // 48 bytes, matches the vertex input layout of every raster pass.
 struct Vertex {
-    glm::vec3 position{0.0f}; // world space
-    glm::vec3 normal{0.0f, 0.0f, 1.0f}; // world space, unit length
+    glm::vec3 position{0.0f};                  // world space
+    glm::vec3 normal{0.0f, 0.0f, 1.0f};        // world space, unit length
     glm::vec4 tangent{1.0f, 0.0f, 0.0f, 1.0f}; // world space xyz, w = bitangent sign
     glm::vec2 uv{0.0f};
 };
@@ -69,10 +69,10 @@ struct Light {
     float intensity = 1.0f;
     glm::vec3 position{0.0f};
     glm::vec3 direction{0.0f, 0.0f, -1.0f}; // unit, the direction light travels
-    float range = 0.0f; // 0 = infinite (glTF: undefined range)
-    float innerConeAngle = 0.0f; // radians, spot only
-    float outerConeAngle = 0.7853982f; // radians, spot only
-    bool castsShadows = false; // extras.castsShadows, or the sun by default
+    float range = 0.0f;                     // 0 = infinite (glTF: undefined range)
+    float innerConeAngle = 0.0f;            // radians, spot only
+    float outerConeAngle = 0.7853982f;      // radians, spot only
+    bool castsShadows = false;              // extras.castsShadows, or the sun by default
 };
 
 // A perspective camera. view is world -> view space (looking down -Z).
@@ -92,7 +92,7 @@ struct Bounds {
 struct LoadStats {
     uint32_t degenerateTrianglesDropped = 0;
     uint32_t primitivesWithFlatNormals = 0; // had no NORMAL attribute
-    std::vector<std::string> warnings; // repairs made, each naming the file and field
+    std::vector<std::string> warnings;      // repairs made, each naming the file and field
 };
 
 struct Scene {
@@ -103,7 +103,8 @@ struct Scene {
     std::vector<Material> materials; // never empty: a default material is appended when needed
     std::vector<Texture> textures;
     std::vector<Light> lights;
-    std::vector<Camera> cameras; // never empty: a default camera framing the bounds is added when the file has none
+    std::vector<Camera>
+        cameras; // never empty: a default camera framing the bounds is added when the file has none
     Bounds bounds;
     LoadStats stats;
 

@@ -5,7 +5,9 @@
 namespace eng::scene {
 namespace {
 
-bool canCastShadows(const Light& light) { return light.type == LightType::Directional || light.type == LightType::Spot; }
+bool canCastShadows(const Light& light) {
+    return light.type == LightType::Directional || light.type == LightType::Spot;
+}
 
 void countLights(const Scene& scene, SceneFeatures& f) {
     for (const Light& light : scene.lights) {
@@ -49,7 +51,8 @@ SceneFeatures forceAllSceneFeatures(const Scene& scene) {
     f.shadowedLights.clear();
     f.shadowedLightsIgnored = 0;
     for (uint32_t i = 0; i < scene.lights.size(); ++i)
-        if (canCastShadows(scene.lights[i]) && f.shadowedLights.size() < kMaxShadowedLights) f.shadowedLights.push_back(i);
+        if (canCastShadows(scene.lights[i]) && f.shadowedLights.size() < kMaxShadowedLights)
+            f.shadowedLights.push_back(i);
     const uint32_t materials = std::max<uint32_t>(1, uint32_t(scene.materials.size()));
     f.maskedMaterials = f.emissiveMaterials = f.normalMappedMaterials = materials;
     return f;
@@ -61,14 +64,15 @@ std::string describe(const SceneFeatures& f, const Scene& scene) {
         const std::string& n = scene.lights[i].name;
         names += (names.empty() ? "" : ", ") + (n.empty() ? "light " + std::to_string(i) : n);
     }
-    std::string s = std::string(f.forced ? "forced: " : "") + "shadowed lights " + std::to_string(f.shadowedLights.size());
+    std::string s = std::string(f.forced ? "forced: " : "") + "shadowed lights " +
+                    std::to_string(f.shadowedLights.size());
     if (!names.empty()) s += " (" + names + ")";
     if (f.shadowedLightsIgnored) s += " +" + std::to_string(f.shadowedLightsIgnored) + " ignored";
     s += ", masked " + std::to_string(f.maskedMaterials) + ", blended " + std::to_string(f.blendedMaterials) +
          ", emissive " + std::to_string(f.emissiveMaterials) + ", normal-mapped " +
          std::to_string(f.normalMappedMaterials) + ", lights " + std::to_string(f.directionalLights) +
-         " directional / " + std::to_string(f.pointLights) + " point / " + std::to_string(f.spotLights) + " spot, sky " +
-         (f.skyVisible ? "visible (conservative)" : "hidden");
+         " directional / " + std::to_string(f.pointLights) + " point / " + std::to_string(f.spotLights) +
+         " spot, sky " + (f.skyVisible ? "visible (conservative)" : "hidden");
     return s;
 }
 

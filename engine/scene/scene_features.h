@@ -21,9 +21,9 @@ struct SceneFeatures {
     std::vector<uint32_t> shadowedLights;
     uint32_t shadowedLightsIgnored = 0;
     // Materials used by at least one non-empty draw.
-    uint32_t maskedMaterials = 0; // AlphaMode::Mask: alpha-to-coverage / discard
-    uint32_t blendedMaterials = 0; // AlphaMode::Blend: drawn opaque (no sorted transparency)
-    uint32_t emissiveMaterials = 0; // emissiveFactor * strength > 0
+    uint32_t maskedMaterials = 0;       // AlphaMode::Mask: alpha-to-coverage / discard
+    uint32_t blendedMaterials = 0;      // AlphaMode::Blend: drawn opaque (no sorted transparency)
+    uint32_t emissiveMaterials = 0;     // emissiveFactor * strength > 0
     uint32_t normalMappedMaterials = 0; // normalTexture >= 0
     uint32_t directionalLights = 0, pointLights = 0, spotLights = 0;
     // Conservative: true unless the scene's geometry provably covers every view direction,

@@ -175,7 +175,8 @@ std::vector<std::string> sceneKinds() {
 }
 
 tinygltf::Model generateScene(std::string_view kindName, const GenOptions& options) {
-    if (isHardSceneKind(kindName)) return generateHardScene(kindName, options); // tests/hard, not in sceneKinds()
+    if (isHardSceneKind(kindName))
+        return generateHardScene(kindName, options); // tests/hard, not in sceneKinds()
     const KindName* found = nullptr;
     for (const KindName& k : kKinds) {
         if (kindName == k.name) {

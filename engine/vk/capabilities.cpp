@@ -12,15 +12,22 @@ std::string sampleCounts(VkSampleCountFlags flags) {
     return s.empty() ? "none" : s;
 }
 
-const char* yesNo(bool b) { return b ? "yes" : "no"; }
+const char* yesNo(bool b) {
+    return b ? "yes" : "no";
+}
 
 const char* deviceTypeName(VkPhysicalDeviceType t) {
     switch (t) {
-    case VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU: return "discrete GPU";
-    case VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU: return "integrated GPU";
-    case VK_PHYSICAL_DEVICE_TYPE_VIRTUAL_GPU: return "virtual GPU";
-    case VK_PHYSICAL_DEVICE_TYPE_CPU: return "CPU";
-    default: return "other";
+    case VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU:
+        return "discrete GPU";
+    case VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU:
+        return "integrated GPU";
+    case VK_PHYSICAL_DEVICE_TYPE_VIRTUAL_GPU:
+        return "virtual GPU";
+    case VK_PHYSICAL_DEVICE_TYPE_CPU:
+        return "CPU";
+    default:
+        return "other";
     }
 }
 
@@ -58,16 +65,15 @@ std::string Capabilities::describe() const {
     std::ostringstream o;
     o << "device                 " << deviceName << " (" << deviceTypeName(deviceType) << ")\n"
       << "driver                 " << driverName << "\n"
-      << "api                    " << VK_API_VERSION_MAJOR(apiVersion) << "." << VK_API_VERSION_MINOR(apiVersion)
-      << "." << VK_API_VERSION_PATCH(apiVersion) << "\n"
+      << "api                    " << VK_API_VERSION_MAJOR(apiVersion) << "."
+      << VK_API_VERSION_MINOR(apiVersion) << "." << VK_API_VERSION_PATCH(apiVersion) << "\n"
       << "sample counts          colour " << sampleCounts(colorSampleCounts) << "; depth "
       << sampleCounts(depthSampleCounts) << " (higher rates are emulated by layered 4x passes)\n"
       << "sample-rate shading    " << yesNo(sampleRateShading) << "\n"
       << "post-depth coverage    " << yesNo(postDepthCoverage) << "\n"
       << "float atomics          buffer add " << yesNo(bufferFloatAtomicAdd) << ", image add "
       << yesNo(imageFloatAtomicAdd) << "\n"
-      << "subgroups              size " << subgroupSize << ", stages "
-      << stageNames(subgroupStages) << "\n"
+      << "subgroups              size " << subgroupSize << ", stages " << stageNames(subgroupStages) << "\n"
       << "subgroup operations    " << subgroupOpNames(subgroupOperations) << "\n"
       << "fragment interlock     " << yesNo(fragmentShaderInterlock) << "\n"
       << "mixed samples          " << yesNo(mixedSamples) << "\n"
@@ -77,8 +83,8 @@ std::string Capabilities::describe() const {
       << "layered output         " << yesNo(layeredOutput) << " (gl_Layer from the vertex shader)\n"
       << "multi-viewport         " << yesNo(multiViewport) << "\n"
       << "push descriptors       " << yesNo(pushDescriptors) << "\n"
-      << "timestamps             period " << timestampPeriodNs << " ns, " << timestampValidBits << " valid bits"
-      << (calibratedTimestamps ? ", calibrated" : "") << "\n"
+      << "timestamps             period " << timestampPeriodNs << " ns, " << timestampValidBits
+      << " valid bits" << (calibratedTimestamps ? ", calibrated" : "") << "\n"
       << "compute shared memory  " << maxComputeSharedMemory << " bytes\n";
     return o.str();
 }

@@ -8,8 +8,9 @@ namespace eng::vk {
 // vk_enum_string_helper.h is not in Debian 12's Vulkan headers: the results a call can return.
 const char* resultName(VkResult result) {
     switch (result) {
-#define AGAA_RESULT(r) \
-    case r: return #r;
+#define AGAA_RESULT(r)                                                                                       \
+    case r:                                                                                                  \
+        return #r;
         AGAA_RESULT(VK_SUCCESS)
         AGAA_RESULT(VK_NOT_READY)
         AGAA_RESULT(VK_TIMEOUT)
@@ -35,12 +36,14 @@ const char* resultName(VkResult result) {
         AGAA_RESULT(VK_ERROR_INVALID_OPAQUE_CAPTURE_ADDRESS)
         AGAA_RESULT(VK_PIPELINE_COMPILE_REQUIRED)
 #undef AGAA_RESULT
-    default: return "VkResult(unknown)";
+    default:
+        return "VkResult(unknown)";
     }
 }
 
 void checkFailed(const char* expr, const char* file, int line, VkResult result) {
-    std::fprintf(stderr, "VK_CHECK failed: %s\n  at %s:%d\n  returned %s\n", expr, file, line, resultName(result));
+    std::fprintf(stderr, "VK_CHECK failed: %s\n  at %s:%d\n  returned %s\n", expr, file, line,
+                 resultName(result));
     std::fflush(stderr);
     std::abort();
 }

@@ -20,8 +20,8 @@ struct MissingCapability : std::runtime_error {
 
 } // namespace eng::vk
 
-#define VK_CHECK(expr)                                                                                     \
-    do {                                                                                                   \
-        VkResult vkCheckResult_ = (expr);                                                                  \
+#define VK_CHECK(expr)                                                                                       \
+    do {                                                                                                     \
+        VkResult vkCheckResult_ = (expr);                                                                    \
         if (vkCheckResult_ != VK_SUCCESS) ::eng::vk::checkFailed(#expr, __FILE__, __LINE__, vkCheckResult_); \
     } while (0)

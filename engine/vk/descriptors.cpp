@@ -12,13 +12,15 @@ PushDescriptors& PushDescriptors::storage(uint32_t binding, VkBuffer buffer) {
     return *this;
 }
 
-PushDescriptors& PushDescriptors::sampled(uint32_t binding, VkSampler sampler, VkImageView view, VkImageLayout layout) {
+PushDescriptors& PushDescriptors::sampled(uint32_t binding, VkSampler sampler, VkImageView view,
+                                          VkImageLayout layout) {
     m_entries.push_back({binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, {}, {sampler, view, layout}});
     return *this;
 }
 
 PushDescriptors& PushDescriptors::storageImage(uint32_t binding, VkImageView view) {
-    m_entries.push_back({binding, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, {}, {VK_NULL_HANDLE, view, VK_IMAGE_LAYOUT_GENERAL}});
+    m_entries.push_back(
+        {binding, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, {}, {VK_NULL_HANDLE, view, VK_IMAGE_LAYOUT_GENERAL}});
     return *this;
 }
 
@@ -31,9 +33,12 @@ void PushDescriptors::push(const Device& device, VkCommandBuffer cmd, VkPipeline
         w.dstBinding = e.binding;
         w.descriptorCount = 1;
         w.descriptorType = e.type;
-        bool isBuffer = e.type == VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER || e.type == VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
-        if (isBuffer) w.pBufferInfo = &e.buffer;
-        else w.pImageInfo = &e.image;
+        bool isBuffer =
+            e.type == VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER || e.type == VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+        if (isBuffer)
+            w.pBufferInfo = &e.buffer;
+        else
+            w.pImageInfo = &e.image;
         writes.push_back(w);
     }
     device.pushDescriptorSet()(cmd, bindPoint, layout, 0, uint32_t(writes.size()), writes.data());

@@ -11,15 +11,16 @@
 namespace eng::vk {
 
 class PushDescriptors {
-public:
+  public:
     PushDescriptors& uniform(uint32_t binding, VkBuffer buffer);
     PushDescriptors& storage(uint32_t binding, VkBuffer buffer);
     PushDescriptors& sampled(uint32_t binding, VkSampler sampler, VkImageView view,
                              VkImageLayout layout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
     PushDescriptors& storageImage(uint32_t binding, VkImageView view);
-    void push(const Device& device, VkCommandBuffer cmd, VkPipelineBindPoint bindPoint, VkPipelineLayout layout);
+    void push(const Device& device, VkCommandBuffer cmd, VkPipelineBindPoint bindPoint,
+              VkPipelineLayout layout);
 
-private:
+  private:
     struct Entry {
         uint32_t binding;
         VkDescriptorType type;

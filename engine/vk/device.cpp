@@ -15,8 +15,9 @@ namespace {
 constexpr const char* kValidationLayer = "VK_LAYER_KHRONOS_validation";
 
 bool hasExtension(const std::vector<VkExtensionProperties>& list, const char* name) {
-    return std::any_of(list.begin(), list.end(),
-                       [&](const VkExtensionProperties& e) { return std::strcmp(e.extensionName, name) == 0; });
+    return std::any_of(list.begin(), list.end(), [&](const VkExtensionProperties& e) {
+        return std::strcmp(e.extensionName, name) == 0;
+    });
 }
 
 std::string lower(std::string s) {
@@ -32,11 +33,16 @@ bool envFlag(const char* name) {
 // Real GPUs before lavapipe; among equals the first enumerated.
 int typeRank(VkPhysicalDeviceType type) {
     switch (type) {
-    case VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU: return 0;
-    case VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU: return 1;
-    case VK_PHYSICAL_DEVICE_TYPE_VIRTUAL_GPU: return 2;
-    case VK_PHYSICAL_DEVICE_TYPE_CPU: return 3;
-    default: return 4;
+    case VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU:
+        return 0;
+    case VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU:
+        return 1;
+    case VK_PHYSICAL_DEVICE_TYPE_VIRTUAL_GPU:
+        return 2;
+    case VK_PHYSICAL_DEVICE_TYPE_CPU:
+        return 3;
+    default:
+        return 4;
     }
 }
 
@@ -105,8 +111,8 @@ void Device::createInstance(const DeviceOptions& options) {
     app.apiVersion = VK_API_VERSION_1_3;
 
     VkDebugUtilsMessengerCreateInfoEXT messengerInfo{VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT};
-    messengerInfo.messageSeverity = VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT |
-                                    VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT;
+    messengerInfo.messageSeverity =
+        VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT;
     messengerInfo.messageType = VK_DEBUG_UTILS_MESSAGE_TYPE_GENERAL_BIT_EXT |
                                 VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT |
                                 VK_DEBUG_UTILS_MESSAGE_TYPE_PERFORMANCE_BIT_EXT;
@@ -194,10 +200,12 @@ void Device::pickPhysicalDevice(const DeviceOptions& options) {
     }
     if (!m_physical) {
         if (!wanted.empty())
-            throw MissingCapability("--device '" + options.deviceName + "' matches no Vulkan 1.3 device; devices: " +
-                                    (seen.empty() ? std::string("none") : seen));
-        throw MissingCapability("no Vulkan 1.3 device (devices: " + (seen.empty() ? std::string("none") : seen) +
-                                "); install mesa-vulkan-drivers for lavapipe");
+            throw MissingCapability(
+                "--device '" + options.deviceName +
+                "' matches no Vulkan 1.3 device; devices: " + (seen.empty() ? std::string("none") : seen));
+        throw MissingCapability(
+            "no Vulkan 1.3 device (devices: " + (seen.empty() ? std::string("none") : seen) +
+            "); install mesa-vulkan-drivers for lavapipe");
     }
 }
 
@@ -222,8 +230,14 @@ void Device::createDevice(bool swapchain) {
     bool hasAtomicFloat = hasExtension(exts, VK_EXT_SHADER_ATOMIC_FLOAT_EXTENSION_NAME);
     bool hasInterlock = hasExtension(exts, VK_EXT_FRAGMENT_SHADER_INTERLOCK_EXTENSION_NAME);
     void** tail = &f13.pNext;
-    if (hasAtomicFloat) { *tail = &atomicFloat; tail = &atomicFloat.pNext; }
-    if (hasInterlock) { *tail = &interlock; tail = &interlock.pNext; }
+    if (hasAtomicFloat) {
+        *tail = &atomicFloat;
+        tail = &atomicFloat.pNext;
+    }
+    if (hasInterlock) {
+        *tail = &interlock;
+        tail = &interlock.pNext;
+    }
     vkGetPhysicalDeviceFeatures2(m_physical, &f2);
 
     VkPhysicalDeviceSubgroupProperties subgroup{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SUBGROUP_PROPERTIES};
@@ -281,7 +295,10 @@ void Device::createDevice(bool swapchain) {
     m_caps.maxImageArrayLayers = limits.maxImageArrayLayers;
 
     // --- required features: the renderer cannot run without these -------------------------
-    struct Required { bool present; const char* name; };
+    struct Required {
+        bool present;
+        const char* name;
+    };
     const Required required[] = {
         {f13.dynamicRendering == VK_TRUE, "Vulkan 1.3 dynamicRendering"},
         {f13.synchronization2 == VK_TRUE, "Vulkan 1.3 synchronization2"},
@@ -343,8 +360,14 @@ void Device::createDevice(bool swapchain) {
     on11.pNext = &on12;
     on12.pNext = &on13;
     void** onTail = &on13.pNext;
-    if (hasAtomicFloat) { *onTail = &atomicFloatOn; onTail = &atomicFloatOn.pNext; }
-    if (m_caps.fragmentShaderInterlock) { *onTail = &interlockOn; onTail = &interlockOn.pNext; }
+    if (hasAtomicFloat) {
+        *onTail = &atomicFloatOn;
+        onTail = &atomicFloatOn.pNext;
+    }
+    if (m_caps.fragmentShaderInterlock) {
+        *onTail = &interlockOn;
+        onTail = &interlockOn.pNext;
+    }
 
     float priority = 1.0f;
     VkDeviceQueueCreateInfo queueInfo{VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO};
@@ -359,8 +382,8 @@ void Device::createDevice(bool swapchain) {
     info.ppEnabledExtensionNames = enable.data();
     VK_CHECK(vkCreateDevice(m_physical, &info, nullptr, &m_device));
     vkGetDeviceQueue(m_device, m_queueFamily, 0, &m_queue);
-    m_pushDescriptorSet =
-        reinterpret_cast<PFN_vkCmdPushDescriptorSetKHR>(vkGetDeviceProcAddr(m_device, "vkCmdPushDescriptorSetKHR"));
+    m_pushDescriptorSet = reinterpret_cast<PFN_vkCmdPushDescriptorSetKHR>(
+        vkGetDeviceProcAddr(m_device, "vkCmdPushDescriptorSetKHR"));
 
     VkCommandPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
     poolInfo.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT | VK_COMMAND_POOL_CREATE_TRANSIENT_BIT;
@@ -374,7 +397,8 @@ void Device::createDevice(bool swapchain) {
 
 VKAPI_ATTR VkBool32 VKAPI_CALL Device::onMessage(VkDebugUtilsMessageSeverityFlagBitsEXT severity,
                                                  VkDebugUtilsMessageTypeFlagsEXT,
-                                                 const VkDebugUtilsMessengerCallbackDataEXT* data, void* user) {
+                                                 const VkDebugUtilsMessengerCallbackDataEXT* data,
+                                                 void* user) {
     auto* self = static_cast<Device*>(user);
     const char* id = data->pMessageIdName ? data->pMessageIdName : "";
     bool error = isErrorId(id);

@@ -19,9 +19,10 @@
 namespace eng::vk {
 
 struct DeviceOptions {
-    bool validation = false; // also enabled by AGAA_VALIDATE=1 in the environment
+    bool validation = false;               // also enabled by AGAA_VALIDATE=1 in the environment
     bool synchronizationValidation = true; // with validation: sync2 hazards are reported as SYNC-*
-    std::string deviceName; // case-insensitive substring of VkPhysicalDeviceProperties::deviceName; empty = best
+    std::string
+        deviceName;     // case-insensitive substring of VkPhysicalDeviceProperties::deviceName; empty = best
     bool quiet = false; // do not print non-error messages
     // For windowed hosts (the sample viewer): instance extensions a window system needs, e.g.
     // from glfwGetRequiredInstanceExtensions(), and VK_KHR_swapchain on the device. Refused with
@@ -31,7 +32,7 @@ struct DeviceOptions {
 };
 
 class Device {
-public:
+  public:
     explicit Device(const DeviceOptions& options);
     ~Device();
     Device(const Device&) = delete;
@@ -63,18 +64,20 @@ public:
     PFN_vkCmdEndDebugUtilsLabelEXT endLabel() const { return m_endLabel; }
     PFN_vkCmdPushDescriptorSetKHR pushDescriptorSet() const { return m_pushDescriptorSet; }
 
-    uint32_t findMemoryType(uint32_t typeBits, VkMemoryPropertyFlags required, VkMemoryPropertyFlags preferred) const;
+    uint32_t findMemoryType(uint32_t typeBits, VkMemoryPropertyFlags required,
+                            VkMemoryPropertyFlags preferred) const;
 
     // Lists every Vulkan 1.3 device the loader sees (for error messages and --caps).
     static std::vector<std::string> listDevices();
 
-private:
+  private:
     void createInstance(const DeviceOptions& options);
     void pickPhysicalDevice(const DeviceOptions& options);
     void createDevice(bool swapchain);
     static VKAPI_ATTR VkBool32 VKAPI_CALL onMessage(VkDebugUtilsMessageSeverityFlagBitsEXT severity,
                                                     VkDebugUtilsMessageTypeFlagsEXT type,
-                                                    const VkDebugUtilsMessengerCallbackDataEXT* data, void* user);
+                                                    const VkDebugUtilsMessengerCallbackDataEXT* data,
+                                                    void* user);
 
     VkInstance m_instance = VK_NULL_HANDLE;
     VkDebugUtilsMessengerEXT m_messenger = VK_NULL_HANDLE;

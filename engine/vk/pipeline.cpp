@@ -22,7 +22,8 @@ struct SpecializationData {
 
 SpecializationData makeSpecialization(const Specialization& spec) {
     SpecializationData d;
-    for (uint32_t i = 0; i < spec.values.size(); ++i) d.entries.push_back({i, i * 4u, 4u});
+    for (uint32_t i = 0; i < spec.values.size(); ++i)
+        d.entries.push_back({i, i * 4u, 4u});
     d.info.mapEntryCount = uint32_t(d.entries.size());
     d.info.pMapEntries = d.entries.data();
     d.info.dataSize = spec.values.size() * 4;
@@ -35,7 +36,8 @@ SpecializationData makeSpecialization(const Specialization& spec) {
 VkDescriptorSetLayout createSetLayout(const Device& device, std::span<const Binding> bindings,
                                       const std::string& name) {
     std::vector<VkDescriptorSetLayoutBinding> b;
-    for (const Binding& x : bindings) b.push_back({x.binding, x.type, x.count, x.stages, nullptr});
+    for (const Binding& x : bindings)
+        b.push_back({x.binding, x.type, x.count, x.stages, nullptr});
     VkDescriptorSetLayoutCreateInfo info{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
     info.bindingCount = uint32_t(b.size());
     info.pBindings = b.data();
@@ -48,7 +50,8 @@ VkDescriptorSetLayout createSetLayout(const Device& device, std::span<const Bind
 PipelineLayout createPipelineLayout(const Device& device, const LayoutDesc& desc, const std::string& name) {
     PipelineLayout out;
     std::vector<VkDescriptorSetLayoutBinding> b;
-    for (const Binding& x : desc.pushBindings) b.push_back({x.binding, x.type, x.count, x.stages, nullptr});
+    for (const Binding& x : desc.pushBindings)
+        b.push_back({x.binding, x.type, x.count, x.stages, nullptr});
     VkDescriptorSetLayoutCreateInfo setInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
     setInfo.flags = VK_DESCRIPTOR_SET_LAYOUT_CREATE_PUSH_DESCRIPTOR_BIT_KHR;
     setInfo.bindingCount = uint32_t(b.size());
@@ -75,8 +78,9 @@ void destroyPipelineLayout(const Device& device, PipelineLayout& layout) {
     layout = PipelineLayout{};
 }
 
-VkPipeline createComputePipeline(const Device& device, std::span<const uint32_t> spirv, VkPipelineLayout layout,
-                                 const Specialization& spec, const std::string& name) {
+VkPipeline createComputePipeline(const Device& device, std::span<const uint32_t> spirv,
+                                 VkPipelineLayout layout, const Specialization& spec,
+                                 const std::string& name) {
     VkShaderModule module = createModule(device, spirv, name);
     SpecializationData sd = makeSpecialization(spec);
     VkComputePipelineCreateInfo info{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
@@ -93,7 +97,8 @@ VkPipeline createComputePipeline(const Device& device, std::span<const uint32_t>
     return pipeline;
 }
 
-VkPipeline createGraphicsPipeline(const Device& device, const GraphicsPipelineDesc& d, const std::string& name) {
+VkPipeline createGraphicsPipeline(const Device& device, const GraphicsPipelineDesc& d,
+                                  const std::string& name) {
     SpecializationData sd = makeSpecialization(d.specialization);
     std::vector<VkPipelineShaderStageCreateInfo> stages;
     std::vector<VkShaderModule> modules;
@@ -117,14 +122,16 @@ VkPipeline createGraphicsPipeline(const Device& device, const GraphicsPipelineDe
         {2, 0, VK_FORMAT_R32G32B32A32_SFLOAT, 24},
         {3, 0, VK_FORMAT_R32G32_SFLOAT, 40},
     };
-    VkPipelineVertexInputStateCreateInfo vertexInput{VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO};
+    VkPipelineVertexInputStateCreateInfo vertexInput{
+        VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO};
     if (d.sceneVertexInput) {
         vertexInput.vertexBindingDescriptionCount = 1;
         vertexInput.pVertexBindingDescriptions = &binding;
         vertexInput.vertexAttributeDescriptionCount = 4;
         vertexInput.pVertexAttributeDescriptions = attributes;
     }
-    VkPipelineInputAssemblyStateCreateInfo assembly{VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO};
+    VkPipelineInputAssemblyStateCreateInfo assembly{
+        VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO};
     assembly.topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
     VkPipelineViewportStateCreateInfo viewport{VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO};
     viewport.viewportCount = 1;
@@ -170,7 +177,8 @@ VkPipeline createGraphicsPipeline(const Device& device, const GraphicsPipelineDe
     rendering.colorAttachmentCount = uint32_t(d.colorFormats.size());
     rendering.pColorAttachmentFormats = d.colorFormats.data();
     rendering.depthAttachmentFormat = d.depthFormat;
-    bool stencilFormat = d.depthFormat == VK_FORMAT_D24_UNORM_S8_UINT || d.depthFormat == VK_FORMAT_D32_SFLOAT_S8_UINT;
+    bool stencilFormat =
+        d.depthFormat == VK_FORMAT_D24_UNORM_S8_UINT || d.depthFormat == VK_FORMAT_D32_SFLOAT_S8_UINT;
     rendering.stencilAttachmentFormat = stencilFormat ? d.depthFormat : VK_FORMAT_UNDEFINED;
 
     VkGraphicsPipelineCreateInfo info{VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO};
@@ -188,7 +196,8 @@ VkPipeline createGraphicsPipeline(const Device& device, const GraphicsPipelineDe
     info.layout = d.layout;
     VkPipeline pipeline = VK_NULL_HANDLE;
     VK_CHECK(vkCreateGraphicsPipelines(device.device(), VK_NULL_HANDLE, 1, &info, nullptr, &pipeline));
-    for (VkShaderModule m : modules) vkDestroyShaderModule(device.device(), m, nullptr);
+    for (VkShaderModule m : modules)
+        vkDestroyShaderModule(device.device(), m, nullptr);
     device.setName(VK_OBJECT_TYPE_PIPELINE, pipeline, name);
     return pipeline;
 }

@@ -22,9 +22,9 @@ struct Binding {
 };
 
 struct LayoutDesc {
-    std::vector<Binding> pushBindings; // set 0, push descriptors
+    std::vector<Binding> pushBindings;            // set 0, push descriptors
     std::vector<VkDescriptorSetLayout> extraSets; // sets 1.. (owned by the caller)
-    uint32_t pushConstantBytes = 0; // one range, all stages
+    uint32_t pushConstantBytes = 0;               // one range, all stages
 };
 
 struct PipelineLayout {

@@ -13,14 +13,16 @@ bool isDepthFormat(VkFormat f) {
     case VK_FORMAT_D32_SFLOAT:
     case VK_FORMAT_D16_UNORM_S8_UINT:
     case VK_FORMAT_D24_UNORM_S8_UINT:
-    case VK_FORMAT_D32_SFLOAT_S8_UINT: return true;
-    default: return false;
+    case VK_FORMAT_D32_SFLOAT_S8_UINT:
+        return true;
+    default:
+        return false;
     }
 }
 
 bool hasStencil(VkFormat f) {
-    return f == VK_FORMAT_D16_UNORM_S8_UINT || f == VK_FORMAT_D24_UNORM_S8_UINT || f == VK_FORMAT_D32_SFLOAT_S8_UINT ||
-           f == VK_FORMAT_S8_UINT;
+    return f == VK_FORMAT_D16_UNORM_S8_UINT || f == VK_FORMAT_D24_UNORM_S8_UINT ||
+           f == VK_FORMAT_D32_SFLOAT_S8_UINT || f == VK_FORMAT_S8_UINT;
 }
 
 VkImageAspectFlags aspectOf(VkFormat f) {
@@ -32,13 +34,16 @@ uint32_t bytesPerTexel(VkFormat f) {
     switch (f) {
     case VK_FORMAT_R8_UNORM:
     case VK_FORMAT_R8_UINT:
-    case VK_FORMAT_S8_UINT: return 1;
+    case VK_FORMAT_S8_UINT:
+        return 1;
     case VK_FORMAT_R8G8_UNORM:
     case VK_FORMAT_R8G8_UINT:
     case VK_FORMAT_R16_UINT:
     case VK_FORMAT_R16_SFLOAT:
-    case VK_FORMAT_D16_UNORM: return 2;
-    case VK_FORMAT_D16_UNORM_S8_UINT: return 3;
+    case VK_FORMAT_D16_UNORM:
+        return 2;
+    case VK_FORMAT_D16_UNORM_S8_UINT:
+        return 3;
     case VK_FORMAT_R8G8B8A8_UNORM:
     case VK_FORMAT_R8G8B8A8_SRGB:
     case VK_FORMAT_A2B10G10R10_UNORM_PACK32:
@@ -50,15 +55,20 @@ uint32_t bytesPerTexel(VkFormat f) {
     case VK_FORMAT_D32_SFLOAT:
     case VK_FORMAT_X8_D24_UNORM_PACK32:
     case VK_FORMAT_D24_UNORM_S8_UINT:
-    case VK_FORMAT_B10G11R11_UFLOAT_PACK32: return 4;
-    case VK_FORMAT_D32_SFLOAT_S8_UINT: return 5;
+    case VK_FORMAT_B10G11R11_UFLOAT_PACK32:
+        return 4;
+    case VK_FORMAT_D32_SFLOAT_S8_UINT:
+        return 5;
     case VK_FORMAT_R16G16B16A16_SFLOAT:
     case VK_FORMAT_R16G16B16A16_UNORM:
     case VK_FORMAT_R32G32_UINT:
-    case VK_FORMAT_R32G32_SFLOAT: return 8;
+    case VK_FORMAT_R32G32_SFLOAT:
+        return 8;
     case VK_FORMAT_R32G32B32A32_SFLOAT:
-    case VK_FORMAT_R32G32B32A32_UINT: return 16;
-    default: return 0;
+    case VK_FORMAT_R32G32B32A32_UINT:
+        return 16;
+    default:
+        return 0;
     }
 }
 
@@ -76,7 +86,9 @@ Buffer createBuffer(const Device& device, VkDeviceSize size, VkBufferUsageFlags 
 
     VkMemoryPropertyFlags required = 0, preferred = 0;
     switch (use) {
-    case MemoryUse::GpuOnly: preferred = VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT; break;
+    case MemoryUse::GpuOnly:
+        preferred = VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT;
+        break;
     case MemoryUse::Upload:
         required = VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT;
         preferred = VK_MEMORY_PROPERTY_HOST_COHERENT_BIT;
@@ -109,7 +121,8 @@ void destroyBuffer(const Device& device, Buffer& b) {
     b = Buffer{};
 }
 
-void writeBuffer(const Device& device, const Buffer& b, std::span<const std::byte> bytes, VkDeviceSize offset) {
+void writeBuffer(const Device& device, const Buffer& b, std::span<const std::byte> bytes,
+                 VkDeviceSize offset) {
     if (!b.mapped || offset + bytes.size() > b.size)
         throw std::logic_error("writeBuffer: buffer not mapped or write past its end");
     std::memcpy(static_cast<std::byte*>(b.mapped) + offset, bytes.data(), bytes.size());
@@ -162,8 +175,7 @@ Image createImage(const Device& device, const ImageDesc& desc, const std::string
     view.subresourceRange = {aspectOf(desc.format), 0, desc.mipLevels, 0, desc.layers};
     VK_CHECK(vkCreateImageView(device.device(), &view, nullptr, &img.view));
     img.sampledView = img.view;
-    if (isDepthFormat(desc.format) && hasStencil(desc.format) &&
-        (desc.usage & VK_IMAGE_USAGE_SAMPLED_BIT)) {
+    if (isDepthFormat(desc.format) && hasStencil(desc.format) && (desc.usage & VK_IMAGE_USAGE_SAMPLED_BIT)) {
         view.subresourceRange.aspectMask = VK_IMAGE_ASPECT_DEPTH_BIT;
         VK_CHECK(vkCreateImageView(device.device(), &view, nullptr, &img.sampledView));
     }
@@ -173,7 +185,8 @@ Image createImage(const Device& device, const ImageDesc& desc, const std::string
     return img;
 }
 
-bool supportsImage(const Device& device, VkFormat format, VkImageUsageFlags usage, VkSampleCountFlagBits samples) {
+bool supportsImage(const Device& device, VkFormat format, VkImageUsageFlags usage,
+                   VkSampleCountFlagBits samples) {
     VkImageFormatProperties props;
     VkResult r = vkGetPhysicalDeviceImageFormatProperties(device.physical(), format, VK_IMAGE_TYPE_2D,
                                                           VK_IMAGE_TILING_OPTIMAL, usage, 0, &props);
@@ -181,7 +194,8 @@ bool supportsImage(const Device& device, VkFormat format, VkImageUsageFlags usag
 }
 
 void destroyImage(const Device& device, Image& img) {
-    if (img.sampledView && img.sampledView != img.view) vkDestroyImageView(device.device(), img.sampledView, nullptr);
+    if (img.sampledView && img.sampledView != img.view)
+        vkDestroyImageView(device.device(), img.sampledView, nullptr);
     if (img.view) vkDestroyImageView(device.device(), img.view, nullptr);
     if (img.image) vkDestroyImage(device.device(), img.image, nullptr);
     if (img.memory) vkFreeMemory(device.device(), img.memory, nullptr);
@@ -193,7 +207,8 @@ VkSampler createSampler(const Device& device, VkFilter filter, VkSamplerAddressM
     VkSamplerCreateInfo info{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
     info.magFilter = filter;
     info.minFilter = filter;
-    info.mipmapMode = filter == VK_FILTER_LINEAR ? VK_SAMPLER_MIPMAP_MODE_LINEAR : VK_SAMPLER_MIPMAP_MODE_NEAREST;
+    info.mipmapMode =
+        filter == VK_FILTER_LINEAR ? VK_SAMPLER_MIPMAP_MODE_LINEAR : VK_SAMPLER_MIPMAP_MODE_NEAREST;
     info.addressModeU = info.addressModeV = info.addressModeW = address;
     info.maxLod = maxLod;
     VkSampler sampler = VK_NULL_HANDLE;

@@ -14,8 +14,8 @@
 namespace eng::vk {
 
 enum class MemoryUse {
-    GpuOnly, // device-local
-    Upload, // host-visible, written by the CPU (uniforms, vertices on unified memory)
+    GpuOnly,  // device-local
+    Upload,   // host-visible, written by the CPU (uniforms, vertices on unified memory)
     Readback, // host-visible + cached, read by the CPU
 };
 
@@ -41,7 +41,7 @@ struct ImageDesc {
 struct Image {
     VkImage image = VK_NULL_HANDLE;
     VkDeviceMemory memory = VK_NULL_HANDLE;
-    VkImageView view = VK_NULL_HANDLE; // all aspects, of desc.viewType
+    VkImageView view = VK_NULL_HANDLE;        // all aspects, of desc.viewType
     VkImageView sampledView = VK_NULL_HANDLE; // depth aspect only for depth formats, else == view
     ImageDesc desc;
     VkDeviceSize bytes = 0; // the allocation's size, for bytes-per-pixel reports
@@ -52,7 +52,8 @@ bool hasStencil(VkFormat format);
 VkImageAspectFlags aspectOf(VkFormat format);
 uint32_t bytesPerTexel(VkFormat format); // per sample
 
-Buffer createBuffer(const Device&, VkDeviceSize size, VkBufferUsageFlags usage, MemoryUse, const std::string& name);
+Buffer createBuffer(const Device&, VkDeviceSize size, VkBufferUsageFlags usage, MemoryUse,
+                    const std::string& name);
 void destroyBuffer(const Device&, Buffer&);
 // Copies bytes into a mapped buffer at offset (flushes non-coherent memory).
 void writeBuffer(const Device&, const Buffer&, std::span<const std::byte> bytes, VkDeviceSize offset = 0);

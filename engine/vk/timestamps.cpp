@@ -4,7 +4,8 @@
 
 namespace eng::vk {
 
-TimestampPool::TimestampPool(const Device& device, uint32_t maxQueries) : m_device(device), m_capacity(maxQueries) {
+TimestampPool::TimestampPool(const Device& device, uint32_t maxQueries)
+    : m_device(device), m_capacity(maxQueries) {
     VkQueryPoolCreateInfo info{VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO};
     info.queryType = VK_QUERY_TYPE_TIMESTAMP;
     info.queryCount = maxQueries;
@@ -13,9 +14,13 @@ TimestampPool::TimestampPool(const Device& device, uint32_t maxQueries) : m_devi
     reset();
 }
 
-TimestampPool::~TimestampPool() { vkDestroyQueryPool(m_device.device(), m_pool, nullptr); }
+TimestampPool::~TimestampPool() {
+    vkDestroyQueryPool(m_device.device(), m_pool, nullptr);
+}
 
-void TimestampPool::reset() { vkResetQueryPool(m_device.device(), m_pool, 0, m_capacity); }
+void TimestampPool::reset() {
+    vkResetQueryPool(m_device.device(), m_pool, 0, m_capacity);
+}
 
 std::vector<double> TimestampPool::readPairsMs(uint32_t pairs) const {
     std::vector<double> ms;

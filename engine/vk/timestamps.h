@@ -9,7 +9,7 @@
 namespace eng::vk {
 
 class TimestampPool {
-public:
+  public:
     TimestampPool(const Device& device, uint32_t maxQueries);
     ~TimestampPool();
     TimestampPool(const TimestampPool&) = delete;
@@ -23,7 +23,7 @@ public:
     // Milliseconds from query 0 to query count-1.
     double readSpanMs(uint32_t count) const;
 
-private:
+  private:
     const Device& m_device;
     VkQueryPool m_pool = VK_NULL_HANDLE;
     uint32_t m_capacity = 0;

@@ -8,9 +8,9 @@
 #include "engine/io/image.h"
 #include "engine/io/metrics.h"
 #include "engine/io/tone_map.h"
-#include "shared/clustering.h"
 #include "engine/scene/scenegen.h"
 #include "gpu_test_support.h"
+#include "shared/clustering.h"
 
 #include <gtest/gtest.h>
 
@@ -32,7 +32,9 @@ agaa::RenderRequest request(const std::string& method, uint32_t n, uint32_t c, u
 }
 
 // sRGB-encoded display image: what people see and what the error metrics compare.
-eng::io::ImageF encoded(const eng::io::ImageF& display) { return eng::io::srgbEncoded(display); }
+eng::io::ImageF encoded(const eng::io::ImageF& display) {
+    return eng::io::srgbEncoded(display);
+}
 
 struct ClusterCase {
     const char* scene;
@@ -42,8 +44,9 @@ struct ClusterCase {
 // Issue 3: the GPU metadata equals the CPU's, computed from the same read-back samples.
 TEST(AgaaClusteringGpu, MetadataMatchesTheCpuReferenceBitForBit) {
     auto device = agaa::test::makeValidatedDevice();
-    const ClusterCase cases[] = {{"furball", 4, 2}, {"furball", 8, 2}, {"railings", 8, 4}, {"foliage", 16, 2},
-                                 {"plane", 32, 3},  {"furball", 32, 3}, {"foliage", 8, 4}, {"railings", 16, 2}};
+    const ClusterCase cases[] = {{"furball", 4, 2},  {"furball", 8, 2},  {"railings", 8, 4},
+                                 {"foliage", 16, 2}, {"plane", 32, 3},   {"furball", 32, 3},
+                                 {"foliage", 8, 4},  {"railings", 16, 2}};
     const uint32_t size = 48;
     const uint32_t pixels = size * size;
     std::string loaded;
@@ -57,11 +60,14 @@ TEST(AgaaClusteringGpu, MetadataMatchesTheCpuReferenceBitForBit) {
             loaded = k.scene;
         }
         uint32_t words = shared::metadataWords(k.n, k.c);
-        vk::Buffer samples = vk::createBuffer(*device, VkDeviceSize(pixels) * k.n * 8, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
-                                              vk::MemoryUse::Readback, "test.samples");
-        vk::Buffer metadata = vk::createBuffer(*device, std::max<VkDeviceSize>(4, VkDeviceSize(pixels) * words * 4),
-                                               VK_BUFFER_USAGE_TRANSFER_DST_BIT, vk::MemoryUse::Readback, "test.metadata");
-        vk::Buffer counts = eng::frame::createReadbackBuffer(*device, size, size, VK_FORMAT_R8_UINT, "test.counts");
+        vk::Buffer samples =
+            vk::createBuffer(*device, VkDeviceSize(pixels) * k.n * 8, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+                             vk::MemoryUse::Readback, "test.samples");
+        vk::Buffer metadata =
+            vk::createBuffer(*device, std::max<VkDeviceSize>(4, VkDeviceSize(pixels) * words * 4),
+                             VK_BUFFER_USAGE_TRANSFER_DST_BIT, vk::MemoryUse::Readback, "test.metadata");
+        vk::Buffer counts =
+            eng::frame::createReadbackBuffer(*device, size, size, VK_FORMAT_R8_UINT, "test.counts");
         shared::FrameConstants frame{};
         shared::AgaaConstants constants{};
         agaa::RenderRequest r = request("agaa", k.n, k.c, size);
@@ -69,7 +75,8 @@ TEST(AgaaClusteringGpu, MetadataMatchesTheCpuReferenceBitForBit) {
         r.extraPasses = [&](eng::rg::Graph& graph, agaa::Technique& tech, const agaa::FrameInputs& in) {
             auto& aggregate = dynamic_cast<agaa::AggregateAA&>(tech);
             aggregate.addSampleReadback(graph, in, samples);
-            eng::frame::addBufferReadbackPass(graph, aggregate.resources().metadata, metadata, "test.metadata");
+            eng::frame::addBufferReadbackPass(graph, aggregate.resources().metadata, metadata,
+                                              "test.metadata");
             eng::frame::addReadbackPass(graph, aggregate.resources().aggregateCount, counts, "test.counts");
             frame = *in.constants;
             constants = aggregate.constants();
@@ -92,10 +99,12 @@ TEST(AgaaClusteringGpu, MetadataMatchesTheCpuReferenceBitForBit) {
         for (uint32_t p = 0; p < pixels; ++p) {
             countMismatches += gpuCounts[p] != cpu.counts[p];
             multi += cpu.counts[p] > 1;
-            for (uint32_t w = 0; w < words; ++w) wordMismatches += gpuWords[p * words + w] != cpu.metadata[p * words + w];
+            for (uint32_t w = 0; w < words; ++w)
+                wordMismatches += gpuWords[p * words + w] != cpu.metadata[p * words + w];
         }
         EXPECT_EQ(wordMismatches, 0u) << k.scene << " n=" << k.n << " c=" << k.c << ": metadata words differ";
-        EXPECT_EQ(countMismatches, 0u) << k.scene << " n=" << k.n << " c=" << k.c << ": aggregate counts differ";
+        EXPECT_EQ(countMismatches, 0u)
+            << k.scene << " n=" << k.n << " c=" << k.c << ": aggregate counts differ";
         if (std::string(k.scene) != "plane") {
             EXPECT_GT(multi, 0u) << k.scene << ": the comparison must include pixels with several aggregates";
         }
@@ -122,21 +131,25 @@ TEST(AgaaGpu, AccumulationMatchesACpuReplayOfTheSameFragments) {
         agaa::FrameRenderer renderer(*device, scene);
         const uint32_t size = 64, window = 16, capacity = 400000;
         const uint32_t words = shared::metadataWords(k.n, k.c);
-        vk::Buffer records = vk::createBuffer(*device, 8 + VkDeviceSize(capacity) * 48,
-                                              VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-                                              vk::MemoryUse::Readback, "test.records");
+        vk::Buffer records =
+            vk::createBuffer(*device, 8 + VkDeviceSize(capacity) * 48,
+                             VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                             vk::MemoryUse::Readback, "test.records");
         static_cast<uint32_t*>(records.mapped)[1] = capacity;
-        vk::Buffer ag = vk::createBuffer(*device, VkDeviceSize(size) * size * k.c * shared::kAggregateWords * 4,
-                                         VK_BUFFER_USAGE_TRANSFER_DST_BIT, vk::MemoryUse::Readback, "test.ag");
-        vk::Buffer metadata = vk::createBuffer(*device, std::max<VkDeviceSize>(4, VkDeviceSize(size) * size * words * 4),
-                                               VK_BUFFER_USAGE_TRANSFER_DST_BIT, vk::MemoryUse::Readback, "test.meta");
+        vk::Buffer ag =
+            vk::createBuffer(*device, VkDeviceSize(size) * size * k.c * shared::kAggregateWords * 4,
+                             VK_BUFFER_USAGE_TRANSFER_DST_BIT, vk::MemoryUse::Readback, "test.ag");
+        vk::Buffer metadata =
+            vk::createBuffer(*device, std::max<VkDeviceSize>(4, VkDeviceSize(size) * size * words * 4),
+                             VK_BUFFER_USAGE_TRANSFER_DST_BIT, vk::MemoryUse::Readback, "test.meta");
         agaa::RenderRequest r = request("agaa", k.n, k.c, size);
         auto& technique = dynamic_cast<agaa::AggregateAA&>(renderer.technique(r));
         technique.setFragmentRecordTarget(&records);
         r.extraPasses = [&](eng::rg::Graph& graph, agaa::Technique& tech, const agaa::FrameInputs&) {
             auto& aggregate = dynamic_cast<agaa::AggregateAA&>(tech);
             eng::frame::addBufferReadbackPass(graph, aggregate.resources().agBuffer, ag, "test.ag");
-            eng::frame::addBufferReadbackPass(graph, aggregate.resources().metadata, metadata, "test.metadata");
+            eng::frame::addBufferReadbackPass(graph, aggregate.resources().metadata, metadata,
+                                              "test.metadata");
         };
         renderer.render(r);
         const auto* rec = static_cast<const uint32_t*>(records.mapped);
@@ -177,8 +190,8 @@ TEST(AgaaGpu, AccumulationMatchesACpuReplayOfTheSameFragments) {
                         mismatches += gpu[i] != uint32_t(cpu[i]);
                         ++compared;
                     }
-        std::printf("[ measured ] %s n=%u c=%u: %u fragments replayed, %u AG-buffer words compared\n", k.scene, k.n,
-                    k.c, count, compared);
+        std::printf("[ measured ] %s n=%u c=%u: %u fragments replayed, %u AG-buffer words compared\n",
+                    k.scene, k.n, k.c, count, compared);
         EXPECT_EQ(mismatches, 0u) << k.scene << ": the AG-buffer differs from the CPU accumulation";
         renderer.technique(r); // keep the technique alive until the buffers are released
         vkDeviceWaitIdle(device->device());
@@ -204,10 +217,12 @@ TEST(AgaaGpu, PlaneEqualsTheReference) {
             if (ref.shadingEvents[p] == 0) continue; // sky only
             ++covered;
             for (int ch = 0; ch < 3; ++ch)
-                worst = std::max(worst, double(std::abs(ag.display.rgba[p * 4 + ch] - ref.display.rgba[p * 4 + ch])));
+                worst = std::max(
+                    worst, double(std::abs(ag.display.rgba[p * 4 + ch] - ref.display.rgba[p * 4 + ch])));
         }
         EXPECT_GT(covered, 64u * 64u / 2) << "the plane covers the frame";
-        EXPECT_LE(worst, 1e-3) << "n=" << n << " c=" << c << ": AGAA differs from per-sample shading on a plane";
+        EXPECT_LE(worst, 1e-3) << "n=" << n << " c=" << c
+                               << ": AGAA differs from per-sample shading on a plane";
         EXPECT_EQ(ag.shadingEventsMax, 1u) << "a flat pixel is one aggregate";
     }
     agaa::test::expectNoValidationErrors(*device);
@@ -224,7 +239,8 @@ TEST(AgaaGpu, ErrorBelowHalfOfNoAaAndFallsWithMoreAggregates) {
         eng::io::ImageF ref = encoded(refFrame.display);
         auto meanRadiance = [](const eng::io::ImageF& img) {
             double sum = 0.0;
-            for (size_t i = 0; i < img.rgba.size(); i += 4) sum += (img.rgba[i] + img.rgba[i + 1] + img.rgba[i + 2]) / 3.0;
+            for (size_t i = 0; i < img.rgba.size(); i += 4)
+                sum += (img.rgba[i] + img.rgba[i + 1] + img.rgba[i + 2]) / 3.0;
             return sum / double(img.rgba.size() / 4);
         };
         double meanRef = meanRadiance(refFrame.hdr), meanAgaa2 = 0.0;
@@ -251,9 +267,10 @@ TEST(AgaaGpu, ErrorBelowHalfOfNoAaAndFallsWithMoreAggregates) {
             EXPECT_LT(error[2], noaa) << name << ": AGAA (8, 2) must still beat no-AA on the display image";
             double linearNoaa = eng::io::rmse(renderer.render(request("noaa", 1, 1, size)).hdr, refFrame.hdr);
             double linearAgaa = eng::io::rmse(renderer.render(request("agaa", 8, 2, size)).hdr, refFrame.hdr);
-            std::printf("[ measured ] metal linear-radiance RMSE: noaa %.4f, agaa c=2 %.4f (ratio %.3f)\n", linearNoaa,
-                        linearAgaa, linearAgaa / linearNoaa);
-            EXPECT_LT(linearAgaa, 0.5 * linearNoaa) << "metal: in linear radiance AGAA (8, 2) halves no-AA's error";
+            std::printf("[ measured ] metal linear-radiance RMSE: noaa %.4f, agaa c=2 %.4f (ratio %.3f)\n",
+                        linearNoaa, linearAgaa, linearAgaa / linearNoaa);
+            EXPECT_LT(linearAgaa, 0.5 * linearNoaa)
+                << "metal: in linear radiance AGAA (8, 2) halves no-AA's error";
         } else {
             EXPECT_LT(error[2], 0.5 * noaa) << name << ": AGAA (8, 2) must halve no-AA's error";
         }
@@ -279,8 +296,9 @@ TEST(AgaaGpu, PixelCentrePositionShortcutAgainstTheFullVersion) {
         centre.settings.pixelCentrePosition = true;
         double fullError = eng::io::rmse(encoded(renderer.render(full).display), ref);
         double centreError = eng::io::rmse(encoded(renderer.render(centre).display), ref);
-        std::printf("[ measured ] %-9s AGAA (8,2) RMSE vs reference: sample-mean position %.5f, pixel-centre %.5f\n",
-                    name, fullError, centreError);
+        std::printf(
+            "[ measured ] %-9s AGAA (8,2) RMSE vs reference: sample-mean position %.5f, pixel-centre %.5f\n",
+            name, fullError, centreError);
         EXPECT_LT(fullError, 0.5 * noaa) << name;
         EXPECT_LT(centreError, 0.5 * noaa) << name;
     }
@@ -311,8 +329,8 @@ TEST(AgaaGpu, MemoryIsSplitAndBelowTheReference) {
                  ag.bytesPerPixelSplit["metadata"];
     EXPECT_DOUBLE_EQ(sum, ag.bytesPerPixel) << "the split adds up to the total";
     EXPECT_LT(ag.bytesPerPixel, ref.bytesPerPixel) << "AGAA stores less than a per-sample G-buffer";
-    std::printf("[ measured ] bytes/pixel at n=8: agaa c=2 %.1f, reference %.1f (ratio %.3f)\n", ag.bytesPerPixel,
-                ref.bytesPerPixel, ag.bytesPerPixel / ref.bytesPerPixel);
+    std::printf("[ measured ] bytes/pixel at n=8: agaa c=2 %.1f, reference %.1f (ratio %.3f)\n",
+                ag.bytesPerPixel, ref.bytesPerPixel, ag.bytesPerPixel / ref.bytesPerPixel);
     agaa::test::expectNoValidationErrors(*device);
 }
 

@@ -26,10 +26,12 @@ TEST(Clustering, OnePlaneIsOneAggregate) {
         // A plane facing the camera 0.5 m away: a 64-pixel view puts the pixel's samples at most
         // 6 mm apart, (6 mm / k)^2 = 0.004 < t, so one seed. (Pixel footprints beyond sqrt(t) k =
         // 2.2 cm split even flat pixels: see agaa/aggregate/README.md on choosing t.)
-        for (uint32_t s = 0; s < n; ++s) p.depth[s] = depthAt(0.5f, k.frame);
+        for (uint32_t s = 0; s < n; ++s)
+            p.depth[s] = depthAt(0.5f, k.frame);
         auto r = agaa::clusterPixel(31, 31, p, k.frame, k.agaa);
         EXPECT_EQ(r.count, 1u) << "n=" << n << ": a flat pixel is lit once";
-        for (uint32_t s = 0; s < n; ++s) EXPECT_EQ(r.ids[s], 0u);
+        for (uint32_t s = 0; s < n; ++s)
+            EXPECT_EQ(r.ids[s], 0u);
     }
 }
 
@@ -53,13 +55,16 @@ TEST(Clustering, TwoPlanesAtNinetyDegreesSplitAlongTheEdge) {
                 sameAsFirstLeft = r.ids[o] == r.ids[s];
                 if (!sameAsFirstLeft) break;
             }
-            EXPECT_TRUE(sameAsFirstLeft) << "n=" << n << " sample " << s << ": one side split across aggregates";
+            EXPECT_TRUE(sameAsFirstLeft)
+                << "n=" << n << " sample " << s << ": one side split across aggregates";
         }
         // And the two sides differ.
         uint32_t leftId = 99, rightId = 99;
         for (uint32_t s = 0; s < n; ++s) {
-            if (k.frame.samplePositions[s].x < 0.5f) leftId = r.ids[s];
-            else rightId = r.ids[s];
+            if (k.frame.samplePositions[s].x < 0.5f)
+                leftId = r.ids[s];
+            else
+                rightId = r.ids[s];
         }
         EXPECT_NE(leftId, rightId) << "n=" << n;
     }
@@ -76,7 +81,8 @@ TEST(Clustering, SkyOnlyPixelHasNoAggregate) {
 TEST(Clustering, SkySamplesAreExcludedFromTheAggregates) {
     auto k = kernelConstants(8, 2);
     PixelSamples p;
-    for (uint32_t s = 0; s < 4; ++s) p.depth[s] = depthAt(1.0f, k.frame); // half covered, one plane
+    for (uint32_t s = 0; s < 4; ++s)
+        p.depth[s] = depthAt(1.0f, k.frame); // half covered, one plane
     auto r = agaa::clusterPixel(10, 10, p, k.frame, k.agaa);
     EXPECT_EQ(r.count, 1u) << "sky samples must not create a second aggregate";
 }
@@ -85,20 +91,24 @@ TEST(Clustering, ThresholdStopsSeedsOnNearlyEqualSamples) {
     auto k = kernelConstants(8, 4);
     PixelSamples p;
     // Two planes 1 mm apart in depth: within t of each other, so one aggregate.
-    for (uint32_t s = 0; s < 8; ++s) p.depth[s] = depthAt(s < 4 ? 0.5f : 0.501f, k.frame);
+    for (uint32_t s = 0; s < 8; ++s)
+        p.depth[s] = depthAt(s < 4 ? 0.5f : 0.501f, k.frame);
     EXPECT_EQ(agaa::clusterPixel(31, 31, p, k.frame, k.agaa).count, 1u);
     // 30 cm apart (d = 9 >> t): two.
-    for (uint32_t s = 0; s < 8; ++s) p.depth[s] = depthAt(s < 4 ? 0.5f : 0.8f, k.frame);
+    for (uint32_t s = 0; s < 8; ++s)
+        p.depth[s] = depthAt(s < 4 ? 0.5f : 0.8f, k.frame);
     EXPECT_EQ(agaa::clusterPixel(31, 31, p, k.frame, k.agaa).count, 2u);
 }
 
 TEST(Clustering, FourSeparateSurfacesGiveFourAggregatesWithCFour) {
     auto k = kernelConstants(16, 4);
     PixelSamples p;
-    for (uint32_t s = 0; s < 16; ++s) p.depth[s] = depthAt(1.0f + 0.5f * float(s % 4), k.frame);
+    for (uint32_t s = 0; s < 16; ++s)
+        p.depth[s] = depthAt(1.0f + 0.5f * float(s % 4), k.frame);
     auto r = agaa::clusterPixel(31, 31, p, k.frame, k.agaa);
     EXPECT_EQ(r.count, 4u);
-    for (uint32_t s = 4; s < 16; ++s) EXPECT_EQ(r.ids[s], r.ids[s % 4]) << "same depth, same aggregate";
+    for (uint32_t s = 4; s < 16; ++s)
+        EXPECT_EQ(r.ids[s], r.ids[s % 4]) << "same depth, same aggregate";
 }
 
 TEST(MetadataPacking, RoundTripForEveryRateAndAggregateCount) {
@@ -110,13 +120,15 @@ TEST(MetadataPacking, RoundTripForEveryRateAndAggregateCount) {
             EXPECT_EQ(shared::metadataWords(n, c), (n * b + 31) / 32);
             for (int trial = 0; trial < 50; ++trial) {
                 uint32_t ids[shared::kMaxSamples] = {};
-                for (uint32_t s = 0; s < n; ++s) ids[s] = rng() % c;
+                for (uint32_t s = 0; s < n; ++s)
+                    ids[s] = rng() % c;
                 uint32_t words[4] = {};
                 for (uint32_t w = 0; w < shared::metadataWords(n, c); ++w)
                     words[w] = shared::packMetadataWord(w, n, c, ids);
                 for (uint32_t s = 0; s < n; ++s) {
                     uint32_t word = b == 0 ? 0u : words[(s * b) / 32];
-                    ASSERT_EQ(shared::unpackMetadata(word, s, c), ids[s]) << "n=" << n << " c=" << c << " s=" << s;
+                    ASSERT_EQ(shared::unpackMetadata(word, s, c), ids[s])
+                        << "n=" << n << " c=" << c << " s=" << s;
                 }
                 // Figure 5: nothing but the ids in the used bits, zeros above n * b.
                 if (b > 0 && n * b < 32) {

@@ -49,7 +49,8 @@ TEST(FixedPoint, MeanRoundTripWithinHalfAStep) {
             // Half a step (1/scale in [-1, 1]) plus fp32 rounding of v * scale near 2^21 (ulp 0.25 steps).
             EXPECT_NEAR(meanSigned(sum, k, kNormalScale), x, 1.25 / kNormalScale) << "k=" << k << " x=" << x;
             float u = 0.5f * (x + 1.0f);
-            EXPECT_NEAR(meanUnit(k * quantizeUnit(u, kUnormScale), k, kUnormScale), u, 0.5 / kUnormScale + 1e-6);
+            EXPECT_NEAR(meanUnit(k * quantizeUnit(u, kUnormScale), k, kUnormScale), u,
+                        0.5 / kUnormScale + 1e-6);
         }
 }
 
@@ -64,7 +65,8 @@ TEST(Toksvig, SingleSampleRoughnessRoundTrips) {
         // Through the 21-bit quantisation the aggregate would store.
         float stored = meanSigned(quantizeSigned(len, kNormalScale), 1, kNormalScale);
         float back = filteredAlpha(stored, smax);
-        EXPECT_NEAR(std::sqrt(back), roughness, 0.02f) << "roughness " << roughness << " must survive the AG-buffer";
+        EXPECT_NEAR(std::sqrt(back), roughness, 0.02f)
+            << "roughness " << roughness << " must survive the AG-buffer";
     }
 }
 
@@ -80,8 +82,10 @@ TEST(Toksvig, GuardsAtTheEdges) {
     float roughest = toksvigLength(1.0f, smax, alphaMin, alphaMax);
     EXPECT_GT(roughest, 0.3f) << "a fully rough sample must still contribute its normal's direction";
     EXPECT_NEAR(filteredAlpha(roughest, smax), alphaMax, 1e-4f);
-    EXPECT_FLOAT_EQ(toksvigLength(std::nanf(""), smax, alphaMin, alphaMax), 1.0f) << "NaN roughness -> alpha_min";
-    EXPECT_FLOAT_EQ(filteredAlpha(0.0f, smax), 1.0f) << "|N| = 0 (cancelled normals) must give alpha 1, not NaN";
+    EXPECT_FLOAT_EQ(toksvigLength(std::nanf(""), smax, alphaMin, alphaMax), 1.0f)
+        << "NaN roughness -> alpha_min";
+    EXPECT_FLOAT_EQ(filteredAlpha(0.0f, smax), 1.0f)
+        << "|N| = 0 (cancelled normals) must give alpha 1, not NaN";
     // Quantisation can push |N| slightly above 1: clamped, finite.
     EXPECT_NEAR(filteredAlpha(1.0001f, smax), alphaMin, 1e-6f);
     EXPECT_TRUE(std::isfinite(filteredAlpha(-0.5f, smax)));

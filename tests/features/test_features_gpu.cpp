@@ -23,7 +23,9 @@ using eng::scene::Scene;
 const char* kPerSampleMethods[] = {"reference", "simple-complex", "noaa"};
 const char* kMethods[] = {"reference", "simple-complex", "noaa", "agaa"};
 
-std::string prefixOf(const std::string& method) { return method; } // pass names are "<method>.<pass>"
+std::string prefixOf(const std::string& method) {
+    return method;
+} // pass names are "<method>.<pass>"
 
 agaa::RenderResult render(agaa::FrameRenderer& renderer, const std::string& method, uint32_t n, uint32_t size,
                           bool forceAll = false) {
@@ -36,11 +38,14 @@ agaa::RenderResult render(agaa::FrameRenderer& renderer, const std::string& meth
     return renderer.render(r);
 }
 
-bool contains(const std::vector<std::string>& v, const std::string& s) { return std::find(v.begin(), v.end(), s) != v.end(); }
+bool contains(const std::vector<std::string>& v, const std::string& s) {
+    return std::find(v.begin(), v.end(), s) != v.end();
+}
 
 std::vector<std::string> executed(const agaa::RenderResult& r) {
     std::vector<std::string> names;
-    for (const auto& p : r.passes) names.push_back(p.name);
+    for (const auto& p : r.passes)
+        names.push_back(p.name);
     return names;
 }
 
@@ -52,11 +57,14 @@ std::string variantOf(const agaa::RenderResult& r, const std::string& effect) {
 
 std::string describe(const agaa::RenderResult& r) {
     std::string s = "ran:";
-    for (const std::string& p : executed(r)) s += " " + p;
+    for (const std::string& p : executed(r))
+        s += " " + p;
     s += "; culled:";
-    for (const std::string& p : r.culledPasses) s += " " + p;
+    for (const std::string& p : r.culledPasses)
+        s += " " + p;
     s += "; variants:";
-    for (const auto& v : r.variants) s += " " + v.effect + "=" + v.variant;
+    for (const auto& v : r.variants)
+        s += " " + v.effect + "=" + v.variant;
     return s;
 }
 
@@ -126,11 +134,13 @@ TEST(FeaturesGpu, ShadowedSunAddsTheShadowPassBeforeLightingAndDarkensTheWall) {
         agaa::RenderResult a = render(litRenderer, method, n, size);
         agaa::RenderResult b = render(shadowRenderer, method, n, size);
         const std::vector<std::string> ran = executed(b);
-        const std::string shadowPass = prefixOf(method) + ".shadow", lighting = prefixOf(method) + ".lighting";
+        const std::string shadowPass = prefixOf(method) + ".shadow",
+                          lighting = prefixOf(method) + ".lighting";
         ASSERT_TRUE(contains(ran, shadowPass)) << method << ": " << describe(b);
         EXPECT_LT(std::find(ran.begin(), ran.end(), shadowPass), std::find(ran.begin(), ran.end(), lighting))
             << method << ": the shadow map is rendered before lighting reads it";
-        EXPECT_EQ(variantOf(b, "shadows").rfind("shadow map x1", 0), 0u) << method << ": " << variantOf(b, "shadows");
+        EXPECT_EQ(variantOf(b, "shadows").rfind("shadow map x1", 0), 0u)
+            << method << ": " << variantOf(b, "shadows");
         // Without shadows the two wall points are lit alike; with them the shadowed one is dark
         // (the sun is the only light: nothing else reaches it).
         EXPECT_NEAR(luminance(a.display, inShadow), luminance(a.display, inLight), 0.05f) << method;
@@ -150,8 +160,10 @@ TEST(FeaturesGpu, AgaaShadowFootprintsAndTapCountsAllShadeTheOccluderScene) {
     Scene scene = occluderScene(true);
     agaa::FrameRenderer renderer(*device, scene);
     const uint32_t size = 64;
-    const glm::ivec2 inShadow = pixelOf({0.5f, -1.0f, -10.0f}, size), inLight = pixelOf({-3.0f, -3.0f, -10.0f}, size);
-    for (auto footprint : {agaa::EffectSettings::ShadowFootprint::Statistics, agaa::EffectSettings::ShadowFootprint::Samples})
+    const glm::ivec2 inShadow = pixelOf({0.5f, -1.0f, -10.0f}, size),
+                     inLight = pixelOf({-3.0f, -3.0f, -10.0f}, size);
+    for (auto footprint :
+         {agaa::EffectSettings::ShadowFootprint::Statistics, agaa::EffectSettings::ShadowFootprint::Samples})
         for (uint32_t taps = 1; taps <= 4; ++taps) {
             agaa::RenderRequest r;
             r.method = "agaa";
@@ -160,7 +172,8 @@ TEST(FeaturesGpu, AgaaShadowFootprintsAndTapCountsAllShadeTheOccluderScene) {
             r.settings.effects.shadowFootprint = footprint;
             r.view.width = r.view.height = size;
             agaa::RenderResult out = renderer.render(r);
-            const std::string what = "footprint " + std::to_string(uint32_t(footprint)) + ", taps " + std::to_string(taps);
+            const std::string what =
+                "footprint " + std::to_string(uint32_t(footprint)) + ", taps " + std::to_string(taps);
             EXPECT_GT(luminance(out.display, inLight), 0.1f) << what;
             EXPECT_LT(luminance(out.display, inShadow), 0.1f * luminance(out.display, inLight)) << what;
             EXPECT_TRUE(eng::io::allFinite(out.display)) << what;
@@ -201,14 +214,16 @@ TEST(FeaturesGpu, MaskedMaterialsUseAlphaToCoverageWithMsaaAndDiscardAtOneSample
     eng::scene::Texture t{"halfAlpha", 16, 16, true, {}};
     for (uint32_t y = 0; y < 16; ++y)
         for (uint32_t x = 0; x < 16; ++x)
-            for (uint8_t v : {uint8_t(255), uint8_t(255), uint8_t(255), uint8_t(x < 8 ? 0 : 255)}) t.rgba8.push_back(v);
+            for (uint8_t v : {uint8_t(255), uint8_t(255), uint8_t(255), uint8_t(x < 8 ? 0 : 255)})
+                t.rgba8.push_back(v);
     scene.textures.push_back(t);
     agaa::test::addRectangle(scene, {-6, -6}, {6, 6}, -10.0f, 0);
     agaa::test::addRectangle(scene, {-2, -2}, {2, 2}, -6.0f, 1);
     // uv across the quad: u = 0 on the left, 1 on the right.
     const size_t quad = scene.vertices.size() - 4;
     const glm::vec2 uvs[4] = {{0, 1}, {1, 1}, {1, 0}, {0, 0}};
-    for (int i = 0; i < 4; ++i) scene.vertices[quad + i].uv = uvs[i];
+    for (int i = 0; i < 4; ++i)
+        scene.vertices[quad + i].uv = uvs[i];
     scene.bounds = {{-6, -6, -10}, {6, 6, -6}};
     agaa::FrameRenderer renderer(*device, scene);
     const uint32_t size = 64;
@@ -218,7 +233,8 @@ TEST(FeaturesGpu, MaskedMaterialsUseAlphaToCoverageWithMsaaAndDiscardAtOneSample
         agaa::RenderResult r = render(renderer, method, n, size);
         EXPECT_EQ(variantOf(r, "alpha"), n > 1 ? "alpha-to-coverage" : "discard") << method;
         const float bright = luminance(r.display, right), dark = luminance(r.display, left);
-        EXPECT_GT(bright, 4.0f * dark) << method << ": the opaque half is drawn, the transparent half shows the dark wall";
+        EXPECT_GT(bright, 4.0f * dark)
+            << method << ": the opaque half is drawn, the transparent half shows the dark wall";
         // The alpha edge (u = 0.5, x = 0) runs through pixels of one surface: only alpha-to-coverage
         // gives them partial coverage (discard keeps all samples of a pixel or none).
         uint32_t partial = 0;
@@ -228,8 +244,8 @@ TEST(FeaturesGpu, MaskedMaterialsUseAlphaToCoverageWithMsaaAndDiscardAtOneSample
         }
         if (n > 1) {
             EXPECT_GE(partial, 1u) << method << ": alpha-to-coverage anti-aliases the alpha edge";
-        }
-        else EXPECT_EQ(partial, 0u) << method << ": discard leaves a hard alpha edge";
+        } else
+            EXPECT_EQ(partial, 0u) << method << ": discard leaves a hard alpha edge";
         EXPECT_TRUE(eng::io::allFinite(r.display)) << method;
     }
     agaa::test::expectNoValidationErrors(*device);
@@ -251,7 +267,8 @@ TEST(FeaturesGpu, EmissiveIsKeptPerSampleAndMatchesTheReference) {
     const uint32_t size = 48;
     agaa::RenderResult ref = render(renderer, "reference", 8, size);
     agaa::RenderResult agg = render(renderer, "agaa", 8, size);
-    for (const agaa::RenderResult* r : {&ref, &agg}) EXPECT_EQ(variantOf(*r, "emissive"), "per-sample emissive");
+    for (const agaa::RenderResult* r : {&ref, &agg})
+        EXPECT_EQ(variantOf(*r, "emissive"), "per-sample emissive");
     const glm::ivec2 centre = pixelOf({0.0f, 0.5f, -6.0f}, size);
     EXPECT_GT(luminance(agg.display, centre), 0.8f) << "the emitter is bright";
     const double error = eng::io::rmse(encoded(agg.display), encoded(ref.display));
@@ -312,7 +329,8 @@ TEST(FeaturesGpu, ToksvigNormalMipsDimTheHighlightOfMinifiedBumps) {
         for (uint32_t y = 0; y < 64; ++y)
             for (uint32_t x = 0; x < 64; ++x) {
                 glm::vec3 n = stripes ? glm::vec3((x % 2) ? s30 : -s30, 0.0f, c30) : glm::vec3(0, 0, 1);
-                for (int c = 0; c < 3; ++c) t.rgba8.push_back(uint8_t(std::lround((n[c] * 0.5f + 0.5f) * 255.0f)));
+                for (int c = 0; c < 3; ++c)
+                    t.rgba8.push_back(uint8_t(std::lround((n[c] * 0.5f + 0.5f) * 255.0f)));
                 t.rgba8.push_back(255);
             }
         scene.textures.push_back(t);
@@ -325,7 +343,7 @@ TEST(FeaturesGpu, ToksvigNormalMipsDimTheHighlightOfMinifiedBumps) {
     }
     agaa::test::addRectangle(scene, {-6, -6}, {6, 6}, -12.0f, 0);
     agaa::test::addRectangle(scene, {-1.5f, -0.25f}, {-1.0f, 0.25f}, -10.0f, 2); // striped, left
-    agaa::test::addRectangle(scene, {1.0f, -0.25f}, {1.5f, 0.25f}, -10.0f, 1); // flat, right
+    agaa::test::addRectangle(scene, {1.0f, -0.25f}, {1.5f, 0.25f}, -10.0f, 1);   // flat, right
     for (size_t q = 4; q < scene.vertices.size(); q += 4) {
         const glm::vec2 uvs[4] = {{0, 1}, {1, 1}, {1, 0}, {0, 0}};
         for (int i = 0; i < 4; ++i) {
@@ -339,12 +357,14 @@ TEST(FeaturesGpu, ToksvigNormalMipsDimTheHighlightOfMinifiedBumps) {
     for (const char* method : {"reference", "agaa"}) {
         agaa::RenderResult r = render(renderer, method, 8, size);
         EXPECT_EQ(variantOf(r, "normal-maps"), "fetch + Toksvig roughness") << method;
-        const glm::ivec2 striped = pixelOf({-1.25f, 0.0f, -10.0f}, size), flat = pixelOf({1.25f, 0.0f, -10.0f}, size);
+        const glm::ivec2 striped = pixelOf({-1.25f, 0.0f, -10.0f}, size),
+                         flat = pixelOf({1.25f, 0.0f, -10.0f}, size);
         // Linear radiance: the tone map saturates the highlight of the flat quad.
         const float bumpy = luminance(r.hdr, striped), smooth = luminance(r.hdr, flat);
         std::printf("%s: minified striped quad radiance %.4f, flat quad %.4f\n", method, bumpy, smooth);
         // Without Toksvig the striped quad's MIP normal is the flat one: it would equal `smooth`.
-        EXPECT_GT(smooth, 2.0f) << method << ": the flat smooth metal reflects the light near its mirror direction";
+        EXPECT_GT(smooth, 2.0f) << method
+                                << ": the flat smooth metal reflects the light near its mirror direction";
         EXPECT_LT(bumpy, 0.4f * smooth) << method << ": the pre-filtered normal length raised the roughness";
         EXPECT_TRUE(eng::io::allFinite(r.display)) << method;
     }
@@ -360,7 +380,8 @@ TEST(FeaturesGpu, ShadowedFoliageErrorStaysWithinOneAndAHalfTimesTheUnshadowedEr
     auto device = agaa::test::makeValidatedDevice();
     Scene shadowed = eng::scene::loadBuiltin("foliage");
     Scene unshadowed = shadowed;
-    for (auto& light : unshadowed.lights) light.castsShadows = false;
+    for (auto& light : unshadowed.lights)
+        light.castsShadows = false;
     // AGAA_FEATURES_SIZE / AGAA_SHADOW_TAPS re-run the measurement at another size / filter
     // (agaa/common/README.md lists the numbers).
     const char* sizeEnv = std::getenv("AGAA_FEATURES_SIZE");

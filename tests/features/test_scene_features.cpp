@@ -40,7 +40,8 @@ Light light(LightType type, bool shadows, const char* name = "") {
 }
 
 const agaa::VariantChoice& variant(const std::vector<agaa::VariantChoice>& v, const std::string& effect) {
-    auto it = std::find_if(v.begin(), v.end(), [&](const agaa::VariantChoice& c) { return c.effect == effect; });
+    auto it =
+        std::find_if(v.begin(), v.end(), [&](const agaa::VariantChoice& c) { return c.effect == effect; });
     EXPECT_NE(it, v.end()) << "no variant for " << effect;
     static const agaa::VariantChoice none{};
     return it == v.end() ? none : *it;
@@ -71,13 +72,14 @@ TEST(SceneFeatures, ShadowedLightsAreDirectionalOrSpotAndCapped) {
     s.lights.push_back(light(LightType::Directional, true, "sun"));
     s.lights.push_back(light(LightType::Spot, true, "torch"));
     s.lights.push_back(light(LightType::Spot, false, "fill"));
-    for (int i = 0; i < 4; ++i) s.lights.push_back(light(LightType::Directional, true));
+    for (int i = 0; i < 4; ++i)
+        s.lights.push_back(light(LightType::Directional, true));
     const auto f = eng::scene::deriveSceneFeatures(s);
     ASSERT_EQ(f.shadowedLights.size(), eng::scene::kMaxShadowedLights);
-    EXPECT_EQ(f.shadowedLights[0], 1u); // sun
-    EXPECT_EQ(f.shadowedLights[1], 2u); // torch
+    EXPECT_EQ(f.shadowedLights[0], 1u);          // sun
+    EXPECT_EQ(f.shadowedLights[1], 2u);          // torch
     EXPECT_EQ(f.shadowedLightsIgnored, 1u + 2u); // the point light and two over the cap
-    EXPECT_TRUE(f.needsLightCulling()); // point and spot lights exist
+    EXPECT_TRUE(f.needsLightCulling());          // point and spot lights exist
     EXPECT_EQ(f.pointLights, 1u);
     EXPECT_EQ(f.spotLights, 2u);
     const auto v = agaa::effectVariants(f, s, 8, 3);
@@ -127,7 +129,8 @@ TEST(SceneFeatures, ForcingTurnsEveryEffectOn) {
     settings.forceAll = true;
     const auto f = agaa::effectiveFeatures(s, settings);
     EXPECT_TRUE(f.forced);
-    EXPECT_TRUE(f.hasShadows() && f.hasMasked() && f.hasEmissive() && f.hasNormalMaps() && f.needsLightCulling());
+    EXPECT_TRUE(f.hasShadows() && f.hasMasked() && f.hasEmissive() && f.hasNormalMaps() &&
+                f.needsLightCulling());
     // The forced specialisation switches every effect constant on.
     const std::vector<uint32_t> spec = agaa::effectSpecialization(f, 7, 8, 4);
     ASSERT_EQ(spec.size(), 7u);
@@ -187,7 +190,8 @@ TEST(ShadowFit, DirectionalLightCoversTheVisibleSceneBounds) {
         EXPECT_LE(std::abs(p.y), 1.0f + 1e-4f) << i;
     }
     // Nearer the light means smaller depth: a point moved against the light direction.
-    glm::vec4 a = m * glm::vec4(0, 0, -4, 1), b = m * glm::vec4(glm::vec3(0, 0, -4) - sun.direction * 0.5f, 1.0f);
+    glm::vec4 a = m * glm::vec4(0, 0, -4, 1),
+              b = m * glm::vec4(glm::vec3(0, 0, -4) - sun.direction * 0.5f, 1.0f);
     EXPECT_LT(b.z, a.z);
 }
 

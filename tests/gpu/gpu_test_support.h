@@ -24,7 +24,8 @@ inline std::unique_ptr<eng::vk::Device> makeValidatedDevice() {
 inline void expectNoValidationErrors(const eng::vk::Device& device) {
     EXPECT_EQ(device.validationErrors(), 0u) << [&] {
         std::string all;
-        for (const std::string& m : device.validationMessages()) all += m + "\n";
+        for (const std::string& m : device.validationMessages())
+            all += m + "\n";
         return all;
     }();
 }
@@ -50,7 +51,8 @@ inline void addRectangle(eng::scene::Scene& s, glm::vec2 lo, glm::vec2 hi, float
         s.vertices.push_back(v);
     }
     uint32_t first = uint32_t(s.indices.size());
-    for (uint32_t i : {0u, 1u, 2u, 0u, 2u, 3u}) s.indices.push_back(base + i);
+    for (uint32_t i : {0u, 1u, 2u, 0u, 2u, 3u})
+        s.indices.push_back(base + i);
     s.draws.push_back({first, 6, material});
 }
 

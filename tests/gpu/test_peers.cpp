@@ -46,8 +46,8 @@ struct ComplexStats {
 };
 
 // Over covered pixels (at least one geometry sample) inside [x0, x1) x [y0, y1).
-ComplexStats complexStats(const agaa::RenderResult& ref, const agaa::RenderResult& sc, uint32_t n, uint32_t x0 = 0,
-                          uint32_t y0 = 0, uint32_t x1 = kSize, uint32_t y1 = kSize) {
+ComplexStats complexStats(const agaa::RenderResult& ref, const agaa::RenderResult& sc, uint32_t n,
+                          uint32_t x0 = 0, uint32_t y0 = 0, uint32_t x1 = kSize, uint32_t y1 = kSize) {
     ComplexStats s;
     for (uint32_t y = y0; y < y1; ++y)
         for (uint32_t x = x0; x < x1; ++x) {
@@ -65,7 +65,7 @@ TEST(SimpleComplexGpu, MatchesTheReferenceAtTheSameRate) {
         const char* scene;
         std::vector<uint32_t> rates;
     };
-    const Case cases[] = {{"furball", {4, 8}}, {"metal", {4, 8}},  {"foliage", {4, 8}},
+    const Case cases[] = {{"furball", {4, 8}},      {"metal", {4, 8}}, {"foliage", {4, 8}},
                           {"railings", {4, 8, 16}}, {"plane", {4, 8}}, {"default", {4, 8}}};
     // With Lauritzen's classic cos 0.99 (8 degrees) railings at n = 4 measured 1.11e-3: facets of
     // the tessellated bars a few degrees apart shade differently under nearby point lights. The
@@ -77,17 +77,21 @@ TEST(SimpleComplexGpu, MatchesTheReferenceAtTheSameRate) {
         for (uint32_t n : c.rates) {
             agaa::RenderResult ref = render(renderer, "reference", n);
             agaa::RenderResult sc = render(renderer, "simple-complex", n);
-            ASSERT_TRUE(eng::io::allFinite(sc.hdr) && eng::io::allFinite(sc.display)) << c.scene << " n=" << n;
+            ASSERT_TRUE(eng::io::allFinite(sc.hdr) && eng::io::allFinite(sc.display))
+                << c.scene << " n=" << n;
             double err = eng::io::rmse(ref.display, sc.display);
-            std::printf("simple-complex vs reference, %s n=%u: display RMSE %.3g, complex fraction %.3f\n", c.scene, n,
-                        err, complexStats(ref, sc, n).fraction());
+            std::printf("simple-complex vs reference, %s n=%u: display RMSE %.3g, complex fraction %.3f\n",
+                        c.scene, n, err, complexStats(ref, sc, n).fraction());
             // Guards the resolve (weights, sky, tone map per event) and the classification:
             // a simple pixel is lit once at sample 0, which only differs from the reference
             // by the lighting's variation across the pixel.
-            EXPECT_LT(err, bound(c.scene, n)) << c.scene << " n=" << n << ": Simple/Complex departs from the reference";
+            EXPECT_LT(err, bound(c.scene, n))
+                << c.scene << " n=" << n << ": Simple/Complex departs from the reference";
             EXPECT_LE(sc.shadingEventsMax, n) << "no pixel is lit more than n times";
-            EXPECT_LE(sc.shadingEventsMean, ref.shadingEventsMean) << "Simple/Complex never shades more than per-sample";
-            // Shading events follow the definition: 1 per covered simple pixel, covered samples per complex one.
+            EXPECT_LE(sc.shadingEventsMean, ref.shadingEventsMean)
+                << "Simple/Complex never shades more than per-sample";
+            // Shading events follow the definition: 1 per covered simple pixel, covered samples per complex
+            // one.
             uint32_t wrongEvents = 0;
             for (size_t i = 0; i < sc.shadingEvents.size(); ++i) {
                 uint32_t cov = ref.shadingEvents[i], e = sc.shadingEvents[i];
@@ -110,14 +114,16 @@ TEST(SimpleComplexGpu, ComplexPixelsEqualTheReferenceAndSchedulesAgree) {
     agaa::RenderResult ref = render(renderer, "reference", n);
     agaa::RenderResult packed = render(renderer, "simple-complex", n);
     agaa::RenderResult naive = render(renderer, "simple-complex-naive", n);
-    EXPECT_EQ(packed.display.rgba, naive.display.rgba) << "per-tile packing changed a result (summation order?)";
+    EXPECT_EQ(packed.display.rgba, naive.display.rgba)
+        << "per-tile packing changed a result (summation order?)";
     EXPECT_EQ(packed.hdr.rgba, naive.hdr.rgba);
     EXPECT_EQ(packed.shadingEvents, naive.shadingEvents);
     uint32_t complex = 0, differing = 0;
     for (size_t i = 0; i < packed.shadingEvents.size(); ++i) {
         if (!complexFromEvents(ref.shadingEvents[i], packed.shadingEvents[i], n)) continue;
         ++complex;
-        for (int c = 0; c < 3; ++c) differing += packed.display.rgba[i * 4 + c] != ref.display.rgba[i * 4 + c] ? 1 : 0;
+        for (int c = 0; c < 3; ++c)
+            differing += packed.display.rgba[i * 4 + c] != ref.display.rgba[i * 4 + c] ? 1 : 0;
     }
     EXPECT_GT(complex, 50u) << "railings has many edge pixels";
     EXPECT_EQ(differing, 0u) << "a complex pixel's resolve differs from the reference's";
@@ -137,7 +143,8 @@ TEST(SimpleComplexGpu, PlaneInteriorIsSimple) {
             for (uint32_t x = 1; x + 1 < kSize; ++x) {
                 bool full = true;
                 for (int dy = -1; dy <= 1; ++dy)
-                    for (int dx = -1; dx <= 1; ++dx) full &= ref.shadingEvents[(y + dy) * kSize + (x + dx)] == n;
+                    for (int dx = -1; dx <= 1; ++dx)
+                        full &= ref.shadingEvents[(y + dy) * kSize + (x + dx)] == n;
                 if (!full) continue;
                 ++interior;
                 complex += complexFromEvents(n, sc.shadingEvents[y * kSize + x], n) ? 1 : 0;
@@ -204,16 +211,20 @@ TEST(SimpleComplexGpu, ClassificationMatchesTheCpuTwin) {
     eng::frame::ViewSettings view;
     view.width = w;
     view.height = h;
-    shared::FrameConstants constants = eng::frame::makeFrameConstants(scene, view, eng::frame::makeSamplePattern(n));
+    shared::FrameConstants constants =
+        eng::frame::makeFrameConstants(scene, view, eng::frame::makeSamplePattern(n));
     std::vector<shared::GpuLight> lights = eng::frame::makeGpuLights(scene, constants.view);
     namespace vk = eng::vk;
     vk::Buffer frameBuf = vk::createBuffer(*device, sizeof(constants), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
                                            vk::MemoryUse::Upload, "test.frame");
-    vk::Buffer lightBuf = vk::createBuffer(*device, std::max<size_t>(1, lights.size()) * sizeof(shared::GpuLight),
-                                           VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, vk::MemoryUse::Upload, "test.lights");
-    vk::Buffer exportBuf = vk::createBuffer(*device, VkDeviceSize(w) * h * n * sizeof(glm::vec4),
-                                            VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, vk::MemoryUse::Readback, "test.export");
-    vk::Buffer eventsHost = eng::frame::createReadbackBuffer(*device, w, h, VK_FORMAT_R32_UINT, "test.events");
+    vk::Buffer lightBuf =
+        vk::createBuffer(*device, std::max<size_t>(1, lights.size()) * sizeof(shared::GpuLight),
+                         VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, vk::MemoryUse::Upload, "test.lights");
+    vk::Buffer exportBuf =
+        vk::createBuffer(*device, VkDeviceSize(w) * h * n * sizeof(glm::vec4),
+                         VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, vk::MemoryUse::Readback, "test.export");
+    vk::Buffer eventsHost =
+        eng::frame::createReadbackBuffer(*device, w, h, VK_FORMAT_R32_UINT, "test.events");
     vk::writeBuffer(*device, frameBuf, std::as_bytes(std::span(&constants, 1)));
     vk::writeBuffer(*device, lightBuf, std::as_bytes(std::span(lights)));
     {
@@ -222,8 +233,10 @@ TEST(SimpleComplexGpu, ClassificationMatchesTheCpuTwin) {
         in.scene = &gpuScene;
         in.width = w;
         in.height = h;
-        in.frameConstants = graph.importBuffer("frame", {frameBuf.buffer, frameBuf.size}, std::nullopt, std::nullopt);
-        in.lights = graph.importBuffer("lights", {lightBuf.buffer, lightBuf.size}, std::nullopt, std::nullopt);
+        in.frameConstants =
+            graph.importBuffer("frame", {frameBuf.buffer, frameBuf.size}, std::nullopt, std::nullopt);
+        in.lights =
+            graph.importBuffer("lights", {lightBuf.buffer, lightBuf.size}, std::nullopt, std::nullopt);
         eng::rg::Buffer target =
             graph.importBuffer("export", {exportBuf.buffer, exportBuf.size}, std::nullopt, std::nullopt);
         agaa::SampleGBuffer g = sc.addGBuffer(graph, in);
@@ -242,17 +255,20 @@ TEST(SimpleComplexGpu, ClassificationMatchesTheCpuTwin) {
         for (uint32_t x = 0; x < w; ++x) {
             const agaa::ClassificationSample* px = samples + (size_t(y) * w + x) * n;
             uint32_t coverage = 0;
-            for (uint32_t s = 0; s < n; ++s) coverage += px[s].x > 0.0f ? 1 : 0;
+            for (uint32_t s = 0; s < n; ++s)
+                coverage += px[s].x > 0.0f ? 1 : 0;
             agaa::Classification cpu = agaa::classifyPixel(constants, px, int(x), int(y), thresholds);
             bool gpu = complexFromEvents(coverage, events[y * w + x], n);
             covered += coverage > 0 ? 1 : 0;
             complexCount += cpu.complex ? 1 : 0;
             if (cpu.complex == gpu) continue;
-            if (cpu.margin < 1e-4f) ++nearThreshold;
-            else ++mismatches;
+            if (cpu.margin < 1e-4f)
+                ++nearThreshold;
+            else
+                ++mismatches;
         }
-    std::printf("classification: %u covered, %u complex (CPU), %u disagreements within 1e-4 of a threshold\n", covered,
-                complexCount, nearThreshold);
+    std::printf("classification: %u covered, %u complex (CPU), %u disagreements within 1e-4 of a threshold\n",
+                covered, complexCount, nearThreshold);
     EXPECT_GT(complexCount, 20u) << "the scene has complex pixels to compare";
     EXPECT_LT(complexCount, covered) << "and simple ones";
     EXPECT_EQ(mismatches, 0u) << "GPU and CPU classifications disagree away from the thresholds";

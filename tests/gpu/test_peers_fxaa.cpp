@@ -40,7 +40,8 @@ TEST(FxaaGpu, FlatImageIsBitUnchanged) {
     agaa::FxaaSettings settings;
     uint32_t edges = 0;
     for (uint32_t y = 0; y < size; ++y)
-        for (uint32_t x = 0; x < size; ++x) edges += agaa::fxaaIsEdgePixel(noaa.display, int(x), int(y), settings);
+        for (uint32_t x = 0; x < size; ++x)
+            edges += agaa::fxaaIsEdgePixel(noaa.display, int(x), int(y), settings);
     ASSERT_EQ(edges, 0u) << "the test image must have no luma edge";
     EXPECT_EQ(fxaa.display.rgba, noaa.display.rgba) << "FXAA changed a pixel of an edge-free image";
     agaa::test::expectNoValidationErrors(*device);
@@ -71,7 +72,8 @@ TEST(FxaaGpu, ChangesOnlyPixelsNearLumaEdges) {
                 for (int dy = -1; dy <= 1; ++dy)
                     for (int dx = -1; dx <= 1; ++dx) {
                         int xx = int(x) + dx, yy = int(y) + dy;
-                        if (xx >= 0 && yy >= 0 && xx < int(size) && yy < int(size)) near |= edge[yy * size + xx] != 0;
+                        if (xx >= 0 && yy >= 0 && xx < int(size) && yy < int(size))
+                            near |= edge[yy * size + xx] != 0;
                     }
                 farFromEdges += near ? 0 : 1;
             }
@@ -100,13 +102,14 @@ TEST(FxaaGpu, MatchesTheCpuTwin) {
     double worst = 0.0;
     for (size_t i = 0; i < size_t(size) * size; ++i) {
         double d = 0.0;
-        for (int c = 0; c < 3; ++c) d = std::max(d, double(std::abs(cpu.rgba[i * 4 + c] - fxaa.display.rgba[i * 4 + c])));
+        for (int c = 0; c < 3; ++c)
+            d = std::max(d, double(std::abs(cpu.rgba[i * 4 + c] - fxaa.display.rgba[i * 4 + c])));
         worst = std::max(worst, d);
         off += d > 1e-5 ? 1 : 0;
         exact += d == 0.0 ? 1 : 0;
     }
-    std::printf("fxaa GPU vs CPU: %u of %u pixels bit-exact, %u beyond 1e-5, worst %.3g\n", exact, size * size, off,
-                worst);
+    std::printf("fxaa GPU vs CPU: %u of %u pixels bit-exact, %u beyond 1e-5, worst %.3g\n", exact,
+                size * size, off, worst);
     EXPECT_LE(off, size * size / 200) << "GPU FXAA departs from its CPU twin";
     EXPECT_LE(worst, 0.5) << "a blend beyond half a pixel's colour step";
     agaa::test::expectNoValidationErrors(*device);
@@ -131,11 +134,13 @@ TEST(FxaaSettingsTest, OutOfRangeSettingsAreRefused) {
     EXPECT_THROW(agaa::checkFxaaSettings(s), std::invalid_argument) << "unknown preset";
     s = {};
     s.edgeThresholdMin = 0.0f;
-    EXPECT_THROW(agaa::checkFxaaSettings(s), std::invalid_argument) << "edgeThresholdMin 0 would divide by zero";
+    EXPECT_THROW(agaa::checkFxaaSettings(s), std::invalid_argument)
+        << "edgeThresholdMin 0 would divide by zero";
     s = {};
     s.subpix = NAN;
     EXPECT_THROW(agaa::checkFxaaSettings(s), std::invalid_argument) << "NaN setting";
-    for (uint32_t p : {10u, 15u, 29u, 39u}) EXPECT_NO_THROW(agaa::fxaaPresetSteps(p)) << p;
+    for (uint32_t p : {10u, 15u, 29u, 39u})
+        EXPECT_NO_THROW(agaa::fxaaPresetSteps(p)) << p;
     EXPECT_EQ(agaa::fxaaPresetSteps(39).size(), 12u);
     EXPECT_EQ(agaa::fxaaPresetSteps(10).size(), 3u);
 }

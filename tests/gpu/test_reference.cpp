@@ -72,7 +72,8 @@ TEST(ReferenceGpu, PlaneInteriorIsInvariantToSampleCount) {
                 // Interior: this pixel and its 8 neighbours fully covered at n samples.
                 bool full = true;
                 for (int dy = -1; dy <= 1; ++dy)
-                    for (int dx = -1; dx <= 1; ++dx) full &= many.shadingEvents[(y + dy) * 64 + (x + dx)] == n;
+                    for (int dx = -1; dx <= 1; ++dx)
+                        full &= many.shadingEvents[(y + dy) * 64 + (x + dx)] == n;
                 if (!full) continue;
                 ++interior;
                 for (int c = 0; c < 3; ++c) {

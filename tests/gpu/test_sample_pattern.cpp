@@ -39,7 +39,8 @@ TEST(SamplePattern, PositionsAreDistinctInsideThePixelAndNRooks) {
 }
 
 TEST(SamplePattern, UnsupportedCountsAreRefused) {
-    for (uint32_t n : {0u, 2u, 3u, 6u, 12u, 64u}) EXPECT_THROW(makeSamplePattern(n), std::invalid_argument) << n;
+    for (uint32_t n : {0u, 2u, 3u, 6u, 12u, 64u})
+        EXPECT_THROW(makeSamplePattern(n), std::invalid_argument) << n;
 }
 
 // Renders a rectangle whose right (or bottom) edge crosses one pixel at a known
@@ -73,7 +74,8 @@ TEST(SamplePatternGpu, RasteriserCoversExactlyTheTablePositions) {
                 agaa::RenderResult out = renderer.render(r);
                 auto pattern = makeSamplePattern(n);
                 uint32_t expected = 0;
-                for (glm::vec2 q : pattern.positions) expected += (vertical ? q.x : q.y) < f ? 1u : 0u;
+                for (glm::vec2 q : pattern.positions)
+                    expected += (vertical ? q.x : q.y) < f ? 1u : 0u;
                 uint32_t pixel = vertical ? 3 * kSize + kColumn : kColumn * kSize + 3;
                 EXPECT_EQ(out.shadingEvents[pixel], expected)
                     << (vertical ? "vertical" : "horizontal") << " edge at fraction " << f << ", n=" << n;

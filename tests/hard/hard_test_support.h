@@ -12,7 +12,8 @@
 namespace agaa::hard {
 
 // Guard values of shaders/glsl/common/epsilon.glsl the bound depends on.
-inline constexpr double kMinGgxAlpha = 1.0e-3, kMaxGgxAlpha = 0.9, kMinLightDistance2 = 1.0e-4, kMaxRadiance = 6.0e4;
+inline constexpr double kMinGgxAlpha = 1.0e-3, kMaxGgxAlpha = 0.9, kMinLightDistance2 = 1.0e-4,
+                        kMaxRadiance = 6.0e4;
 
 // The brightest linear HDR value any pixel of `scene` may reach, derived from the scene:
 //  - every method resolves a pixel as sum_s w_s L_s with sample weights w_s >= 0, sum w_s <= 1
@@ -71,8 +72,8 @@ inline RangeReport checkRange(const eng::io::ImageF& img, double bound) {
         if (std::isfinite(v)) r.maxValue = std::max(r.maxValue, double(v));
         if (bad && r.first.empty()) {
             const size_t p = i / 4;
-            r.first = "pixel (" + std::to_string(p % img.width) + ", " + std::to_string(p / img.width) + ") channel " +
-                      std::to_string(i % 4) + " = " + std::to_string(v);
+            r.first = "pixel (" + std::to_string(p % img.width) + ", " + std::to_string(p / img.width) +
+                      ") channel " + std::to_string(i % 4) + " = " + std::to_string(v);
         }
     }
     return r;

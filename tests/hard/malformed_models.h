@@ -26,18 +26,26 @@ inline unsigned char* accessorBytes(tinygltf::Model& m, const std::string& name)
 inline tinygltf::Model malformedModel(Corruption c) {
     tinygltf::Model m = eng::scene::generateHardScene("hard-flat");
     const float nan = std::numeric_limits<float>::quiet_NaN(), inf = std::numeric_limits<float>::infinity();
-    const tinygltf::Accessor& normals = m.accessors.at(size_t(m.meshes[0].primitives[0].attributes.at("NORMAL")));
+    const tinygltf::Accessor& normals =
+        m.accessors.at(size_t(m.meshes[0].primitives[0].attributes.at("NORMAL")));
     switch (c) {
-    case Corruption::NanPosition: std::memcpy(accessorBytes(m, "POSITION") + 4, &nan, 4); break;
-    case Corruption::InfPosition: std::memcpy(accessorBytes(m, "POSITION"), &inf, 4); break;
+    case Corruption::NanPosition:
+        std::memcpy(accessorBytes(m, "POSITION") + 4, &nan, 4);
+        break;
+    case Corruption::InfPosition:
+        std::memcpy(accessorBytes(m, "POSITION"), &inf, 4);
+        break;
     case Corruption::IndexOutOfRange: {
         const uint32_t big = 1000000u;
         std::memcpy(accessorBytes(m, "indices") + 4, &big, 4);
         break;
     }
-    case Corruption::ZeroNormals: std::memset(accessorBytes(m, "NORMAL"), 0, normals.count * 12); break;
+    case Corruption::ZeroNormals:
+        std::memset(accessorBytes(m, "NORMAL"), 0, normals.count * 12);
+        break;
     case Corruption::NanNormals:
-        for (size_t i = 0; i < normals.count * 3; ++i) std::memcpy(accessorBytes(m, "NORMAL") + 4 * i, &nan, 4);
+        for (size_t i = 0; i < normals.count * 3; ++i)
+            std::memcpy(accessorBytes(m, "NORMAL") + 4 * i, &nan, 4);
         break;
     }
     return m;

@@ -37,20 +37,22 @@ std::string fmt(double v) {
 std::string near(const std::string& what, double got, double want, double rel = kRel, double abs = kAbs) {
     if (!std::isfinite(got)) return what + " = " + fmt(got) + " is not finite (expected " + fmt(want) + ")";
     if (std::abs(got - want) > abs + rel * std::abs(want))
-        return what + " = " + fmt(got) + ", expected " + fmt(want) + " (tolerance " + fmt(abs) + " + " + fmt(rel) +
-               " relative)";
+        return what + " = " + fmt(got) + ", expected " + fmt(want) + " (tolerance " + fmt(abs) + " + " +
+               fmt(rel) + " relative)";
     return {};
 }
 
 std::string near3(const std::string& what, glm::vec3 got, D3 want, double rel = kRel, double abs = kAbs) {
     for (int i = 0; i < 3; ++i)
-        if (std::string e = near(what + "[" + std::to_string(i) + "]", got[i], want[i], rel, abs); !e.empty()) return e;
+        if (std::string e = near(what + "[" + std::to_string(i) + "]", got[i], want[i], rel, abs); !e.empty())
+            return e;
     return {};
 }
 
 std::string finite3(const std::string& what, glm::vec3 v) {
     for (int i = 0; i < 3; ++i)
-        if (!std::isfinite(v[i])) return what + "[" + std::to_string(i) + "] = " + fmt(v[i]) + " is not finite";
+        if (!std::isfinite(v[i]))
+            return what + "[" + std::to_string(i) + "] = " + fmt(v[i]) + " is not finite";
     return {};
 }
 
@@ -66,10 +68,13 @@ double ggxD(double NoH, double alpha) {
 }
 double smith(double NoV, double NoL, double alpha) {
     double a2 = alpha * alpha;
-    double gv = NoL * std::sqrt(NoV * NoV * (1.0 - a2) + a2), gl = NoV * std::sqrt(NoL * NoL * (1.0 - a2) + a2);
+    double gv = NoL * std::sqrt(NoV * NoV * (1.0 - a2) + a2),
+           gl = NoV * std::sqrt(NoL * NoL * (1.0 - a2) + a2);
     return 0.5 / std::max(gv + gl, kMinCosine * kMinCosine);
 }
-D3 fresnel(D3 f0, double VoH) { return f0 + (1.0 - f0) * std::pow(1.0 - std::clamp(VoH, 0.0, 1.0), 5.0); }
+D3 fresnel(D3 f0, double VoH) {
+    return f0 + (1.0 - f0) * std::pow(1.0 - std::clamp(VoH, 0.0, 1.0), 5.0);
+}
 D3 brdf(D3 albedo, double metallic, D3 N, double roughness, D3 V, D3 L, D3 E) {
     double NoL = glm::dot(N, L);
     if (NoL <= 0.0) return D3(0.0);
@@ -110,7 +115,8 @@ uint32_t quantize(double v, uint32_t scale) {
 
 const double kSmax = 2.0 / (kMinGgxAlpha * kMinGgxAlpha) - 2.0;
 
-MathCase op(uint32_t o, glm::vec4 a = {}, glm::vec4 b = {}, glm::vec4 c = {}, glm::vec4 d = {}, glm::vec4 e = {}) {
+MathCase op(uint32_t o, glm::vec4 a = {}, glm::vec4 b = {}, glm::vec4 c = {}, glm::vec4 d = {},
+            glm::vec4 e = {}) {
     MathCase m;
     m.op = {o, 0u, 0u, 0u};
     m.a = a;
@@ -121,7 +127,9 @@ MathCase op(uint32_t o, glm::vec4 a = {}, glm::vec4 b = {}, glm::vec4 c = {}, gl
     return m;
 }
 
-glm::vec4 v4(D3 v, double w = 0.0) { return glm::vec4(glm::vec3(v), float(w)); }
+glm::vec4 v4(D3 v, double w = 0.0) {
+    return glm::vec4(glm::vec3(v), float(w));
+}
 
 } // namespace
 
@@ -133,35 +141,43 @@ std::vector<EdgeCase> shaderMathCases() {
     };
 
     // ---- octahedral normals (common/octahedral.glsl) ----
-    for (glm::vec3 n : {glm::vec3(0, 0, 1), glm::vec3(0, 0, -1), glm::vec3(1, 0, 0), glm::vec3(0.577350f, -0.577350f, -0.577350f),
-                        glm::vec3(0.6f, 0.0f, -0.8f)}) {
-        add("octahedral round trip (" + fmt(n.x) + "," + fmt(n.y) + "," + fmt(n.z) + ")", {}, op(kOpOctahedral, glm::vec4(n, 0)),
-            [n](const MathResult& r) { return near3("decode(encode(n))", glm::vec3(r.r1), D3(glm::normalize(n)), 0.0, 2e-6); });
+    for (glm::vec3 n : {glm::vec3(0, 0, 1), glm::vec3(0, 0, -1), glm::vec3(1, 0, 0),
+                        glm::vec3(0.577350f, -0.577350f, -0.577350f), glm::vec3(0.6f, 0.0f, -0.8f)}) {
+        add("octahedral round trip (" + fmt(n.x) + "," + fmt(n.y) + "," + fmt(n.z) + ")", {},
+            op(kOpOctahedral, glm::vec4(n, 0)), [n](const MathResult& r) {
+                return near3("decode(encode(n))", glm::vec3(r.r1), D3(glm::normalize(n)), 0.0, 2e-6);
+            });
     }
     add("octahedral encode of a zero vector", {"kMinNormalLength"}, op(kOpOctahedral, glm::vec4(0)),
         [](const MathResult& r) { return unitLength("decode(encode(0))", glm::vec3(r.r1)); });
-    add("octahedral encode of a denormal vector", {"kMinNormalLength"}, op(kOpOctahedral, glm::vec4(kDenormal, 0, 0, 0)),
+    add("octahedral encode of a denormal vector", {"kMinNormalLength"},
+        op(kOpOctahedral, glm::vec4(kDenormal, 0, 0, 0)),
         [](const MathResult& r) { return unitLength("decode(encode(1e-40 x))", glm::vec3(r.r1)); });
     add("octahedral encode of a huge vector", {}, op(kOpOctahedral, glm::vec4(3e38f, -3e38f, 3e38f, 0)),
         [](const MathResult& r) { return unitLength("decode(encode(3e38))", glm::vec3(r.r1)); });
-    for (glm::vec2 e : {glm::vec2(1, 1), glm::vec2(-1, 1), glm::vec2(0, 0), glm::vec2(1, 0), glm::vec2(-1, -1)})
+    for (glm::vec2 e :
+         {glm::vec2(1, 1), glm::vec2(-1, 1), glm::vec2(0, 0), glm::vec2(1, 0), glm::vec2(-1, -1)})
         add("octahedral decode corner (" + fmt(e.x) + "," + fmt(e.y) + ")", {"kMinNormalLength"},
-            op(kOpOctDecode, glm::vec4(e, 0, 0)), [](const MathResult& r) { return unitLength("decode", glm::vec3(r.r0)); });
+            op(kOpOctDecode, glm::vec4(e, 0, 0)),
+            [](const MathResult& r) { return unitLength("decode", glm::vec3(r.r0)); });
 
     // ---- hemisphere face normals (common/hemisphere_normal.glsl) ----
     struct Hemi {
         glm::vec3 n, v;
         const char* what;
     };
-    for (Hemi h : {Hemi{{0, 0, 1}, {0, 0, 1}, "N == V (atan(0,0))"}, Hemi{{1, 0, 0}, {0, 0, 1}, "N on the rim"},
-                   Hemi{{0, 0, -1}, {0, 0, 1}, "N behind the rim (clamped)"},
-                   Hemi{glm::normalize(glm::vec3(0.3f, -0.4f, 0.5f)), glm::normalize(glm::vec3(-0.2f, 0.1f, 1.0f)), "oblique"}}) {
-        add(std::string("hemisphere encode ") + h.what, {}, op(kOpHemisphere, glm::vec4(h.n, 0), glm::vec4(h.v, 0)),
-            [h](const MathResult& r) -> std::string {
+    for (Hemi h :
+         {Hemi{{0, 0, 1}, {0, 0, 1}, "N == V (atan(0,0))"}, Hemi{{1, 0, 0}, {0, 0, 1}, "N on the rim"},
+          Hemi{{0, 0, -1}, {0, 0, 1}, "N behind the rim (clamped)"},
+          Hemi{glm::normalize(glm::vec3(0.3f, -0.4f, 0.5f)), glm::normalize(glm::vec3(-0.2f, 0.1f, 1.0f)),
+               "oblique"}}) {
+        add(std::string("hemisphere encode ") + h.what, {},
+            op(kOpHemisphere, glm::vec4(h.n, 0), glm::vec4(h.v, 0)), [h](const MathResult& r) -> std::string {
                 double theta = std::acos(std::clamp(double(glm::dot(h.n, h.v)), 0.0, 1.0));
                 double want = std::clamp(std::round(theta * 255.0 / 1.5707963), 0.0, 255.0);
                 if (std::string e = near("theta level", r.r0.x, want, 0.0, 1.0); !e.empty()) return e;
-                if (!(r.r0.y >= 0.0f && r.r0.y <= 255.0f)) return "phi level " + fmt(r.r0.y) + " outside 0..255";
+                if (!(r.r0.y >= 0.0f && r.r0.y <= 255.0f))
+                    return "phi level " + fmt(r.r0.y) + " outside 0..255";
                 return {};
             });
     }
@@ -179,15 +195,18 @@ std::vector<EdgeCase> shaderMathCases() {
     struct SmithIn {
         float nov, nol, alpha;
     };
-    for (SmithIn s : {SmithIn{0, 0, 0}, SmithIn{0, 0, float(kMinGgxAlpha)}, SmithIn{kDenormal, kDenormal, 0.5f},
-                      SmithIn{1, 1, float(kMinGgxAlpha)}, SmithIn{float(kMinCosine), float(kMinCosine), float(kMinGgxAlpha)},
+    for (SmithIn s : {SmithIn{0, 0, 0}, SmithIn{0, 0, float(kMinGgxAlpha)},
+                      SmithIn{kDenormal, kDenormal, 0.5f}, SmithIn{1, 1, float(kMinGgxAlpha)},
+                      SmithIn{float(kMinCosine), float(kMinCosine), float(kMinGgxAlpha)},
                       SmithIn{0.5f, 0.25f, float(kMaxGgxAlpha)}})
-        add("smithVisibility NoV=" + fmt(s.nov) + " NoL=" + fmt(s.nol) + " alpha=" + fmt(s.alpha), {"kMinCosine"},
-            op(kOpSmith, glm::vec4(s.nov, s.nol, s.alpha, 0)),
+        add("smithVisibility NoV=" + fmt(s.nov) + " NoL=" + fmt(s.nol) + " alpha=" + fmt(s.alpha),
+            {"kMinCosine"}, op(kOpSmith, glm::vec4(s.nov, s.nol, s.alpha, 0)),
             [s](const MathResult& r) { return near("Vis", r.r0.x, smith(s.nov, s.nol, s.alpha), 1e-4); });
     for (float voh : {-1.0f, 0.0f, kDenormal, 1.0f, 2.0f})
         add("fresnelSchlick VoH=" + fmt(voh), {}, op(kOpFresnel, glm::vec4(0.04f, 0.5f, 1.0f, voh)),
-            [voh](const MathResult& r) { return near3("F", glm::vec3(r.r0), fresnel(D3(0.04, 0.5, 1.0), voh)); });
+            [voh](const MathResult& r) {
+                return near3("F", glm::vec3(r.r0), fresnel(D3(0.04, 0.5, 1.0), voh));
+            });
 
     // ---- the whole BRDF ----
     struct BrdfIn {
@@ -202,34 +221,78 @@ std::vector<EdgeCase> shaderMathCases() {
     const D3 grazingV = glm::normalize(D3(1, 0, 1e-5)), oblique = glm::normalize(D3(0.3, 0.2, 1.0));
     for (const BrdfIn& b : std::vector<BrdfIn>{
              {"mirror peak, roughness 0 metal", {"kMinGgxAlpha"}, {0.9, 0.9, 0.9}, 1, 0, z, z, z, 0.15},
-             {"roughness 1 dielectric", {"kMaxGgxAlpha"}, {0.5, 0.5, 0.5}, 0, 1, z, oblique, glm::normalize(D3(-0.4, 0.1, 1)), 1e-4},
+             {"roughness 1 dielectric",
+              {"kMaxGgxAlpha"},
+              {0.5, 0.5, 0.5},
+              0,
+              1,
+              z,
+              oblique,
+              glm::normalize(D3(-0.4, 0.1, 1)),
+              1e-4},
              {"grazing view N.V = 1e-5", {"kMinCosine"}, {0.8, 0.8, 0.8}, 0, 0.2, z, grazingV, oblique, 1e-3},
-             {"view exactly in the plane N.V = 0", {"kMinCosine"}, {0.8, 0.8, 0.8}, 1, 0.05, z, D3(1, 0, 0), oblique, 1e-3},
-             {"light exactly in the plane N.L = 0", {}, {0.8, 0.8, 0.8}, 0, 0.5, z, oblique, D3(0, 1, 0), 1e-4},
-             {"light grazing N.L = 1e-6", {"kMinCosine"}, {0.8, 0.8, 0.8}, 1, 0.0, z, oblique, glm::normalize(D3(1, 0, 1e-6)), 1e-3},
-             {"viewer below the horizon, V = -L (H = 0)", {"kMinNormalLength", "kMinCosine"}, {0.8, 0.8, 0.8}, 0, 0.5, z,
-              -oblique, oblique, 1e-3},
+             {"view exactly in the plane N.V = 0",
+              {"kMinCosine"},
+              {0.8, 0.8, 0.8},
+              1,
+              0.05,
+              z,
+              D3(1, 0, 0),
+              oblique,
+              1e-3},
+             {"light exactly in the plane N.L = 0",
+              {},
+              {0.8, 0.8, 0.8},
+              0,
+              0.5,
+              z,
+              oblique,
+              D3(0, 1, 0),
+              1e-4},
+             {"light grazing N.L = 1e-6",
+              {"kMinCosine"},
+              {0.8, 0.8, 0.8},
+              1,
+              0.0,
+              z,
+              oblique,
+              glm::normalize(D3(1, 0, 1e-6)),
+              1e-3},
+             {"viewer below the horizon, V = -L (H = 0)",
+              {"kMinNormalLength", "kMinCosine"},
+              {0.8, 0.8, 0.8},
+              0,
+              0.5,
+              z,
+              -oblique,
+              oblique,
+              1e-3},
          }) {
-        MathCase in = op(kOpBrdf, v4(b.albedo, b.metallic), v4(b.N, b.roughness), v4(b.V), v4(b.L), v4(D3(1.0)));
+        MathCase in =
+            op(kOpBrdf, v4(b.albedo, b.metallic), v4(b.N, b.roughness), v4(b.V), v4(b.L), v4(D3(1.0)));
         add("evaluateBrdf " + std::string(b.what), b.guards, in, [b, in](const MathResult& r) {
-            D3 want = brdf(b.albedo, b.metallic, glm::dvec3(glm::vec3(in.b)), b.roughness, glm::dvec3(glm::vec3(in.c)),
-                           glm::dvec3(glm::vec3(in.d)), D3(1.0));
+            D3 want = brdf(b.albedo, b.metallic, glm::dvec3(glm::vec3(in.b)), b.roughness,
+                           glm::dvec3(glm::vec3(in.c)), glm::dvec3(glm::vec3(in.d)), D3(1.0));
             return near3("radiance", glm::vec3(r.r0), want, b.rel, 1e-6);
         });
     }
     // The capped shading event: a roughness-0 highlight of 1e4 lux exceeds fp16 and the tone
     // curve's useful range; kMaxRadiance caps it, the tone map keeps it <= 1.
     add("shading event over the radiance cap", {"kMaxRadiance", "kMinGgxAlpha"},
-        op(kOpShadeEvent, glm::vec4(0.9f, 0.9f, 0.9f, 1.0f), glm::vec4(0, 0, 1, 0), glm::vec4(0, 0, 1, 1.0f), glm::vec4(0, 0, 1, 0),
-           glm::vec4(1e4f, 1e4f, 1e4f, 0.0f)),
+        op(kOpShadeEvent, glm::vec4(0.9f, 0.9f, 0.9f, 1.0f), glm::vec4(0, 0, 1, 0), glm::vec4(0, 0, 1, 1.0f),
+           glm::vec4(0, 0, 1, 0), glm::vec4(1e4f, 1e4f, 1e4f, 0.0f)),
         [](const MathResult& r) -> std::string {
-            if (std::string e = near3("capped radiance", glm::vec3(r.r0), D3(kMaxRadiance), 0.0, 0.0); !e.empty()) return e;
+            if (std::string e = near3("capped radiance", glm::vec3(r.r0), D3(kMaxRadiance), 0.0, 0.0);
+                !e.empty())
+                return e;
             return near3("tone-mapped", glm::vec3(r.r1), D3(aces(kMaxRadiance)), 1e-6, 1e-6);
         });
     add("shading event emissive 1e4 at exposure 1e3", {"kMaxRadiance"},
-        op(kOpShadeEvent, glm::vec4(0.0f), glm::vec4(0, 0, 1, 1), glm::vec4(0, 0, 1, 1e3f), glm::vec4(0, 0, -1, 0),
-           glm::vec4(0, 0, 0, 1e4f)),
-        [](const MathResult& r) { return near3("capped radiance", glm::vec3(r.r0), D3(kMaxRadiance), 0.0, 0.0); });
+        op(kOpShadeEvent, glm::vec4(0.0f), glm::vec4(0, 0, 1, 1), glm::vec4(0, 0, 1, 1e3f),
+           glm::vec4(0, 0, -1, 0), glm::vec4(0, 0, 0, 1e4f)),
+        [](const MathResult& r) {
+            return near3("capped radiance", glm::vec3(r.r0), D3(kMaxRadiance), 0.0, 0.0);
+        });
 
     // ---- lights (common/lights.glsl) ----
     struct LightIn {
@@ -241,16 +304,55 @@ std::vector<EdgeCase> shaderMathCases() {
     };
     const float point = 1.0f;
     std::vector<LightIn> lights = {
-        {"point light at the shaded point (d = 0)", {"kMinLightDistance2"}, {0, 0, 0, 0}, {0, 0, -1, point}, {5, 5, 5, 0}, {0, 0, 0}, {}},
-        {"point light at denormal distance", {"kMinLightDistance2"}, {kDenormal, 0, 0, 0}, {0, 0, -1, point}, {5, 5, 5, 0}, {0, 0, 0}, {}},
-        {"point light just inside the direction guard (d = 0.99e-4)", {"kMinLightDistance2"}, {0.99e-4f, 0, 0, 0}, {0, 0, -1, point},
-         {5, 5, 5, 0}, {0, 0, 0}, {}},
-        {"point light just outside the direction guard (d = 1.01e-4)", {"kMinLightDistance2"}, {1.01e-4f, 0, 0, 0}, {0, 0, -1, point},
-         {5, 5, 5, 0}, {0, 0, 0}, {}},
-        {"point light at the attenuation floor (d^2 = 1e-4)", {"kMinLightDistance2"}, {0, 0.01f, 0, 0}, {0, 0, -1, point}, {5, 5, 5, 0},
-         {0, 0, 0}, {}},
-        {"point light at 1e5 m", {}, {1e5f, 0, 0, 0}, {0, 0, -1, point}, {1e4f, 1e4f, 1e4f, 0}, {0, 0, 0}, {}},
-        {"point light exactly at its range", {}, {2, 0, 0, 2}, {0, 0, -1, point}, {1, 1, 1, 0}, {0, 0, 0}, {}},
+        {"point light at the shaded point (d = 0)",
+         {"kMinLightDistance2"},
+         {0, 0, 0, 0},
+         {0, 0, -1, point},
+         {5, 5, 5, 0},
+         {0, 0, 0},
+         {}},
+        {"point light at denormal distance",
+         {"kMinLightDistance2"},
+         {kDenormal, 0, 0, 0},
+         {0, 0, -1, point},
+         {5, 5, 5, 0},
+         {0, 0, 0},
+         {}},
+        {"point light just inside the direction guard (d = 0.99e-4)",
+         {"kMinLightDistance2"},
+         {0.99e-4f, 0, 0, 0},
+         {0, 0, -1, point},
+         {5, 5, 5, 0},
+         {0, 0, 0},
+         {}},
+        {"point light just outside the direction guard (d = 1.01e-4)",
+         {"kMinLightDistance2"},
+         {1.01e-4f, 0, 0, 0},
+         {0, 0, -1, point},
+         {5, 5, 5, 0},
+         {0, 0, 0},
+         {}},
+        {"point light at the attenuation floor (d^2 = 1e-4)",
+         {"kMinLightDistance2"},
+         {0, 0.01f, 0, 0},
+         {0, 0, -1, point},
+         {5, 5, 5, 0},
+         {0, 0, 0},
+         {}},
+        {"point light at 1e5 m",
+         {},
+         {1e5f, 0, 0, 0},
+         {0, 0, -1, point},
+         {1e4f, 1e4f, 1e4f, 0},
+         {0, 0, 0},
+         {}},
+        {"point light exactly at its range",
+         {},
+         {2, 0, 0, 2},
+         {0, 0, -1, point},
+         {1, 1, 1, 0},
+         {0, 0, 0},
+         {}},
         {"directional light", {}, {0, 0, 0, 0}, {0, -1, 0, 0}, {3, 3, 3, 0}, {1e5f, 0, 0}, {}},
     };
     // Spot with inner == outer cone: the CPU packs 1 / max(cos inner - cos outer, kMinSpotCosRange).
@@ -265,41 +367,48 @@ std::vector<EdgeCase> shaderMathCases() {
         s.lights.push_back(l);
         shared::GpuLight g = eng::frame::makeGpuLights(s, glm::mat4(1.0f))[0];
         for (glm::vec3 P : {glm::vec3(0, 0, 0), glm::vec3(0.5463f, 0, 0), glm::vec3(0.6f, 0, 0)})
-            lights.push_back({"spot with inner == outer cone", {"kMinSpotCosRange"}, g.positionRange, g.directionType, g.radiance, P,
+            lights.push_back({"spot with inner == outer cone",
+                              {"kMinSpotCosRange"},
+                              g.positionRange,
+                              g.directionType,
+                              g.radiance,
+                              P,
                               g.spot});
     }
     for (const LightIn& l : lights) {
         MathCase in = op(kOpLight, l.posRange, l.dirType, l.radiance, l.spot, glm::vec4(l.P, 0));
-        add("lightIncidence " + std::string(l.what) + " P=(" + fmt(l.P.x) + ")", l.guards, in, [l](const MathResult& r) -> std::string {
-            const D3 P(l.P), pos(glm::vec3(l.posRange));
-            D3 L(0.0), E(0.0);
-            if (uint32_t(l.dirType.w) == 0u) {
-                L = -D3(glm::vec3(l.dirType));
-                E = D3(glm::vec3(l.radiance));
-            } else {
-                D3 to = pos - P;
-                double d2 = glm::dot(to, to);
-                // The shader compares in fp32: the direction guard's boundary is kMinLightDistance2^2.
-                L = float(d2) > float(kMinLightDistance2 * kMinLightDistance2) ? to / std::sqrt(d2) : D3(0, 0, 1);
-                double att = window(d2, l.posRange.w) / std::max(d2, kMinLightDistance2);
-                double spotAbs = 0.0;
-                if (uint32_t(l.dirType.w) == 2u) {
-                    double cd = glm::dot(D3(glm::vec3(l.dirType)), -L);
-                    double s = std::clamp((cd - l.spot.x) * l.spot.y, 0.0, 1.0);
-                    // The cone's edge has slope spot.y = 1 / kMinSpotCosRange = 1e4 per unit cosine:
-                    // fp32 rounding of the cosine (4 ulp of 1 = 2.4e-7) moves s by up to 2.4e-3,
-                    // so E may differ by E0 ((s + ds)^2 - s^2). Stated, not hidden in a relative bound.
-                    double ds = l.spot.y * 2.4e-7;
-                    spotAbs = att * (2.0 * s * ds + ds * ds) * l.radiance.x;
-                    att *= s * s;
+        add("lightIncidence " + std::string(l.what) + " P=(" + fmt(l.P.x) + ")", l.guards, in,
+            [l](const MathResult& r) -> std::string {
+                const D3 P(l.P), pos(glm::vec3(l.posRange));
+                D3 L(0.0), E(0.0);
+                if (uint32_t(l.dirType.w) == 0u) {
+                    L = -D3(glm::vec3(l.dirType));
+                    E = D3(glm::vec3(l.radiance));
+                } else {
+                    D3 to = pos - P;
+                    double d2 = glm::dot(to, to);
+                    // The shader compares in fp32: the direction guard's boundary is kMinLightDistance2^2.
+                    L = float(d2) > float(kMinLightDistance2 * kMinLightDistance2) ? to / std::sqrt(d2)
+                                                                                   : D3(0, 0, 1);
+                    double att = window(d2, l.posRange.w) / std::max(d2, kMinLightDistance2);
+                    double spotAbs = 0.0;
+                    if (uint32_t(l.dirType.w) == 2u) {
+                        double cd = glm::dot(D3(glm::vec3(l.dirType)), -L);
+                        double s = std::clamp((cd - l.spot.x) * l.spot.y, 0.0, 1.0);
+                        // The cone's edge has slope spot.y = 1 / kMinSpotCosRange = 1e4 per unit cosine:
+                        // fp32 rounding of the cosine (4 ulp of 1 = 2.4e-7) moves s by up to 2.4e-3,
+                        // so E may differ by E0 ((s + ds)^2 - s^2). Stated, not hidden in a relative bound.
+                        double ds = l.spot.y * 2.4e-7;
+                        spotAbs = att * (2.0 * s * ds + ds * ds) * l.radiance.x;
+                        att *= s * s;
+                    }
+                    E = D3(glm::vec3(l.radiance)) * att;
+                    if (std::string e = near3("L", glm::vec3(r.r0), L, 1e-5, 1e-5); !e.empty()) return e;
+                    return near3("irradiance", glm::vec3(r.r1), E, 1e-4, 1e-5 + spotAbs);
                 }
-                E = D3(glm::vec3(l.radiance)) * att;
                 if (std::string e = near3("L", glm::vec3(r.r0), L, 1e-5, 1e-5); !e.empty()) return e;
-                return near3("irradiance", glm::vec3(r.r1), E, 1e-4, 1e-5 + spotAbs);
-            }
-            if (std::string e = near3("L", glm::vec3(r.r0), L, 1e-5, 1e-5); !e.empty()) return e;
-            return near3("irradiance", glm::vec3(r.r1), E, 1e-4, 1e-5);
-        });
+                return near3("irradiance", glm::vec3(r.r1), E, 1e-4, 1e-5);
+            });
     }
     for (float d2 : {0.0f, 1.0f, 4.0f, 5.0f, kInf})
         add("rangeWindow d2=" + fmt(d2), {}, op(kOpRangeWindow, glm::vec4(d2, 2.0f, 0, 0)),
@@ -309,11 +418,13 @@ std::vector<EdgeCase> shaderMathCases() {
     for (float x : {0.0f, kDenormal, 0.18f, 1.0f, 6.0e4f, 6.1e4f, 1e30f, kInf, -1.0f, -kInf})
         add("toneMapAces x=" + fmt(x), {"kMaxRadiance"}, op(kOpToneMap, glm::vec4(x, x, x, 0)),
             [x](const MathResult& r) { return near3("T(x)", glm::vec3(r.r0), D3(aces(x)), 1e-5, 1e-6); });
-    add("toneMapAces NaN", {"kMaxRadiance"}, op(kOpToneMap, glm::vec4(kNaN, 0.5f, kNaN, 0)), [](const MathResult& r) -> std::string {
-        for (int i = 0; i < 3; ++i)
-            if (!(r.r0[i] >= 0.0f && r.r0[i] <= 1.0f)) return "T(NaN)[" + std::to_string(i) + "] = " + fmt(r.r0[i]) + " not in [0, 1]";
-        return near("T(0.5)", r.r0.y, aces(0.5), 1e-5, 1e-6);
-    });
+    add("toneMapAces NaN", {"kMaxRadiance"}, op(kOpToneMap, glm::vec4(kNaN, 0.5f, kNaN, 0)),
+        [](const MathResult& r) -> std::string {
+            for (int i = 0; i < 3; ++i)
+                if (!(r.r0[i] >= 0.0f && r.r0[i] <= 1.0f))
+                    return "T(NaN)[" + std::to_string(i) + "] = " + fmt(r.r0[i]) + " not in [0, 1]";
+            return near("T(0.5)", r.r0.y, aces(0.5), 1e-5, 1e-6);
+        });
 
     // ---- Toksvig (shared/ag_buffer.h) ----
     for (float alpha : {0.0f, kDenormal, float(kMinGgxAlpha), 0.1f, float(kMaxGgxAlpha), 1.0f, 1e30f, kNaN}) {
@@ -325,36 +436,45 @@ std::vector<EdgeCase> shaderMathCases() {
             [alpha](const MathResult& r) -> std::string {
                 // NaN fails both comparisons of the clamp and takes alpha_min (length 1).
                 double a = std::isnan(alpha) ? kMinGgxAlpha : alpha;
-                if (std::string e = near("length", r.r0.x, toksvig(a, kSmax, kMinGgxAlpha, kMaxGgxAlpha), 1e-5); !e.empty()) return e;
-                if (r.r0.x < 0.3f) return "length " + fmt(r.r0.x) + " < 0.3: the sample's direction is lost in the mean";
+                if (std::string e =
+                        near("length", r.r0.x, toksvig(a, kSmax, kMinGgxAlpha, kMaxGgxAlpha), 1e-5);
+                    !e.empty())
+                    return e;
+                if (r.r0.x < 0.3f)
+                    return "length " + fmt(r.r0.x) + " < 0.3: the sample's direction is lost in the mean";
                 return {};
             });
     }
     for (float len : {0.0f, kDenormal, 1e-7f, 0.5f, 0.9999999f, 1.0f, 1.5f, kNaN})
         add("filteredAlpha |N|=" + fmt(len), {}, op(kOpFiltered, glm::vec4(len, float(kSmax), 0, 0)),
-            [len](const MathResult& r) { return near("alpha'", r.r0.x, filtered(std::isnan(len) ? 0.0 : len, kSmax), 1e-5); });
+            [len](const MathResult& r) {
+                return near("alpha'", r.r0.x, filtered(std::isnan(len) ? 0.0 : len, kSmax), 1e-5);
+            });
 
     // ---- fixed point (shared/ag_buffer.h) ----
     for (float v : {0.0f, -0.0f, kDenormal, 0.5f, 1.0f, 1.0000001f, -1.0f, 1e30f, kInf, kNaN}) {
         MathCase in = op(kOpQuantize, glm::vec4(v, 0, 0, 0));
         in.op.y = 2097151u; // kNormalScale
         add("quantizeUnit/Signed v=" + fmt(v), {}, in, [v](const MathResult& r) -> std::string {
-            if (std::string e = near("quantizeUnit", r.r0.x, quantize(v, 2097151u), 0.0, 0.0); !e.empty()) return e;
+            if (std::string e = near("quantizeUnit", r.r0.x, quantize(v, 2097151u), 0.0, 0.0); !e.empty())
+                return e;
             return near("quantizeSigned", r.r0.y, quantize(double(v) * 0.5 + 0.5, 2097151u), 0.0, 0.0);
         });
     }
     struct MeanIn {
         uint32_t sum, k, scale;
     };
-    for (MeanIn m : {MeanIn{0, 1, 2097151u}, MeanIn{2097151u, 1, 2097151u}, MeanIn{32u * 2097151u, 32, 2097151u},
-                     MeanIn{32u * 1048576u, 32, 2097151u}, MeanIn{65504u, 32, 2047u}}) {
+    for (MeanIn m :
+         {MeanIn{0, 1, 2097151u}, MeanIn{2097151u, 1, 2097151u}, MeanIn{32u * 2097151u, 32, 2097151u},
+          MeanIn{32u * 1048576u, 32, 2097151u}, MeanIn{65504u, 32, 2047u}}) {
         MathCase in = op(kOpMean);
         in.op = {kOpMean, m.sum, m.k, m.scale};
-        add("meanUnit/Signed sum=" + std::to_string(m.sum) + " k=" + std::to_string(m.k), {}, in, [m](const MathResult& r) -> std::string {
-            double u = double(m.sum) / (double(m.k) * m.scale);
-            if (std::string e = near("meanUnit", r.r0.x, u, 1e-6, 0.0); !e.empty()) return e;
-            return near("meanSigned", r.r0.y, u * 2.0 - 1.0, 0.0, 2e-7);
-        });
+        add("meanUnit/Signed sum=" + std::to_string(m.sum) + " k=" + std::to_string(m.k), {}, in,
+            [m](const MathResult& r) -> std::string {
+                double u = double(m.sum) / (double(m.k) * m.scale);
+                if (std::string e = near("meanUnit", r.r0.x, u, 1e-6, 0.0); !e.empty()) return e;
+                return near("meanSigned", r.r0.y, u * 2.0 - 1.0, 0.0, 2e-7);
+            });
     }
 
     // ---- material normals (common/material.glsl) ----
@@ -374,8 +494,8 @@ std::vector<EdgeCase> shaderMathCases() {
              {"normal map with a zero tangent", {0, 0, 0.5f}, {0, 0, 0, -1}, true, true, {0, 0, 1}},
              {"short normal renormalised", {0, 0.3f, 0.4f}, {1, 0, 0, 1}, true, true, {0, 0.6, 0.8}},
          }) {
-        MathCase in = op(kOpMaterial, glm::vec4(0.5f, 0.5f, 0.5f, 1), glm::vec4(0), glm::vec4(0.5f, 0.7f, 1.0f, 0),
-                         glm::vec4(m.n, 0), m.tangent);
+        MathCase in = op(kOpMaterial, glm::vec4(0.5f, 0.5f, 0.5f, 1), glm::vec4(0),
+                         glm::vec4(0.5f, 0.7f, 1.0f, 0), glm::vec4(m.n, 0), m.tangent);
         in.op.y = m.normalMap ? 0u : uint32_t(-1);
         in.op.z = m.front ? 1u : 0u;
         add(std::string("evaluateMaterial ") + m.what, {"kMinNormalLength"}, in,
@@ -386,26 +506,30 @@ std::vector<EdgeCase> shaderMathCases() {
     struct DepthIn {
         float d, n, f;
     };
-    for (DepthIn d : {DepthIn{0, 0.1f, 10}, DepthIn{1, 0.1f, 10}, DepthIn{kDenormal, 1e-4f, 1e7f}, DepthIn{1, 1e-4f, 1e7f},
-                      DepthIn{0.5f, 1e-4f, 1e7f}})
-        add("viewDistanceFromDepth d=" + fmt(d.d) + " near=" + fmt(d.n) + " far=" + fmt(d.f), {}, op(kOpDepth, glm::vec4(d.d, d.n, d.f, 0)),
-            [d](const MathResult& r) {
+    for (DepthIn d : {DepthIn{0, 0.1f, 10}, DepthIn{1, 0.1f, 10}, DepthIn{kDenormal, 1e-4f, 1e7f},
+                      DepthIn{1, 1e-4f, 1e7f}, DepthIn{0.5f, 1e-4f, 1e7f}})
+        add("viewDistanceFromDepth d=" + fmt(d.d) + " near=" + fmt(d.n) + " far=" + fmt(d.f), {},
+            op(kOpDepth, glm::vec4(d.d, d.n, d.f, 0)), [d](const MathResult& r) {
                 double t = double(d.n) * d.f / (double(d.d) * (double(d.f) - d.n) + d.n);
                 return near("t", r.r0.x, t, 1e-5);
             });
     {
-        const glm::vec4 extent(32, 32, 1.0f / 32, 1.0f / 32), proj(1.0f / std::tan(0.35f), 1.0f / std::tan(0.35f), 0, 0);
+        const glm::vec4 extent(32, 32, 1.0f / 32, 1.0f / 32),
+            proj(1.0f / std::tan(0.35f), 1.0f / std::tan(0.35f), 0, 0);
         struct Tol {
             const char* what;
             glm::vec3 n0;
             std::vector<std::string> guards;
         };
-        for (const Tol& t : std::vector<Tol>{{"face-on plane (zero slope)", {0, 0, 1}, {"kDepthCompareRelative"}},
-                                             {"edge-on plane (N.D = 0)", {1, 0, 0}, {"kMinCosine", "kDepthCompareRelative"}},
-                                             {"oblique plane", glm::normalize(glm::vec3(0.3f, 0.5f, 0.8f)), {"kDepthCompareRelative"}}}) {
-            const glm::vec4 pos(16.0f, 16.0f, 2.0f, 1.0f); // pixel position (the centre of the image: ndc 0), t0, slope scale
+        for (const Tol& t : std::vector<Tol>{
+                 {"face-on plane (zero slope)", {0, 0, 1}, {"kDepthCompareRelative"}},
+                 {"edge-on plane (N.D = 0)", {1, 0, 0}, {"kMinCosine", "kDepthCompareRelative"}},
+                 {"oblique plane", glm::normalize(glm::vec3(0.3f, 0.5f, 0.8f)), {"kDepthCompareRelative"}}}) {
+            const glm::vec4 pos(16.0f, 16.0f, 2.0f,
+                                1.0f); // pixel position (the centre of the image: ndc 0), t0, slope scale
             add(std::string("planeDepthTolerance ") + t.what, t.guards,
-                op(kOpPlaneTolerance, extent, proj, pos, glm::vec4(t.n0, 0)), [t, extent, proj, pos](const MathResult& r) -> std::string {
+                op(kOpPlaneTolerance, extent, proj, pos, glm::vec4(t.n0, 0)),
+                [t, extent, proj, pos](const MathResult& r) -> std::string {
                     D3 ndc = D3(pos.x * extent.z * 2.0 - 1.0, pos.y * extent.w * 2.0 - 1.0, 0.0);
                     D3 D(ndc.x / proj.x, ndc.y / proj.y, -1.0);
                     double dx = 2.0 * extent.z / std::abs(proj.x), dy = 2.0 * extent.w / std::abs(proj.y);
@@ -414,7 +538,8 @@ std::vector<EdgeCase> shaderMathCases() {
                     double slope = pos.z * (std::abs(n0.x) * dx + std::abs(n0.y) * dy) / NoD;
                     double want = pos.w * slope + kDepthCompareRelative * pos.z;
                     if (r.r0.x < float(kDepthCompareRelative) * pos.z * 0.999f)
-                        return "tolerance " + fmt(r.r0.x) + " below the relative floor " + fmt(kDepthCompareRelative * pos.z);
+                        return "tolerance " + fmt(r.r0.x) + " below the relative floor " +
+                               fmt(kDepthCompareRelative * pos.z);
                     return near("tolerance", r.r0.x, want, 1e-4);
                 });
         }

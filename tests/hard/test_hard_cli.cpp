@@ -27,7 +27,8 @@ CliRun agaaRender(const std::string& args) {
     FILE* pipe = popen(cmd.c_str(), "r");
     if (!pipe) return r;
     std::array<char, 512> buf{};
-    while (fgets(buf.data(), buf.size(), pipe)) r.output += buf.data();
+    while (fgets(buf.data(), buf.size(), pipe))
+        r.output += buf.data();
     const int status = pclose(pipe);
     r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
     return r;
@@ -53,18 +54,23 @@ TEST(HardCli, MalformedScenesExitWithCode2NamingFileAndField) {
                           Case{Corruption::IndexOutOfRange, "index_out_of_range.gltf", "indices"}}) {
         const fs::path file = writeModel(c.corruption, c.file);
         const CliRun r = agaaRender("--scene " + file.string() + " --width 16 --height 16 --out " +
-                                 (file.parent_path() / "out").string());
+                                    (file.parent_path() / "out").string());
         EXPECT_EQ(r.exitCode, 2) << c.file << ": bad input must exit with 2\n" << r.output;
         EXPECT_NE(r.output.find(c.file), std::string::npos) << "the message names the file:\n" << r.output;
-        EXPECT_NE(r.output.find(c.field), std::string::npos) << "the message names the field " << c.field << ":\n" << r.output;
+        EXPECT_NE(r.output.find(c.field), std::string::npos)
+            << "the message names the field " << c.field << ":\n"
+            << r.output;
     }
 }
 
 TEST(HardCli, ZeroNormalsAreRepairedWithAWarningAndRender) {
     const fs::path file = writeModel(Corruption::ZeroNormals, "zero_normals.gltf");
     const fs::path out = file.parent_path() / "zero_normals";
-    const CliRun r = agaaRender("--scene " + file.string() + " --method agaa --width 16 --height 16 --validate --out " + out.string());
-    EXPECT_EQ(r.exitCode, 0) << "a repairable file renders (exit 1 would mean a NaN image or a validation error)\n" << r.output;
+    const CliRun r = agaaRender("--scene " + file.string() +
+                                " --method agaa --width 16 --height 16 --validate --out " + out.string());
+    EXPECT_EQ(r.exitCode, 0)
+        << "a repairable file renders (exit 1 would mean a NaN image or a validation error)\n"
+        << r.output;
     EXPECT_NE(r.output.find("warning:"), std::string::npos) << "the repair is logged:\n" << r.output;
     EXPECT_NE(r.output.find("NORMAL"), std::string::npos) << "the warning names the attribute:\n" << r.output;
     EXPECT_TRUE(fs::exists(out.string() + ".exr")) << "the frame was written";
@@ -72,7 +78,8 @@ TEST(HardCli, ZeroNormalsAreRepairedWithAWarningAndRender) {
 
 TEST(HardCli, HardScenesRenderFromTheCommandLine) {
     const fs::path out = fs::temp_directory_path() / "agaa_hard_cli" / "light_inside";
-    const CliRun r = agaaRender("--builtin hard-light-inside --method agaa --width 17 --height 13 --validate --out " + out.string());
+    const CliRun r = agaaRender(
+        "--builtin hard-light-inside --method agaa --width 17 --height 13 --validate --out " + out.string());
     EXPECT_EQ(r.exitCode, 0) << r.output;
 }
 

@@ -53,18 +53,22 @@ struct AgaaReadback {
     // the graph), sky samples are unknown: they carry id 0, so only aggregates >= 1 are exact.
     bool withSamples = true;
 
-    AgaaReadback(vk::Device& d, uint32_t w_, uint32_t h_, uint32_t n_, uint32_t c_) : device(d), w(w_), h(h_), n(n_), c(c_) {
+    AgaaReadback(vk::Device& d, uint32_t w_, uint32_t h_, uint32_t n_, uint32_t c_)
+        : device(d), w(w_), h(h_), n(n_), c(c_) {
         const VkDeviceSize pixels = VkDeviceSize(w) * h;
-        samples = vk::createBuffer(d, pixels * n * 8, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, vk::MemoryUse::Readback, "test.samples");
-        metadata = vk::createBuffer(d, std::max<VkDeviceSize>(4, pixels * shared::metadataWords(n, c) * 4),
-                                    VK_BUFFER_USAGE_TRANSFER_DST_BIT, vk::MemoryUse::Readback, "test.metadata");
+        samples = vk::createBuffer(d, pixels * n * 8, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+                                   vk::MemoryUse::Readback, "test.samples");
+        metadata =
+            vk::createBuffer(d, std::max<VkDeviceSize>(4, pixels * shared::metadataWords(n, c) * 4),
+                             VK_BUFFER_USAGE_TRANSFER_DST_BIT, vk::MemoryUse::Readback, "test.metadata");
         ag = vk::createBuffer(d, pixels * c * shared::kAggregateWords * 4, VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                               vk::MemoryUse::Readback, "test.ag");
         counts = eng::frame::createReadbackBuffer(d, w, h, VK_FORMAT_R8_UINT, "test.counts");
     }
     ~AgaaReadback() {
         vkDeviceWaitIdle(device.device());
-        for (vk::Buffer* b : {&samples, &metadata, &ag, &counts}) vk::destroyBuffer(device, *b);
+        for (vk::Buffer* b : {&samples, &metadata, &ag, &counts})
+            vk::destroyBuffer(device, *b);
     }
     void addPasses(eng::rg::Graph& graph, agaa::Technique& tech, const agaa::FrameInputs& in) {
         auto& aggregate = dynamic_cast<agaa::AggregateAA&>(tech);
@@ -77,7 +81,8 @@ struct AgaaReadback {
 
     // Coverage and finiteness of the AG-buffer, per pixel. Returns the number of violations.
     uint32_t check(const std::string& label, const std::vector<uint32_t>& events) {
-        for (vk::Buffer* b : {&samples, &metadata, &ag, &counts}) vk::invalidateBuffer(device, *b);
+        for (vk::Buffer* b : {&samples, &metadata, &ag, &counts})
+            vk::invalidateBuffer(device, *b);
         const auto* raw = static_cast<const uint32_t*>(samples.mapped);
         const auto* meta = static_cast<const uint32_t*>(metadata.mapped);
         const auto* words = static_cast<const uint32_t*>(ag.mapped);
@@ -95,8 +100,9 @@ struct AgaaReadback {
                 if (!(depth > 0.0f)) continue; // sky (reversed Z: cleared to 0)
                 const uint32_t word = mw ? meta[p * mw + (s * b) / 32] : 0u;
                 const uint32_t id = shared::unpackMetadata(word, s, c);
-                if (id >= count[p] && (withSamples || count[p] > 0)) fail(p, "sample " + std::to_string(s) + " in aggregate " + std::to_string(id) +
-                                                " >= aggregate count " + std::to_string(count[p]));
+                if (id >= count[p] && (withSamples || count[p] > 0))
+                    fail(p, "sample " + std::to_string(s) + " in aggregate " + std::to_string(id) +
+                                " >= aggregate count " + std::to_string(count[p]));
                 expected[std::min(id, c - 1)] += 1;
                 ++covered;
             }
@@ -110,19 +116,22 @@ struct AgaaReadback {
                 // metadata routes to this aggregate (one fragment per sample, also under z-fighting).
                 if (withSamples ? k != expected[a] : (a == 0 ? k > expected[a] : k != expected[a]))
                     fail(p, "aggregate " + std::to_string(a) + " accumulated " + std::to_string(k) +
-                                " samples, the metadata routes " + std::to_string(expected[a]) + " non-sky samples to it");
+                                " samples, the metadata routes " + std::to_string(expected[a]) +
+                                " non-sky samples to it");
                 if (k == 0) continue;
                 ++present;
-                const glm::vec3 N(shared::meanSigned(wd[0] & shared::kNormalFieldMask, k, shared::kNormalScale),
-                                  shared::meanSigned(wd[1], k, shared::kNormalScale),
-                                  shared::meanSigned(wd[2], k, shared::kNormalScale));
+                const glm::vec3 N(
+                    shared::meanSigned(wd[0] & shared::kNormalFieldMask, k, shared::kNormalScale),
+                    shared::meanSigned(wd[1], k, shared::kNormalScale),
+                    shared::meanSigned(wd[2], k, shared::kNormalScale));
                 const float len = glm::length(N);
                 const float alpha = shared::filteredAlpha(len, smax);
                 const glm::vec4 albedoMetal(shared::meanUnit(wd[3] & 0xFFFFu, k, shared::kUnormScale),
                                             shared::meanUnit(wd[3] >> 16, k, shared::kUnormScale),
                                             shared::meanUnit(wd[4] & 0xFFFFu, k, shared::kUnormScale),
                                             shared::meanUnit(wd[4] >> 16, k, shared::kUnormScale));
-                if (!std::isfinite(len) || len > 1.0f + 1e-5f) fail(p, "Toksvig |N| = " + std::to_string(len));
+                if (!std::isfinite(len) || len > 1.0f + 1e-5f)
+                    fail(p, "Toksvig |N| = " + std::to_string(len));
                 if (!std::isfinite(alpha) || alpha < 0.9e-3f || alpha > 1.0f)
                     fail(p, "filtered alpha " + std::to_string(alpha) + " outside [alpha_min, 1]");
                 for (int i = 0; i < 4; ++i)
@@ -130,9 +139,12 @@ struct AgaaReadback {
                         fail(p, "albedo/metallic " + std::to_string(albedoMetal[i]) + " outside [0, 1]");
             }
             // Sample weights sum to at most 1, exactly 1 without sky.
-            if ((withSamples && total != covered) || total > n) fail(p, std::to_string(total) + " accumulated samples, " + std::to_string(covered) + " non-sky");
+            if ((withSamples && total != covered) || total > n)
+                fail(p,
+                     std::to_string(total) + " accumulated samples, " + std::to_string(covered) + " non-sky");
             if (events[p] != present)
-                fail(p, std::to_string(events[p]) + " shading events but " + std::to_string(present) + " non-empty aggregates");
+                fail(p, std::to_string(events[p]) + " shading events but " + std::to_string(present) +
+                            " non-empty aggregates");
         }
         return bad;
     }
@@ -142,22 +154,28 @@ void checkFrame(const std::string& label, const agaa::RenderResult& r, double bo
     const auto hdr = checkRange(r.hdr, bound);
     EXPECT_EQ(hdr.nonFinite, 0u) << label << ": NaN/Inf in the HDR image, first at " << hdr.first;
     EXPECT_EQ(hdr.negative, 0u) << label << ": negative radiance in the HDR image, first at " << hdr.first;
-    EXPECT_EQ(hdr.aboveBound, 0u) << label << ": firefly: HDR above the scene's bound " << bound << ", first at " << hdr.first;
+    EXPECT_EQ(hdr.aboveBound, 0u) << label << ": firefly: HDR above the scene's bound " << bound
+                                  << ", first at " << hdr.first;
     const auto display = checkRange(r.display, 1.0 + 1e-6);
     EXPECT_EQ(display.nonFinite + display.negative + display.aboveBound, 0u)
         << label << ": the tone-mapped display image leaves [0, 1], first at " << display.first;
-    EXPECT_LE(r.shadingEventsMax, maxEv) << label << ": more shading events in a pixel than the method's samples/aggregates";
+    EXPECT_LE(r.shadingEventsMax, maxEv)
+        << label << ": more shading events in a pixel than the method's samples/aggregates";
 }
 
 // Renders with the AG-buffer readback; falls back to no per-sample depths when the technique's
 // graph refuses the sample readback (reported, so the weaker check is visible).
-agaa::RenderResult renderWithReadback(agaa::FrameRenderer& renderer, agaa::RenderRequest r, AgaaReadback& readback) {
-    r.extraPasses = [&](eng::rg::Graph& g, agaa::Technique& t, const agaa::FrameInputs& in) { readback.addPasses(g, t, in); };
+agaa::RenderResult renderWithReadback(agaa::FrameRenderer& renderer, agaa::RenderRequest r,
+                                      AgaaReadback& readback) {
+    r.extraPasses = [&](eng::rg::Graph& g, agaa::Technique& t, const agaa::FrameInputs& in) {
+        readback.addPasses(g, t, in);
+    };
     try {
         return renderer.render(r);
     } catch (const std::exception& e) {
         if (!readback.withSamples) throw;
-        std::printf("[ note     ] AGAA sample readback unavailable (%s): sky samples not told apart\n", e.what());
+        std::printf("[ note     ] AGAA sample readback unavailable (%s): sky samples not told apart\n",
+                    e.what());
         readback.withSamples = false;
         return renderer.render(r);
     }
@@ -168,7 +186,8 @@ class HardScene : public ::testing::TestWithParam<std::string> {};
 TEST_P(HardScene, EveryMethodFiniteBoundedDeterministicAndCovered) {
     auto device = agaa::test::makeValidatedDevice();
     const eng::scene::Scene scene = eng::scene::loadBuiltin(GetParam());
-    for (const std::string& w : scene.stats.warnings) std::printf("[ warning  ] %s\n", w.c_str());
+    for (const std::string& w : scene.stats.warnings)
+        std::printf("[ warning  ] %s\n", w.c_str());
     agaa::FrameRenderer renderer(*device, scene);
     const uint32_t size = 32;
     for (const agaa::MethodInfo& m : agaa::knownMethods()) {
@@ -176,8 +195,10 @@ TEST_P(HardScene, EveryMethodFiniteBoundedDeterministicAndCovered) {
         agaa::RenderRequest r = request(m.name, kSamples, kAggregates, size, size);
         const double bound = hdrBound(scene, r.view);
         std::unique_ptr<AgaaReadback> readback;
-        if (m.name == "agaa") readback = std::make_unique<AgaaReadback>(*device, size, size, kSamples, kAggregates);
-        const agaa::RenderResult a = readback ? renderWithReadback(renderer, r, *readback) : renderer.render(r);
+        if (m.name == "agaa")
+            readback = std::make_unique<AgaaReadback>(*device, size, size, kSamples, kAggregates);
+        const agaa::RenderResult a =
+            readback ? renderWithReadback(renderer, r, *readback) : renderer.render(r);
         const agaa::RenderResult b = renderer.render(r);
         checkFrame(label, a, bound, maxEvents(m, kSamples, kAggregates));
         EXPECT_EQ(a.hdr.rgba, b.hdr.rgba) << label << ": two runs differ (HDR)";
@@ -208,16 +229,20 @@ TEST(HardSizes, OddSizesEveryMethod) {
         agaa::FrameRenderer renderer(*device, scene);
         for (auto [w, h] : {std::pair{1u, 1u}, std::pair{17u, 13u}}) {
             for (const agaa::MethodInfo& m : agaa::knownMethods()) {
-                const std::string label = std::string(name) + " / " + m.name + " " + std::to_string(w) + "x" + std::to_string(h);
+                const std::string label =
+                    std::string(name) + " / " + m.name + " " + std::to_string(w) + "x" + std::to_string(h);
                 agaa::RenderRequest r = request(m.name, kSamples, kAggregates, w, h);
                 std::unique_ptr<AgaaReadback> readback;
-                if (m.name == "agaa") readback = std::make_unique<AgaaReadback>(*device, w, h, kSamples, kAggregates);
-                const agaa::RenderResult a = readback ? renderWithReadback(renderer, r, *readback) : renderer.render(r);
+                if (m.name == "agaa")
+                    readback = std::make_unique<AgaaReadback>(*device, w, h, kSamples, kAggregates);
+                const agaa::RenderResult a =
+                    readback ? renderWithReadback(renderer, r, *readback) : renderer.render(r);
                 ASSERT_EQ(a.hdr.width * a.hdr.height, w * h) << label;
                 checkFrame(label, a, hdrBound(scene, r.view), maxEvents(m, kSamples, kAggregates));
                 if (readback) {
-            EXPECT_EQ(readback->check(label, a.shadingEvents), 0u) << label << ": AG-buffer invariants";
-        }
+                    EXPECT_EQ(readback->check(label, a.shadingEvents), 0u)
+                        << label << ": AG-buffer invariants";
+                }
             }
         }
     }
@@ -250,12 +275,15 @@ TEST(HardAgreement, FlatPlaneAgaaEqualsReferenceAndIsAllSimple) {
         const agaa::RenderResult ag = renderer.render(request("agaa", n, c, 32, 32));
         double mean = 0.0;
         const double worst = worstDisplayDifference(ag, ref, &mean);
-        std::printf("[ measured ] hard-flat n=%u c=%u: AGAA vs reference worst %.2e mean %.2e\n", n, c, worst, mean);
-        EXPECT_LE(worst, 1e-3) << "n=" << n << " c=" << c << ": AGAA differs from per-sample shading on a flat plane";
+        std::printf("[ measured ] hard-flat n=%u c=%u: AGAA vs reference worst %.2e mean %.2e\n", n, c, worst,
+                    mean);
+        EXPECT_LE(worst, 1e-3) << "n=" << n << " c=" << c
+                               << ": AGAA differs from per-sample shading on a flat plane";
         // (At 32x32 a pixel spans 4.6 cm, more than sqrt(t) k = 2.2 cm, so Equation 1 may split a
         // flat pixel by position into two aggregates: still equal to the reference, as checked.)
         const agaa::RenderResult sc = renderer.render(request("simple-complex", n, 1, 32, 32));
-        EXPECT_EQ(sc.shadingEventsMax, 1u) << "n=" << n << ": a face-on plane must be all simple pixels (kDepthCompareRelative)";
+        EXPECT_EQ(sc.shadingEventsMax, 1u)
+            << "n=" << n << ": a face-on plane must be all simple pixels (kDepthCompareRelative)";
     }
     agaa::test::expectNoValidationErrors(*device);
 }
@@ -274,13 +302,17 @@ TEST(HardAgreement, LambertVGroovesWithEnoughAggregatesMatchTheReference) {
     const agaa::RenderResult two = renderer.render(request("agaa", 8, 2, 32, 32));
     const agaa::RenderResult one = renderer.render(request("agaa", 8, 1, 32, 32));
     double mean2 = 0.0, mean1 = 0.0;
-    const double worst2 = worstDisplayDifference(two, ref, &mean2), worst1 = worstDisplayDifference(one, ref, &mean1);
-    std::printf("[ measured ] hard-vgroove AGAA vs reference: c=2 worst %.2e mean %.2e; c=1 worst %.2e mean %.2e\n", worst2, mean2,
-                worst1, mean1);
-    EXPECT_GE(two.shadingEventsMean, 1.5) << "the grooves must put two surfaces in most pixels, or the test proves nothing";
+    const double worst2 = worstDisplayDifference(two, ref, &mean2),
+                 worst1 = worstDisplayDifference(one, ref, &mean1);
+    std::printf(
+        "[ measured ] hard-vgroove AGAA vs reference: c=2 worst %.2e mean %.2e; c=1 worst %.2e mean %.2e\n",
+        worst2, mean2, worst1, mean1);
+    EXPECT_GE(two.shadingEventsMean, 1.5)
+        << "the grooves must put two surfaces in most pixels, or the test proves nothing";
     EXPECT_LE(worst2, 1e-3) << "c=2 >= distinct surfaces: AGAA must match per-sample Lambert shading";
     EXPECT_LE(mean2, 2e-4) << "c=2 >= distinct surfaces: AGAA must match per-sample Lambert shading";
-    EXPECT_GT(worst1, 0.05) << "c=1 must merge the opposing walls (Toksvig |N| -> 0), or the grooves test nothing";
+    EXPECT_GT(worst1, 0.05)
+        << "c=1 must merge the opposing walls (Toksvig |N| -> 0), or the grooves test nothing";
     agaa::test::expectNoValidationErrors(*device);
 }
 
@@ -289,12 +321,15 @@ TEST(HardInput, MoreLightsThanTheCapAreRefused) {
     auto device = agaa::test::makeValidatedDevice();
     eng::scene::Scene scene = eng::scene::loadBuiltin("hard-many-lights");
     ASSERT_EQ(scene.lights.size(), 1000u);
-    while (scene.lights.size() <= shared::kMaxLights) scene.lights.push_back(scene.lights.back());
+    while (scene.lights.size() <= shared::kMaxLights)
+        scene.lights.push_back(scene.lights.back());
     try {
         agaa::FrameRenderer renderer(*device, scene);
-        ADD_FAILURE() << "a scene with " << scene.lights.size() << " lights was accepted; the cap is " << shared::kMaxLights;
+        ADD_FAILURE() << "a scene with " << scene.lights.size() << " lights was accepted; the cap is "
+                      << shared::kMaxLights;
     } catch (const std::invalid_argument& e) {
-        EXPECT_NE(std::string(e.what()).find("1024"), std::string::npos) << "the message names the cap: " << e.what();
+        EXPECT_NE(std::string(e.what()).find("1024"), std::string::npos)
+            << "the message names the cap: " << e.what();
     }
     agaa::test::expectNoValidationErrors(*device);
 }

@@ -15,23 +15,29 @@ namespace {
 
 using agaa::hard::Corruption;
 
-bool contains(const std::string& s, const std::string& what) { return s.find(what) != std::string::npos; }
+bool contains(const std::string& s, const std::string& what) {
+    return s.find(what) != std::string::npos;
+}
 
 bool anyWarning(const eng::scene::Scene& s, const std::string& what) {
-    return std::any_of(s.stats.warnings.begin(), s.stats.warnings.end(), [&](const std::string& w) { return contains(w, what); });
+    return std::any_of(s.stats.warnings.begin(), s.stats.warnings.end(),
+                       [&](const std::string& w) { return contains(w, what); });
 }
 
 void expectFiniteUnitNormals(const eng::scene::Scene& s) {
     for (const auto& v : s.vertices) {
-        ASSERT_TRUE(std::isfinite(v.position.x) && std::isfinite(v.position.y) && std::isfinite(v.position.z)) << s.source;
-        ASSERT_NEAR(glm::length(v.normal), 1.0f, 1e-4f) << s.source << ": a vertex normal reached the renderer unrepaired";
+        ASSERT_TRUE(std::isfinite(v.position.x) && std::isfinite(v.position.y) && std::isfinite(v.position.z))
+            << s.source;
+        ASSERT_NEAR(glm::length(v.normal), 1.0f, 1e-4f)
+            << s.source << ": a vertex normal reached the renderer unrepaired";
     }
 }
 
 TEST(HardScenes, AllKindsLoadAndStayOutOfTheDefaultList) {
     const auto regular = eng::scene::sceneKinds();
     for (const std::string& kind : eng::scene::hardSceneKinds()) {
-        EXPECT_EQ(std::count(regular.begin(), regular.end(), kind), 0) << kind << " must not be swept by the benchmark";
+        EXPECT_EQ(std::count(regular.begin(), regular.end(), kind), 0)
+            << kind << " must not be swept by the benchmark";
         const eng::scene::Scene s = eng::scene::loadBuiltin(kind);
         EXPECT_GT(s.triangleCount(), 0u) << kind;
         expectFiniteUnitNormals(s);
@@ -44,7 +50,8 @@ TEST(HardScenes, ScenesAreWhatTheyClaim) {
     EXPECT_TRUE(eng::scene::loadBuiltin("hard-no-lights").lights.empty()) << "no lights";
     const eng::scene::Scene emissive = eng::scene::loadBuiltin("hard-emissive");
     float strongest = 0.0f;
-    for (const auto& m : emissive.materials) strongest = std::max(strongest, m.emissiveStrength);
+    for (const auto& m : emissive.materials)
+        strongest = std::max(strongest, m.emissiveStrength);
     EXPECT_EQ(strongest, 1.0e4f) << "KHR_materials_emissive_strength 1e4 survives the loader";
     const eng::scene::Scene mirror = eng::scene::loadBuiltin("hard-mirror");
     bool zero = false, one = false;
@@ -59,12 +66,14 @@ TEST(HardScenes, ScenesAreWhatTheyClaim) {
     EXPECT_EQ(far.cameras[0].zfar, 1.0e7f);
     // About 90 triangles per covered pixel at 32x32: 24000 triangles in a 0.4 m box seen from
     // 1.2 m with a 0.7 rad fov cover about (0.4 / (2 * 1.2 * tan 0.35) * 32)^2 = 225 pixels.
-    EXPECT_GE(eng::scene::loadBuiltin("hard-dense").triangleCount(), 225u * 32u) << ">= 32 triangles per pixel";
+    EXPECT_GE(eng::scene::loadBuiltin("hard-dense").triangleCount(), 225u * 32u)
+        << ">= 32 triangles per pixel";
 }
 
 TEST(HardInput, DegenerateTrianglesAndZeroNormalsAreRepairedWithWarnings) {
     const eng::scene::Scene s = eng::scene::loadBuiltin("hard-degenerate");
-    for (const auto& w : s.stats.warnings) std::printf("[ warning  ] %s\n", w.c_str());
+    for (const auto& w : s.stats.warnings)
+        std::printf("[ warning  ] %s\n", w.c_str());
     EXPECT_GE(s.stats.degenerateTrianglesDropped, 64u * 2u) << "collinear and point triangles are dropped";
     EXPECT_TRUE(anyWarning(s, "degenerate triangles dropped")) << "the drop is logged";
     EXPECT_TRUE(anyWarning(s, "NORMAL")) << "the normal repair is logged naming the attribute";
@@ -76,8 +85,9 @@ TEST(HardInput, MalformedFilesAreRefusedNamingTheField) {
         Corruption corruption;
         const char* field;
     };
-    for (const Case& c : {Case{Corruption::NanPosition, "POSITION"}, Case{Corruption::InfPosition, "POSITION"},
-                          Case{Corruption::IndexOutOfRange, "indices"}}) {
+    for (const Case& c :
+         {Case{Corruption::NanPosition, "POSITION"}, Case{Corruption::InfPosition, "POSITION"},
+          Case{Corruption::IndexOutOfRange, "indices"}}) {
         try {
             eng::scene::loadGltfModel(agaa::hard::malformedModel(c.corruption), "broken.gltf");
             ADD_FAILURE() << c.field << ": the corrupted model was accepted";

@@ -24,20 +24,27 @@ using agaa::hard::MathResult;
 
 // One dispatch of shader_math.comp over `cases`; the graph owns the barriers.
 std::vector<MathResult> runKernel(vk::Device& device, const std::vector<MathCase>& cases) {
-    const VkDeviceSize inBytes = cases.size() * sizeof(MathCase), outBytes = cases.size() * sizeof(MathResult);
-    vk::Buffer in = vk::createBuffer(device, inBytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, vk::MemoryUse::Upload, "test.mathCases");
-    vk::Buffer out = vk::createBuffer(device, outBytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, vk::MemoryUse::Readback, "test.mathResults");
+    const VkDeviceSize inBytes = cases.size() * sizeof(MathCase),
+                       outBytes = cases.size() * sizeof(MathResult);
+    vk::Buffer in = vk::createBuffer(device, inBytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+                                     vk::MemoryUse::Upload, "test.mathCases");
+    vk::Buffer out = vk::createBuffer(device, outBytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+                                      vk::MemoryUse::Readback, "test.mathResults");
     vk::writeBuffer(device, in, std::as_bytes(std::span(cases)));
     vk::LayoutDesc desc;
     const VkShaderStageFlags cs = VK_SHADER_STAGE_COMPUTE_BIT;
-    desc.pushBindings = {{0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs}, {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs}};
+    desc.pushBindings = {{0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs},
+                         {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs}};
     desc.pushConstantBytes = sizeof(uint32_t);
     vk::PipelineLayout layout = vk::createPipelineLayout(device, desc, "test.shaderMath.layout");
-    VkPipeline pipeline = vk::createComputePipeline(device, kTestsShaderMathComp, layout.layout, {}, "test.shaderMath");
+    VkPipeline pipeline =
+        vk::createComputePipeline(device, kTestsShaderMathComp, layout.layout, {}, "test.shaderMath");
     {
         rg::Graph graph;
-        rg::Buffer input = graph.importBuffer("test.mathCases", {in.buffer, in.size}, std::nullopt, std::nullopt);
-        rg::Buffer output = graph.importBuffer("test.mathResults", {out.buffer, out.size}, std::nullopt, std::nullopt);
+        rg::Buffer input =
+            graph.importBuffer("test.mathCases", {in.buffer, in.size}, std::nullopt, std::nullopt);
+        rg::Buffer output =
+            graph.importBuffer("test.mathResults", {out.buffer, out.size}, std::nullopt, std::nullopt);
         struct Data {
             rg::Buffer in, out;
         };
@@ -84,18 +91,22 @@ TEST(HardShaderMath, EdgeInputsAreFiniteAndMatchTheDoubleTwins) {
     auto device = agaa::test::makeValidatedDevice();
     const std::vector<agaa::hard::EdgeCase> cases = agaa::hard::shaderMathCases();
     std::vector<MathCase> inputs;
-    for (const auto& c : cases) inputs.push_back(c.input);
+    for (const auto& c : cases)
+        inputs.push_back(c.input);
     const std::vector<MathResult> results = runKernel(*device, inputs);
     uint32_t failures = 0;
     for (size_t i = 0; i < cases.size(); ++i) {
         for (int k = 0; k < 4; ++k) {
             // Every output slot the kernel writes must be finite, whatever the case checks.
             EXPECT_TRUE(std::isfinite(results[i].r0[k]) && std::isfinite(results[i].r1[k]))
-                << cases[i].name << ": a result component is NaN or Inf (guards: " << ::testing::PrintToString(cases[i].guards) << ")";
+                << cases[i].name
+                << ": a result component is NaN or Inf (guards: " << ::testing::PrintToString(cases[i].guards)
+                << ")";
         }
         const std::string why = cases[i].check(results[i]);
         failures += !why.empty();
-        EXPECT_TRUE(why.empty()) << cases[i].name << " [guards " << ::testing::PrintToString(cases[i].guards) << "]: " << why;
+        EXPECT_TRUE(why.empty()) << cases[i].name << " [guards " << ::testing::PrintToString(cases[i].guards)
+                                 << "]: " << why;
     }
     std::printf("[ measured ] %zu shader-math edge cases, %u failed\n", cases.size(), failures);
     agaa::test::expectNoValidationErrors(*device);

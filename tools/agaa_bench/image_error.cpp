@@ -10,7 +10,9 @@
 
 namespace agaa::bench {
 
-eng::io::ImageF srgbEncoded(const eng::io::ImageF& linearDisplay) { return eng::io::srgbEncoded(linearDisplay); }
+eng::io::ImageF srgbEncoded(const eng::io::ImageF& linearDisplay) {
+    return eng::io::srgbEncoded(linearDisplay);
+}
 
 ErrorMetrics compareImages(const eng::io::ImageF& image, const eng::io::ImageF& truth) {
     ErrorMetrics m;

@@ -53,7 +53,8 @@ const char* kUsage =
     "                   [--width W] [--height H] [--camera I] [--exposure E] [--out PREFIX] [--debug VIEW]\n"
     "                   [--stats FILE.json] [--graph FILE.dot] [--frames K] [--warmup K]\n"
     "                   [--characteristic-length K] [--seed-threshold T] [--agaa-position mean|centre]\n"
-    "                   [--effects scene|all] [--shadow-taps N] [--shadow-footprint F] [--shadow-map-size N] [--shadow-casters scene|none]\n"
+    "                   [--effects scene|all] [--shadow-taps N] [--shadow-footprint F] [--shadow-map-size N] "
+    "[--shadow-casters scene|none]\n"
     "                   [--validate] [--device NAME] [--caps] [--help]\n"
     "\n"
     "  --scene FILE      glTF 2.0 scene (.gltf or .glb)\n"
@@ -63,13 +64,15 @@ const char* kUsage =
     "  --aggregates C    AGAA aggregates per pixel, 1..4 (default 2)\n"
     "  --width/--height  image size in pixels, 1..8192 (default 256x256)\n"
     "  --camera I        scene camera index (default 0)\n"
-    "  --debug VIEW      a method's debug view instead of the lit frame (agaa: aggregates; simple-complex: complex)\n"
+    "  --debug VIEW      a method's debug view instead of the lit frame (agaa: aggregates; simple-complex: "
+    "complex)\n"
     "  --characteristic-length K, --seed-threshold T\n"
     "                    AGAA clustering (Equation 1): k in metres (default 0.1), t (default 0.05)\n"
     "  --agaa-position mean|centre  AGAA shading point: mean of the samples (default) or UE4's\n"
     "                    mean depth on the pixel-centre ray\n"
     "  --effects scene|all  passes and shader variants from the scene's features (default), or every\n"
-    "                    effect forced on (shadows, alpha-to-coverage, emissive, normal maps, light culling)\n"
+    "                    effect forced on (shadows, alpha-to-coverage, emissive, normal maps, light "
+    "culling)\n"
     "  --shadow-taps N   AGAA shadow taps inside each aggregate's footprint, 1..4 (default 4)\n"
     "  --shadow-footprint statistics|samples  AGAA shadow taps along the aggregate's depth variance\n"
     "                    (default) or at its own sample positions\n"
@@ -112,55 +115,80 @@ Options parse(int argc, char** argv) {
             if (i + 1 >= argc) throw BadArgument(a + " needs a value");
             return argv[++i];
         };
-        if (a == "--help" || a == "-h") o.help = true;
-        else if (a == "--scene") o.sceneFile = value();
-        else if (a == "--builtin") o.builtin = value();
-        else if (a == "--method") r.method = value();
+        if (a == "--help" || a == "-h")
+            o.help = true;
+        else if (a == "--scene")
+            o.sceneFile = value();
+        else if (a == "--builtin")
+            o.builtin = value();
+        else if (a == "--method")
+            r.method = value();
         else if (a == "--samples") {
             std::string v = value();
             r.settings.samples = parseUint(a, v, 1, 32);
             if (!eng::frame::isSupportedSampleCount(r.settings.samples))
                 throw BadArgument("--samples '" + v + "' is not supported (allowed: " +
                                   eng::frame::supportedSampleCounts() + ")");
-        } else if (a == "--aggregates") r.settings.aggregates = parseUint(a, value(), 1, 4);
-        else if (a == "--debug") r.settings.debug = value();
-        else if (a == "--characteristic-length") r.settings.characteristicLength = parseFloat(a, value(), 1e-6f, 1e6f);
-        else if (a == "--seed-threshold") r.settings.seedThreshold = parseFloat(a, value(), 0.0f, 1e6f);
+        } else if (a == "--aggregates")
+            r.settings.aggregates = parseUint(a, value(), 1, 4);
+        else if (a == "--debug")
+            r.settings.debug = value();
+        else if (a == "--characteristic-length")
+            r.settings.characteristicLength = parseFloat(a, value(), 1e-6f, 1e6f);
+        else if (a == "--seed-threshold")
+            r.settings.seedThreshold = parseFloat(a, value(), 0.0f, 1e6f);
         else if (a == "--agaa-position") {
             std::string v = value();
             if (v != "mean" && v != "centre")
                 throw BadArgument("--agaa-position '" + v + "' is not one of: mean, centre");
             r.settings.pixelCentrePosition = v == "centre";
-        }
-        else if (a == "--effects") {
+        } else if (a == "--effects") {
             std::string v = value();
-            if (v != "scene" && v != "all") throw BadArgument("--effects '" + v + "' is not one of: scene, all");
+            if (v != "scene" && v != "all")
+                throw BadArgument("--effects '" + v + "' is not one of: scene, all");
             r.settings.effects.forceAll = v == "all";
-        } else if (a == "--shadow-taps") r.settings.effects.shadowTaps = parseUint(a, value(), 1, 4);
+        } else if (a == "--shadow-taps")
+            r.settings.effects.shadowTaps = parseUint(a, value(), 1, 4);
         else if (a == "--shadow-footprint") {
             std::string v = value();
             if (v != "statistics" && v != "samples")
                 throw BadArgument("--shadow-footprint '" + v + "' is not one of: statistics, samples");
-            r.settings.effects.shadowFootprint = v == "samples" ? agaa::EffectSettings::ShadowFootprint::Samples
-                                                                : agaa::EffectSettings::ShadowFootprint::Statistics;
-        } else if (a == "--shadow-map-size") r.settings.effects.shadowMapSize = parseUint(a, value(), 64, 4096);
+            r.settings.effects.shadowFootprint = v == "samples"
+                                                     ? agaa::EffectSettings::ShadowFootprint::Samples
+                                                     : agaa::EffectSettings::ShadowFootprint::Statistics;
+        } else if (a == "--shadow-map-size")
+            r.settings.effects.shadowMapSize = parseUint(a, value(), 64, 4096);
         else if (a == "--shadow-casters") {
             std::string v = value();
-            if (v != "scene" && v != "none") throw BadArgument("--shadow-casters '" + v + "' is not one of: scene, none");
+            if (v != "scene" && v != "none")
+                throw BadArgument("--shadow-casters '" + v + "' is not one of: scene, none");
             o.noShadowCasters = v == "none";
-        } else if (a == "--width") r.view.width = parseUint(a, value(), 1, 8192);
-        else if (a == "--height") r.view.height = parseUint(a, value(), 1, 8192);
-        else if (a == "--camera") r.view.camera = parseUint(a, value(), 0, 1u << 20);
-        else if (a == "--exposure") r.view.exposure = parseFloat(a, value(), 1e-6f, 1e6f);
-        else if (a == "--out") o.out = value();
-        else if (a == "--stats") o.stats = value();
-        else if (a == "--graph") o.graph = value();
-        else if (a == "--frames") o.frames = parseUint(a, value(), 1, 1000);
-        else if (a == "--warmup") o.warmup = parseUint(a, value(), 0, 1000);
-        else if (a == "--validate") o.validate = true;
-        else if (a == "--device") o.device = value();
-        else if (a == "--caps") o.caps = true;
-        else throw BadArgument("unknown argument '" + a + "' (see --help)");
+        } else if (a == "--width")
+            r.view.width = parseUint(a, value(), 1, 8192);
+        else if (a == "--height")
+            r.view.height = parseUint(a, value(), 1, 8192);
+        else if (a == "--camera")
+            r.view.camera = parseUint(a, value(), 0, 1u << 20);
+        else if (a == "--exposure")
+            r.view.exposure = parseFloat(a, value(), 1e-6f, 1e6f);
+        else if (a == "--out")
+            o.out = value();
+        else if (a == "--stats")
+            o.stats = value();
+        else if (a == "--graph")
+            o.graph = value();
+        else if (a == "--frames")
+            o.frames = parseUint(a, value(), 1, 1000);
+        else if (a == "--warmup")
+            o.warmup = parseUint(a, value(), 0, 1000);
+        else if (a == "--validate")
+            o.validate = true;
+        else if (a == "--device")
+            o.device = value();
+        else if (a == "--caps")
+            o.caps = true;
+        else
+            throw BadArgument("unknown argument '" + a + "' (see --help)");
     }
     if (!agaa::isKnownMethod(r.method))
         throw BadArgument("--method '" + r.method + "' is unknown (known: " + agaa::knownMethodNames() + ")");
@@ -174,8 +202,9 @@ Options parse(int argc, char** argv) {
                     known |= v == r.settings.debug;
                 }
         if (!known)
-            throw BadArgument("--debug '" + r.settings.debug + "' is not a debug view of --method " + r.method +
-                              " (allowed: " + (allowed.empty() ? std::string("none") : allowed) + ")");
+            throw BadArgument("--debug '" + r.settings.debug + "' is not a debug view of --method " +
+                              r.method + " (allowed: " + (allowed.empty() ? std::string("none") : allowed) +
+                              ")");
     }
     r.timedFrames = o.frames;
     r.warmupFrames = o.warmup;
@@ -202,15 +231,17 @@ nlohmann::json statsJson(const Options& o, const agaa::RenderResult& r, const en
     j["frames_warmup"] = o.warmup;
     j["passes"] = nlohmann::json::array();
     for (size_t i = 0; i < r.passes.size(); ++i)
-        j["passes"].push_back({{"name", r.passes[i].name}, {"gpu_ms", r.passes[i].gpuMs}, {"gpu_ms_samples", r.passSamples[i]}});
+        j["passes"].push_back({{"name", r.passes[i].name},
+                               {"gpu_ms", r.passes[i].gpuMs},
+                               {"gpu_ms_samples", r.passSamples[i]}});
     j["passes_culled"] = r.culledPasses;
     j["frame_gpu_ms"] = r.frameGpuMs;
     j["bytes_per_pixel"] = r.bytesPerPixel;
     j["storage_bytes"] = r.storageBytes;
     j["bytes_per_pixel_split"] = r.bytesPerPixelSplit;
     j["transient_bytes_per_pixel"] = r.transientBytesPerPixel;
-    j["shading_events_per_pixel"] = {{"mean", r.shadingEventsMean}, {"max", r.shadingEventsMax},
-                                     {"histogram", r.shadingEventsHistogram}};
+    j["shading_events_per_pixel"] = {
+        {"mean", r.shadingEventsMean}, {"max", r.shadingEventsMax}, {"histogram", r.shadingEventsHistogram}};
     // AGAA lights each aggregate once: its shading events are its aggregates.
     if (o.request.method == "agaa") j["aggregates_per_pixel_histogram"] = r.shadingEventsHistogram;
     // Scene-driven effects (agaa/common/effects.h): the features and each variant with its cause.
@@ -220,7 +251,8 @@ nlohmann::json statsJson(const Options& o, const agaa::RenderResult& r, const en
     for (const agaa::VariantChoice& v : r.variants)
         j["variants"].push_back({{"effect", v.effect}, {"variant", v.variant}, {"cause", v.cause}});
     j["passes_run"] = nlohmann::json::array();
-    for (const auto& p : r.passes) j["passes_run"].push_back(p.name);
+    for (const auto& p : r.passes)
+        j["passes_run"].push_back(p.name);
     j["validation_errors"] = device.validationErrors();
     j["validation_enabled"] = device.validationEnabled();
     return j;
@@ -237,12 +269,15 @@ int run(const Options& o) {
     }
     eng::scene::Scene scene =
         o.sceneFile ? eng::scene::loadGltf(*o.sceneFile) : eng::scene::loadBuiltin(o.builtin);
-    for (const std::string& w : scene.stats.warnings) std::cerr << "warning: " << w << "\n";
+    for (const std::string& w : scene.stats.warnings)
+        std::cerr << "warning: " << w << "\n";
     if (o.noShadowCasters)
-        for (eng::scene::Light& light : scene.lights) light.castsShadows = false;
+        for (eng::scene::Light& light : scene.lights)
+            light.castsShadows = false;
     if (o.request.view.camera >= scene.cameras.size())
-        throw BadArgument("--camera " + std::to_string(o.request.view.camera) + " is out of range (the scene has " +
-                          std::to_string(scene.cameras.size()) + " camera(s))");
+        throw BadArgument("--camera " + std::to_string(o.request.view.camera) +
+                          " is out of range (the scene has " + std::to_string(scene.cameras.size()) +
+                          " camera(s))");
 
     agaa::FrameRenderer renderer(device, scene);
     agaa::RenderResult r = renderer.render(o.request);
@@ -256,8 +291,8 @@ int run(const Options& o) {
     eng::io::writePng(prefix.string() + ".png", eng::io::quantizeToU8(eng::io::srgbEncoded(r.display)));
     std::cout << "wrote " << prefix.string() << ".exr and " << prefix.string() << ".png (" << o.request.method
               << ", n=" << r.samples << ", " << o.request.view.width << "x" << o.request.view.height << ", "
-              << scene.triangleCount() << " triangles, frame " << r.frameGpuMs << " ms on " << device.caps().deviceName
-              << ")\n";
+              << scene.triangleCount() << " triangles, frame " << r.frameGpuMs << " ms on "
+              << device.caps().deviceName << ")\n";
     if (o.stats) {
         writeText(*o.stats, statsJson(o, r, device).dump(2) + "\n");
         std::cout << "wrote " << *o.stats << "\n";
@@ -272,7 +307,8 @@ int run(const Options& o) {
         graphJson["features"] = r.features;
         graphJson["variants"] = nlohmann::json::array();
         for (const agaa::VariantChoice& v : r.variants)
-            graphJson["variants"].push_back({{"effect", v.effect}, {"variant", v.variant}, {"cause", v.cause}});
+            graphJson["variants"].push_back(
+                {{"effect", v.effect}, {"variant", v.variant}, {"cause", v.cause}});
         writeText(*o.graph + ".json", graphJson.dump(2) + "\n");
         std::cout << "wrote " << *o.graph << " and " << *o.graph << ".json\n";
     }
@@ -290,9 +326,11 @@ int main(int argc, char** argv) {
         Options o = parse(argc, argv);
         if (o.help) {
             std::cout << kUsage << "\nmethods:\n";
-            for (const auto& m : agaa::knownMethods()) std::cout << "  " << m.name << ": " << m.summary << "\n";
+            for (const auto& m : agaa::knownMethods())
+                std::cout << "  " << m.name << ": " << m.summary << "\n";
             std::cout << "built-in scenes:";
-            for (const auto& k : eng::scene::sceneKinds()) std::cout << " " << k;
+            for (const auto& k : eng::scene::sceneKinds())
+                std::cout << " " << k;
             std::cout << "\n";
             return 0;
         }

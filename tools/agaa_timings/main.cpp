@@ -96,26 +96,33 @@ int main(int argc, char** argv) {
                 if (i + 1 >= argc) throw std::invalid_argument(a + " needs a value");
                 return argv[++i];
             };
-            if (a == "--scenes") scenes = split(value(), ',');
+            if (a == "--scenes")
+                scenes = split(value(), ',');
             else if (a == "--size") {
                 auto wh = split(value(), 'x');
                 if (wh.size() != 2) throw std::invalid_argument("--size must be WxH, e.g. 1280x720");
                 width = number("--size width", wh[0], 1, 8192);
                 height = number("--size height", wh[1], 1, 8192);
-            } else if (a == "--frames") frames = number(a, value(), 1, 1000);
-            else if (a == "--warmup") warmup = number(a, value(), 0, 1000);
+            } else if (a == "--frames")
+                frames = number(a, value(), 1, 1000);
+            else if (a == "--warmup")
+                warmup = number(a, value(), 0, 1000);
             else if (a == "--jobs") {
                 jobs.clear();
-                for (const auto& j : split(value(), ',')) jobs.push_back(parseJob(j));
-            } else if (a == "--validate") validate = true;
-            else if (a == "--json") jsonPath = value();
+                for (const auto& j : split(value(), ','))
+                    jobs.push_back(parseJob(j));
+            } else if (a == "--validate")
+                validate = true;
+            else if (a == "--json")
+                jsonPath = value();
             else if (a == "--help" || a == "-h") {
                 std::printf("usage: agaa-timings [--scenes a,b] [--size WxH] [--frames K] [--warmup K]\n"
                             "                    [--jobs METHOD[:N[:C]],...] [--validate] [--json FILE]\n"
                             "methods: %s; scenes: builtin kinds\n",
                             agaa::knownMethodNames().c_str());
                 return 0;
-            } else throw std::invalid_argument("unknown argument '" + a + "' (see --help)");
+            } else
+                throw std::invalid_argument("unknown argument '" + a + "' (see --help)");
         }
         eng::vk::DeviceOptions options;
         options.validation = validate;
@@ -142,8 +149,9 @@ int main(int argc, char** argv) {
                 r.warmupFrames = warmup;
                 r.timedFrames = frames;
                 agaa::RenderResult res = renderer.render(r);
-                std::printf("  %-26s frame %9.2f ms  bytes/px %7.1f  events/px %.2f (max %u)\n", job.label().c_str(),
-                            frameMs(res), res.bytesPerPixel, res.shadingEventsMean, res.shadingEventsMax);
+                std::printf("  %-26s frame %9.2f ms  bytes/px %7.1f  events/px %.2f (max %u)\n",
+                            job.label().c_str(), frameMs(res), res.bytesPerPixel, res.shadingEventsMean,
+                            res.shadingEventsMax);
                 nlohmann::json passes = nlohmann::json::object();
                 for (const auto& p : res.passes) {
                     if (p.name.rfind("readback.", 0) == 0) continue;

@@ -19,7 +19,8 @@ int main(int argc, char** argv) {
     float scale = 4.0f;
     for (int i = 1; i < argc; ++i) {
         std::string arg = argv[i];
-        if (arg == "--heatmap" && i + 1 < argc) heatmap = argv[++i];
+        if (arg == "--heatmap" && i + 1 < argc)
+            heatmap = argv[++i];
         else if (arg == "--scale" && i + 1 < argc) {
             try {
                 scale = std::stof(argv[++i]);
@@ -33,11 +34,15 @@ int main(int argc, char** argv) {
         } else if (arg == "--help" || arg == "-h") {
             std::printf("usage: imgdiff A.exr B.exr [--heatmap OUT.png] [--scale S]\n");
             return 0;
-        } else if (a.empty()) a = arg;
-        else if (b.empty()) b = arg;
+        } else if (a.empty())
+            a = arg;
+        else if (b.empty())
+            b = arg;
         else {
-            std::fprintf(stderr, "imgdiff: unexpected argument '%s' (usage: imgdiff A.exr B.exr [--heatmap OUT.png])\n",
-                         arg.c_str());
+            std::fprintf(
+                stderr,
+                "imgdiff: unexpected argument '%s' (usage: imgdiff A.exr B.exr [--heatmap OUT.png])\n",
+                arg.c_str());
             return 2;
         }
     }
@@ -51,7 +56,8 @@ int main(int argc, char** argv) {
         std::printf("display RMSE %.6f  PSNR %.2f dB  SSIM %.5f  p99 %.5f  |  linear RMSE %.6f\n",
                     eng::io::rmse(da, db), eng::io::psnr(da, db), eng::io::ssim(da, db),
                     eng::io::percentileAbsError(da, db, 99.0), eng::io::rmse(ha, hb));
-        if (!heatmap.empty()) eng::io::writePng(heatmap, eng::io::quantizeToU8(eng::io::errorHeatmap(da, db, scale)));
+        if (!heatmap.empty())
+            eng::io::writePng(heatmap, eng::io::quantizeToU8(eng::io::errorHeatmap(da, db, scale)));
     } catch (const eng::io::IoError& e) {
         std::fprintf(stderr, "imgdiff: %s\n", e.what());
         return 2;

@@ -45,7 +45,8 @@ std::string kindList() {
         s += (s.empty() ? "" : ", ") + k;
     }
     s += "; adversarial (tests/hard):";
-    for (const std::string& k : eng::scene::hardSceneKinds()) s += " " + k;
+    for (const std::string& k : eng::scene::hardSceneKinds())
+        s += " " + k;
     return s;
 }
 
@@ -79,7 +80,8 @@ Args parse(int argc, char** argv) {
         if (flag == "--kind") {
             const std::string kind = value();
             const auto kinds = eng::scene::sceneKinds();
-            if (std::find(kinds.begin(), kinds.end(), kind) == kinds.end() && !eng::scene::isHardSceneKind(kind)) {
+            if (std::find(kinds.begin(), kinds.end(), kind) == kinds.end() &&
+                !eng::scene::isHardSceneKind(kind)) {
                 throw UsageError{"--kind: '" + kind + "' is not one of " + kindList()};
             }
             args.kind = kind;
@@ -172,7 +174,8 @@ int main(int argc, char** argv) {
         for (const std::string& k : eng::scene::sceneKinds()) {
             std::cout << k << "\n";
         }
-        for (const std::string& k : eng::scene::hardSceneKinds()) std::cout << k << " (adversarial)\n";
+        for (const std::string& k : eng::scene::hardSceneKinds())
+            std::cout << k << " (adversarial)\n";
         return kExitOk;
     }
     try {
