@@ -163,4 +163,19 @@ SampleGBuffer SampleGBufferPass::add(rg::Graph& graph, const FrameInputs& in) {
     return out.g;
 }
 
+std::vector<eng::vk::Binding> SampleGBufferPass::lightingBindings() {
+    constexpr VkShaderStageFlags cs = VK_SHADER_STAGE_COMPUTE_BIT;
+    return {{0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, cs},
+            {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs},
+            {2, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, cs},
+            {3, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, cs},
+            {4, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, cs},
+            {5, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, cs},
+            {6, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs},
+            {7, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs},
+            {8, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs},
+            {9, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, cs},
+            {10, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, cs}};
+}
+
 } // namespace agaa

@@ -11,6 +11,7 @@
 
 #include <array>
 #include <string>
+#include <vector>
 
 namespace agaa {
 
@@ -37,6 +38,11 @@ class SampleGBufferPass {
     ~SampleGBufferPass();
     SampleGBufferPass(const SampleGBufferPass&) = delete;
     SampleGBufferPass& operator=(const SampleGBufferPass&) = delete;
+
+    // Set 0 of every compute pass that lights this G-buffer through common/gbuffer_lighting.glsl
+    // (reference, Simple/Complex): 0 frame, 1 lights, 2-5 the G-buffer, 6-8 hdr/display/events,
+    // 9 shadow maps, 10 shadow constants.
+    static std::vector<eng::vk::Binding> lightingBindings();
 
     // Adds the "<name>.gbuffer" graphics pass.
     SampleGBuffer add(eng::rg::Graph& graph, const FrameInputs& inputs);

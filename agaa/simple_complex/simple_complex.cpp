@@ -43,19 +43,7 @@ SimpleComplex::SimpleComplex(vk::Device& device, const eng::frame::GpuScene& sce
       m_shadow(device, scene, m_features, settings.effects, m_name) {
     checkSettings(settings);
     vk::LayoutDesc lighting;
-    const VkShaderStageFlags cs = VK_SHADER_STAGE_COMPUTE_BIT;
-    lighting.pushBindings = {
-        {0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, cs},
-        {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs},
-        {2, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, cs},
-        {3, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, cs},
-        {4, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, cs},
-        {5, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, cs},
-        {6, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs},
-        {7, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs},
-        {8, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs},
-        {9, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, cs}, // shadow maps (shadowed scenes)
-        {10, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, cs}};
+    lighting.pushBindings = SampleGBufferPass::lightingBindings();
     lighting.pushConstantBytes = sizeof(shared::SimpleComplexParams);
     m_lightingLayout = vk::createPipelineLayout(device, lighting, m_name + ".lighting.layout");
     const bool shadows = m_shadow.enabled();
