@@ -81,8 +81,12 @@ std::optional<double> shadingPassMs(const JobResult& r) {
     double sum = 0.0;
     bool any = false;
     for (const PassTime& p : r.passes) {
+        // The shading pass is the one that lights the samples or aggregates ("<method>.lighting");
+        // shadow-map passes ("<method>.shadow") render depth and are not shading.
         const std::string n = lower(p.name);
-        if (n.find("light") == std::string::npos && n.find("shad") == std::string::npos) continue;
+        const std::string suffix = ".lighting";
+        if (n.size() < suffix.size() || n.compare(n.size() - suffix.size(), suffix.size(), suffix) != 0)
+            continue;
         sum += p.ms.median;
         any = true;
     }

@@ -341,8 +341,8 @@ void writeReport(const fs::path& outDir, const std::vector<JobResult>& results, 
       << "<p class=\"small\">The quoted ratios come from the AGAA paper and talks (GTX 980, OpenGL, "
          "1280x720). "
          "The measured ones come from this run on a software rasteriser, at this run's size; ranges are over "
-         "scenes. Shading pass = the passes whose name contains &ldquo;light&rdquo; or "
-         "&ldquo;shad&rdquo;.</p>\n"
+         "scenes. Shading pass = the pass named &ldquo;&lt;method&gt;.lighting&rdquo; (shadow-map "
+         "passes are not shading).</p>\n"
       << claimsTable(results) << "</section>\n";
 
     for (size_t i = 0; i < scenes.size(); ++i) {
