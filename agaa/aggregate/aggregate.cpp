@@ -55,24 +55,10 @@ FrameTargets AggregateAA::addPasses(rg::Graph& graph, const FrameInputs& in) {
     rg::Buffer materials = importScene(graph, "scene.materials", scene->materials());
     m_resources.agaaConstants = agaaConstants;
 
+    // One instance per emulation layer (common/scene_vertex.glsl).
     auto drawScene = [scene, layers](VkCommandBuffer cmd, VkPipelineLayout layout,
                                      const std::vector<VkPipeline>& pipes) {
-        VkDeviceSize offset = 0;
-        VkBuffer vb = scene->vertexBuffer();
-        vkCmdBindVertexBuffers(cmd, 0, 1, &vb, &offset);
-        vkCmdBindIndexBuffer(cmd, scene->indexBuffer(), 0, VK_INDEX_TYPE_UINT32);
-        VkDescriptorSet textures = scene->textureSet();
-        vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout, 1, 1, &textures, 0, nullptr);
-        VkPipeline bound = VK_NULL_HANDLE;
-        const auto& draws = scene->scene().draws;
-        for (size_t i = 0; i < draws.size(); ++i) {
-            if (draws[i].indexCount == 0) continue;
-            if (pipes[i] != bound) vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, bound = pipes[i]);
-            uint32_t material = draws[i].material;
-            vkCmdPushConstants(cmd, layout, VK_SHADER_STAGE_ALL, 0, sizeof material, &material);
-            vkCmdDrawIndexed(cmd, draws[i].indexCount, layers, draws[i].firstIndex, 0,
-                             0); // one instance per layer
-        }
+        scene->recordDraws(cmd, layout, pipes, layers);
     };
     auto beginRendering = [](VkCommandBuffer cmd, uint32_t w, uint32_t h, uint32_t layerCount,
                              const VkRenderingAttachmentInfo* color, const VkRenderingAttachmentInfo& depth) {

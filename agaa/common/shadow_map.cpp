@@ -190,28 +190,11 @@ ShadowMaps ShadowMapPass::add(rg::Graph& graph, const FrameInputs& in) {
             VkRect2D scissor{{0, 0}, {size, size}};
             vkCmdSetViewport(cmd, 0, 1, &viewport);
             vkCmdSetScissor(cmd, 0, 1, &scissor);
-            VkDeviceSize offset = 0;
-            VkBuffer vb = gpuScene->vertexBuffer();
-            vkCmdBindVertexBuffers(cmd, 0, 1, &vb, &offset);
-            vkCmdBindIndexBuffer(cmd, gpuScene->indexBuffer(), 0, VK_INDEX_TYPE_UINT32);
             vk::PushDescriptors()
                 .uniform(0, ctx.buffer(d.constants).buffer)
                 .storage(1, ctx.buffer(d.materials).buffer)
                 .push(m_device, cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, m_layout.layout);
-            VkDescriptorSet textures = gpuScene->textureSet();
-            vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, m_layout.layout, 1, 1, &textures, 0,
-                                    nullptr);
-            VkPipeline bound = VK_NULL_HANDLE;
-            const auto& draws = gpuScene->scene().draws;
-            for (size_t i = 0; i < draws.size(); ++i) {
-                if (draws[i].indexCount == 0) continue;
-                if (drawPipelines[i] != bound)
-                    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, bound = drawPipelines[i]);
-                uint32_t material = draws[i].material;
-                vkCmdPushConstants(cmd, m_layout.layout, VK_SHADER_STAGE_ALL, 0, 4, &material);
-                vkCmdDrawIndexed(cmd, draws[i].indexCount, m_mapCount, draws[i].firstIndex, 0,
-                                 0); // instance = layer
-            }
+            gpuScene->recordDraws(cmd, m_layout.layout, drawPipelines, m_mapCount); // instance = layer
             vkCmdEndRendering(cmd);
         });
     return {out.map, out.constants};

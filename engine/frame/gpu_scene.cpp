@@ -272,6 +272,26 @@ GpuScene::~GpuScene() {
     vk::destroyBuffer(m_device, m_materials);
 }
 
+void GpuScene::recordDraws(VkCommandBuffer cmd, VkPipelineLayout layout,
+                           std::span<const VkPipeline> pipelinePerDraw, uint32_t instances) const {
+    VkDeviceSize offset = 0;
+    vkCmdBindVertexBuffers(cmd, 0, 1, &m_vertices.buffer, &offset);
+    vkCmdBindIndexBuffer(cmd, m_indices.buffer, 0, VK_INDEX_TYPE_UINT32);
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout, 1, 1, &m_textureSet, 0, nullptr);
+    VkPipeline bound = VK_NULL_HANDLE;
+    const auto& draws = m_scene.draws;
+    for (size_t i = 0; i < draws.size() && i < pipelinePerDraw.size(); ++i) {
+        if (draws[i].indexCount == 0) continue;
+        if (pipelinePerDraw[i] != bound) {
+            bound = pipelinePerDraw[i];
+            vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, bound);
+        }
+        uint32_t material = draws[i].material;
+        vkCmdPushConstants(cmd, layout, VK_SHADER_STAGE_ALL, 0, sizeof material, &material);
+        vkCmdDrawIndexed(cmd, draws[i].indexCount, instances, draws[i].firstIndex, 0, 0);
+    }
+}
+
 bool GpuScene::hasEmissive() const {
     for (const scene::Material& m : m_scene.materials)
         if (m.emissiveStrength > 0.0f &&

@@ -9,6 +9,7 @@
 #include "engine/vk/device.h"
 #include "engine/vk/resources.h"
 
+#include <span>
 #include <vector>
 
 namespace eng::frame {
@@ -27,6 +28,13 @@ class GpuScene {
     const vk::Buffer& vertices() const { return m_vertices; }
     const vk::Buffer& indices() const { return m_indices; }
     bool hasEmissive() const; // any material emits light
+
+    // Records every draw of the scene into a rendering pass: binds the vertex and index
+    // buffers and the texture set (set 1 of `layout`), and per draw its pipeline
+    // (pipelinePerDraw[i]) and its material index (push constant, 4 bytes at offset 0), with
+    // `instances` instances (one per emulation layer or shadow-map layer).
+    void recordDraws(VkCommandBuffer cmd, VkPipelineLayout layout,
+                     std::span<const VkPipeline> pipelinePerDraw, uint32_t instances) const;
     const vk::Buffer& materials() const { return m_materials; }
     VkDescriptorSetLayout textureSetLayout() const { return m_textureSetLayout; }
     VkDescriptorSet textureSet() const { return m_textureSet; }
