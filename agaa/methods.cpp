@@ -78,6 +78,13 @@ std::unique_ptr<Technique> createTechnique(const std::string& method, eng::vk::D
         if (settings.characteristicLength >= 0.0f) s.characteristicLength = settings.characteristicLength;
         if (settings.seedThreshold >= 0.0f) s.seedThreshold = settings.seedThreshold;
         if (settings.pixelCentrePosition) s.position = AggregatePosition::PixelCentre;
+        if (settings.ndf == "sggx")
+            s.ndf = AggregateNdf::Sggx;
+        else if (settings.ndf == "toksvig")
+            s.ndf = AggregateNdf::Toksvig;
+        else if (settings.ndf != "auto")
+            throw std::invalid_argument("agaa: normal distribution '" + settings.ndf +
+                                        "' is unknown (allowed: auto, sggx, toksvig)");
         return std::make_unique<AggregateAA>(device, scene, s);
     }
     throw std::invalid_argument("--method '" + method + "' is unknown (known: " + knownMethodNames() + ")");

@@ -41,7 +41,7 @@ shared::AgaaConstants makeAgaaConstants(const AggregateSettings& s, const shared
     // Blinn-Phong exponent of the smoothest representable surface.
     float smax = 2.0f / (kMinGgxAlpha * kMinGgxAlpha) - 2.0f;
     c.toksvig = {smax, kMinGgxAlpha, kMaxGgxAlpha, 0.0f};
-    c.options = {uint32_t(s.debugView), uint32_t(s.position), hasEmissive ? 1u : 0u, 0u};
+    c.options = {uint32_t(s.debugView), uint32_t(s.position), hasEmissive ? 1u : 0u, uint32_t(s.ndf)};
     return c;
 }
 

@@ -14,6 +14,13 @@ enum class AggregateDebugView : uint32_t { None = 0, Aggregates = 1 };
 // Where an aggregate is shaded from: the mean of its samples' view positions (default), or the
 // UE4 shortcut (seed 004): its mean depth on the pixel centre's ray.
 enum class AggregatePosition : uint32_t { SampleMean = 0, PixelCentre = 1 };
+// How an aggregate's normals are filtered (shared/agaa.h layouts, same 20 bytes each): the
+// isotropic Toksvig vector of paper section 3.5.2, or the anisotropic SGGX matrix (shared/sggx.h,
+// the paper's choice for thin glossy rods) with the two-point tone-mapped resolve.
+// Auto: SGGX where the scene has glossy metals (eng::scene::SceneFeatures::glossyMetalMaterials),
+// Toksvig elsewhere (its mean shading normal lights diffuse aggregates better: measured in
+// agaa/aggregate/README.md).
+enum class AggregateNdf : uint32_t { Toksvig = 0, Sggx = 1, Auto = 2 };
 
 struct AggregateSettings {
     uint32_t samples = 8;              // n
@@ -24,6 +31,7 @@ struct AggregateSettings {
     float seedThreshold = 0.05f;
     AggregateDebugView debugView = AggregateDebugView::None;
     AggregatePosition position = AggregatePosition::SampleMean;
+    AggregateNdf ndf = AggregateNdf::Auto;
     EffectSettings effects; // scene-driven shadows (taps: the footprint filter), alpha-to-coverage, ...
 };
 

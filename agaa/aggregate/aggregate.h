@@ -67,6 +67,7 @@ class AggregateAA final : public Technique {
     AggregateSettings m_settings;
     const eng::scene::Scene& m_scene;
     eng::scene::SceneFeatures m_features;
+    AggregateNdf m_requestedNdf; // m_settings.ndf is the resolved one (never Auto)
     bool m_hasEmissive = false;
     VkFormat m_depthFormat = VK_FORMAT_D24_UNORM_S8_UINT;
     shared::AgaaConstants m_constants{};

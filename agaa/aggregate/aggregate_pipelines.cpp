@@ -34,9 +34,11 @@ constexpr VkShaderStageFlags kVsFs = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAG
 AggregateAA::AggregateAA(vk::Device& device, const eng::frame::GpuScene& scene,
                          const AggregateSettings& settings)
     : m_device(device), m_settings(settings), m_scene(scene.scene()),
-      m_features(effectiveFeatures(scene.scene(), settings.effects)),
+      m_features(effectiveFeatures(scene.scene(), settings.effects)), m_requestedNdf(settings.ndf),
       m_hasEmissive(m_features.hasEmissive()) {
     validate(settings);
+    if (m_settings.ndf == AggregateNdf::Auto)
+        m_settings.ndf = m_features.hasGlossyMetals() ? AggregateNdf::Sggx : AggregateNdf::Toksvig;
     m_shadow = std::make_unique<ShadowMapPass>(device, scene, m_features, settings.effects, "agaa");
     const vk::Capabilities& caps = device.caps();
     if (!caps.supportsSamples(4))
@@ -206,6 +208,11 @@ std::vector<VariantChoice> AggregateAA::variants() const {
             choice.variant += m_settings.effects.shadowFootprint == EffectSettings::ShadowFootprint::Samples
                                   ? " at the aggregate's sample positions"
                                   : " along the aggregate's depth-variance vector";
+    const bool sggx = m_settings.ndf == AggregateNdf::Sggx;
+    v.push_back({"normal-distribution", sggx ? "sggx, two-point tone-mapped resolve" : "toksvig",
+                 m_requestedNdf != AggregateNdf::Auto
+                     ? std::string("setting --agaa-ndf")
+                     : std::to_string(m_features.glossyMetalMaterials) + " glossy metal materials"});
     return v;
 }
 

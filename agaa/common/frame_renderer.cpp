@@ -52,10 +52,11 @@ FrameRenderer::~FrameRenderer() {
 }
 
 Technique& FrameRenderer::technique(const RenderRequest& r) {
-    std::string key =
-        r.method + "/" + std::to_string(r.settings.samples) + "/" + std::to_string(r.settings.aggregates) +
-        "/" + r.settings.debug + "/" + std::to_string(r.settings.characteristicLength) + "/" +
-        std::to_string(r.settings.seedThreshold) + (r.settings.pixelCentrePosition ? "/centre" : "");
+    std::string key = r.method + "/" + std::to_string(r.settings.samples) + "/" +
+                      std::to_string(r.settings.aggregates) + "/" + r.settings.debug + "/" +
+                      std::to_string(r.settings.characteristicLength) + "/" +
+                      std::to_string(r.settings.seedThreshold) +
+                      (r.settings.pixelCentrePosition ? "/centre" : "") + "/" + r.settings.ndf;
     auto it = m_techniques.find(key);
     if (it == m_techniques.end())
         it = m_techniques.emplace(key, createTechnique(r.method, m_device, m_gpuScene, r.settings)).first;

@@ -45,6 +45,9 @@ struct MethodSettings {
     // AGAA shading position: false = mean of the aggregate's sample positions, true = the UE4
     // shortcut (seed 004): the mean depth on the pixel centre's ray.
     bool pixelCentrePosition = false;
+    // AGAA normal distribution per aggregate: "auto" (SGGX where the scene has glossy metals,
+    // Toksvig elsewhere), "sggx" or "toksvig" (agaa/aggregate/agaa_constants.h AggregateNdf).
+    std::string ndf = "auto";
     EffectSettings effects; // scene-driven shadows, alpha-to-coverage, emissive, normal maps
 };
 

@@ -41,6 +41,8 @@ SceneFeatures deriveSceneFeatures(const Scene& scene) {
         const glm::vec3 e = mat.emissiveFactor * mat.emissiveStrength;
         if (std::max({e.x, e.y, e.z}) > 0.0f) ++f.emissiveMaterials;
         if (mat.normalTexture >= 0) ++f.normalMappedMaterials;
+        if (mat.metallicFactor >= kGlossyMetallic && mat.roughnessFactor <= kGlossyRoughness)
+            ++f.glossyMetalMaterials;
     }
     return f;
 }

@@ -13,6 +13,10 @@ namespace eng::scene {
 
 // Shadow maps live in the layers of one array texture; at most this many lights get one.
 inline constexpr uint32_t kMaxShadowedLights = 4;
+// A material counts as a glossy metal from these factors on (scenegen's steel, brass and railing
+// paint; fur, bark, bamboo, floors and walls stay below).
+inline constexpr float kGlossyMetallic = 0.5f;
+inline constexpr float kGlossyRoughness = 0.4f;
 
 struct SceneFeatures {
     // Indices into Scene::lights of the directional and spot lights with castsShadows, in light
@@ -25,6 +29,9 @@ struct SceneFeatures {
     uint32_t blendedMaterials = 0;      // AlphaMode::Blend: drawn opaque (no sorted transparency)
     uint32_t emissiveMaterials = 0;     // emissiveFactor * strength > 0
     uint32_t normalMappedMaterials = 0; // normalTexture >= 0
+    // Glossy metals (metallicFactor >= kGlossyMetallic, roughnessFactor <= kGlossyRoughness): the
+    // thin bright highlights an isotropic normal distribution smears (AGAA picks SGGX for them).
+    uint32_t glossyMetalMaterials = 0;
     uint32_t directionalLights = 0, pointLights = 0, spotLights = 0;
     // Conservative: true unless the scene's geometry provably covers every view direction,
     // which this cheap estimate never claims (a prepass would be needed). Reported, never used
@@ -36,6 +43,7 @@ struct SceneFeatures {
     bool hasMasked() const { return maskedMaterials > 0; }
     bool hasEmissive() const { return emissiveMaterials > 0; }
     bool hasNormalMaps() const { return normalMappedMaterials > 0; }
+    bool hasGlossyMetals() const { return glossyMetalMaterials > 0; }
     // Tile light culling only prunes point and spot lights; directional lights touch every tile.
     bool needsLightCulling() const { return forced || pointLights + spotLights > 0; }
 };

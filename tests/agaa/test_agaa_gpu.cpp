@@ -10,6 +10,7 @@
 #include "engine/io/tone_map.h"
 #include "engine/scene/scenegen.h"
 #include "gpu_test_support.h"
+#include "shared/ag_buffer.h"
 #include "shared/clustering.h"
 
 #include <gtest/gtest.h>
@@ -126,13 +127,16 @@ TEST(AgaaGpu, AccumulationMatchesACpuReplayOfTheSameFragments) {
         const char* scene;
         uint32_t n, c;
     };
+    // pixel, layer, mask and the quantised fields (generation.glsl kRecordWords)
+    constexpr uint32_t kRecordWords = 3 + shared::kQuantizedFields;
+    // furball and foliage accumulate Toksvig vectors, railings (glossy metal paint) SGGX matrices.
     for (const Case& k : {Case{"furball", 8, 2}, Case{"railings", 16, 3}, Case{"foliage", 32, 4}}) {
         eng::scene::Scene scene = eng::scene::loadBuiltin(k.scene);
         agaa::FrameRenderer renderer(*device, scene);
         const uint32_t size = 64, window = 16, capacity = 400000;
         const uint32_t words = shared::metadataWords(k.n, k.c);
         vk::Buffer records =
-            vk::createBuffer(*device, 8 + VkDeviceSize(capacity) * 48,
+            vk::createBuffer(*device, 8 + VkDeviceSize(capacity) * kRecordWords * 4,
                              VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                              vk::MemoryUse::Readback, "test.records");
         static_cast<uint32_t*>(records.mapped)[1] = capacity;
@@ -159,7 +163,10 @@ TEST(AgaaGpu, AccumulationMatchesACpuReplayOfTheSameFragments) {
         const auto* meta = static_cast<const uint32_t*>(metadata.mapped);
         std::vector<uint64_t> cpu(size_t(size) * size * k.c * shared::kAggregateWords, 0);
         for (uint32_t i = 0; i < count; ++i) {
-            const uint32_t* f = rec + 2 + size_t(i) * 12;
+            const uint32_t* f = rec + 2 + size_t(i) * kRecordWords;
+            shared::AgQuantized q;
+            for (uint32_t j = 0; j < shared::kQuantizedFields; ++j)
+                q.q[j] = f[3 + j];
             uint32_t pixel = f[0], layer = f[1], mask = f[2];
             uint32_t per[4] = {};
             for (uint32_t hw = 0; hw < 4; ++hw) {
@@ -171,11 +178,8 @@ TEST(AgaaGpu, AccumulationMatchesACpuReplayOfTheSameFragments) {
             }
             for (uint32_t a = 0; a < k.c; ++a) {
                 uint64_t* w = &cpu[(size_t(pixel) * k.c + a) * shared::kAggregateWords];
-                w[0] += (uint64_t(per[a]) << shared::kCountShift) + per[a] * uint64_t(f[3]);
-                w[1] += per[a] * uint64_t(f[4]);
-                w[2] += per[a] * uint64_t(f[5]);
-                w[3] += per[a] * uint64_t(f[6]) + ((per[a] * uint64_t(f[7])) << 16);
-                w[4] += per[a] * uint64_t(f[8]) + ((per[a] * uint64_t(f[9])) << 16);
+                for (uint32_t j = 0; j < shared::kAggregateWords; ++j)
+                    w[j] += shared::aggregateIncrement(technique.constants().options.w, j, per[a], q);
             }
         }
         const auto* gpu = static_cast<const uint32_t*>(ag.mapped);
@@ -190,8 +194,10 @@ TEST(AgaaGpu, AccumulationMatchesACpuReplayOfTheSameFragments) {
                         mismatches += gpu[i] != uint32_t(cpu[i]);
                         ++compared;
                     }
-        std::printf("[ measured ] %s n=%u c=%u: %u fragments replayed, %u AG-buffer words compared\n",
-                    k.scene, k.n, k.c, count, compared);
+        std::printf("[ measured ] %s n=%u c=%u (%s): %u fragments replayed, %u AG-buffer words compared\n",
+                    k.scene, k.n, k.c,
+                    technique.constants().options.w == shared::kNdfSggx ? "sggx" : "toksvig", count,
+                    compared);
         EXPECT_EQ(mismatches, 0u) << k.scene << ": the AG-buffer differs from the CPU accumulation";
         renderer.technique(r); // keep the technique alive until the buffers are released
         vkDeviceWaitIdle(device->device());
@@ -257,22 +263,17 @@ TEST(AgaaGpu, ErrorBelowHalfOfNoAaAndFallsWithMoreAggregates) {
         std::printf("[ measured ] %-9s RMSE vs reference(8): noaa %.5f, agaa c=1 %.5f, c=2 %.5f, c=4 %.5f; "
                     "mean linear radiance reference %.4f, agaa c=2 %.4f\n",
                     name, noaa, error[1], error[2], error[4], meanRef, meanAgaa2);
+        // metal renders with SGGX (auto: glossy metals), the others with Toksvig.
+        EXPECT_LT(error[2], 0.5 * noaa) << name << ": AGAA (8, 2) must halve no-AA's error";
         if (std::string(name) == "metal") {
-            // Known limit, measured (README, "AGAA quality"): on thin glossy tubes the isotropic
-            // Toksvig lobe spreads each highlight over the aggregate. In linear radiance that is
-            // right (the test below halves no-AA's error), but tone-mapping the spread highlight
-            // brightens it compared with averaging tone-mapped per-sample highlights, so on the
-            // display image AGAA (8, 2) reaches about 0.7x of no-AA's error, not 0.5x. The paper
-            // used anisotropic LEAN for this scene.
-            EXPECT_LT(error[2], noaa) << name << ": AGAA (8, 2) must still beat no-AA on the display image";
-            double linearNoaa = eng::io::rmse(renderer.render(request("noaa", 1, 1, size)).hdr, refFrame.hdr);
-            double linearAgaa = eng::io::rmse(renderer.render(request("agaa", 8, 2, size)).hdr, refFrame.hdr);
-            std::printf("[ measured ] metal linear-radiance RMSE: noaa %.4f, agaa c=2 %.4f (ratio %.3f)\n",
-                        linearNoaa, linearAgaa, linearAgaa / linearNoaa);
-            EXPECT_LT(linearAgaa, 0.5 * linearNoaa)
-                << "metal: in linear radiance AGAA (8, 2) halves no-AA's error";
-        } else {
-            EXPECT_LT(error[2], 0.5 * noaa) << name << ": AGAA (8, 2) must halve no-AA's error";
+            // Why SGGX (README, "AGAA quality"): the isotropic Toksvig lobe spreads each thin tube's
+            // highlight over the aggregate; measured, not gated.
+            agaa::RenderRequest toksvig = request("agaa", 8, 2, size);
+            toksvig.settings.ndf = "toksvig";
+            std::printf("[ measured ] metal AGAA (8, 2) with Toksvig: RMSE %.5f = %.3fx no-AA (SGGX %.3fx)\n",
+                        eng::io::rmse(encoded(renderer.render(toksvig).display), ref),
+                        eng::io::rmse(encoded(renderer.render(toksvig).display), ref) / noaa,
+                        error[2] / noaa);
         }
         // More aggregates never hurt, up to a 5 % tolerance: clustering is greedy, and a split
         // can move a sample's shading point slightly.

@@ -4,9 +4,13 @@
 
 #include "agaa/aggregate/agaa_constants.h"
 #include "shared/ag_buffer.h"
+#include "shared/sggx.h"
 
 #include <gtest/gtest.h>
 
+#include <glm/gtc/constants.hpp>
+
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -92,6 +96,141 @@ TEST(Toksvig, GuardsAtTheEdges) {
     EXPECT_TRUE(std::isfinite(filteredAlpha(std::numeric_limits<float>::denorm_min(), smax)));
     // Two opposite unit normals average to |N| = 0: fully rough, as Toksvig intends.
     EXPECT_FLOAT_EQ(filteredAlpha(0.5f * (1.0f + -1.0f), smax), 1.0f);
+}
+
+// ---- SGGX layout (shared/agaa.h) -------------------------------------------------------
+
+// The quantised fields of one sample, as generation.glsl computes them.
+AgQuantized sggxSample(glm::vec3 n, float alpha, glm::vec3 albedo, float metallic, uint32_t samples) {
+    const float a = std::clamp(alpha, agaa::kMinGgxAlpha, agaa::kMaxGgxAlpha), a2 = a * a;
+    const glm::vec3 N = n * (1.0f - a2);
+    const uint32_t scale = unitScale(kSggxFieldBits, samples);
+    AgQuantized f;
+    f.q[0] = quantizeUnit(N.x * n.x + a2, scale);
+    f.q[1] = quantizeUnit(N.y * n.y + a2, scale);
+    f.q[2] = quantizeUnit(N.z * n.z + a2, scale);
+    f.q[3] = quantizeUnit(N.x * n.y + 0.5f, scale);
+    f.q[4] = quantizeUnit(N.x * n.z + 0.5f, scale);
+    f.q[5] = quantizeUnit(N.y * n.z + 0.5f, scale);
+    f.q[6] = quantizeUnit(albedo.r, scale);
+    f.q[7] = quantizeUnit(albedo.g, scale);
+    f.q[8] = quantizeUnit(albedo.b, scale);
+    f.q[9] = quantizeUnit(metallic, unitScale(kSggxMetallicBits, samples));
+    return f;
+}
+
+SggxLobe decodeLobe(const uint32_t (&w)[kAggregateWords], uint32_t samples, glm::vec3 V) {
+    const uint32_t k = aggregateSampleCount(kNdfSggx, w[0], w[4]);
+    const uint32_t scale = unitScale(kSggxFieldBits, samples);
+    auto field = [&](uint32_t i, uint32_t shift) { return meanUnit((w[i] >> shift) & 0xFFFFu, k, scale); };
+    return sggxLobe(field(0, 0), field(0, 16), field(1, 0), field(1, 16) - 0.5f, field(2, 0) - 0.5f,
+                    field(2, 16) - 0.5f, V, 1e-8f, 0.25f);
+}
+
+// n samples in one aggregate, every field at its largest value: no field carries into the next,
+// for every n AGAA supports (the scale shrinks with n).
+TEST(FixedPointSggx, NoCarryBetweenFieldsAtAnySampleCount) {
+    for (uint32_t n : {4u, 8u, 16u, 32u}) {
+        const uint32_t s16 = unitScale(kSggxFieldBits, n), s10 = unitScale(kSggxMetallicBits, n);
+        EXPECT_LT(uint64_t(n) * s16, uint64_t(1) << 16) << "n=" << n;
+        EXPECT_LT(uint64_t(n) * s10, uint64_t(1) << kSggxMetallicBits) << "n=" << n;
+        EXPECT_LT(uint64_t(n), uint64_t(1) << (32 - kCountShift)) << "n=" << n;
+        EXPECT_GE(uint64_t(n + 1) * s16, uint64_t(1) << 16) << "the scale is the largest that fits";
+        AgQuantized top;
+        for (uint32_t& q : top.q)
+            q = s16;
+        top.q[9] = s10;
+        uint64_t w[kAggregateWords] = {};
+        for (uint32_t fragment = 0; fragment < n; ++fragment) // one sample per fragment
+            for (uint32_t j = 0; j < kAggregateWords; ++j)
+                w[j] += aggregateIncrement(kNdfSggx, j, 1, top);
+        for (uint32_t j = 0; j < kAggregateWords; ++j) {
+            ASSERT_LE(w[j], uint64_t(std::numeric_limits<uint32_t>::max())) << "word " << j;
+            if (j < 4) {
+                EXPECT_EQ(w[j] & 0xFFFFu, n * s16) << "word " << j;
+                EXPECT_EQ(w[j] >> 16, n * s16) << "word " << j;
+            }
+        }
+        EXPECT_EQ(w[4] & 0xFFFFu, n * s16);
+        EXPECT_EQ((w[4] >> 16) & 1023u, n * s10);
+        EXPECT_EQ(aggregateSampleCount(kNdfSggx, uint32_t(w[0]), uint32_t(w[4])), n);
+    }
+}
+
+// A flat pixel (every sample the same normal and roughness) decodes to that normal and that
+// alpha on both axes: SGGX degenerates to the isotropic GGX lobe, for any orientation.
+TEST(FixedPointSggx, FlatPixelRoundTripsNormalAndAlpha) {
+    const glm::vec3 V(0.0f, 0.0f, 1.0f);
+    for (uint32_t n : {8u, 32u})
+        for (float roughness : {0.3f, 0.5f, 0.7f, 1.0f})
+            for (glm::vec3 normal :
+                 {glm::vec3(0, 0, 1), glm::vec3(0.6f, 0.0f, 0.8f), glm::vec3(-0.3f, 0.5f, 0.81f)}) {
+                const glm::vec3 N = glm::normalize(normal);
+                const float alpha = std::clamp(roughness * roughness, agaa::kMinGgxAlpha, agaa::kMaxGgxAlpha);
+                const AgQuantized f = sggxSample(N, roughness * roughness, glm::vec3(0.5f), 1.0f, n);
+                uint32_t w[kAggregateWords] = {};
+                for (uint32_t j = 0; j < kAggregateWords; ++j)
+                    w[j] = aggregateIncrement(kNdfSggx, j, n, f);
+                const SggxLobe lobe = decodeLobe(w, n, V);
+                EXPECT_GT(glm::dot(lobe.normal, N), 0.99995f) << "n=" << n << " r=" << roughness;
+                // 13-bit (n = 8) or 11-bit (n = 32) entries: alpha^2 within a few steps.
+                const float tolerance = 4.0f / float(unitScale(kSggxFieldBits, n));
+                EXPECT_NEAR(lobe.alphaT * lobe.alphaT, alpha * alpha, tolerance) << "n=" << n;
+                EXPECT_NEAR(lobe.alphaB * lobe.alphaB, alpha * alpha, tolerance) << "n=" << n;
+                EXPECT_NEAR(sggxSpikeRatio(lobe.alphaT, std::max(lobe.alphaB, 1e-3f)), 1.0f, 0.05f)
+                    << "a flat pixel has no highlight to spread";
+            }
+}
+
+// A thin tube seen side on: its samples' normals span the half circle across the tube axis
+// (x here), none along it (y). SGGX keeps that: wide along x, the material's alpha along y.
+TEST(FixedPointSggx, TubeSpreadIsAnisotropicAndKeepsTheMaterialAlphaAlongTheAxis) {
+    const uint32_t n = 8;
+    const float roughness = 0.2f, alpha = roughness * roughness;
+    uint32_t w[kAggregateWords] = {};
+    for (uint32_t s = 0; s < n; ++s) {
+        // Screen positions uniform across the tube: normal angle asin(u), u in (-1, 1).
+        const float u = (float(s) + 0.5f) / float(n) * 2.0f - 1.0f;
+        const glm::vec3 N(u, 0.0f, std::sqrt(1.0f - u * u));
+        const AgQuantized f = sggxSample(N, alpha, glm::vec3(0.9f), 1.0f, n);
+        for (uint32_t j = 0; j < kAggregateWords; ++j)
+            w[j] += aggregateIncrement(kNdfSggx, j, 1, f);
+    }
+    const SggxLobe lobe = decodeLobe(w, n, glm::vec3(0.0f, 0.0f, 1.0f));
+    EXPECT_GT(lobe.normal.z, 0.999f) << "the mean orientation faces the viewer";
+    EXPECT_GT(std::abs(lobe.tangent.x), 0.999f) << "the wide axis is across the tube";
+    EXPECT_GT(lobe.alphaT, 0.6f);
+    EXPECT_NEAR(lobe.alphaB, alpha, 0.25f * alpha) << "along the tube only the material roughness remains";
+    const float ratio = sggxSpikeRatio(lobe.alphaT, lobe.alphaB);
+    EXPECT_GT(ratio, 5.0f) << "a glossy tube's highlight lights a small fraction of its samples";
+    EXPECT_NEAR(ratio,
+                lobe.alphaT * lobe.alphaT /
+                    (lobe.alphaB * std::sqrt(2.0f * lobe.alphaT * lobe.alphaT - lobe.alphaB * lobe.alphaB)),
+                1e-3f * ratio);
+}
+
+// Guards: an already diagonal matrix skips every rotation (kSggxOffDiagonal); a corrupt matrix
+// with a tiny largest eigenvalue is floored (kMinSggxEigenvalue), never a division by ~0.
+TEST(FixedPointSggx, EigenGuardsAtTheirEdges) {
+    const glm::vec3 V(0.0f, 0.0f, 1.0f);
+    SggxLobe d = sggxLobe(0.01f, 0.04f, 1.0f, 0.0f, 0.0f, 0.0f, V, 1e-8f, 0.25f);
+    EXPECT_FLOAT_EQ(d.normal.z, 1.0f);
+    EXPECT_FLOAT_EQ(d.alphaT, 0.2f);
+    EXPECT_FLOAT_EQ(d.alphaB, 0.1f);
+    SggxLobe tiny = sggxLobe(1e-9f, 1e-9f, 1e-9f, 5e-9f, 0.0f, 0.0f, V, 1e-8f, 0.25f);
+    EXPECT_TRUE(std::isfinite(tiny.alphaT) && std::isfinite(tiny.alphaB));
+    EXPECT_LE(tiny.alphaT, 1e-3f);
+    // A negative eigenvalue (quantisation) clamps to alpha 0, not NaN.
+    SggxLobe negative = sggxLobe(-1e-4f, 0.5f, 1.0f, 0.0f, 0.0f, 0.0f, V, 1e-8f, 0.25f);
+    EXPECT_EQ(negative.alphaB, 0.0f);
+    // The normal always faces the viewer's side.
+    SggxLobe away = sggxLobe(0.1f, 0.1f, 1.0f, 0.0f, 0.0f, 0.0f, glm::vec3(0.0f, 0.0f, -1.0f), 1e-8f, 0.25f);
+    EXPECT_LT(away.normal.z, 0.0f);
+    // Two orthogonal planes in one aggregate: a valid orthonormal frame either way.
+    SggxLobe corner =
+        sggxLobe(0.5f, 0.0f, 0.5f, 0.0f, 0.0f, 0.0f, glm::normalize(glm::vec3(1, 0, 1)), 1e-8f, 0.25f);
+    EXPECT_NEAR(glm::dot(corner.normal, corner.tangent), 0.0f, 1e-6f);
+    EXPECT_NEAR(glm::length(corner.bitangent), 1.0f, 1e-6f);
 }
 
 } // namespace

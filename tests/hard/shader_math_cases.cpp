@@ -1,6 +1,7 @@
 #include "shader_math_cases.h"
 
 #include "engine/frame/frame_constants.h"
+#include "shared/sggx.h"
 
 #include <algorithm>
 #include <cmath>
@@ -8,6 +9,7 @@
 #include <limits>
 #include <regex>
 #include <sstream>
+#include <tuple>
 
 namespace agaa::hard {
 
@@ -90,6 +92,36 @@ D3 brdf(D3 albedo, double metallic, D3 N, double roughness, D3 V, D3 L, D3 E) {
     D3 diffuse = (1.0 - F) * (1.0 - metallic) * albedo / kPi;
     return (diffuse + spec) * E * NoL;
 }
+// Anisotropic GGX (Burley 2012) with the height-correlated Smith visibility (Heitz 2014), the
+// tangent components rescaled to the clamped cosines as brdf.glsl does.
+D3 brdfAnisotropic(D3 albedo, double metallic, D3 N, D3 T, double ax, double ay, D3 V, D3 L, D3& specular) {
+    specular = D3(0.0);
+    const D3 B = glm::cross(N, T);
+    double NoL = glm::dot(N, L);
+    if (NoL <= 0.0) return D3(0.0);
+    double NoV = std::max(glm::dot(N, V), kMinCosine);
+    D3 Hraw = V + L;
+    double hlen = glm::length(Hraw);
+    D3 H = hlen > kMinNormalLength ? Hraw / hlen : N;
+    double NoH = std::clamp(glm::dot(N, H), 0.0, 1.0), VoH = std::clamp(glm::dot(V, H), 0.0, 1.0);
+    ax = std::clamp(ax, kMinGgxAlpha, kMaxGgxAlpha);
+    ay = std::clamp(ay, kMinGgxAlpha, kMaxGgxAlpha);
+    auto tangential = [&](D3 X, double NoX) {
+        glm::dvec2 p(glm::dot(T, X), glm::dot(B, X));
+        double l = glm::length(p);
+        return l > kMinNormalLength ? p * (std::sqrt(std::max(1.0 - NoX * NoX, 0.0)) / l) : glm::dvec2(0.0);
+    };
+    double NoLc = std::max(NoL, kMinCosine);
+    glm::dvec2 h = tangential(H, NoH), v = tangential(V, NoV), l = tangential(L, NoLc);
+    double d = h.x * h.x / (ax * ax) + h.y * h.y / (ay * ay) + NoH * NoH;
+    double D = 1.0 / (kPi * ax * ay * d * d);
+    double gv = NoLc * std::sqrt(ax * ax * v.x * v.x + ay * ay * v.y * v.y + NoV * NoV);
+    double gl = NoV * std::sqrt(ax * ax * l.x * l.x + ay * ay * l.y * l.y + NoLc * NoLc);
+    double Vis = 0.5 / std::max(gv + gl, kMinCosine * kMinCosine);
+    D3 F = fresnel(glm::mix(D3(0.04), albedo, metallic), VoH);
+    specular = F * (D * Vis) * NoL;
+    return ((1.0 - F) * (1.0 - metallic) * albedo / kPi) * NoL + specular;
+}
 double window(double d2, double range) {
     if (range <= 0.0) return 1.0;
     double r = d2 / (range * range), w = std::clamp(1.0 - r * r, 0.0, 1.0);
@@ -98,6 +130,13 @@ double window(double d2, double range) {
 double aces(double x) {
     x = std::clamp(x, 0.0, kMaxRadiance);
     return std::clamp(x * (2.51 * x + 0.03) / (x * (2.43 * x + 0.59) + 0.14), 0.0, 1.0);
+}
+// E[T] over the two-point distribution of toneMapAggregate (common/tonemap.glsl), per channel.
+double toneMapAggregate(double L, double S, double variance) {
+    constexpr double kMinSpike = 1.0e-8;
+    if (!(S > kMinSpike) || !(variance > 0.0)) return aces(L);
+    double energy = S * S + variance, p = S * S / energy, base = std::max(L - S, 0.0);
+    return p * aces(base + energy / S) + (1.0 - p) * aces(base);
 }
 double toksvig(double alpha, double smax, double amin, double amax) {
     double a = std::clamp(alpha, amin, amax), s = std::clamp(2.0 / (a * a) - 2.0, 0.0, smax);
@@ -544,6 +583,141 @@ std::vector<EdgeCase> shaderMathCases() {
                 });
         }
     }
+    // ---- anisotropic BRDF and SGGX (common/brdf.glsl, shared/sggx.h, common/tonemap.glsl) ----
+    {
+        const D3 N(0, 0, 1), T(1, 0, 0);
+        const D3 V = glm::normalize(D3(0.3, -0.2, 1.0)), L = glm::normalize(D3(-0.4, 0.5, 0.8));
+        struct AnisoIn {
+            const char* what;
+            std::vector<std::string> guards;
+            double ax, ay;
+            D3 V, L;
+        };
+        for (const AnisoIn& a : std::vector<AnisoIn>{
+                 {"isotropic 0.3", {}, 0.3, 0.3, V, L},
+                 {"tube-like 0.8 x 0.04", {}, 0.8, 0.04, V, L},
+                 {"alphas below the floor",
+                  {"kMinGgxAlpha"},
+                  0.0,
+                  1e-6,
+                  V,
+                  glm::normalize(D3(-0.3, 0.2, 1.0))},
+                 {"alphas above the cap", {"kMaxGgxAlpha"}, 5.0, 2.0, V, L},
+                 {"V = -L (H = 0)", {"kMinNormalLength", "kMinCosine"}, 0.5, 0.1, -L, L},
+                 {"viewer below the surface",
+                  {"kMinCosine"},
+                  0.5,
+                  0.2,
+                  glm::normalize(D3(0.2, 0.1, -0.5)),
+                  L},
+             }) {
+            MathCase in =
+                op(kOpBrdfAniso, v4(D3(0.8, 0.6, 0.4), 0.5), v4(N), v4(a.V, a.ax), v4(a.L, a.ay), v4(T));
+            add("evaluateBrdfAnisotropic " + std::string(a.what), a.guards, in,
+                [a, N, T](const MathResult& r) {
+                    D3 spec;
+                    D3 want = brdfAnisotropic(D3(0.8, 0.6, 0.4), 0.5, N, T, a.ax, a.ay,
+                                              glm::dvec3(glm::vec3(glm::normalize(a.V))),
+                                              glm::dvec3(glm::vec3(glm::normalize(a.L))), spec);
+                    if (std::string e = near3("radiance", glm::vec3(r.r0), want, 1e-4, 1e-6); !e.empty())
+                        return e;
+                    return near3("specular", glm::vec3(r.r1), spec, 1e-4, 1e-6);
+                });
+        }
+        // With equal alphas the anisotropic BRDF is the reference's isotropic one (same lobe).
+        for (double roughness : {0.2, 0.6, 1.0}) {
+            const double alpha = std::clamp(roughness * roughness, kMinGgxAlpha, kMaxGgxAlpha);
+            MathCase in =
+                op(kOpBrdfAniso, v4(D3(0.8, 0.6, 0.4), 0.5), v4(N), v4(V, alpha), v4(L, alpha), v4(T));
+            add("evaluateBrdfAnisotropic == evaluateBrdf at roughness " + fmt(roughness), {}, in,
+                [roughness, N, V, L](const MathResult& r) {
+                    return near3("radiance", glm::vec3(r.r0),
+                                 brdf(D3(0.8, 0.6, 0.4), 0.5, N, roughness, glm::dvec3(glm::vec3(V)),
+                                      glm::dvec3(glm::vec3(L)), D3(1.0)),
+                                 1e-4, 1e-6);
+                });
+        }
+    }
+    {
+        struct LobeIn {
+            const char* what;
+            std::vector<std::string> guards;
+            glm::vec3 diag, off, V;
+        };
+        const float a2 = 0.04f * 0.04f;
+        for (const LobeIn& l : std::vector<LobeIn>{
+                 {"diagonal (no rotation)", {"kSggxOffDiagonal"}, {0.25f, 0.01f, 1.0f}, {0, 0, 0}, {0, 0, 1}},
+                 {"off-diagonal at the skip threshold",
+                  {"kSggxOffDiagonal"},
+                  {0.3f, 0.2f, 0.9f},
+                  {1e-8f, 0, 0},
+                  {0, 0, 1}},
+                 {"tilted flat pixel",
+                  {},
+                  glm::vec3(0.36f * (1 - a2) + a2, a2, 0.64f * (1 - a2) + a2),
+                  glm::vec3(0.0f, 0.48f * (1 - a2), 0.0f),
+                  {0, 0, 1}},
+                 {"two orthogonal planes",
+                  {},
+                  {0.5f, 0.0f, 0.5f},
+                  {0, 0, 0},
+                  glm::normalize(glm::vec3(1, 0, 1))},
+                 {"corrupt: all zero",
+                  {"kMinSggxEigenvalue", "kSggxOffDiagonal"},
+                  {0, 0, 0},
+                  {0, 0, 0},
+                  {0, 0, 1}},
+                 {"corrupt: tiny",
+                  {"kMinSggxEigenvalue"},
+                  {1e-6f, 2e-6f, 3e-6f},
+                  {1e-6f, 0, 1e-6f},
+                  {0, 0, 1}},
+                 {"negative eigenvalue from quantisation", {}, {-1e-4f, 0.5f, 1.0f}, {0, 0, 0}, {0, 0, -1}},
+             }) {
+            MathCase in = op(kOpSggxLobe, glm::vec4(l.diag, 0), glm::vec4(l.off, 0), glm::vec4(l.V, 0));
+            add("sggxLobe " + std::string(l.what), l.guards, in, [l](const MathResult& r) -> std::string {
+                // The CPU build of the same shared function (fp32) is the twin; plus invariants:
+                // orthonormal frame, normal on the viewer's side, S N = lambda N.
+                const shared::SggxLobe cpu = shared::sggxLobe(l.diag.x, l.diag.y, l.diag.z, l.off.x, l.off.y,
+                                                              l.off.z, l.V, 1e-8f, 0.25f);
+                if (std::string e = unitLength("normal", glm::vec3(r.r0)); !e.empty()) return e;
+                if (std::string e = unitLength("tangent", glm::vec3(r.r1)); !e.empty()) return e;
+                if (std::abs(glm::dot(glm::vec3(r.r0), glm::vec3(r.r1))) > 1e-4f)
+                    return "normal and tangent not orthogonal";
+                if (glm::dot(glm::vec3(r.r0), l.V) < 0.0f) return "normal faces away from the viewer";
+                if (std::string e = near("alphaT", r.r0.w, cpu.alphaT, 1e-4, 1e-5); !e.empty()) return e;
+                if (std::string e = near("alphaB", r.r1.w, cpu.alphaB, 1e-4, 1e-5); !e.empty()) return e;
+                if (r.r1.w > r.r0.w) return "alphaB > alphaT";
+                const glm::mat3 S(l.diag.x, l.off.x, l.off.y, l.off.x, l.diag.y, l.off.z, l.off.y, l.off.z,
+                                  l.diag.z);
+                const glm::vec3 n(r.r0), Sn = S * n;
+                if (glm::length(Sn - glm::dot(Sn, n) * n) > 1e-4f)
+                    return "the normal is not an eigenvector of S";
+                return {};
+            });
+        }
+    }
+    for (const auto& [L, S, var, guards] :
+         std::vector<std::tuple<glm::vec3, glm::vec3, glm::vec3, std::vector<std::string>>>{
+             {{0.3f, 2.0f, 50.0f}, {0.2f, 1.9f, 49.0f}, {0.0f, 0.0f, 0.0f}, {}},  // no spread: T(L)
+             {{5.0f, 5.0f, 5.0f}, {4.5f, 4.5f, 4.5f}, {200.0f, 20.0f, 0.5f}, {}}, // spread highlights
+             {{0.1f, 0.1f, 0.1f}, {0.0f, 1e-8f, 2e-8f}, {1.0f, 1.0f, 1.0f}, {"kMinSpikeRadiance"}},
+             {{6e4f, 1.0f, 0.0f}, {6e4f, 0.5f, 0.0f}, {1e9f, 1e3f, 0.0f}, {"kMaxRadiance"}},
+         }) {
+        MathCase in = op(kOpToneMapAggregate, glm::vec4(L, 0), glm::vec4(S, 0), glm::vec4(var, 0),
+                         glm::vec4(0.8f, 0.04f, 0, 0));
+        add("toneMapAggregate L=" + fmt(L.x) + " S=" + fmt(S.x) + " var=" + fmt(var.x), guards, in,
+            [L, S, var](const MathResult& r) -> std::string {
+                D3 want(toneMapAggregate(L.x, S.x, var.x), toneMapAggregate(L.y, S.y, var.y),
+                        toneMapAggregate(L.z, S.z, var.z));
+                if (std::string e = near3("E[T(L)]", glm::vec3(r.r0), want, 1e-4, 1e-6); !e.empty()) return e;
+                for (int i = 0; i < 3; ++i)
+                    if (r.r0[i] < 0.0f || r.r0[i] > 1.0f) return "E[T(L)] outside [0, 1]";
+                const double t2 = 0.8 * 0.8;
+                return near("spike ratio", r.r1.x, t2 / (0.04 * std::sqrt(2.0 * t2 - 0.04 * 0.04)), 1e-5);
+            });
+    }
+
     return cases;
 }
 

@@ -42,6 +42,9 @@ enum MathOp : uint32_t {
     kOpDepth = 15,
     kOpPlaneTolerance = 16,
     kOpShadeEvent = 17,
+    kOpBrdfAniso = 18,
+    kOpSggxLobe = 19,
+    kOpToneMapAggregate = 20,
 };
 
 struct EdgeCase {

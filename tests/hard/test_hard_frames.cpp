@@ -12,6 +12,7 @@
 #include "hard_test_support.h"
 #include "shared/ag_buffer.h"
 #include "shared/clustering.h"
+#include "shared/sggx.h"
 
 #include <gtest/gtest.h>
 
@@ -110,7 +111,8 @@ struct AgaaReadback {
             uint32_t present = 0, total = 0;
             for (uint32_t a = 0; a < c; ++a) {
                 const uint32_t* wd = words + (size_t(p) * c + a) * shared::kAggregateWords;
-                const uint32_t k = wd[0] >> shared::kCountShift;
+                const uint32_t ndf = constants.options.w;
+                const uint32_t k = shared::aggregateSampleCount(ndf, wd[0], wd[4]);
                 total += k;
                 // Coverage: the generation pass accumulated exactly the non-sky samples the
                 // metadata routes to this aggregate (one fragment per sample, also under z-fighting).
@@ -120,20 +122,43 @@ struct AgaaReadback {
                                 " non-sky samples to it");
                 if (k == 0) continue;
                 ++present;
-                const glm::vec3 N(
-                    shared::meanSigned(wd[0] & shared::kNormalFieldMask, k, shared::kNormalScale),
-                    shared::meanSigned(wd[1], k, shared::kNormalScale),
-                    shared::meanSigned(wd[2], k, shared::kNormalScale));
-                const float len = glm::length(N);
-                const float alpha = shared::filteredAlpha(len, smax);
-                const glm::vec4 albedoMetal(shared::meanUnit(wd[3] & 0xFFFFu, k, shared::kUnormScale),
+                glm::vec4 albedoMetal;
+                if (ndf == shared::kNdfSggx) {
+                    // The SGGX matrix decodes to a unit normal and alphas within [0, 1].
+                    const uint32_t scale = shared::unitScale(shared::kSggxFieldBits, n);
+                    auto field = [&](uint32_t word, uint32_t shift) {
+                        return shared::meanUnit((wd[word] >> shift) & 0xFFFFu, k, scale);
+                    };
+                    const shared::SggxLobe lobe = shared::sggxLobe(
+                        field(0, 0), field(0, 16), field(1, 0), field(1, 16) - 0.5f, field(2, 0) - 0.5f,
+                        field(2, 16) - 0.5f, glm::vec3(0.0f, 0.0f, 1.0f), 1e-8f, 0.25f);
+                    const float len = glm::length(lobe.normal);
+                    if (!std::isfinite(len) || std::abs(len - 1.0f) > 1e-4f)
+                        fail(p, "SGGX normal length " + std::to_string(len));
+                    if (!std::isfinite(lobe.alphaT) || !std::isfinite(lobe.alphaB) ||
+                        lobe.alphaT > 1.0f + 1e-4f || lobe.alphaB > lobe.alphaT)
+                        fail(p, "SGGX alphas " + std::to_string(lobe.alphaT) + ", " +
+                                    std::to_string(lobe.alphaB));
+                    albedoMetal =
+                        glm::vec4(field(3, 0), field(3, 16), field(4, 0),
+                                  shared::meanUnit((wd[4] >> 16) & 1023u, k,
+                                                   shared::unitScale(shared::kSggxMetallicBits, n)));
+                } else {
+                    const glm::vec3 N(
+                        shared::meanSigned(wd[0] & shared::kNormalFieldMask, k, shared::kNormalScale),
+                        shared::meanSigned(wd[1], k, shared::kNormalScale),
+                        shared::meanSigned(wd[2], k, shared::kNormalScale));
+                    const float len = glm::length(N);
+                    const float alpha = shared::filteredAlpha(len, smax);
+                    albedoMetal = glm::vec4(shared::meanUnit(wd[3] & 0xFFFFu, k, shared::kUnormScale),
                                             shared::meanUnit(wd[3] >> 16, k, shared::kUnormScale),
                                             shared::meanUnit(wd[4] & 0xFFFFu, k, shared::kUnormScale),
                                             shared::meanUnit(wd[4] >> 16, k, shared::kUnormScale));
-                if (!std::isfinite(len) || len > 1.0f + 1e-5f)
-                    fail(p, "Toksvig |N| = " + std::to_string(len));
-                if (!std::isfinite(alpha) || alpha < 0.9e-3f || alpha > 1.0f)
-                    fail(p, "filtered alpha " + std::to_string(alpha) + " outside [alpha_min, 1]");
+                    if (!std::isfinite(len) || len > 1.0f + 1e-5f)
+                        fail(p, "Toksvig |N| = " + std::to_string(len));
+                    if (!std::isfinite(alpha) || alpha < 0.9e-3f || alpha > 1.0f)
+                        fail(p, "filtered alpha " + std::to_string(alpha) + " outside [alpha_min, 1]");
+                }
                 for (int i = 0; i < 4; ++i)
                     if (!std::isfinite(albedoMetal[i]) || albedoMetal[i] < 0.0f || albedoMetal[i] > 1.0f)
                         fail(p, "albedo/metallic " + std::to_string(albedoMetal[i]) + " outside [0, 1]");

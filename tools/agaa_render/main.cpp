@@ -53,6 +53,7 @@ const char* kUsage =
     "                   [--width W] [--height H] [--camera I] [--exposure E] [--out PREFIX] [--debug VIEW]\n"
     "                   [--stats FILE.json] [--graph FILE.dot] [--frames K] [--warmup K]\n"
     "                   [--characteristic-length K] [--seed-threshold T] [--agaa-position mean|centre]\n"
+    "                   [--agaa-ndf auto|sggx|toksvig]\n"
     "                   [--effects scene|all] [--shadow-taps N] [--shadow-footprint F] [--shadow-map-size N] "
     "[--shadow-casters scene|none]\n"
     "                   [--validate] [--device NAME] [--caps] [--help]\n"
@@ -68,6 +69,9 @@ const char* kUsage =
     "complex)\n"
     "  --characteristic-length K, --seed-threshold T\n"
     "                    AGAA clustering (Equation 1): k in metres (default 0.1), t (default 0.05)\n"
+    "  --agaa-ndf auto|sggx|toksvig  AGAA normal distribution per aggregate: anisotropic SGGX with\n"
+    "                   the two-point tone-mapped resolve, the paper's isotropic Toksvig, or auto\n"
+    "                   (default): SGGX when the scene has glossy metals, else Toksvig\n"
     "  --agaa-position mean|centre  AGAA shading point: mean of the samples (default) or UE4's\n"
     "                    mean depth on the pixel-centre ray\n"
     "  --effects scene|all  passes and shader variants from the scene's features (default), or every\n"
@@ -142,6 +146,11 @@ Options parse(int argc, char** argv) {
             if (v != "mean" && v != "centre")
                 throw BadArgument("--agaa-position '" + v + "' is not one of: mean, centre");
             r.settings.pixelCentrePosition = v == "centre";
+        } else if (a == "--agaa-ndf") {
+            std::string v = value();
+            if (v != "auto" && v != "sggx" && v != "toksvig")
+                throw BadArgument("--agaa-ndf '" + v + "' is not one of: auto, sggx, toksvig");
+            r.settings.ndf = v;
         } else if (a == "--effects") {
             std::string v = value();
             if (v != "scene" && v != "all")

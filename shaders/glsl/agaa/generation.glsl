@@ -4,8 +4,9 @@
 // gl_SampleMaskIn holds exactly the samples this fragment is visible at; the stencil keeps
 // the first fragment per sample (section 4.2.2: coplanar duplicates never count twice).
 // Each fragment evaluates the material as a classic G-buffer would and adds, with integer
-// atomics on fixed-point values (order-independent: bit-identical frames), its Toksvig normal,
-// albedo, metallic and sample count into its pixel's aggregates.
+// atomics on fixed-point values (order-independent: bit-identical frames), its normal
+// distribution (Toksvig vector or SGGX matrix, shared/agaa.h), albedo, metallic and sample count
+// into its pixel's aggregates.
 //
 // Routing: Algorithm 2 routes the whole fragment to the aggregate of its first visible sample.
 // Here each aggregate present in the fragment's mask receives the fragment's values weighted
@@ -32,7 +33,7 @@ layout(set = 1, binding = 0) uniform sampler2D textures[kMaxSceneTextures];
 // kRecordWindow^2 block of the frame appends what it accumulates, so the CPU can re-accumulate the same
 // fragments and compare with the AG-buffer.
 const uint kRecordWindow = 16u;
-const uint kRecordWords = 12u;
+const uint kRecordWords = 3u + kQuantizedFields; // pixel, layer, mask, the quantised fields
 layout(set = 0, binding = 5, std430) buffer FragmentRecords { uint recordCount; uint recordCapacity; uint records[]; };
 #endif
 layout(push_constant) uniform Push { uint material; } pc;
@@ -62,15 +63,39 @@ void main() {
     uint c = agaa.shape.x;
     uint words = agaa.shape.z;
 
+    uint ndf = agaa.options.w;
+    uint n = agaa.shape.w;
     float alpha = m.roughness * m.roughness;
-    vec3 t = m.normal * toksvigLength(alpha, agaa.toksvig.x, agaa.toksvig.y, agaa.toksvig.z);
-    uint qx = quantizeSigned(t.x, kNormalScale);
-    uint qy = quantizeSigned(t.y, kNormalScale);
-    uint qz = quantizeSigned(t.z, kNormalScale);
-    uint qr = quantizeUnit(m.albedo.r, kUnormScale);
-    uint qg = quantizeUnit(m.albedo.g, kUnormScale);
-    uint qb = quantizeUnit(m.albedo.b, kUnormScale);
-    uint qm = quantizeUnit(m.metallic, kUnormScale);
+    AgQuantized f;
+    if (ndf == kNdfSggx) {
+        // The sample's GGX lobe as an SGGX matrix (shared/sggx.h), alpha in the BRDF's range.
+        float a = clamp(alpha, kMinGgxAlpha, kMaxGgxAlpha);
+        float a2 = a * a;
+        vec3 N = m.normal * (1.0 - a2); // S = (1 - a^2) n n^T + a^2 I
+        uint scale = unitScale(kSggxFieldBits, n);
+        f.q[0] = quantizeUnit(N.x * m.normal.x + a2, scale);
+        f.q[1] = quantizeUnit(N.y * m.normal.y + a2, scale);
+        f.q[2] = quantizeUnit(N.z * m.normal.z + a2, scale);
+        f.q[3] = quantizeUnit(N.x * m.normal.y + 0.5, scale); // off-diagonal: [-1/2, 1/2] + 1/2
+        f.q[4] = quantizeUnit(N.x * m.normal.z + 0.5, scale);
+        f.q[5] = quantizeUnit(N.y * m.normal.z + 0.5, scale);
+        f.q[6] = quantizeUnit(m.albedo.r, scale);
+        f.q[7] = quantizeUnit(m.albedo.g, scale);
+        f.q[8] = quantizeUnit(m.albedo.b, scale);
+        f.q[9] = quantizeUnit(m.metallic, unitScale(kSggxMetallicBits, n));
+    } else {
+        vec3 t = m.normal * toksvigLength(alpha, agaa.toksvig.x, agaa.toksvig.y, agaa.toksvig.z);
+        f.q[0] = quantizeSigned(t.x, kNormalScale);
+        f.q[1] = quantizeSigned(t.y, kNormalScale);
+        f.q[2] = quantizeSigned(t.z, kNormalScale);
+        f.q[3] = 0u;
+        f.q[4] = 0u;
+        f.q[5] = 0u;
+        f.q[6] = quantizeUnit(m.albedo.r, kUnormScale);
+        f.q[7] = quantizeUnit(m.albedo.g, kUnormScale);
+        f.q[8] = quantizeUnit(m.albedo.b, kUnormScale);
+        f.q[9] = quantizeUnit(m.metallic, kUnormScale);
+    }
 
 #if AGAA_RECORD
     uvec2 origin = uvec2(frame.extent.xy) / 2u - kRecordWindow / 2u;
@@ -81,13 +106,7 @@ void main() {
             records[r + 0u] = pixelIndex;
             records[r + 1u] = inLayer;
             records[r + 2u] = mask;
-            records[r + 3u] = qx;
-            records[r + 4u] = qy;
-            records[r + 5u] = qz;
-            records[r + 6u] = qr;
-            records[r + 7u] = qg;
-            records[r + 8u] = qb;
-            records[r + 9u] = qm;
+            for (uint j = 0u; j < kQuantizedFields; ++j) records[r + 3u + j] = f.q[j];
         }
     }
 #endif
@@ -106,10 +125,6 @@ void main() {
         uint k = perAggregate[a];
         if (k == 0u) continue;
         uint base = (pixelIndex * c + a) * kAggregateWords;
-        atomicAdd(agBuffer[base + 0u], (k << kCountShift) + k * qx);
-        atomicAdd(agBuffer[base + 1u], k * qy);
-        atomicAdd(agBuffer[base + 2u], k * qz);
-        atomicAdd(agBuffer[base + 3u], k * qr + ((k * qg) << 16u));
-        atomicAdd(agBuffer[base + 4u], k * qb + ((k * qm) << 16u));
+        for (uint w = 0u; w < kAggregateWords; ++w) atomicAdd(agBuffer[base + w], aggregateIncrement(ndf, w, k, f));
     }
 }

@@ -1,19 +1,22 @@
 // AGAA step 4: tiled-deferred lighting that aggregates at the top of each tile (paper
 // section 3.5, the UE4 variant of seed 004). One workgroup per 16x16 tile:
 //   1. each invocation turns its pixel's accumulations into normalised aggregates (divide by
-//      the sample count; filtered roughness from the Toksvig length) and rebuilds each
+//      the sample count; filtered roughness from the Toksvig length, or the anisotropic lobe of
+//      the SGGX matrix, shared/sggx.h) and rebuilds each
 //      aggregate's depth mean and variance from the per-sample depths its metadata assigns it;
 //      they stay in registers: an invocation only ever shades its own pixel's aggregates, and
 //      c = 4 aggregates x 256 pixels would not fit lavapipe's 32 KB of shared memory;
 //   2. tile depth bounds and light culling in shared memory (common/tile_culling.glsl);
 //   3. each aggregate lit once per light with the reference's BRDF (common/brdf.glsl);
 //   4. resolve (DESIGN section 6): per sample, its aggregate's radiance plus the sample's own
-//      emissive, tone-mapped and weighted 1/n; uncovered samples get the sky.
+//      emissive, tone-mapped and weighted 1/n; uncovered samples get the sky. With SGGX the
+//      tone map takes the expected value over the aggregate's samples (toneMapAggregate).
 #extension GL_GOOGLE_include_directive : require
 #include "shared/ag_buffer.h"
 #include "shared/agaa.h"
 #include "shared/clustering.h"
 #include "shared/frame.h"
+#include "shared/sggx.h"
 
 layout(local_size_x = 16, local_size_y = 16) in;
 // n and c as specialisation constants: constant trip counts for the per-sample loops.
@@ -121,19 +124,18 @@ void main() {
     vec3 positions[kMaxAggregates];
     float depthVariance[kMaxAggregates] = float[](0.0, 0.0, 0.0, 0.0);
     bool present[kMaxAggregates] = bool[](false, false, false, false);
+    const bool sggx = agaa.options.w == kNdfSggx;
+    vec3 tangents[kMaxAggregates], bitangents[kMaxAggregates];
+    vec2 alphas[kMaxAggregates]; // SGGX: (alphaT, alphaB), clamped to the BRDF's range
     for (uint a = 0u; a < c; ++a) {
         uint base = (pixelIndex * c + a) * kAggregateWords;
-        uint w0 = inside ? agBuffer[base] : 0u;
-        uint k = w0 >> kCountShift; // samples the generation pass accumulated
+        uint w[kAggregateWords];
+        for (uint j = 0u; j < kAggregateWords; ++j) w[j] = inside ? agBuffer[base + j] : 0u;
+        uint k = aggregateSampleCount(agaa.options.w, w[0], w[4]); // samples the generation pass accumulated
         // An aggregate with no accumulated sample (no fragment passed EQUAL for it) has nothing to
         // normalise: it is not lit, and its samples resolve to black rather than to a division by 0.
         present[a] = a < count && k > 0u && samplesIn[a] > 0u;
         if (!present[a]) continue;
-        vec3 toksvig = vec3(meanSigned(w0 & kNormalFieldMask, k, kNormalScale),
-                            meanSigned(agBuffer[base + 1u], k, kNormalScale),
-                            meanSigned(agBuffer[base + 2u], k, kNormalScale));
-        uint w3 = agBuffer[base + 3u], w4 = agBuffer[base + 4u];
-        float len = length(toksvig);
         float fs = float(samplesIn[a]);
         float meanDepth = depthSum[a] / fs;
         // Position: the mean of the samples' view positions, or the UE4 shortcut (seed 004): the
@@ -143,13 +145,33 @@ void main() {
                                                                frame.projParams);
         positions[a] = P;
         vec3 V = normalize(-P); // |P| >= znear > 0
-        // |N| -> 0 when opposing normals cancel: no mean direction; shade facing the viewer
-        // (the filtered roughness is then 1, so the direction barely matters).
-        surfaces[a].normal = len > kMinNormalLength ? toksvig / len : V;
-        surfaces[a].roughness = sqrt(filteredAlpha(len, agaa.toksvig.x)); // the BRDF squares it back
-        surfaces[a].albedo = vec3(meanUnit(w3 & 0xFFFFu, k, kUnormScale), meanUnit(w3 >> 16u, k, kUnormScale),
-                                  meanUnit(w4 & 0xFFFFu, k, kUnormScale));
-        surfaces[a].metallic = meanUnit(w4 >> 16u, k, kUnormScale);
+        if (sggx) {
+            uint scale = unitScale(kSggxFieldBits, n);
+            SggxLobe lobe = sggxLobe(meanUnit(w[0] & 0xFFFFu, k, scale), meanUnit(w[0] >> 16u, k, scale),
+                                     meanUnit(w[1] & 0xFFFFu, k, scale), meanUnit(w[1] >> 16u, k, scale) - 0.5,
+                                     meanUnit(w[2] & 0xFFFFu, k, scale) - 0.5, meanUnit(w[2] >> 16u, k, scale) - 0.5,
+                                     V, kSggxOffDiagonal, kMinSggxEigenvalue);
+            surfaces[a].normal = lobe.normal;
+            tangents[a] = lobe.tangent;
+            bitangents[a] = lobe.bitangent;
+            alphas[a] = clamp(vec2(lobe.alphaT, lobe.alphaB), kMinGgxAlpha, kMaxGgxAlpha);
+            surfaces[a].roughness = sqrt(alphas[a].x); // unused by the anisotropic BRDF
+            surfaces[a].albedo = vec3(meanUnit(w[3] & 0xFFFFu, k, scale), meanUnit(w[3] >> 16u, k, scale),
+                                      meanUnit(w[4] & 0xFFFFu, k, scale));
+            surfaces[a].metallic =
+                meanUnit((w[4] >> 16u) & ((1u << kSggxMetallicBits) - 1u), k, unitScale(kSggxMetallicBits, n));
+        } else {
+            vec3 toksvig = vec3(meanSigned(w[0] & kNormalFieldMask, k, kNormalScale),
+                                meanSigned(w[1], k, kNormalScale), meanSigned(w[2], k, kNormalScale));
+            float len = length(toksvig);
+            // |N| -> 0 when opposing normals cancel: no mean direction; shade facing the viewer
+            // (the filtered roughness is then 1, so the direction barely matters).
+            surfaces[a].normal = len > kMinNormalLength ? toksvig / len : V;
+            surfaces[a].roughness = sqrt(filteredAlpha(len, agaa.toksvig.x)); // the BRDF squares it back
+            surfaces[a].albedo = vec3(meanUnit(w[3] & 0xFFFFu, k, kUnormScale), meanUnit(w[3] >> 16u, k, kUnormScale),
+                                      meanUnit(w[4] & 0xFFFFu, k, kUnormScale));
+            surfaces[a].metallic = meanUnit(w[4] >> 16u, k, kUnormScale);
+        }
         // Depth variance (E[t^2] - E[t]^2, clamped: cancellation can make it slightly negative):
         // the aggregate's extent along the view ray, the footprint shadow filtering samples in.
         depthVariance[a] = max(depthSquares[a] / fs - meanDepth * meanDepth, 0.0);
@@ -165,6 +187,9 @@ void main() {
     // ---- 3. light each aggregate once per light ----------------------------------------
     float exposure = frame.depthParams.z;
     vec3 radiance[kMaxAggregates] = vec3[](vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0));
+    // SGGX: the specular part of the radiance and its variance over the aggregate's samples.
+    vec3 specular[kMaxAggregates] = vec3[](vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0));
+    vec3 specularVariance[kMaxAggregates] = vec3[](vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0));
     uint events = 0u;
     for (uint a = 0u; a < c; ++a) {
         if (!present[a]) continue;
@@ -184,7 +209,17 @@ void main() {
                               ? shadowVisibilityAggregateSamples(i, pixel, pixelIndex, a, samplesIn[a], surfaces[a].normal)
                               : shadowVisibilityAggregate(i, P, surfaces[a].normal, sigma, pixelSize);
 #endif
-            radiance[a] += evaluateBrdf(surfaces[a], V, L, irradiance);
+            if (sggx) {
+                vec3 spec;
+                radiance[a] += evaluateBrdfAnisotropic(surfaces[a], tangents[a], bitangents[a], alphas[a].x,
+                                                       alphas[a].y, V, L, irradiance, spec);
+                // Var = (E[L^2] / E[L]^2 - 1) E[L]^2 per light; highlights of different lights
+                // fall on different samples, so their variances add.
+                specular[a] += spec;
+                specularVariance[a] += (sggxSpikeRatio(alphas[a].x, alphas[a].y) - 1.0) * spec * spec;
+            } else {
+                radiance[a] += evaluateBrdf(surfaces[a], V, L, irradiance);
+            }
         }
     }
 
@@ -205,7 +240,9 @@ void main() {
         L += texelFetch(emissiveSamples, ivec3(pixel, s / 4u), int(s % 4u)).rgb;
 #endif
         L = min(L * exposure, vec3(kMaxRadiance));
-        display += weight * toneMapAces(L);
+        display += weight * (sggx && present[a] ? toneMapAggregate(L, specular[a] * exposure,
+                                                                  specularVariance[a] * (exposure * exposure))
+                                                : toneMapAces(L));
         hdr += weight * L;
     }
     imageStore(outHdr, pixel, vec4(hdr, 1.0));

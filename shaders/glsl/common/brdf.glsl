@@ -52,4 +52,57 @@ vec3 evaluateBrdf(SurfaceInputs s, vec3 V, vec3 L, vec3 irradiance) {
     vec3 diffuse = (1.0 - F) * (1.0 - s.metallic) * s.albedo / kPi;
     return (diffuse + specular) * irradiance * NoL;
 }
+// Anisotropic GGX (Burley 2012; Heitz 2014 for the height-correlated visibility), alphas ax
+// along T and ay along B; for AGAA's SGGX aggregates (shared/sggx.h). With ax == ay it returns
+// evaluateBrdf's value (tested): the tangent components are rescaled to the clamped cosines.
+// D's denominator dot(v, v) >= (ax ay)^2 min(ax, ay)^2 > 0 for alphas >= kMinGgxAlpha.
+float ggxDAnisotropic(float ToH, float BoH, float NoH, float ax, float ay) {
+    float a2 = ax * ay;
+    vec3 v = vec3(ay * ToH, ax * BoH, a2 * NoH);
+    float w2 = a2 / dot(v, v);
+    return a2 * w2 * w2 / kPi;
+}
+
+float smithVisibilityAnisotropic(vec2 v, float NoV, vec2 l, float NoL, float ax, float ay) {
+    float gv = NoL * length(vec3(ax * v.x, ay * v.y, NoV));
+    float gl = NoV * length(vec3(ax * l.x, ay * l.y, NoL));
+    return 0.5 / max(gv + gl, kMinCosine * kMinCosine);
+}
+
+// X's components along T and B, rescaled so that with the clamped cosine NoX the three form a
+// unit vector (an unclamped negative cosine would otherwise leave |(ToX, BoX)| > sqrt(1 - NoX^2)).
+vec2 tangentComponents(vec3 X, vec3 T, vec3 B, float NoX) {
+    vec2 p = vec2(dot(T, X), dot(B, X));
+    float l = length(p);
+    return l > kMinNormalLength ? p * (sqrt(max(1.0 - NoX * NoX, 0.0)) / l) : vec2(0.0);
+}
+
+// As evaluateBrdf, anisotropic; `specular` receives the specular part of the result (AGAA's
+// two-point resolve spreads only that part).
+vec3 evaluateBrdfAnisotropic(SurfaceInputs s, vec3 T, vec3 B, float ax, float ay, vec3 V, vec3 L, vec3 irradiance,
+                             out vec3 specularOut) {
+    specularOut = vec3(0.0);
+    vec3 N = s.normal;
+    float NoL = dot(N, L);
+    if (NoL <= 0.0) return vec3(0.0);
+    float NoV = max(dot(N, V), kMinCosine);
+    vec3 Hraw = V + L;
+    float hlen = length(Hraw);
+    vec3 H = hlen > kMinNormalLength ? Hraw / hlen : N;
+    float NoH = clamp(dot(N, H), 0.0, 1.0);
+    float VoH = clamp(dot(V, H), 0.0, 1.0);
+    ax = clamp(ax, kMinGgxAlpha, kMaxGgxAlpha);
+    ay = clamp(ay, kMinGgxAlpha, kMaxGgxAlpha);
+    float NoLc = max(NoL, kMinCosine);
+    vec2 h = tangentComponents(H, T, B, NoH);
+    float D = ggxDAnisotropic(h.x, h.y, NoH, ax, ay);
+    float Vis = smithVisibilityAnisotropic(tangentComponents(V, T, B, NoV), NoV, tangentComponents(L, T, B, NoLc),
+                                           NoLc, ax, ay);
+    vec3 f0 = mix(vec3(0.04), s.albedo, s.metallic);
+    vec3 F = fresnelSchlick(f0, VoH);
+    vec3 specular = F * (D * Vis);
+    vec3 diffuse = (1.0 - F) * (1.0 - s.metallic) * s.albedo / kPi;
+    specularOut = specular * irradiance * NoL;
+    return (diffuse + specular) * irradiance * NoL;
+}
 #endif

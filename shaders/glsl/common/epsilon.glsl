@@ -28,5 +28,15 @@ const float kMaxRadiance = 6.0e4;
 // tolerance, since a face-on plane has zero slope but its samples' fp32 depths still
 // differ by interpolation and reconstruction rounding (about 1e-6 relative).
 const float kDepthCompareRelative = 1.0e-4;
+// SGGX eigen-decomposition (shared/sggx.h): an off-diagonal entry at or below this is already
+// zero for the Jacobi rotation (its angle would divide by it); the matrix entries are means in
+// [-1, 1], so 1e-8 is below their fp32 rounding near 1.
+const float kSggxOffDiagonal = 1.0e-8;
+// Floor of the SGGX normal's eigenvalue (the alphas divide by it). Any mean of sample matrices
+// has trace >= 1 and so a largest eigenvalue >= 1/3; only corrupt input reaches the floor.
+const float kMinSggxEigenvalue = 0.25;
+// Two-point tone mapping (agaa/lighting.glsl): below this specular radiance an aggregate has no
+// highlight to spread, and the spike (S^2 + var) / S would divide by ~0.
+const float kMinSpikeRadiance = 1.0e-8;
 
 #endif

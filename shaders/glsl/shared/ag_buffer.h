@@ -13,14 +13,18 @@ inline_fn uint quantizeUnit(float v, uint scale) {
 }
 
 // Normal components in [-1, 1] are stored offset-binary: (x + 1) / 2.
-inline_fn uint quantizeSigned(float x, uint scale) { return quantizeUnit(x * 0.5f + 0.5f, scale); }
+inline_fn uint quantizeSigned(float x, uint scale) {
+    return quantizeUnit(x * 0.5f + 0.5f, scale);
+}
 
 // Mean of k samples' offset-binary values back to [-1, 1]. k >= 1 (callers skip empty aggregates).
 inline_fn float meanSigned(uint sum, uint k, uint scale) {
     return (float(sum) / (float(k) * float(scale))) * 2.0f - 1.0f;
 }
 
-inline_fn float meanUnit(uint sum, uint k, uint scale) { return float(sum) / (float(k) * float(scale)); }
+inline_fn float meanUnit(uint sum, uint k, uint scale) {
+    return float(sum) / (float(k) * float(scale));
+}
 
 // Toksvig length that encodes GGX alpha as normal variance ("roughness injected as extra
 // variance", DESIGN section 4). With s = 2/alpha^2 - 2 the Blinn-Phong exponent and smax the
@@ -44,6 +48,36 @@ inline_fn float filteredAlpha(float toksvigLen, float smax) {
     float f = len / (len + smax * (1.0f - len));
     float s = f * smax;
     return sqrt(2.0f / (s + 2.0f));
+}
+
+// Largest per-sample value of a `bits`-wide field that n samples can add without a carry out of
+// the field: floor((2^bits - 1) / n). n >= 1.
+inline_fn uint unitScale(uint bits, uint n) {
+    return ((1u << bits) - 1u) / n;
+}
+
+struct AgQuantized {
+    uint q[kQuantizedFields];
+};
+
+// What k samples of one fragment add to word w of their aggregate (layouts in shared/agaa.h).
+// The generation pass adds it with atomicAdd; the CPU replay (tests/agaa) with +=.
+inline_fn uint aggregateIncrement(uint ndf, uint w, uint k, AgQuantized f) {
+    if (ndf == kNdfSggx) {
+        if (w == 4u) return k * f.q[8] + ((k * f.q[9]) << 16u) + (k << kCountShift);
+        uint lo = w < 3u ? f.q[2u * w] : f.q[6];
+        uint hi = w < 3u ? f.q[2u * w + 1u] : f.q[7];
+        return k * lo + ((k * hi) << 16u);
+    }
+    if (w == 0u) return (k << kCountShift) + k * f.q[0];
+    if (w < 3u) return k * f.q[w];
+    if (w == 3u) return k * f.q[6] + ((k * f.q[7]) << 16u);
+    return k * f.q[8] + ((k * f.q[9]) << 16u);
+}
+
+// Samples accumulated into an aggregate, from its first and last words.
+inline_fn uint aggregateSampleCount(uint ndf, uint w0, uint w4) {
+    return (ndf == kNdfSggx ? w4 : w0) >> kCountShift;
 }
 
 SHARED_END

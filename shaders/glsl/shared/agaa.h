@@ -12,29 +12,50 @@ SHARED_BEGIN
 SHARED_CONST kNormalAngleLevels = 256u;
 
 // ---- AG-buffer accumulation (fixed point, paper figure 7 adapted to integer atomics) ----
-// Per aggregate 5 words (20 bytes):
-//   w0: bits 26..31 sample count; bits 0..25 sum of Toksvig normal x
+// 5 words (20 bytes) per aggregate in either normal-distribution layout (AgaaConstants
+// options.w, agaa/aggregate/agaa_constants.h AggregateNdf). Each sample contributes
+// round(v * scale) with v in [0, 1]; the k samples a fragment routes to an aggregate add k times
+// that, so fields only ever sum n values of at most `scale`.
+//
+// Toksvig (paper section 3.5.2), fixed scales:
+//   w0: bits 26..31 sample count; bits 0..25 sum of Toksvig normal x (offset-binary (x+1)/2)
 //   w1, w2: sums of Toksvig normal y, z
 //   w3: albedo R (bits 0..15) | albedo G (bits 16..31)
 //   w4: albedo B (bits 0..15) | metallic (bits 16..31)
-// Each sample contributes round(v * scale) with v in [0, 1] (normals offset-binary: (x+1)/2).
-// No overflow at n = 32, c = 1 (every sample in one aggregate, every value at its maximum):
-//   normal:  32 * (2^21 - 1) = 67108832 < 2^26        (fits below the count bits)
-//   16-bit:  32 * (2^11 - 1) = 65504    < 2^16        (no carry into the upper field)
-//   count:   32                         < 2^6
-// tests/agaa/test_fixed_point.cpp checks these bounds and the round trip.
+//   No overflow at n = 32, c = 1 (every sample in one aggregate, every value at its maximum):
+//     normal:  32 * (2^21 - 1) = 67108832 < 2^26        (fits below the count bits)
+//     16-bit:  32 * (2^11 - 1) = 65504    < 2^16        (no carry into the upper field)
+//     count:   32                         < 2^6
+//
+// SGGX (shared/sggx.h): the six entries of the sample's SGGX matrix, 16-bit fields whose scale
+// depends on n (unitScale: floor((2^bits - 1) / n), so n values at the maximum never carry):
+//   w0: S_xx (bits 0..15) | S_yy (16..31)      diagonal entries in [0, 1] as they are
+//   w1: S_zz | S_xy                            off-diagonal entries in [-1/2, 1/2], stored + 1/2
+//   w2: S_xz | S_yz
+//   w3: albedo R | albedo G                    (16-bit)
+//   w4: albedo B (bits 0..15) | metallic (bits 16..25, 10-bit) | sample count (bits 26..31)
+//   Per-sample precision: 13 bits at n = 8, 11 bits at n = 32 (the Toksvig layout's albedo
+//   precision); metallic 7 bits at n = 8, 5 bits at n = 32 (glTF metallic is mostly 0 or 1).
+// tests/agaa/test_fixed_point.cpp checks both layouts' bounds and round trips.
 SHARED_CONST kAggregateWords = 5u;
 SHARED_CONST kNormalBits = 21u;
-SHARED_CONST kNormalScale = 2097151u; // 2^21 - 1
+SHARED_CONST kNormalScale = 2097151u;      // 2^21 - 1
 SHARED_CONST kNormalFieldMask = 67108863u; // 2^26 - 1
 SHARED_CONST kCountShift = 26u;
 SHARED_CONST kUnormBits = 11u;
 SHARED_CONST kUnormScale = 2047u; // 2^11 - 1
+SHARED_CONST kSggxFieldBits = 16u;
+SHARED_CONST kSggxMetallicBits = 10u;
+SHARED_CONST kNdfToksvig = 0u;
+SHARED_CONST kNdfSggx = 1u;
+// One fragment's quantised attributes (either layout): q[0..5] the normal fields (Toksvig x, y, z
+// in 0..2; SGGX xx, yy, zz, xy, xz, yz), q[6..8] albedo, q[9] metallic.
+SHARED_CONST kQuantizedFields = 10u;
 SHARED_CONST kMaxAggregates = 4u;
 
 struct AgaaConstants {
     vec4 cosSinTheta[kNormalAngleLevels]; // x cos(theta_q), y sin(theta_q); zw unused
-    vec4 cosSinPhi[kNormalAngleLevels]; // x cos(phi_q), y sin(phi_q)
+    vec4 cosSinPhi[kNormalAngleLevels];   // x cos(phi_q), y sin(phi_q)
     // x 1/k (k: characteristic length, metres), y t (seed threshold, Equation 1 units),
     // z n*f, w f-n (clip planes, so positions need no division by constants the CPU rounds differently)
     vec4 clustering;
@@ -44,7 +65,8 @@ struct AgaaConstants {
     uvec4 shape;
     // x Toksvig reference exponent s_max (Blinn-Phong), y alpha_min, z alpha_max; w unused
     vec4 toksvig;
-    // x debug view (0 none, 1 aggregates), y position mode (0 mean of sample positions, 1 UE4 pixel centre), z has emissive
+    // x debug view (0 none, 1 aggregates), y position mode (0 mean of sample positions, 1 UE4 pixel centre),
+    // z has emissive, w normal distribution (kNdfToksvig, kNdfSggx)
     uvec4 options;
 };
 

@@ -8,6 +8,11 @@
 #include <cstdint>
 #include <glm/glm.hpp>
 namespace shared {
+using vec3 = glm::vec3; // shader math only (shared/sggx.h), never in buffer structs
+using mat3 = glm::mat3;
+using glm::cross;
+using glm::dot;
+using std::abs;
 using vec4 = glm::vec4;
 using uvec4 = glm::uvec4;
 using ivec4 = glm::ivec4;

@@ -7,6 +7,7 @@
 
 #include "shared/frame.h"
 #include "shared/ag_buffer.h"
+#include "shared/sggx.h"
 
 // classify.glsl reads the frame constants and two G-buffer fetches; the kernel provides them
 // per case (only planeDepthTolerance is called).
@@ -58,6 +59,10 @@ const uint kOpMaterial = 14u;    // GpuMaterial {a, b, c, textures (-1,-1,op.y,-
 const uint kOpDepth = 15u;       // d a.x, near a.y, far a.z -> r0.x view distance
 const uint kOpPlaneTolerance = 16u; // extent a, projParams b, pixelPos c.xy, t0 c.z, slopeScale c.w, n0 d.xyz -> r0.x
 const uint kOpShadeEvent = 17u;  // brdf case, emissive e.w, exposure c.w: the capped, tone-mapped event
+const uint kOpBrdfAniso = 18u;   // albedo a.xyz, metallic a.w, N b.xyz, V c.xyz, L d.xyz, T e.xyz, alphas (c.w, d.w)
+                                 // -> r0.xyz radiance, r1.xyz its specular part (E = 1)
+const uint kOpSggxLobe = 19u;    // S diagonal a.xyz, off-diagonal (xy, xz, yz) b.xyz, V c.xyz -> r0 (N, alphaT), r1 (T, alphaB)
+const uint kOpToneMapAggregate = 20u; // L a.xyz, S b.xyz, variance c.xyz -> r0.xyz; r1.x spike ratio of (d.x, d.y)
 
 void main() {
     uint i = gl_GlobalInvocationID.x;
@@ -92,6 +97,24 @@ void main() {
             r0.xyz = radiance;
             r1.xyz = toneMapAces(radiance);
         }
+    } else if (op == kOpBrdfAniso) {
+        SurfaceInputs s;
+        s.albedo = k.a.xyz;
+        s.metallic = k.a.w;
+        s.normal = k.b.xyz;
+        s.roughness = 0.5;
+        vec3 spec;
+        r0.xyz = evaluateBrdfAnisotropic(s, k.e.xyz, cross(k.b.xyz, k.e.xyz), k.c.w, k.d.w, k.c.xyz, k.d.xyz,
+                                         vec3(1.0), spec);
+        r1.xyz = spec;
+    } else if (op == kOpSggxLobe) {
+        SggxLobe lobe = sggxLobe(k.a.x, k.a.y, k.a.z, k.b.x, k.b.y, k.b.z, k.c.xyz, kSggxOffDiagonal,
+                                 kMinSggxEigenvalue);
+        r0 = vec4(lobe.normal, lobe.alphaT);
+        r1 = vec4(lobe.tangent, lobe.alphaB);
+    } else if (op == kOpToneMapAggregate) {
+        r0.xyz = toneMapAggregate(k.a.xyz, k.b.xyz, k.c.xyz);
+        r1.x = sggxSpikeRatio(k.d.x, k.d.y);
     } else if (op == kOpLight) {
         GpuLight light;
         light.positionRange = k.a;

@@ -1,0 +1,96 @@
+#ifndef AGAA_SHARED_SGGX_H
+#define AGAA_SHARED_SGGX_H
+// The SGGX normal distribution of an aggregate (Heitz et al. 2015; paper sections 3.3 and 5.1.3,
+// seed 004), shared by the lighting pass and its CPU twin (tests/hard/shader_math_cases.cpp).
+// Each sample adds its GGX lobe as the SGGX matrix S = (1 - a^2) n n^T + a^2 I (eigenvalue 1
+// along its shading normal n, a^2 across it); the aggregate's matrix is the mean of its samples'
+// (linear, so it accumulates with the same fixed-point atomics as the other attributes). Shading
+// reads the mean back as an anisotropic GGX surface: normal = the eigenvector of the largest
+// eigenvalue (turned towards the viewer), alphas sqrt(lambda_t / lambda_n) and
+// sqrt(lambda_b / lambda_n) along the other two. A flat pixel gives back (n, a, a) exactly; the
+// samples of a thin tube spread along one axis only, which the isotropic Toksvig lobe cannot
+// represent (the paper's metal-rod case).
+#include "shared/glsl_cpp.h"
+
+SHARED_BEGIN
+
+// Cyclic Jacobi sweeps over the three off-diagonal entries. The off-diagonal mass falls
+// quadratically once small; 5 sweeps leave it below fp32 rounding for every matrix tested.
+SHARED_CONST kSggxJacobiSweeps = 5u;
+
+struct SggxLobe {
+    vec3 normal;    // unit, on the viewer's side
+    vec3 tangent;   // unit, the axis of the larger alpha
+    vec3 bitangent; // normal x tangent
+    float alphaT;   // GGX alpha along the tangent (>= alphaB), unclamped
+    float alphaB;
+};
+
+// Eigen-decomposition of the symmetric S by cyclic Jacobi rotations (Golub and Van Loan 8.5).
+// Guards: a rotation is skipped when |S_pq| <= offDiagonalEpsilon (already diagonal: theta would
+// divide by zero); the normal's eigenvalue is floored at eigenvalueFloor (a valid mean has
+// trace >= 1, so its largest eigenvalue is >= 1/3; the floor only meets corrupt input).
+inline_fn SggxLobe sggxLobe(float sxx, float syy, float szz, float sxy, float sxz, float syz, vec3 V,
+                            float offDiagonalEpsilon, float eigenvalueFloor) {
+    mat3 A = mat3(sxx, sxy, sxz, sxy, syy, syz, sxz, syz, szz);
+    mat3 Q = mat3(1.0f);
+    for (uint sweep = 0u; sweep < kSggxJacobiSweeps; ++sweep) {
+        for (uint r = 0u; r < 3u; ++r) {
+            uint p = r == 2u ? 1u : 0u;
+            uint q = r == 0u ? 1u : 2u;
+            float apq = A[q][p];
+            if (abs(apq) <= offDiagonalEpsilon) continue;
+            // tan of the rotation angle that zeroes S_pq, the smaller root (stable form).
+            float theta = (A[q][q] - A[p][p]) / (2.0f * apq);
+            float t = (theta >= 0.0f ? 1.0f : -1.0f) / (abs(theta) + sqrt(theta * theta + 1.0f));
+            float c = 1.0f / sqrt(t * t + 1.0f);
+            float s = t * c;
+            for (uint k = 0u; k < 3u; ++k) { // A <- A J (columns p, q)
+                float akp = A[p][k], akq = A[q][k];
+                A[p][k] = c * akp - s * akq;
+                A[q][k] = s * akp + c * akq;
+            }
+            for (uint k = 0u; k < 3u; ++k) { // A <- J^T A (rows p, q)
+                float apk = A[k][p], aqk = A[k][q];
+                A[k][p] = c * apk - s * aqk;
+                A[k][q] = s * apk + c * aqk;
+            }
+            for (uint k = 0u; k < 3u; ++k) { // Q <- Q J: the columns are the eigenvectors
+                float qkp = Q[p][k], qkq = Q[q][k];
+                Q[p][k] = c * qkp - s * qkq;
+                Q[q][k] = s * qkp + c * qkq;
+            }
+        }
+    }
+    float l0 = A[0][0], l1 = A[1][1], l2 = A[2][2];
+    uint iN = l0 >= l1 ? (l0 >= l2 ? 0u : 2u) : (l1 >= l2 ? 1u : 2u);
+    uint i1 = (iN + 1u) % 3u, i2 = (iN + 2u) % 3u;
+    uint iT = A[i1][i1] >= A[i2][i2] ? i1 : i2;
+    uint iB = iT == i1 ? i2 : i1;
+    SggxLobe lobe;
+    lobe.normal = dot(Q[iN], V) >= 0.0f ? Q[iN] : -Q[iN];
+    lobe.tangent = Q[iT];
+    lobe.bitangent = cross(lobe.normal, lobe.tangent);
+    float ln = A[iN][iN] > eigenvalueFloor ? A[iN][iN] : eigenvalueFloor;
+    // Quantisation can leave a tangent eigenvalue slightly negative: clamp before the sqrt.
+    lobe.alphaT = sqrt((A[iT][iT] > 0.0f ? A[iT][iT] : 0.0f) / ln);
+    lobe.alphaB = sqrt((A[iB][iB] > 0.0f ? A[iB][iB] : 0.0f) / ln);
+    return lobe;
+}
+
+// Spread of the per-sample specular radiance inside an aggregate, as E[L^2] / E[L]^2 at the
+// lobe's centre. Model (slope space, Gaussian lobes): every sample reflects with the material
+// lobe of variance m = alphaB^2 / 2 per axis (the narrow axis is taken as pure material), its
+// normal spread by g = (alphaT^2 - alphaB^2) / 2 along the tangent only. Then
+//   E[D] = N(0, m + g) x N(0, m),  E[D^2] = N(0, m/2 + g) x N(0, m/2) / (4 pi m),
+// whose ratio at h = 0 is  alphaT^2 / (alphaB sqrt(2 alphaT^2 - alphaB^2)):  1 for an isotropic
+// lobe (a flat pixel: every sample alike), about alphaT / (sqrt(2) alphaB) for a thin glossy
+// tube (its highlight lights a fraction of the samples, each far brighter than the mean).
+// Inputs: alphaT >= alphaB >= the BRDF's alpha floor > 0, so 2 alphaT^2 - alphaB^2 >= alphaT^2 > 0.
+inline_fn float sggxSpikeRatio(float alphaT, float alphaB) {
+    float t2 = alphaT * alphaT;
+    return t2 / (alphaB * sqrt(2.0f * t2 - alphaB * alphaB));
+}
+
+SHARED_END
+#endif
