@@ -77,33 +77,39 @@ double smith(double NoV, double NoL, double alpha) {
 D3 fresnel(D3 f0, double VoH) {
     return f0 + (1.0 - f0) * std::pow(1.0 - std::clamp(VoH, 0.0, 1.0), 5.0);
 }
-D3 brdf(D3 albedo, double metallic, D3 N, double roughness, D3 V, D3 L, D3 E) {
-    double NoL = glm::dot(N, L);
-    if (NoL <= 0.0) return D3(0.0);
-    double NoV = std::max(glm::dot(N, V), kMinCosine);
+// The half vector and cosines brdf.glsl's brdfAngles computes; false below the surface.
+struct Angles {
+    D3 H;
+    double NoL, NoV, NoH, VoH;
+};
+bool angles(D3 N, D3 V, D3 L, Angles& g) {
+    g.NoL = glm::dot(N, L);
+    g.NoV = std::max(glm::dot(N, V), kMinCosine);
     D3 Hraw = V + L;
     double hlen = glm::length(Hraw);
-    D3 H = hlen > kMinNormalLength ? Hraw / hlen : N;
-    double NoH = std::clamp(glm::dot(N, H), 0.0, 1.0), VoH = std::clamp(glm::dot(V, H), 0.0, 1.0);
+    g.H = hlen > kMinNormalLength ? Hraw / hlen : N;
+    g.NoH = std::clamp(glm::dot(N, g.H), 0.0, 1.0);
+    g.VoH = std::clamp(glm::dot(V, g.H), 0.0, 1.0);
+    return g.NoL > 0.0;
+}
+D3 diffuse(D3 albedo, double metallic, D3 F) {
+    return (1.0 - F) * (1.0 - metallic) * albedo / kPi;
+}
+D3 brdf(D3 albedo, double metallic, D3 N, double roughness, D3 V, D3 L, D3 E) {
+    Angles g;
+    if (!angles(N, V, L, g)) return D3(0.0);
     double alpha = std::clamp(roughness * roughness, kMinGgxAlpha, kMaxGgxAlpha);
-    D3 f0 = glm::mix(D3(0.04), albedo, metallic);
-    D3 F = fresnel(f0, VoH);
-    D3 spec = F * (ggxD(NoH, alpha) * smith(NoV, std::max(NoL, kMinCosine), alpha));
-    D3 diffuse = (1.0 - F) * (1.0 - metallic) * albedo / kPi;
-    return (diffuse + spec) * E * NoL;
+    D3 F = fresnel(glm::mix(D3(0.04), albedo, metallic), g.VoH);
+    D3 spec = F * (ggxD(g.NoH, alpha) * smith(g.NoV, std::max(g.NoL, kMinCosine), alpha));
+    return (diffuse(albedo, metallic, F) + spec) * E * g.NoL;
 }
 // Anisotropic GGX (Burley 2012) with the height-correlated Smith visibility (Heitz 2014), the
 // tangent components rescaled to the clamped cosines as brdf.glsl does.
 D3 brdfAnisotropic(D3 albedo, double metallic, D3 N, D3 T, double ax, double ay, D3 V, D3 L, D3& specular) {
     specular = D3(0.0);
     const D3 B = glm::cross(N, T);
-    double NoL = glm::dot(N, L);
-    if (NoL <= 0.0) return D3(0.0);
-    double NoV = std::max(glm::dot(N, V), kMinCosine);
-    D3 Hraw = V + L;
-    double hlen = glm::length(Hraw);
-    D3 H = hlen > kMinNormalLength ? Hraw / hlen : N;
-    double NoH = std::clamp(glm::dot(N, H), 0.0, 1.0), VoH = std::clamp(glm::dot(V, H), 0.0, 1.0);
+    Angles g;
+    if (!angles(N, V, L, g)) return D3(0.0);
     ax = std::clamp(ax, kMinGgxAlpha, kMaxGgxAlpha);
     ay = std::clamp(ay, kMinGgxAlpha, kMaxGgxAlpha);
     auto tangential = [&](D3 X, double NoX) {
@@ -111,16 +117,16 @@ D3 brdfAnisotropic(D3 albedo, double metallic, D3 N, D3 T, double ax, double ay,
         double l = glm::length(p);
         return l > kMinNormalLength ? p * (std::sqrt(std::max(1.0 - NoX * NoX, 0.0)) / l) : glm::dvec2(0.0);
     };
-    double NoLc = std::max(NoL, kMinCosine);
-    glm::dvec2 h = tangential(H, NoH), v = tangential(V, NoV), l = tangential(L, NoLc);
-    double d = h.x * h.x / (ax * ax) + h.y * h.y / (ay * ay) + NoH * NoH;
+    double NoLc = std::max(g.NoL, kMinCosine);
+    glm::dvec2 h = tangential(g.H, g.NoH), v = tangential(V, g.NoV), l = tangential(L, NoLc);
+    double d = h.x * h.x / (ax * ax) + h.y * h.y / (ay * ay) + g.NoH * g.NoH;
     double D = 1.0 / (kPi * ax * ay * d * d);
-    double gv = NoLc * std::sqrt(ax * ax * v.x * v.x + ay * ay * v.y * v.y + NoV * NoV);
-    double gl = NoV * std::sqrt(ax * ax * l.x * l.x + ay * ay * l.y * l.y + NoLc * NoLc);
+    double gv = NoLc * std::sqrt(ax * ax * v.x * v.x + ay * ay * v.y * v.y + g.NoV * g.NoV);
+    double gl = g.NoV * std::sqrt(ax * ax * l.x * l.x + ay * ay * l.y * l.y + NoLc * NoLc);
     double Vis = 0.5 / std::max(gv + gl, kMinCosine * kMinCosine);
-    D3 F = fresnel(glm::mix(D3(0.04), albedo, metallic), VoH);
-    specular = F * (D * Vis) * NoL;
-    return ((1.0 - F) * (1.0 - metallic) * albedo / kPi) * NoL + specular;
+    D3 F = fresnel(glm::mix(D3(0.04), albedo, metallic), g.VoH);
+    specular = F * (D * Vis) * g.NoL;
+    return diffuse(albedo, metallic, F) * g.NoL + specular;
 }
 double window(double d2, double range) {
     if (range <= 0.0) return 1.0;

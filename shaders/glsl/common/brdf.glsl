@@ -33,25 +33,38 @@ vec3 fresnelSchlick(vec3 f0, float VoH) {
     return f0 + (1.0 - f0) * f;
 }
 
-// Outgoing radiance towards V for irradiance E (already times N.L) from direction L.
-vec3 evaluateBrdf(SurfaceInputs s, vec3 V, vec3 L, vec3 irradiance) {
-    vec3 N = s.normal;
-    float NoL = dot(N, L);
-    if (NoL <= 0.0) return vec3(0.0);
-    float NoV = max(dot(N, V), kMinCosine);
+// The angles both GGX evaluations share. False when L is at or below the surface (no light).
+struct BrdfAngles {
+    vec3 H;
+    float NoL, NoV, NoH, VoH;
+};
+bool brdfAngles(vec3 N, vec3 V, vec3 L, out BrdfAngles g) {
+    g.NoL = dot(N, L);
+    g.NoV = max(dot(N, V), kMinCosine);
     vec3 Hraw = V + L;
     // V = -L (light exactly behind the viewer's direction) makes H zero.
     float hlen = length(Hraw);
-    vec3 H = hlen > kMinNormalLength ? Hraw / hlen : N;
-    float NoH = clamp(dot(N, H), 0.0, 1.0);
-    float VoH = clamp(dot(V, H), 0.0, 1.0);
-    float alpha = clamp(s.roughness * s.roughness, kMinGgxAlpha, kMaxGgxAlpha);
-    vec3 f0 = mix(vec3(0.04), s.albedo, s.metallic);
-    vec3 F = fresnelSchlick(f0, VoH);
-    vec3 specular = F * (ggxD(NoH, alpha) * smithVisibility(NoV, max(NoL, kMinCosine), alpha));
-    vec3 diffuse = (1.0 - F) * (1.0 - s.metallic) * s.albedo / kPi;
-    return (diffuse + specular) * irradiance * NoL;
+    g.H = hlen > kMinNormalLength ? Hraw / hlen : N;
+    g.NoH = clamp(dot(N, g.H), 0.0, 1.0);
+    g.VoH = clamp(dot(V, g.H), 0.0, 1.0);
+    return g.NoL > 0.0;
 }
+
+// Lambert diffuse (energy the Fresnel term leaves), per unit irradiance; F from fresnelSchlick.
+vec3 diffuseLobe(SurfaceInputs s, vec3 F) { return (1.0 - F) * (1.0 - s.metallic) * s.albedo / kPi; }
+
+vec3 surfaceFresnel(SurfaceInputs s, float VoH) { return fresnelSchlick(mix(vec3(0.04), s.albedo, s.metallic), VoH); }
+
+// Outgoing radiance towards V for irradiance E (already times N.L) from direction L.
+vec3 evaluateBrdf(SurfaceInputs s, vec3 V, vec3 L, vec3 irradiance) {
+    BrdfAngles g;
+    if (!brdfAngles(s.normal, V, L, g)) return vec3(0.0);
+    float alpha = clamp(s.roughness * s.roughness, kMinGgxAlpha, kMaxGgxAlpha);
+    vec3 F = surfaceFresnel(s, g.VoH);
+    vec3 specular = F * (ggxD(g.NoH, alpha) * smithVisibility(g.NoV, max(g.NoL, kMinCosine), alpha));
+    return (diffuseLobe(s, F) + specular) * irradiance * g.NoL;
+}
+
 // Anisotropic GGX (Burley 2012; Heitz 2014 for the height-correlated visibility), alphas ax
 // along T and ay along B; for AGAA's SGGX aggregates (shared/sggx.h). With ax == ay it returns
 // evaluateBrdf's value (tested): the tangent components are rescaled to the clamped cosines.
@@ -82,27 +95,17 @@ vec2 tangentComponents(vec3 X, vec3 T, vec3 B, float NoX) {
 vec3 evaluateBrdfAnisotropic(SurfaceInputs s, vec3 T, vec3 B, float ax, float ay, vec3 V, vec3 L, vec3 irradiance,
                              out vec3 specularOut) {
     specularOut = vec3(0.0);
-    vec3 N = s.normal;
-    float NoL = dot(N, L);
-    if (NoL <= 0.0) return vec3(0.0);
-    float NoV = max(dot(N, V), kMinCosine);
-    vec3 Hraw = V + L;
-    float hlen = length(Hraw);
-    vec3 H = hlen > kMinNormalLength ? Hraw / hlen : N;
-    float NoH = clamp(dot(N, H), 0.0, 1.0);
-    float VoH = clamp(dot(V, H), 0.0, 1.0);
+    BrdfAngles g;
+    if (!brdfAngles(s.normal, V, L, g)) return vec3(0.0);
     ax = clamp(ax, kMinGgxAlpha, kMaxGgxAlpha);
     ay = clamp(ay, kMinGgxAlpha, kMaxGgxAlpha);
-    float NoLc = max(NoL, kMinCosine);
-    vec2 h = tangentComponents(H, T, B, NoH);
-    float D = ggxDAnisotropic(h.x, h.y, NoH, ax, ay);
-    float Vis = smithVisibilityAnisotropic(tangentComponents(V, T, B, NoV), NoV, tangentComponents(L, T, B, NoLc),
+    float NoLc = max(g.NoL, kMinCosine);
+    vec2 h = tangentComponents(g.H, T, B, g.NoH);
+    float D = ggxDAnisotropic(h.x, h.y, g.NoH, ax, ay);
+    float Vis = smithVisibilityAnisotropic(tangentComponents(V, T, B, g.NoV), g.NoV, tangentComponents(L, T, B, NoLc),
                                            NoLc, ax, ay);
-    vec3 f0 = mix(vec3(0.04), s.albedo, s.metallic);
-    vec3 F = fresnelSchlick(f0, VoH);
-    vec3 specular = F * (D * Vis);
-    vec3 diffuse = (1.0 - F) * (1.0 - s.metallic) * s.albedo / kPi;
-    specularOut = specular * irradiance * NoL;
-    return (diffuse + specular) * irradiance * NoL;
+    vec3 F = surfaceFresnel(s, g.VoH);
+    specularOut = F * (D * Vis) * irradiance * g.NoL;
+    return diffuseLobe(s, F) * irradiance * g.NoL + specularOut;
 }
 #endif
