@@ -10,6 +10,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
+#include <utility>
 
 namespace {
 
@@ -209,6 +211,27 @@ TEST(ShadowFit, SpotLightLooksAlongItsDirection) {
     EXPECT_NEAR(p.y / p.w, 0.0f, 1e-4f);
     EXPECT_GT(p.z / p.w, 0.0f);
     EXPECT_LT(p.z / p.w, 1.0f);
+}
+
+// AGAA's --agaa-ndf auto picks SGGX from this count: glossy metals (metallic >= 0.5 and
+// roughness <= 0.4) are counted at the thresholds' edges and only when a draw uses them.
+TEST(SceneFeatures, GlossyMetalsCountAtTheThresholdsAndOnlyWhenDrawn) {
+    Scene s = oneDrawScene();
+    s.materials[0].metallicFactor = eng::scene::kGlossyMetallic;
+    s.materials[0].roughnessFactor = eng::scene::kGlossyRoughness;
+    EXPECT_EQ(eng::scene::deriveSceneFeatures(s).glossyMetalMaterials, 1u);
+    s.materials[0].roughnessFactor = std::nextafter(eng::scene::kGlossyRoughness, 1.0f);
+    EXPECT_EQ(eng::scene::deriveSceneFeatures(s).glossyMetalMaterials, 0u) << "too rough";
+    s.materials[0].roughnessFactor = 0.1f;
+    s.materials[0].metallicFactor = std::nextafter(eng::scene::kGlossyMetallic, 0.0f);
+    EXPECT_EQ(eng::scene::deriveSceneFeatures(s).glossyMetalMaterials, 0u) << "not metallic enough";
+    s.materials[0].metallicFactor = 1.0f;
+    s.draws[0].indexCount = 0;
+    EXPECT_EQ(eng::scene::deriveSceneFeatures(s).glossyMetalMaterials, 0u) << "an undrawn material";
+    for (auto [name, glossy] : {std::pair{"metal", 2u}, std::pair{"railings", 1u}, std::pair{"furball", 0u},
+                                std::pair{"foliage", 0u}, std::pair{"plane", 0u}})
+        EXPECT_EQ(eng::scene::deriveSceneFeatures(eng::scene::loadBuiltin(name)).glossyMetalMaterials, glossy)
+            << name;
 }
 
 } // namespace
