@@ -48,6 +48,23 @@ bool isKnownMethod(const std::string& name) {
     return false;
 }
 
+namespace {
+
+// One of an AGAA setting's named values, or std::invalid_argument listing them.
+template <typename T>
+T agaaOption(const char* what, const std::string& value,
+             std::initializer_list<std::pair<const char*, T>> allowed) {
+    std::string names;
+    for (const auto& [name, v] : allowed) {
+        if (value == name) return v;
+        names += std::string(names.empty() ? "" : ", ") + name;
+    }
+    throw std::invalid_argument(std::string("agaa: ") + what + " '" + value +
+                                "' is unknown (allowed: " + names + ")");
+}
+
+} // namespace
+
 std::unique_ptr<Technique> createTechnique(const std::string& method, eng::vk::Device& device,
                                            const eng::frame::GpuScene& scene,
                                            const MethodSettings& settings) {
@@ -85,6 +102,25 @@ std::unique_ptr<Technique> createTechnique(const std::string& method, eng::vk::D
         else if (settings.ndf != "auto")
             throw std::invalid_argument("agaa: normal distribution '" + settings.ndf +
                                         "' is unknown (allowed: auto, sggx, toksvig)");
+        s.shading = agaaOption<AggregateShading>("lighting schedule", settings.agaaLighting,
+                                                 {{"auto", AggregateShading::Auto},
+                                                  {"compact", AggregateShading::Compact},
+                                                  {"registers", AggregateShading::Registers}});
+        s.routing = agaaOption<AggregateRouting>(
+            "routing", settings.agaaRouting,
+            {{"samples", AggregateRouting::Samples}, {"fragment", AggregateRouting::Fragment}});
+        s.atomics = agaaOption<AggregateAtomics>("atomics", settings.agaaAtomics,
+                                                 {{"auto", AggregateAtomics::Auto},
+                                                  {"32", AggregateAtomics::Bits32},
+                                                  {"64", AggregateAtomics::Bits64}});
+        s.subgroupReduction = agaaOption<SubgroupReduction>("subgroup reduction", settings.agaaSubgroupReduce,
+                                                            {{"auto", SubgroupReduction::Auto},
+                                                             {"on", SubgroupReduction::On},
+                                                             {"off", SubgroupReduction::Off}});
+        s.distance = agaaOption<AggregateDistance>(
+            "clustering distance", settings.agaaDistance,
+            {{"position", AggregateDistance::Position}, {"plane", AggregateDistance::Plane}});
+        s.skipShading = settings.agaaSkipShading;
         return std::make_unique<AggregateAA>(device, scene, s);
     }
     throw std::invalid_argument("--method '" + method + "' is unknown (known: " + knownMethodNames() + ")");

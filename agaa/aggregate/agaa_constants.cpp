@@ -42,6 +42,7 @@ shared::AgaaConstants makeAgaaConstants(const AggregateSettings& s, const shared
     float smax = 2.0f / (kMinGgxAlpha * kMinGgxAlpha) - 2.0f;
     c.toksvig = {smax, kMinGgxAlpha, kMaxGgxAlpha, 0.0f};
     c.options = {uint32_t(s.debugView), uint32_t(s.position), hasEmissive ? 1u : 0u, uint32_t(s.ndf)};
+    c.modes = {uint32_t(s.distance), uint32_t(s.routing), 0u, 0u};
     return c;
 }
 

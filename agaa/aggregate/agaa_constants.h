@@ -21,6 +21,29 @@ enum class AggregatePosition : uint32_t { SampleMean = 0, PixelCentre = 1 };
 // Toksvig elsewhere (its mean shading normal lights diffuse aggregates better: measured in
 // agaa/aggregate/README.md).
 enum class AggregateNdf : uint32_t { Toksvig = 0, Sggx = 1, Auto = 2 };
+// How the lighting pass schedules its shading events (shaders/glsl/agaa/lighting.glsl, step 3):
+// Registers: each invocation shades its own pixel's aggregates (a SIMD group pays for its pixel
+// with the most aggregates); Compact: aggregate 0 of every pixel in registers, every further
+// aggregate of the tile appended to a list in shared memory and shaded with all lanes busy.
+// Auto: Compact when c >= 2 (measured rule: agaa/aggregate/README.md).
+enum class AggregateShading : uint32_t { Registers = 0, Compact = 1, Auto = 2 };
+// Which aggregate a generation fragment feeds (shaders/glsl/agaa/generation.glsl): Samples, each
+// visible sample its own metadata aggregate (AG-buffer counts equal the metadata's); Fragment,
+// Algorithm 2 as the paper writes it: the whole fragment to its first visible sample's aggregate.
+enum class AggregateRouting : uint32_t { Samples = 0, Fragment = 1 };
+// The generation pass's integer atomics: 32-bit per word, or 64-bit on pairs of words (3 atomics
+// per aggregate instead of 5; device feature shaderBufferInt64Atomics). Auto: 64 where offered.
+enum class AggregateAtomics : uint32_t { Bits32 = 0, Bits64 = 1, Auto = 2 };
+// Subgroup pre-reduction of the generation atomics that target the same pixel and aggregate.
+// Auto: on for GPUs with fragment-stage ballot + arithmetic subgroups, off on CPU devices such
+// as lavapipe, whose fragment subgroups never hold two primitives' fragments of one pixel.
+enum class SubgroupReduction : uint32_t { Off = 0, On = 1, Auto = 2 };
+// The position term of the clustering distance (shared/clustering.h): Position, Equation 1's
+// |(p_a - p_b)/k|^2; Plane, the mean of the squared distances of each sample to the other's
+// tangent plane, ((p_a - p_b).n_a/k)^2 and ((p_a - p_b).n_b/k)^2, zero for samples on one plane
+// however far apart (SBAA's plane predicate), so a flat surface at grazing angles stays one
+// aggregate.
+enum class AggregateDistance : uint32_t { Position = 0, Plane = 1 };
 
 struct AggregateSettings {
     uint32_t samples = 8;              // n
@@ -32,6 +55,14 @@ struct AggregateSettings {
     AggregateDebugView debugView = AggregateDebugView::None;
     AggregatePosition position = AggregatePosition::SampleMean;
     AggregateNdf ndf = AggregateNdf::Auto;
+    AggregateShading shading = AggregateShading::Auto;
+    AggregateRouting routing = AggregateRouting::Samples;
+    AggregateAtomics atomics = AggregateAtomics::Auto;
+    SubgroupReduction subgroupReduction = SubgroupReduction::Auto;
+    AggregateDistance distance = AggregateDistance::Position;
+    // Benchmark support (agaa-timings --breakdown): the lighting pass skips step 3, so the
+    // difference to a full run is what lighting the aggregates costs. The image is not lit.
+    bool skipShading = false;
     EffectSettings effects; // scene-driven shadows (taps: the footprint filter), alpha-to-coverage, ...
 };
 

@@ -241,6 +241,7 @@ FrameTargets AggregateAA::addPasses(rg::Graph& graph, const FrameInputs& in) {
     };
     const bool emissive = m_hasEmissive;
     const bool recording = m_recordTarget != nullptr;
+    const bool int64 = m_settings.atomics == AggregateAtomics::Bits64;
     const VkPipelineLayout generationLayout = recording ? m_recordLayout.layout : m_generationLayout.layout;
     const Generation& gen = graph.addGraphics<Generation>(
         "agaa.generation",
@@ -272,7 +273,10 @@ FrameTargets AggregateAA::addPasses(rg::Graph& graph, const FrameInputs& in) {
                 .uniform(2, ctx.buffer(d.agaa).buffer)
                 .storage(3, ctx.buffer(d.metadata).buffer)
                 .storage(4, ctx.buffer(d.agBuffer).buffer);
-            if (recording) pd.storage(5, ctx.buffer(d.records).buffer);
+            if (recording)
+                pd.storage(5, ctx.buffer(d.records).buffer);
+            else if (int64)
+                pd.storage(6, ctx.buffer(d.agBuffer).buffer); // the same buffer as 64-bit words
             pd.push(m_device, cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, generationLayout);
             drawScene(cmd, generationLayout, generationPipelines);
             vkCmdEndRendering(cmd);

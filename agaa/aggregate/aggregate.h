@@ -64,7 +64,8 @@ class AggregateAA final : public Technique {
     void createLayouts(const eng::frame::GpuScene& scene);
 
     eng::vk::Device& m_device;
-    AggregateSettings m_settings;
+    AggregateSettings m_settings;  // every Auto resolved
+    AggregateSettings m_requested; // as the caller asked (the variants say which were automatic)
     const eng::scene::Scene& m_scene;
     eng::scene::SceneFeatures m_features;
     AggregateNdf m_requestedNdf; // m_settings.ndf is the resolved one (never Auto)

@@ -6,8 +6,14 @@
 #include "shaders/agaa/cluster_comp.h"
 #include "shaders/agaa/debug_aggregates_comp.h"
 #include "shaders/agaa/generation_emissive_frag.h"
+#include "shaders/agaa/generation_emissive_int64_frag.h"
+#include "shaders/agaa/generation_emissive_int64_subgroup_frag.h"
+#include "shaders/agaa/generation_emissive_subgroup_frag.h"
 #include "shaders/agaa/generation_frag.h"
+#include "shaders/agaa/generation_int64_frag.h"
+#include "shaders/agaa/generation_int64_subgroup_frag.h"
 #include "shaders/agaa/generation_record_frag.h"
+#include "shaders/agaa/generation_subgroup_frag.h"
 #include "shaders/agaa/lighting_comp.h"
 #include "shaders/agaa/lighting_emissive_comp.h"
 #include "shaders/agaa/lighting_emissive_shadow_comp.h"
@@ -33,7 +39,7 @@ constexpr VkShaderStageFlags kVsFs = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAG
 
 AggregateAA::AggregateAA(vk::Device& device, const eng::frame::GpuScene& scene,
                          const AggregateSettings& settings)
-    : m_device(device), m_settings(settings), m_scene(scene.scene()),
+    : m_device(device), m_settings(settings), m_requested(settings), m_scene(scene.scene()),
       m_features(effectiveFeatures(scene.scene(), settings.effects)), m_requestedNdf(settings.ndf),
       m_hasEmissive(m_features.hasEmissive()) {
     validate(settings);
@@ -59,6 +65,30 @@ AggregateAA::AggregateAA(vk::Device& device, const eng::frame::GpuScene& scene,
         throw vk::MissingCapability(caps.deviceName +
                                     " offers no 4x sampled depth-stencil format (D24S8 or D32S8)");
 
+    // Generation atomics and their subgroup pre-reduction: what the device offers, or what was asked.
+    const bool fragmentSubgroups =
+        (caps.subgroupStages & VK_SHADER_STAGE_FRAGMENT_BIT) != 0 &&
+        (caps.subgroupOperations & (VK_SUBGROUP_FEATURE_BALLOT_BIT | VK_SUBGROUP_FEATURE_ARITHMETIC_BIT)) ==
+            (VK_SUBGROUP_FEATURE_BALLOT_BIT | VK_SUBGROUP_FEATURE_ARITHMETIC_BIT);
+    if (m_settings.atomics == AggregateAtomics::Bits64 && !caps.bufferInt64Atomics)
+        throw vk::MissingCapability(
+            caps.deviceName + " lacks shaderBufferInt64Atomics (--agaa-atomics 64; allowed here: 32, auto)");
+    if (m_settings.atomics == AggregateAtomics::Auto)
+        m_settings.atomics = caps.bufferInt64Atomics ? AggregateAtomics::Bits64 : AggregateAtomics::Bits32;
+    if (m_settings.subgroupReduction == SubgroupReduction::On && !fragmentSubgroups)
+        throw vk::MissingCapability(
+            caps.deviceName +
+            " lacks fragment-stage subgroup ballot and arithmetic (--agaa-subgroup-reduce on; "
+            "allowed here: off, auto)");
+    if (m_settings.subgroupReduction == SubgroupReduction::Auto)
+        m_settings.subgroupReduction = fragmentSubgroups && caps.deviceType != VK_PHYSICAL_DEVICE_TYPE_CPU
+                                           ? SubgroupReduction::On
+                                           : SubgroupReduction::Off;
+    // Measured rule (agaa/aggregate/README.md): one aggregate per pixel has nothing to compact.
+    if (m_settings.shading == AggregateShading::Auto)
+        m_settings.shading =
+            m_settings.aggregates >= 2 ? AggregateShading::Compact : AggregateShading::Registers;
+
     m_constantsBuffer =
         vk::createBuffer(device, sizeof(shared::AgaaConstants), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
                          vk::MemoryUse::Upload, "agaa.constants");
@@ -66,18 +96,23 @@ AggregateAA::AggregateAA(vk::Device& device, const eng::frame::GpuScene& scene,
                                        "agaa.fetchSampler");
     createLayouts(scene);
 
-    m_clusterPipeline = vk::createComputePipeline(device, kAgaaClusterComp, m_clusterLayout.layout,
-                                                  {{settings.samples, settings.aggregates}}, "agaa.cluster");
+    m_clusterPipeline = vk::createComputePipeline(
+        device, kAgaaClusterComp, m_clusterLayout.layout,
+        {{settings.samples, settings.aggregates, uint32_t(settings.distance)}}, "agaa.cluster");
     const bool shadows = m_shadow->enabled();
     std::span<const uint32_t> lighting =
         m_hasEmissive ? (shadows ? std::span<const uint32_t>(kAgaaLightingEmissiveShadowComp)
                                  : kAgaaLightingEmissiveComp)
                       : (shadows ? std::span<const uint32_t>(kAgaaLightingShadowComp) : kAgaaLightingComp);
-    m_lightingPipeline = vk::createComputePipeline(
-        device, lighting, m_lightingLayout.layout,
-        {effectSpecialization(m_features, settings.samples, settings.aggregates, settings.effects.shadowTaps,
-                              settings.effects.shadowFootprint)},
-        "agaa.lighting");
+    std::vector<uint32_t> lightingSpec =
+        effectSpecialization(m_features, settings.samples, settings.aggregates, settings.effects.shadowTaps,
+                             settings.effects.shadowFootprint);
+    lightingSpec.push_back(m_settings.shading == AggregateShading::Compact ? 1u : 0u); // id 7
+    lightingSpec.push_back(settings.skipShading ? 1u : 0u);                            // id 8
+    lightingSpec.push_back(uint32_t(m_settings.ndf));                                  // id 9
+    lightingSpec.push_back(uint32_t(m_settings.routing));                              // id 10
+    m_lightingPipeline =
+        vk::createComputePipeline(device, lighting, m_lightingLayout.layout, {lightingSpec}, "agaa.lighting");
     m_debugPipeline = vk::createComputePipeline(device, kAgaaDebugAggregatesComp, m_debugLayout.layout, {},
                                                 "agaa.debug.aggregates");
 }
@@ -94,9 +129,12 @@ void AggregateAA::createLayouts(const eng::frame::GpuScene& scene) {
         {0, kUbo, kVsFs}, {1, kSsbo, kFs}, {2, kUbo, kFs}, {3, kSsbo, kFs}, {4, kSsbo, kFs}};
     generation.extraSets = {scene.textureSetLayout()};
     generation.pushConstantBytes = 4;
+    vk::LayoutDesc record = generation;
+    record.pushBindings.push_back({5, kSsbo, kFs});
+    m_recordLayout = vk::createPipelineLayout(m_device, record, "agaa.generation.record.layout");
+    // The 64-bit view of the AG-buffer (shaders/glsl/agaa/generation.glsl AGAA_INT64).
+    if (m_settings.atomics == AggregateAtomics::Bits64) generation.pushBindings.push_back({6, kSsbo, kFs});
     m_generationLayout = vk::createPipelineLayout(m_device, generation, "agaa.generation.layout");
-    generation.pushBindings.push_back({5, kSsbo, kFs});
-    m_recordLayout = vk::createPipelineLayout(m_device, generation, "agaa.generation.record.layout");
 
     vk::LayoutDesc cluster;
     cluster.pushBindings = {{0, kUbo, kCs},     {1, kUbo, kCs},  {2, kSampled, kCs},
@@ -172,12 +210,21 @@ VkPipeline AggregateAA::generationPipeline(bool doubleSided) {
         throw std::logic_error("agaa: fragment recording supports scenes without emissive materials only");
     vk::GraphicsPipelineDesc d;
     d.vertex = kAgaaSceneVert;
-    d.fragment = recording       ? std::span<const uint32_t>(kAgaaGenerationRecordFrag)
-                 : m_hasEmissive ? std::span<const uint32_t>(kAgaaGenerationEmissiveFrag)
-                                 : std::span<const uint32_t>(kAgaaGenerationFrag);
+    // [emissive][int64][subgroup]; the recording variant (a test's CPU replay) is 32-bit, per sample.
+    static const std::span<const uint32_t> kVariants[2][2][2] = {
+        {{kAgaaGenerationFrag, kAgaaGenerationSubgroupFrag},
+         {kAgaaGenerationInt64Frag, kAgaaGenerationInt64SubgroupFrag}},
+        {{kAgaaGenerationEmissiveFrag, kAgaaGenerationEmissiveSubgroupFrag},
+         {kAgaaGenerationEmissiveInt64Frag, kAgaaGenerationEmissiveInt64SubgroupFrag}}};
+    d.fragment =
+        recording ? std::span<const uint32_t>(kAgaaGenerationRecordFrag)
+                  : kVariants[m_hasEmissive ? 1 : 0][m_settings.atomics == AggregateAtomics::Bits64 ? 1 : 0]
+                             [m_settings.subgroupReduction == SubgroupReduction::On ? 1 : 0];
     d.layout = recording ? m_recordLayout.layout : m_generationLayout.layout;
-    d.specialization.values =
-        effectSpecialization(m_features, 0, 0, 1); // ids 3, 4: normal-map / emissive fetch
+    // ids 0, 1: normal distribution and routing; ids 3, 4: normal-map / emissive fetch
+    d.specialization.values = effectSpecialization(
+        m_features, uint32_t(m_settings.ndf),
+        recording ? uint32_t(AggregateRouting::Samples) : uint32_t(m_settings.routing), 1);
     if (m_hasEmissive) d.colorFormats = {VK_FORMAT_B10G11R11_UFLOAT_PACK32};
     d.depthFormat = m_depthFormat;
     d.samples = VK_SAMPLE_COUNT_4_BIT;
@@ -213,6 +260,34 @@ std::vector<VariantChoice> AggregateAA::variants() const {
                  m_requestedNdf != AggregateNdf::Auto
                      ? std::string("setting --agaa-ndf")
                      : std::to_string(m_features.glossyMetalMaterials) + " glossy metal materials"});
+    const vk::Capabilities& caps = m_device.caps();
+    const bool compact = m_settings.shading == AggregateShading::Compact;
+    v.push_back({"lighting-schedule",
+                 compact ? "compacted per-tile list (aggregate 0 in registers)" : "registers (per pixel)",
+                 m_requested.shading != AggregateShading::Auto
+                     ? std::string("setting --agaa-lighting")
+                     : "c = " + std::to_string(m_settings.aggregates) + (compact ? " >= 2" : " < 2")});
+    v.push_back(
+        {"generation-routing",
+         m_settings.routing == AggregateRouting::Fragment ? "per fragment (Algorithm 2)" : "per sample",
+         "setting --agaa-routing"});
+    const bool int64 = m_settings.atomics == AggregateAtomics::Bits64;
+    v.push_back({"generation-atomics", int64 ? "64-bit (3 per aggregate)" : "32-bit (5 per aggregate)",
+                 m_requested.atomics != AggregateAtomics::Auto
+                     ? std::string("setting --agaa-atomics")
+                     : std::string(caps.bufferInt64Atomics ? "device has" : "device lacks") +
+                           " shaderBufferInt64Atomics"});
+    const bool reduce = m_settings.subgroupReduction == SubgroupReduction::On;
+    v.push_back(
+        {"subgroup-reduction", reduce ? "on" : "off",
+         m_requested.subgroupReduction != SubgroupReduction::Auto
+             ? std::string("setting --agaa-subgroup-reduce")
+         : caps.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU
+             ? std::string("CPU device: fragment subgroups hold one primitive's pixels")
+             : std::string("GPU with fragment subgroup ballot + arithmetic: ") + (reduce ? "yes" : "no")});
+    v.push_back({"clustering-distance",
+                 m_settings.distance == AggregateDistance::Plane ? "tangent-plane distance" : "Equation 1",
+                 "setting --agaa-distance"});
     return v;
 }
 

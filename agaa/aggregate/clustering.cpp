@@ -27,7 +27,8 @@ PixelClusters clusterPixel(uint32_t x, uint32_t y, const PixelSamples& in,
     }
     PixelClusters out;
     uint32_t ids[shared::kMaxSamples] = {};
-    out.count = shared::clusterSamples(n, c, agaa.clustering.y, px, py, pz, nx, ny, nz, valid, ids);
+    out.count =
+        shared::clusterSamples(n, c, agaa.modes.x, agaa.clustering.y, px, py, pz, nx, ny, nz, valid, ids);
     for (uint32_t s = 0; s < shared::kMaxSamples; ++s)
         out.ids[s] = ids[s];
     for (uint32_t w = 0; w < agaa.shape.z; ++w)

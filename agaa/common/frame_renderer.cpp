@@ -52,11 +52,16 @@ FrameRenderer::~FrameRenderer() {
 }
 
 Technique& FrameRenderer::technique(const RenderRequest& r) {
-    std::string key = r.method + "/" + std::to_string(r.settings.samples) + "/" +
-                      std::to_string(r.settings.aggregates) + "/" + r.settings.debug + "/" +
-                      std::to_string(r.settings.characteristicLength) + "/" +
-                      std::to_string(r.settings.seedThreshold) +
-                      (r.settings.pixelCentrePosition ? "/centre" : "") + "/" + r.settings.ndf;
+    std::string key =
+        r.method + "/" + std::to_string(r.settings.samples) + "/" + std::to_string(r.settings.aggregates) +
+        "/" + r.settings.debug + "/" + std::to_string(r.settings.characteristicLength) + "/" +
+        std::to_string(r.settings.seedThreshold) + (r.settings.pixelCentrePosition ? "/centre" : "") + "/" +
+        r.settings.ndf + "/" + r.settings.agaaLighting + "/" + r.settings.agaaRouting + "/" +
+        r.settings.agaaAtomics + "/" + r.settings.agaaSubgroupReduce + "/" + r.settings.agaaDistance +
+        (r.settings.agaaSkipShading ? "/skip-shading" : "") + "/effects" +
+        (r.settings.effects.forceAll ? "-all" : "") + "/" + std::to_string(r.settings.effects.shadowMapSize) +
+        "/" + std::to_string(r.settings.effects.shadowTaps) + "/" +
+        std::to_string(uint32_t(r.settings.effects.shadowFootprint));
     auto it = m_techniques.find(key);
     if (it == m_techniques.end())
         it = m_techniques.emplace(key, createTechnique(r.method, m_device, m_gpuScene, r.settings)).first;

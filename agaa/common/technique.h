@@ -48,7 +48,16 @@ struct MethodSettings {
     // AGAA normal distribution per aggregate: "auto" (SGGX where the scene has glossy metals,
     // Toksvig elsewhere), "sggx" or "toksvig" (agaa/aggregate/agaa_constants.h AggregateNdf).
     std::string ndf = "auto";
-    EffectSettings effects; // scene-driven shadows, alpha-to-coverage, emissive, normal maps
+    // AGAA lighting schedule "auto" | "compact" | "registers", generation routing "samples" |
+    // "fragment", atomics "auto" | "32" | "64", subgroup pre-reduction "auto" | "on" | "off",
+    // clustering distance "position" | "plane" (agaa/aggregate/agaa_constants.h).
+    std::string agaaLighting = "auto";
+    std::string agaaRouting = "samples";
+    std::string agaaAtomics = "auto";
+    std::string agaaSubgroupReduce = "auto";
+    std::string agaaDistance = "position";
+    bool agaaSkipShading = false; // agaa-timings --breakdown only
+    EffectSettings effects;       // scene-driven shadows, alpha-to-coverage, emissive, normal maps
 };
 
 class Technique {

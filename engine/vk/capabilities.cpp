@@ -73,6 +73,8 @@ std::string Capabilities::describe() const {
       << "post-depth coverage    " << yesNo(postDepthCoverage) << "\n"
       << "float atomics          buffer add " << yesNo(bufferFloatAtomicAdd) << ", image add "
       << yesNo(imageFloatAtomicAdd) << "\n"
+      << "int64 atomics          buffer " << yesNo(bufferInt64Atomics)
+      << " (AGAA generation: --agaa-atomics 64)\n"
       << "subgroups              size " << subgroupSize << ", stages " << stageNames(subgroupStages) << "\n"
       << "subgroup operations    " << subgroupOpNames(subgroupOperations) << "\n"
       << "fragment interlock     " << yesNo(fragmentShaderInterlock) << "\n"

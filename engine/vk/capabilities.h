@@ -22,6 +22,7 @@ struct Capabilities {
     bool postDepthCoverage = false;    // VK_EXT_post_depth_coverage
     bool bufferFloatAtomicAdd = false; // VK_EXT_shader_atomic_float
     bool imageFloatAtomicAdd = false;
+    bool bufferInt64Atomics = false; // Vulkan 1.2 shaderBufferInt64Atomics (with shaderInt64)
     uint32_t subgroupSize = 0;
     VkShaderStageFlags subgroupStages = 0;
     VkSubgroupFeatureFlags subgroupOperations = 0;

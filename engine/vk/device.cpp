@@ -277,6 +277,7 @@ void Device::createDevice(bool swapchain) {
     m_caps.postDepthCoverage = hasExtension(exts, VK_EXT_POST_DEPTH_COVERAGE_EXTENSION_NAME);
     m_caps.bufferFloatAtomicAdd = hasAtomicFloat && atomicFloat.shaderBufferFloat32AtomicAdd;
     m_caps.imageFloatAtomicAdd = hasAtomicFloat && atomicFloat.shaderImageFloat32AtomicAdd;
+    m_caps.bufferInt64Atomics = f12.shaderBufferInt64Atomics && f2.features.shaderInt64;
     m_caps.subgroupSize = subgroup.subgroupSize;
     m_caps.subgroupStages = subgroup.supportedStages;
     m_caps.subgroupOperations = subgroup.supportedOperations;
@@ -345,6 +346,7 @@ void Device::createDevice(bool swapchain) {
     on12.scalarBlockLayout = f12.scalarBlockLayout;
     on12.shaderFloat16 = f12.shaderFloat16;
     on12.storageBuffer8BitAccess = f12.storageBuffer8BitAccess;
+    on12.shaderBufferInt64Atomics = m_caps.bufferInt64Atomics ? VK_TRUE : VK_FALSE;
     VkPhysicalDeviceVulkan11Features on11{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_1_FEATURES};
     on11.multiview = f11.multiview;
     VkPhysicalDeviceFeatures2 on2{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};

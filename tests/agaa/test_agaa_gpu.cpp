@@ -40,14 +40,23 @@ eng::io::ImageF encoded(const eng::io::ImageF& display) {
 struct ClusterCase {
     const char* scene;
     uint32_t n, c;
+    const char* distance = "position"; // --agaa-distance
 };
 
 // Issue 3: the GPU metadata equals the CPU's, computed from the same read-back samples.
 TEST(AgaaClusteringGpu, MetadataMatchesTheCpuReferenceBitForBit) {
     auto device = agaa::test::makeValidatedDevice();
-    const ClusterCase cases[] = {{"furball", 4, 2},  {"furball", 8, 2},  {"railings", 8, 4},
-                                 {"foliage", 16, 2}, {"plane", 32, 3},   {"furball", 32, 3},
-                                 {"foliage", 8, 4},  {"railings", 16, 2}};
+    const ClusterCase cases[] = {{"furball", 4, 2},
+                                 {"furball", 8, 2},
+                                 {"railings", 8, 4},
+                                 {"foliage", 16, 2},
+                                 {"plane", 32, 3},
+                                 {"furball", 32, 3},
+                                 {"foliage", 8, 4},
+                                 {"railings", 16, 2},
+                                 {"furball", 8, 2, "plane"},
+                                 {"default", 8, 4, "plane"},
+                                 {"railings", 32, 3, "plane"}};
     const uint32_t size = 48;
     const uint32_t pixels = size * size;
     std::string loaded;
@@ -73,6 +82,7 @@ TEST(AgaaClusteringGpu, MetadataMatchesTheCpuReferenceBitForBit) {
         shared::AgaaConstants constants{};
         agaa::RenderRequest r = request("agaa", k.n, k.c, size);
         r.settings.debug = "aggregates"; // clustering only: the graph culls generation
+        r.settings.agaaDistance = k.distance;
         r.extraPasses = [&](eng::rg::Graph& graph, agaa::Technique& tech, const agaa::FrameInputs& in) {
             auto& aggregate = dynamic_cast<agaa::AggregateAA&>(tech);
             aggregate.addSampleReadback(graph, in, samples);
@@ -103,7 +113,8 @@ TEST(AgaaClusteringGpu, MetadataMatchesTheCpuReferenceBitForBit) {
             for (uint32_t w = 0; w < words; ++w)
                 wordMismatches += gpuWords[p * words + w] != cpu.metadata[p * words + w];
         }
-        EXPECT_EQ(wordMismatches, 0u) << k.scene << " n=" << k.n << " c=" << k.c << ": metadata words differ";
+        EXPECT_EQ(wordMismatches, 0u)
+            << k.scene << " n=" << k.n << " c=" << k.c << " " << k.distance << ": metadata words differ";
         EXPECT_EQ(countMismatches, 0u)
             << k.scene << " n=" << k.n << " c=" << k.c << ": aggregate counts differ";
         if (std::string(k.scene) != "plane") {

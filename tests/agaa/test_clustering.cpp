@@ -146,3 +146,32 @@ TEST(MetadataPacking, Figure5Example) {
 }
 
 } // namespace
+
+// The plane distance (AggregateDistance::Plane): samples of one plane are 0 apart however far
+// apart they lie on it, where Equation 1 grows with their separation.
+TEST(ClusteringDistance, PlaneDistanceIsZeroAlongOnePlane) {
+    // A plane through the origin with unit normal (0, 0.6, 0.8); two points on it 3 k apart.
+    const float nx = 0.0f, ny = 0.6f, nz = 0.8f;
+    const float ax = 1.0f, ay = 0.8f, az = -0.6f, bx = -2.0f, by = -0.8f, bz = 0.6f;
+    EXPECT_NEAR(shared::aggregatePlaneDistance(ax, ay, az, nx, ny, nz, bx, by, bz, nx, ny, nz), 0.0f, 1e-6f);
+    EXPECT_GT(shared::aggregateDistance(ax, ay, az, nx, ny, nz, bx, by, bz, nx, ny, nz), 9.0f);
+    EXPECT_EQ(shared::clusterDistance(shared::kDistancePlane, ax, ay, az, nx, ny, nz, bx, by, bz, nx, ny, nz),
+              shared::aggregatePlaneDistance(ax, ay, az, nx, ny, nz, bx, by, bz, nx, ny, nz));
+    EXPECT_EQ(
+        shared::clusterDistance(shared::kDistancePosition, ax, ay, az, nx, ny, nz, bx, by, bz, nx, ny, nz),
+        shared::aggregateDistance(ax, ay, az, nx, ny, nz, bx, by, bz, nx, ny, nz));
+}
+
+TEST(ClusteringDistance, PlaneDistanceIsTheSquaredOffsetBetweenParallelPlanesAndSymmetric) {
+    // Two parallel planes h = 0.5 k apart along their normal, the points also 2 k apart sideways.
+    const float nx = 0.0f, ny = 0.0f, nz = 1.0f;
+    float d = shared::aggregatePlaneDistance(0.0f, 0.0f, 0.5f, nx, ny, nz, 2.0f, 0.0f, 0.0f, nx, ny, nz);
+    EXPECT_FLOAT_EQ(d, 0.25f) << "(h / k)^2 from both tangent planes";
+    // Different normals: the mean of the two one-sided distances plus Equation 1's normal term.
+    const float mx = 0.0f, my = 0.6f, mz = 0.8f;
+    float ab = shared::aggregatePlaneDistance(0.0f, 0.0f, 0.5f, nx, ny, nz, 1.0f, 1.0f, 0.0f, mx, my, mz);
+    float ba = shared::aggregatePlaneDistance(1.0f, 1.0f, 0.0f, mx, my, mz, 0.0f, 0.0f, 0.5f, nx, ny, nz);
+    EXPECT_FLOAT_EQ(ab, ba);
+    const float da = 0.5f, db = -0.6f + 0.8f * 0.5f; // (a - b).n_a, (a - b).n_b with a - b = (-1, -1, 0.5)
+    EXPECT_NEAR(ab, 0.5f * (da * da + db * db) + (1.0f - 0.8f) * (1.0f - 0.8f), 1e-6f);
+}

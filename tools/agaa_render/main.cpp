@@ -53,7 +53,9 @@ const char* kUsage =
     "                   [--width W] [--height H] [--camera I] [--exposure E] [--out PREFIX] [--debug VIEW]\n"
     "                   [--stats FILE.json] [--graph FILE.dot] [--frames K] [--warmup K]\n"
     "                   [--characteristic-length K] [--seed-threshold T] [--agaa-position mean|centre]\n"
-    "                   [--agaa-ndf auto|sggx|toksvig]\n"
+    "                   [--agaa-ndf auto|sggx|toksvig] [--agaa-lighting auto|compact|registers]\n"
+    "                   [--agaa-routing samples|fragment] [--agaa-atomics auto|32|64]\n"
+    "                   [--agaa-subgroup-reduce auto|on|off] [--agaa-distance position|plane]\n"
     "                   [--effects scene|all] [--shadow-taps N] [--shadow-footprint F] [--shadow-map-size N] "
     "[--shadow-casters scene|none]\n"
     "                   [--validate] [--device NAME] [--caps] [--help]\n"
@@ -72,6 +74,17 @@ const char* kUsage =
     "  --agaa-ndf auto|sggx|toksvig  AGAA normal distribution per aggregate: anisotropic SGGX with\n"
     "                   the two-point tone-mapped resolve, the paper's isotropic Toksvig, or auto\n"
     "                   (default): SGGX when the scene has glossy metals, else Toksvig\n"
+    "  --agaa-lighting auto|compact|registers  AGAA lighting schedule: further aggregates of a tile\n"
+    "                    packed into a shared-memory list (compact), or each pixel shading its own\n"
+    "                    (registers); auto (default): compact when c >= 2\n"
+    "  --agaa-routing samples|fragment  AGAA generation: each visible sample feeds its own aggregate\n"
+    "                    (default), or the whole fragment its first visible sample's (Algorithm 2)\n"
+    "  --agaa-atomics auto|32|64  AGAA generation atomics: 64-bit pairs of words where the device has\n"
+    "                    shaderBufferInt64Atomics (auto, default), or 32-bit words\n"
+    "  --agaa-subgroup-reduce auto|on|off  AGAA generation: sum the atomics of fragments that hit one\n"
+    "                    pixel across the subgroup first (auto: on for GPUs, off on CPU devices)\n"
+    "  --agaa-distance position|plane  AGAA clustering: Equation 1 (default), or the samples' distance\n"
+    "                    to each other's tangent plane (a flat surface stays one aggregate)\n"
     "  --agaa-position mean|centre  AGAA shading point: mean of the samples (default) or UE4's\n"
     "                    mean depth on the pixel-centre ray\n"
     "  --effects scene|all  passes and shader variants from the scene's features (default), or every\n"
@@ -108,6 +121,17 @@ float parseFloat(const std::string& flag, const std::string& value, float lo, fl
     }
     throw BadArgument(flag + " '" + value + "' is not a number in [" + std::to_string(lo) + ", " +
                       std::to_string(hi) + "]");
+}
+
+// `value` if it is one of `allowed`, else BadArgument naming the flag and the allowed values.
+std::string oneOf(const std::string& flag, const std::string& value,
+                  std::initializer_list<const char*> allowed) {
+    std::string names;
+    for (const char* name : allowed) {
+        if (value == name) return value;
+        names += std::string(names.empty() ? "" : ", ") + name;
+    }
+    throw BadArgument(flag + " '" + value + "' is not one of: " + names);
 }
 
 Options parse(int argc, char** argv) {
@@ -151,6 +175,16 @@ Options parse(int argc, char** argv) {
             if (v != "auto" && v != "sggx" && v != "toksvig")
                 throw BadArgument("--agaa-ndf '" + v + "' is not one of: auto, sggx, toksvig");
             r.settings.ndf = v;
+        } else if (a == "--agaa-lighting") {
+            r.settings.agaaLighting = oneOf(a, value(), {"auto", "compact", "registers"});
+        } else if (a == "--agaa-routing") {
+            r.settings.agaaRouting = oneOf(a, value(), {"samples", "fragment"});
+        } else if (a == "--agaa-atomics") {
+            r.settings.agaaAtomics = oneOf(a, value(), {"auto", "32", "64"});
+        } else if (a == "--agaa-subgroup-reduce") {
+            r.settings.agaaSubgroupReduce = oneOf(a, value(), {"auto", "on", "off"});
+        } else if (a == "--agaa-distance") {
+            r.settings.agaaDistance = oneOf(a, value(), {"position", "plane"});
         } else if (a == "--effects") {
             std::string v = value();
             if (v != "scene" && v != "all")

@@ -5,7 +5,16 @@
 // it asserts nothing about speed.
 //
 //   agaa-timings [--scenes foliage,furball] [--size 640x360] [--frames 5] [--warmup 2]
-//                [--jobs reference:8,agaa:8:2,simple-complex:8] [--validate] [--json FILE]
+//                [--jobs reference:8,agaa:8:2,simple-complex:8] [--breakdown] [--validate] [--json FILE]
+// A job is METHOD[:N[:C]][:KEY=VALUE...]; AGAA's keys are its settings (lighting, routing,
+// atomics, reduce, distance, ndf), e.g. agaa:8:2:lighting=registers:routing=fragment.
+// For every AGAA job it prints, next to the shading/frame ratios against each peer at the same n:
+//   - lighting ms per shading event against no-AA's (needs a noaa job): what one aggregate's
+//     shading costs against one plain sample's;
+//   - visibility + generation against the per-sample G-buffer pass of Simple/Complex (or of the
+//     reference) at the same n: the cost of AGAA's two raster passes against the one they replace;
+//   - with --breakdown, the lighting pass without its shading step (the prologue: sample walk,
+//     normalisation, tile culling, resolve), so the shading's share is the difference.
 // Exit codes: 0 done; 2 bad arguments; 3 the device lacks something required.
 
 #include "agaa/common/frame_renderer.h"
@@ -30,9 +39,14 @@ namespace {
 struct Job {
     std::string method;
     uint32_t samples = 8, aggregates = 2;
+    std::vector<std::pair<std::string, std::string>> options; // AGAA KEY=VALUE settings
     std::string label() const {
         std::string l = method + " n=" + std::to_string(samples);
-        return method == "agaa" ? l + " c=" + std::to_string(aggregates) : l;
+        if (method != "agaa") return l;
+        l += " c=" + std::to_string(aggregates);
+        for (const auto& [k, v] : options)
+            l += " " + k + "=" + v;
+        return l;
     }
 };
 
@@ -53,16 +67,49 @@ uint32_t number(const std::string& flag, const std::string& v, uint32_t lo, uint
     return x;
 }
 
+// The AGAA settings a job may name, each with the MethodSettings field it sets.
+std::string* agaaOption(agaa::MethodSettings& s, const std::string& key) {
+    if (key == "lighting") return &s.agaaLighting;
+    if (key == "routing") return &s.agaaRouting;
+    if (key == "atomics") return &s.agaaAtomics;
+    if (key == "reduce") return &s.agaaSubgroupReduce;
+    if (key == "distance") return &s.agaaDistance;
+    if (key == "ndf") return &s.ndf;
+    return nullptr;
+}
+
 Job parseJob(const std::string& text) {
     auto parts = split(text, ':');
-    if (parts.empty() || parts.size() > 3 || !agaa::isKnownMethod(parts[0]))
-        throw std::invalid_argument("--jobs entry '" + text + "' is not METHOD[:N[:C]] with METHOD one of " +
+    if (parts.empty() || !agaa::isKnownMethod(parts[0]))
+        throw std::invalid_argument("--jobs entry '" + text +
+                                    "' is not METHOD[:N[:C]][:KEY=VALUE...] with METHOD one of " +
                                     agaa::knownMethodNames());
     Job j;
     j.method = parts[0];
-    if (parts.size() > 1) j.samples = number("--jobs samples", parts[1], 1, 32);
-    if (parts.size() > 2) j.aggregates = number("--jobs aggregates", parts[2], 1, 4);
+    size_t i = 1;
+    if (i < parts.size() && parts[i].find('=') == std::string::npos)
+        j.samples = number("--jobs samples", parts[i++], 1, 32);
+    if (i < parts.size() && parts[i].find('=') == std::string::npos)
+        j.aggregates = number("--jobs aggregates", parts[i++], 1, 4);
+    agaa::MethodSettings probe;
+    for (; i < parts.size(); ++i) {
+        size_t eq = parts[i].find('=');
+        std::string key = eq == std::string::npos ? parts[i] : parts[i].substr(0, eq);
+        if (j.method != "agaa" || eq == std::string::npos || !agaaOption(probe, key))
+            throw std::invalid_argument(
+                "--jobs entry '" + text + "': '" + parts[i] +
+                "' is not an AGAA KEY=VALUE (keys: lighting, routing, atomics, reduce, "
+                "distance, ndf)");
+        j.options.push_back({key, parts[i].substr(eq + 1)});
+    }
     return j;
+}
+
+// The time of the pass named `name`, or 0 when the result has none.
+double passMs(const agaa::RenderResult& r, const std::string& name) {
+    for (const auto& p : r.passes)
+        if (p.name == name) return p.gpuMs;
+    return 0.0;
 }
 
 // The shading pass of a method: the pass whose name ends in ".lighting".
@@ -87,7 +134,7 @@ int main(int argc, char** argv) {
     uint32_t width = 640, height = 360, frames = 5, warmup = 2;
     std::vector<Job> jobs = {{"reference", 8, 1}, {"agaa", 8, 2}};
     if (agaa::isKnownMethod("simple-complex")) jobs.push_back({"simple-complex", 8, 1});
-    bool validate = false;
+    bool validate = false, breakdown = false;
     std::string jsonPath;
     try {
         for (int i = 1; i < argc; ++i) {
@@ -113,11 +160,18 @@ int main(int argc, char** argv) {
                     jobs.push_back(parseJob(j));
             } else if (a == "--validate")
                 validate = true;
+            else if (a == "--breakdown")
+                breakdown = true;
             else if (a == "--json")
                 jsonPath = value();
             else if (a == "--help" || a == "-h") {
                 std::printf("usage: agaa-timings [--scenes a,b] [--size WxH] [--frames K] [--warmup K]\n"
-                            "                    [--jobs METHOD[:N[:C]],...] [--validate] [--json FILE]\n"
+                            "                    [--jobs METHOD[:N[:C]][:KEY=VALUE...],...] [--breakdown] "
+                            "[--validate]\n"
+                            "                    [--json FILE]\n"
+                            "AGAA job keys: lighting=auto|compact|registers, routing=samples|fragment,\n"
+                            "  atomics=auto|32|64, reduce=auto|on|off, distance=position|plane, "
+                            "ndf=auto|sggx|toksvig\n"
                             "methods: %s; scenes: builtin kinds\n",
                             agaa::knownMethodNames().c_str());
                 return 0;
@@ -139,16 +193,21 @@ int main(int argc, char** argv) {
             agaa::FrameRenderer renderer(device, scene);
             std::map<std::string, agaa::RenderResult> results;
             std::printf("\n== %s (%u triangles)\n", name.c_str(), scene.triangleCount());
-            for (const Job& job : jobs) {
+            auto request = [&](const Job& job) {
                 agaa::RenderRequest r;
                 r.method = job.method;
                 r.settings.samples = job.samples;
                 r.settings.aggregates = job.aggregates;
+                for (const auto& [k, v] : job.options)
+                    *agaaOption(r.settings, k) = v;
                 r.view.width = width;
                 r.view.height = height;
                 r.warmupFrames = warmup;
                 r.timedFrames = frames;
-                agaa::RenderResult res = renderer.render(r);
+                return r;
+            };
+            for (const Job& job : jobs) {
+                agaa::RenderResult res = renderer.render(request(job));
                 std::printf("  %-26s frame %9.2f ms  bytes/px %7.1f  events/px %.2f (max %u)\n",
                             job.label().c_str(), frameMs(res), res.bytesPerPixel, res.shadingEventsMean,
                             res.shadingEventsMax);
@@ -158,16 +217,44 @@ int main(int argc, char** argv) {
                     std::printf("      %-28s %9.2f ms\n", p.name.c_str(), p.gpuMs);
                     passes[p.name] = p.gpuMs;
                 }
+                nlohmann::json variants = nlohmann::json::object();
+                for (const auto& v : res.variants)
+                    variants[v.effect] = v.variant;
                 out["scenes"][name][job.label()] = {{"frame_ms", frameMs(res)},
                                                     {"shading_ms", shadingMs(res)},
                                                     {"bytes_per_pixel", res.bytesPerPixel},
-                                                    {"passes", passes}};
+                                                    {"events_per_pixel", res.shadingEventsMean},
+                                                    {"passes", passes},
+                                                    {"variants", variants}};
+                if (breakdown && job.method == "agaa") {
+                    agaa::RenderRequest r = request(job);
+                    r.settings.agaaSkipShading = true;
+                    double prologue = shadingMs(renderer.render(r));
+                    std::printf("      %-28s %9.2f ms  (lighting without its shading step)\n",
+                                "agaa.lighting.prologue", prologue);
+                    std::printf("      %-28s %9.2f ms  (the difference: lighting the aggregates)\n",
+                                "agaa.lighting.shading", shadingMs(res) - prologue);
+                    out["scenes"][name][job.label()]["lighting_prologue_ms"] = prologue;
+                }
                 results[job.label()] = std::move(res);
             }
             // Ratios of every AGAA job against every peer at the same n.
+            const agaa::RenderResult* noaa = nullptr;
+            for (const Job& b : jobs)
+                if (b.method == "noaa") noaa = &results[b.label()];
             for (const Job& a : jobs) {
                 if (a.method != "agaa") continue;
                 const auto& ra = results[a.label()];
+                nlohmann::json& ratios = out["scenes"][name]["ratios"];
+                if (noaa && noaa->shadingEventsMean > 0 && ra.shadingEventsMean > 0 && shadingMs(*noaa) > 0) {
+                    double perEvent =
+                        (shadingMs(ra) / ra.shadingEventsMean) / (shadingMs(*noaa) / noaa->shadingEventsMean);
+                    std::printf(
+                        "  %s: lighting ms per shading event %.2fx no-AA's (%.2f vs %.2f ms per event/px)\n",
+                        a.label().c_str(), perEvent, shadingMs(ra) / ra.shadingEventsMean,
+                        shadingMs(*noaa) / noaa->shadingEventsMean);
+                    ratios[a.label() + " per event vs noaa"] = perEvent;
+                }
                 for (const Job& b : jobs) {
                     if (b.method == "agaa" || b.samples != a.samples) continue;
                     const auto& rb = results[b.label()];
@@ -176,8 +263,16 @@ int main(int argc, char** argv) {
                     double bytes = ra.bytesPerPixel / rb.bytesPerPixel;
                     std::printf("  %s vs %s: shading pass %.2fx faster, frame %.2fx faster, bytes/px %.3fx\n",
                                 a.label().c_str(), b.label().c_str(), shading, frame, bytes);
-                    out["scenes"][name]["ratios"][a.label() + " vs " + b.label()] = {
+                    nlohmann::json entry = {
                         {"shading_speedup", shading}, {"frame_speedup", frame}, {"bytes_ratio", bytes}};
+                    double gbuffer = passMs(rb, b.method + ".gbuffer");
+                    if (gbuffer > 0) {
+                        double raster = passMs(ra, "agaa.visibility") + passMs(ra, "agaa.generation");
+                        std::printf("      visibility + generation %.2f ms = %.2fx %s.gbuffer (%.2f ms)\n",
+                                    raster, raster / gbuffer, b.method.c_str(), gbuffer);
+                        entry["raster_ratio"] = raster / gbuffer;
+                    }
+                    ratios[a.label() + " vs " + b.label()] = entry;
                 }
             }
         }

@@ -12,6 +12,9 @@ layout(local_size_x = 8, local_size_y = 8) in;
 // compiler can unroll them and keep the sample arrays in registers instead of scratch memory.
 layout(constant_id = 0) const uint kSamples = 8u;
 layout(constant_id = 1) const uint kAggregates = 2u;
+// The distance (kDistancePosition, kDistancePlane; agaa.modes.x holds the same value for the CPU
+// reference): a constant, so only one distance is compiled in.
+layout(constant_id = 2) const uint kDistance = 0u;
 
 layout(set = 0, binding = 0) uniform Frame { FrameConstants frame; };
 layout(set = 0, binding = 1) uniform Agaa { AgaaConstants agaa; };
@@ -48,7 +51,7 @@ void main() {
                          agaa.cosSinPhi[q.y].y, vx, vy, vz, nx[s], ny[s], nz[s]);
     }
     uint ids[kMaxSamples];
-    uint count = clusterSamples(n, c, agaa.clustering.y, px, py, pz, nx, ny, nz, valid, ids);
+    uint count = clusterSamples(n, c, kDistance, agaa.clustering.y, px, py, pz, nx, ny, nz, valid, ids);
     const uint words = (kSamples * metadataBits(kAggregates) + 31u) / 32u;
     uint base = (pixel.y * size.x + pixel.x) * words;
     for (uint w = 0u; w < words; ++w) metadata[base + w] = packMetadataWord(w, n, c, ids);

@@ -8,12 +8,39 @@
 // distribution (Toksvig vector or SGGX matrix, shared/agaa.h), albedo, metallic and sample count
 // into its pixel's aggregates.
 //
-// Routing: Algorithm 2 routes the whole fragment to the aggregate of its first visible sample.
-// Here each aggregate present in the fragment's mask receives the fragment's values weighted
-// by its own number of samples, so the AG-buffer's sample counts equal the metadata's exactly
-// (a fragment straddling two clusters would otherwise count all its samples in one).
+// Routing (specialisation id 1, agaa/aggregate/agaa_constants.h AggregateRouting):
+//  - samples (default): each aggregate present in the fragment's mask receives the fragment's
+//    values weighted by its own number of samples, so the AG-buffer's sample counts equal the
+//    metadata's exactly (a fragment straddling two clusters would otherwise count all its
+//    samples in one);
+//  - fragment: Algorithm 2 as the paper writes it: the whole fragment goes to the aggregate of
+//    its first visible sample, one set of atomics per fragment. The lighting pass then weights
+//    each aggregate by the samples it received, not by the metadata's assignment.
+// Atomics (variants built from this file):
+//  - AGAA_INT64 (shaderBufferInt64Atomics): the 5 words of an aggregate as one 32-bit and two
+//    64-bit adds. No field ever carries out of its word (layout proof in shared/agaa.h), so a
+//    64-bit add of two words equals two 32-bit adds: the AG-buffer is bit-identical.
+//  - AGAA_SUBGROUP: fragments of one subgroup that target the same (pixel, aggregate) first sum
+//    their increments with subgroupAdd, and one lane adds the sum (integer sums: order-free,
+//    bit-identical). It saves atomics only where a subgroup holds fragments of several primitives
+//    covering one pixel (GPUs pack quads of several triangles into one wave); lavapipe's fragment
+//    subgroups are the pixels of one triangle, so there it only adds the loop.
 #extension GL_GOOGLE_include_directive : require
 #extension GL_ARB_post_depth_coverage : require
+#ifndef AGAA_INT64
+#define AGAA_INT64 0
+#endif
+#ifndef AGAA_SUBGROUP
+#define AGAA_SUBGROUP 0
+#endif
+#if AGAA_INT64
+#extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
+#extension GL_EXT_shader_atomic_int64 : require
+#endif
+#if AGAA_SUBGROUP
+#extension GL_KHR_shader_subgroup_ballot : require
+#extension GL_KHR_shader_subgroup_arithmetic : require
+#endif
 #include "shared/agaa.h"
 #include "shared/ag_buffer.h"
 #include "shared/clustering.h"
@@ -27,6 +54,10 @@ layout(set = 0, binding = 1, std430) readonly buffer Materials { GpuMaterial mat
 layout(set = 0, binding = 2) uniform Agaa { AgaaConstants agaa; };
 layout(set = 0, binding = 3, std430) readonly buffer Metadata { uint metadata[]; };
 layout(set = 0, binding = 4, std430) buffer AgBuffer { uint agBuffer[]; };
+#if AGAA_INT64
+// The same AG-buffer seen as 64-bit words (bound twice: binding 6 aliases binding 4).
+layout(set = 0, binding = 6, std430) buffer AgBuffer64 { uint64_t agBuffer64[]; };
+#endif
 layout(set = 1, binding = 0) uniform sampler2D textures[kMaxSceneTextures];
 #if AGAA_RECORD
 // Test support (tests/agaa/test_agaa_gpu.cpp): every fragment of the pixels in the central
@@ -37,6 +68,11 @@ const uint kRecordWords = 3u + kQuantizedFields; // pixel, layer, mask, the quan
 layout(set = 0, binding = 5, std430) buffer FragmentRecords { uint recordCount; uint recordCapacity; uint records[]; };
 #endif
 layout(push_constant) uniform Push { uint material; } pc;
+// Specialisation ids 0 and 1: the normal distribution (kNdfToksvig, kNdfSggx) and the routing
+// (0 per sample, 1 per fragment). Constants, not uniforms: lavapipe executes both sides of a
+// branch it cannot resolve at compile time.
+layout(constant_id = 0) const uint kNdf = 0u;
+layout(constant_id = 1) const uint kRouteFragment = 0u;
 
 #include "common/material.glsl"
 
@@ -48,6 +84,41 @@ layout(location = 3) flat in uint inLayer;
 // Emissive stays per sample (seed 004: no HDR fireflies): an MSAA target, resolved per sample.
 layout(location = 0) out vec4 outEmissive;
 #endif
+
+// Adds k samples of the fragment's values to aggregate slot `slot` (pixel * c + aggregate).
+void addToAggregate(uint slot, uint k, uint ndf, AgQuantized f) {
+    uint base = slot * kAggregateWords;
+    uint inc[kAggregateWords];
+    for (uint w = 0u; w < kAggregateWords; ++w) inc[w] = aggregateIncrement(ndf, w, k, f);
+#if AGAA_SUBGROUP
+    // Lanes with the same slot sum their increments; the lowest of them adds the sum. Each pass
+    // of the loop retires the lanes of the first remaining lane's slot.
+    bool retired = false, adds = false;
+    for (uint lap = 0u; lap < gl_SubgroupSize && !retired; ++lap) {
+        uint leader = subgroupBroadcastFirst(slot);
+        if (slot == leader) {
+            for (uint w = 0u; w < kAggregateWords; ++w) inc[w] = subgroupAdd(inc[w]);
+            adds = subgroupElect();
+            retired = true;
+        }
+    }
+    if (!adds) return;
+#endif
+#if AGAA_INT64
+    // base is even for even slots (5 words per aggregate): pair the words on 8-byte boundaries.
+    if ((base & 1u) == 0u) {
+        atomicAdd(agBuffer64[base / 2u], uint64_t(inc[0]) | (uint64_t(inc[1]) << 32u));
+        atomicAdd(agBuffer64[base / 2u + 1u], uint64_t(inc[2]) | (uint64_t(inc[3]) << 32u));
+        atomicAdd(agBuffer[base + 4u], inc[4]);
+    } else {
+        atomicAdd(agBuffer[base], inc[0]);
+        atomicAdd(agBuffer64[(base + 1u) / 2u], uint64_t(inc[1]) | (uint64_t(inc[2]) << 32u));
+        atomicAdd(agBuffer64[(base + 1u) / 2u + 1u], uint64_t(inc[3]) | (uint64_t(inc[4]) << 32u));
+    }
+#else
+    for (uint w = 0u; w < kAggregateWords; ++w) atomicAdd(agBuffer[base + w], inc[w]);
+#endif
+}
 
 void main() {
     GpuMaterial gm = materials[pc.material];
@@ -63,7 +134,7 @@ void main() {
     uint c = agaa.shape.x;
     uint words = agaa.shape.z;
 
-    uint ndf = agaa.options.w;
+    const uint ndf = kNdf;
     uint n = agaa.shape.w;
     float alpha = m.roughness * m.roughness;
     AgQuantized f;
@@ -111,20 +182,28 @@ void main() {
     }
 #endif
     uint perAggregate[kMaxAggregates] = uint[](0u, 0u, 0u, 0u);
-    for (uint hw = 0u; hw < 4u; ++hw) {
-        if ((mask & (1u << hw)) == 0u) continue;
-        uint s = inLayer * 4u + hw;
-        uint id = 0u;
-        if (words > 0u) {
-            uint b = metadataBits(c);
-            id = unpackMetadata(metadata[pixelIndex * words + (s * b) / 32u], s, c);
-        }
-        perAggregate[id] += 1u;
+    uint b = metadataBits(c);
+    if (kRouteFragment != 0u) {
+        // Algorithm 2: the first visible sample's aggregate takes the whole fragment.
+        uint s = inLayer * 4u + uint(findLSB(mask));
+        uint id = words > 0u ? unpackMetadata(metadata[pixelIndex * words + (s * b) / 32u], s, c) : 0u;
+        addToAggregate(pixelIndex * c + id, uint(bitCount(mask)), ndf, f);
+        return;
     }
-    for (uint a = 0u; a < c; ++a) {
-        uint k = perAggregate[a];
-        if (k == 0u) continue;
-        uint base = (pixelIndex * c + a) * kAggregateWords;
-        for (uint w = 0u; w < kAggregateWords; ++w) atomicAdd(agBuffer[base + w], aggregateIncrement(ndf, w, k, f));
+    for (uint hw = 0u; hw < 4u; ++hw) {
+        uint s = inLayer * 4u + hw;
+        uint id = words > 0u ? unpackMetadata(metadata[pixelIndex * words + (s * b) / 32u], s, c) : 0u;
+        perAggregate[id] += (mask >> hw) & 1u;
+    }
+    // Only the aggregates the fragment touches: a loop over their bits ends for a SIMD group
+    // once every lane's are done (most fragments touch one), where a loop over all c with a
+    // per-aggregate test would issue every aggregate's atomics masked (lavapipe runs both sides
+    // of a branch, and a masked atomic still walks its lanes).
+    uint touched = 0u;
+    for (uint a = 0u; a < c; ++a) touched |= perAggregate[a] > 0u ? 1u << a : 0u;
+    while (touched != 0u) {
+        uint a = uint(findLSB(touched));
+        touched &= touched - 1u;
+        addToAggregate(pixelIndex * c + a, perAggregate[a], ndf, f);
     }
 }

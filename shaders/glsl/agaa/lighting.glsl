@@ -1,16 +1,26 @@
 // AGAA step 4: tiled-deferred lighting that aggregates at the top of each tile (paper
 // section 3.5, the UE4 variant of seed 004). One workgroup per 16x16 tile:
-//   1. each invocation turns its pixel's accumulations into normalised aggregates (divide by
-//      the sample count; filtered roughness from the Toksvig length, or the anisotropic lobe of
-//      the SGGX matrix, shared/sggx.h) and rebuilds each
-//      aggregate's depth mean and variance from the per-sample depths its metadata assigns it;
-//      they stay in registers: an invocation only ever shades its own pixel's aggregates, and
-//      c = 4 aggregates x 256 pixels would not fit lavapipe's 32 KB of shared memory;
+//   1. each invocation walks its pixel's n samples once: each aggregate's sample count, depth
+//      mean and variance and mean position from the per-sample depths its metadata assigns it,
+//      the pixel's sky samples, and its view-distance range for the tile bounds; then it turns
+//      the accumulations into normalised aggregates (divide by the sample count; filtered
+//      roughness from the Toksvig length, or the anisotropic lobe of the SGGX matrix,
+//      shared/sggx.h);
 //   2. tile depth bounds and light culling in shared memory (common/tile_culling.glsl);
-//   3. each aggregate lit once per light with the reference's BRDF (common/brdf.glsl);
-//   4. resolve (DESIGN section 6): per sample, its aggregate's radiance plus the sample's own
-//      emissive, tone-mapped and weighted 1/n; uncovered samples get the sky. With SGGX the
-//      tone map takes the expected value over the aggregate's samples (toneMapAggregate).
+//   3. each aggregate lit once per light with the reference's BRDF (common/brdf.glsl). Two
+//      schedules (specialisation id 7, agaa/aggregate/agaa_constants.h AggregateShading):
+//      - compacted (the default for c >= 2): every present aggregate of the tile is appended to
+//        a per-tile list in shared memory and the list is shaded kListRound entries at a time,
+//        one entry per invocation, so every SIMD lane is busy whatever the clustering decided
+//        (the per-pixel schedule pays for the pixel with the most aggregates in each SIMD group);
+//      - registers: each invocation shades its own pixel's aggregates (cheaper when c = 1, where
+//        a pixel holds at most one aggregate and the list only adds shared-memory traffic).
+//      Both call shadeAggregate() on the same values: their outputs are bit-identical (tested);
+//   4. resolve (DESIGN section 6): each aggregate's radiance, tone-mapped and weighted by its
+//      sample fraction, plus the sky for uncovered samples. Without emissive every sample of an
+//      aggregate has the same radiance, so this costs c tone maps, not n; with emissive it runs
+//      per sample (emissive stays per sample, seed 004). With SGGX the tone map takes the
+//      expected value over the aggregate's samples (toneMapAggregate).
 #extension GL_GOOGLE_include_directive : require
 #include "shared/ag_buffer.h"
 #include "shared/agaa.h"
@@ -89,25 +99,111 @@ float shadowVisibilityAggregateSamples(uint light, ivec2 pixel, uint pixelIndex,
 }
 #endif
 
+// Specialisation id 7 (agaa/aggregate/agaa_constants.h AggregateShading): 1 the compacted
+// per-tile list, 0 each invocation shades its own pixel's aggregates.
+layout(constant_id = 7) const uint kCompactShading = 1u;
+
+// Specialisation id 8 (AggregateSettings::skipShading, agaa-timings --breakdown): 1 skips step 3.
+layout(constant_id = 8) const uint kSkipShading = 0u;
+// Specialisation id 9: the normal distribution (kNdfToksvig, kNdfSggx; agaa.options.w holds the
+// same value). A constant, not a uniform: lavapipe executes both sides of every branch whose
+// condition is not known at compile time, so a uniform choice would pay for both BRDFs.
+layout(constant_id = 9) const uint kNdf = 0u;
+// Specialisation id 10 (AggregateRouting): 1 when the generation pass routed whole fragments
+// (Algorithm 2); an aggregate then stands for the samples it received, which need not be the
+// samples the metadata assigned it, so the resolve weights it by its accumulated count.
+layout(constant_id = 10) const uint kRouteFragment = 0u;
+const uint kTilePixels = kTileSize * kTileSize;
+// Entries of the per-tile list shaded per round: one per invocation. c = 4 can append up to
+// 4 x 256; the list is then shaded in up to 4 rounds through the same 256-entry storage, which
+// keeps the tile's shared memory at 21.5 KB (lavapipe offers 32 KB).
+const uint kListRound = kTilePixels;
+
+// One round of the per-tile list, struct-of-arrays. Inputs, written by the aggregate's pixel:
+//   sPosition  xyz view-space shading position, w depth standard deviation (shadow footprint)
+//   sNormal    xyz shading normal, w roughness
+//   sAlbedo    rgb albedo, a metallic
+//   sTangent   SGGX only: xyz tangent, w alphaT;  sBitangent: xyz bitangent, w alphaB
+//   sOwner     tile pixel index | aggregate id << 8 | the aggregate's sample count << 10
+// Outputs, written in place by the invocation that shades the entry: sPosition.xyz radiance,
+// sNormal.xyz specular part (SGGX), sAlbedo.xyz its variance (SGGX).
+shared vec4 sPosition[kListRound];
+shared vec4 sNormal[kListRound];
+shared vec4 sAlbedo[kListRound];
+shared vec4 sTangent[kListRound];
+shared vec4 sBitangent[kListRound];
+shared uint sOwner[kListRound];
+shared uint sEntryCount;
+
+// One light's contribution to an aggregate.
+void addLight(SurfaceInputs surface, vec3 T, vec3 B, vec2 alphas, vec3 V, vec3 L, vec3 irradiance, bool sggx,
+              inout vec3 radiance, inout vec3 specular, inout vec3 specularVariance) {
+    if (sggx) {
+        vec3 spec;
+        radiance += evaluateBrdfAnisotropic(surface, T, B, alphas.x, alphas.y, V, L, irradiance, spec);
+        // Var = (E[L^2] / E[L]^2 - 1) E[L]^2 per light; highlights of different lights
+        // fall on different samples, so their variances add.
+        specular += spec;
+        specularVariance += (sggxSpikeRatio(alphas.x, alphas.y) - 1.0) * spec * spec;
+    } else {
+        radiance += evaluateBrdf(surface, V, L, irradiance);
+    }
+}
+
+// One shading event: the aggregate `a` of `pixel` (k samples), seen at P, lit by every light of
+// the tile. radiance: its linear radiance before exposure; SGGX also returns the specular part
+// and the variance of the specular radiance over the aggregate's samples.
+void shadeAggregate(SurfaceInputs surface, vec3 T, vec3 B, vec2 alphas, vec3 P, float sigma, ivec2 pixel,
+                    uint pixelIndex, uint a, uint k, bool sggx, out vec3 radiance, out vec3 specular,
+                    out vec3 specularVariance) {
+    radiance = vec3(0.0);
+    specular = vec3(0.0);
+    specularVariance = vec3(0.0);
+    vec3 V = normalize(-P); // |P| >= znear > 0
+#if AGAA_SHADOWS
+    // The aggregate's footprint: depth standard deviation along the ray, one pixel across.
+    float pixelSize = -P.z * 2.0 * frame.extent.w / frame.projParams.y;
+#endif
+    for (uint i = nextTileLight(0u); i < kMaxLights; i = nextTileLight(i + 1u)) {
+        vec3 L, irradiance;
+        if (!lightIncidence(lights[i], P, L, irradiance)) continue;
+        addLight(surface, T, B, alphas, V, L, irradiance, sggx, radiance, specular, specularVariance);
+    }
+#if AGAA_SHADOWS
+    for (uint i = nextTileShadowedLight(0u); i < kMaxLights; i = nextTileShadowedLight(i + 1u)) {
+        vec3 L, irradiance;
+        if (!lightIncidence(lights[i], P, L, irradiance)) continue;
+        irradiance *= kShadowFootprint == 1u ? shadowVisibilityAggregateSamples(i, pixel, pixelIndex, a, k, surface.normal)
+                                             : shadowVisibilityAggregate(i, P, surface.normal, sigma, pixelSize);
+        addLight(surface, T, B, alphas, V, L, irradiance, sggx, radiance, specular, specularVariance);
+    }
+#endif
+}
+
 void main() {
     ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
     ivec2 size = ivec2(frame.extent.xy);
     bool inside = all(lessThan(pixel, size));
     const uint n = kSamples;
     const uint c = kAggregates;
+    const uint self = gl_LocalInvocationIndex;
     uint pixelIndex = inside ? uint(pixel.y * size.x + pixel.x) : 0u;
 
-    // ---- 1. aggregate at the top of the tile -------------------------------------------
+    // ---- 1. aggregate at the top of the tile: one walk over the pixel's samples -----------
     uint count = inside ? imageLoad(aggregateCount, pixel).r : 0u;
     float depthSum[kMaxAggregates] = float[](0.0, 0.0, 0.0, 0.0);
     float depthSquares[kMaxAggregates] = float[](0.0, 0.0, 0.0, 0.0);
     vec3 positionSum[kMaxAggregates] = vec3[](vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0));
     uint samplesIn[kMaxAggregates] = uint[](0u, 0u, 0u, 0u);
+    uint skySamples = 0u;
     float tmin = 1e30, tmax = -1e30;
     if (inside) {
         for (uint s = 0u; s < n; ++s) {
             float d = texelFetch(visibilityDepth, ivec3(pixel, s / 4u), int(s % 4u)).r;
-            if (isSky(d)) continue;
+            if (isSky(d)) {
+                skySamples += 1u;
+                continue;
+            }
             uint a = sampleAggregate(s, pixelIndex);
             vec3 P = viewPositionFromDepth(vec2(pixel) + frame.samplePositions[s].xy, d, frame.extent,
                                            frame.depthParams, frame.projParams);
@@ -122,20 +218,27 @@ void main() {
     }
     SurfaceInputs surfaces[kMaxAggregates];
     vec3 positions[kMaxAggregates];
-    float depthVariance[kMaxAggregates] = float[](0.0, 0.0, 0.0, 0.0);
+    float depthSigma[kMaxAggregates] = float[](0.0, 0.0, 0.0, 0.0);
     bool present[kMaxAggregates] = bool[](false, false, false, false);
-    const bool sggx = agaa.options.w == kNdfSggx;
+    const bool sggx = kNdf == kNdfSggx;
     vec3 tangents[kMaxAggregates], bitangents[kMaxAggregates];
     vec2 alphas[kMaxAggregates]; // SGGX: (alphaT, alphaB), clamped to the BRDF's range
+    uint presentCount = 0u;
+    uint accumulated[kMaxAggregates] = uint[](0u, 0u, 0u, 0u);
     for (uint a = 0u; a < c; ++a) {
         uint base = (pixelIndex * c + a) * kAggregateWords;
         uint w[kAggregateWords];
         for (uint j = 0u; j < kAggregateWords; ++j) w[j] = inside ? agBuffer[base + j] : 0u;
-        uint k = aggregateSampleCount(agaa.options.w, w[0], w[4]); // samples the generation pass accumulated
+        uint k = aggregateSampleCount(kNdf, w[0], w[4]); // samples the generation pass accumulated
         // An aggregate with no accumulated sample (no fragment passed EQUAL for it) has nothing to
         // normalise: it is not lit, and its samples resolve to black rather than to a division by 0.
         present[a] = a < count && k > 0u && samplesIn[a] > 0u;
+        accumulated[a] = present[a] ? k : 0u;
+        tangents[a] = vec3(0.0);
+        bitangents[a] = vec3(0.0);
+        alphas[a] = vec2(0.0);
         if (!present[a]) continue;
+        presentCount += 1u;
         float fs = float(samplesIn[a]);
         float meanDepth = depthSum[a] / fs;
         // Position: the mean of the samples' view positions, or the UE4 shortcut (seed 004): the
@@ -174,59 +277,106 @@ void main() {
         }
         // Depth variance (E[t^2] - E[t]^2, clamped: cancellation can make it slightly negative):
         // the aggregate's extent along the view ray, the footprint shadow filtering samples in.
-        depthVariance[a] = max(depthSquares[a] / fs - meanDepth * meanDepth, 0.0);
+        depthSigma[a] = sqrt(max(depthSquares[a] / fs - meanDepth * meanDepth, 0.0));
     }
 
-    // ---- 2. tile depth bounds and light culling --------------------------------------
-    tileBoundsBegin();
+    // ---- 2. tile depth bounds and light culling; the pixel's place in the tile's list -------
+    if (kCompactShading != 0u && self == 0u) sEntryCount = 0u;
+    tileBoundsBegin(); // its barrier orders the counter's reset before the appends
+    // Aggregate 0 is shaded in registers (every covered pixel has one); the others join the list.
+    uint extraCount = presentCount - (present[0] ? 1u : 0u);
+    uint firstEntry = kCompactShading != 0u && extraCount > 0u ? atomicAdd(sEntryCount, extraCount) : 0u;
     tileBoundsAdd(tmin, tmax);
     tileCullLights();
     barrier();
-    if (!inside) return;
 
     // ---- 3. light each aggregate once per light ----------------------------------------
-    float exposure = frame.depthParams.z;
     vec3 radiance[kMaxAggregates] = vec3[](vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0));
     // SGGX: the specular part of the radiance and its variance over the aggregate's samples.
     vec3 specular[kMaxAggregates] = vec3[](vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0));
     vec3 specularVariance[kMaxAggregates] = vec3[](vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0));
-    uint events = 0u;
-    for (uint a = 0u; a < c; ++a) {
-        if (!present[a]) continue;
-        events += 1u;
-        vec3 P = positions[a];
-        vec3 V = normalize(-P);
-#if AGAA_SHADOWS
-        // The aggregate's footprint: depth standard deviation along the ray, one pixel across.
-        float sigma = sqrt(depthVariance[a]);
-        float pixelSize = -P.z * 2.0 * frame.extent.w / frame.projParams.y;
-#endif
-        for (uint i = nextTileLight(0u); i < kMaxLights; i = nextTileLight(i + 1u)) {
-            vec3 L, irradiance;
-            if (!lightIncidence(lights[i], P, L, irradiance)) continue;
-#if AGAA_SHADOWS
-            irradiance *= kShadowFootprint == 1u
-                              ? shadowVisibilityAggregateSamples(i, pixel, pixelIndex, a, samplesIn[a], surfaces[a].normal)
-                              : shadowVisibilityAggregate(i, P, surfaces[a].normal, sigma, pixelSize);
-#endif
-            if (sggx) {
-                vec3 spec;
-                radiance[a] += evaluateBrdfAnisotropic(surfaces[a], tangents[a], bitangents[a], alphas[a].x,
-                                                       alphas[a].y, V, L, irradiance, spec);
-                // Var = (E[L^2] / E[L]^2 - 1) E[L]^2 per light; highlights of different lights
-                // fall on different samples, so their variances add.
-                specular[a] += spec;
-                specularVariance[a] += (sggxSpikeRatio(alphas[a].x, alphas[a].y) - 1.0) * spec * spec;
-            } else {
-                radiance[a] += evaluateBrdf(surfaces[a], V, L, irradiance);
+    if (kSkipShading != 0u) {
+    } else if (kCompactShading != 0u) {
+        // Aggregate 0 of every covered pixel: every lane of a SIMD group busy but for sky pixels.
+        if (inside && present[0])
+            shadeAggregate(surfaces[0], tangents[0], bitangents[0], alphas[0], positions[0], depthSigma[0], pixel,
+                           pixelIndex, 0u, samplesIn[0], sggx, radiance[0], specular[0], specularVariance[0]);
+        // The tile's further aggregates, packed: lane j shades entry j of each round. The slots
+        // are taken in whatever order the appends ran; an entry's result depends only on its own
+        // values and the tile's lights, so the image does not depend on that order.
+        uint entries = sEntryCount; // uniform over the workgroup: every invocation runs the same rounds
+        uvec2 tileOrigin = gl_WorkGroupID.xy * kTileSize;
+        for (uint listRound = 0u; listRound * kListRound < entries; ++listRound) {
+            uint lo = listRound * kListRound;
+            uint slot = firstEntry;
+            for (uint a = 1u; a < c; ++a) {
+                if (!present[a]) continue;
+                if (slot >= lo && slot < lo + kListRound) {
+                    uint e = slot - lo;
+                    sPosition[e] = vec4(positions[a], depthSigma[a]);
+                    sNormal[e] = vec4(surfaces[a].normal, surfaces[a].roughness);
+                    sAlbedo[e] = vec4(surfaces[a].albedo, surfaces[a].metallic);
+                    if (sggx) {
+                        sTangent[e] = vec4(tangents[a], alphas[a].x);
+                        sBitangent[e] = vec4(bitangents[a], alphas[a].y);
+                    }
+                    sOwner[e] = self | (a << 8u) | (samplesIn[a] << 10u);
+                }
+                slot += 1u;
             }
+            barrier();
+            if (self < entries - lo) {
+                uint owner = sOwner[self];
+                uint ownerIndex = owner & 0xFFu;
+                ivec2 ownerPixel = ivec2(tileOrigin + uvec2(ownerIndex % kTileSize, ownerIndex / kTileSize));
+                SurfaceInputs surface;
+                surface.normal = sNormal[self].xyz;
+                surface.roughness = sNormal[self].w;
+                surface.albedo = sAlbedo[self].rgb;
+                surface.metallic = sAlbedo[self].a;
+                vec4 T = sggx ? sTangent[self] : vec4(0.0);
+                vec4 B = sggx ? sBitangent[self] : vec4(0.0);
+                vec3 lit, spec, variance;
+                shadeAggregate(surface, T.xyz, B.xyz, vec2(T.w, B.w), sPosition[self].xyz, sPosition[self].w,
+                               ownerPixel, uint(ownerPixel.y * size.x + ownerPixel.x), (owner >> 8u) & 3u,
+                               owner >> 10u, sggx, lit, spec, variance);
+                sPosition[self].xyz = lit;
+                if (sggx) {
+                    sNormal[self].xyz = spec;
+                    sAlbedo[self].xyz = variance;
+                }
+            }
+            barrier();
+            slot = firstEntry;
+            for (uint a = 1u; a < c; ++a) {
+                if (!present[a]) continue;
+                if (slot >= lo && slot < lo + kListRound) {
+                    uint e = slot - lo;
+                    radiance[a] = sPosition[e].xyz;
+                    if (sggx) {
+                        specular[a] = sNormal[e].xyz;
+                        specularVariance[a] = sAlbedo[e].xyz;
+                    }
+                }
+                slot += 1u;
+            }
+            barrier(); // the next round overwrites the list
+        }
+    } else if (inside) {
+        for (uint a = 0u; a < c; ++a) {
+            if (!present[a]) continue;
+            shadeAggregate(surfaces[a], tangents[a], bitangents[a], alphas[a], positions[a], depthSigma[a], pixel,
+                           pixelIndex, a, samplesIn[a], sggx, radiance[a], specular[a], specularVariance[a]);
         }
     }
+    if (!inside) return;
 
-    // ---- 4. resolve: tone-map per sample, weight by the sample fraction -------------------
+    // ---- 4. resolve: tone-map each shading event, weight by its sample fraction ------------
+    float exposure = frame.depthParams.z;
     float weight = 1.0 / float(n);
     vec3 sky = frame.skyRadiance.rgb * exposure;
     vec3 display = vec3(0.0), hdr = vec3(0.0);
+#if AGAA_EMISSIVE
     for (uint s = 0u; s < n; ++s) {
         float d = texelFetch(visibilityDepth, ivec3(pixel, s / 4u), int(s % 4u)).r;
         if (isSky(d)) {
@@ -235,17 +385,34 @@ void main() {
             continue;
         }
         uint a = sampleAggregate(s, pixelIndex);
+        // Fragment routing: a sample whose aggregate received no fragment takes aggregate 0's.
+        if (kRouteFragment != 0u && !present[a]) a = 0u;
         vec3 L = present[a] ? radiance[a] : vec3(0.0);
-#if AGAA_EMISSIVE
         L += texelFetch(emissiveSamples, ivec3(pixel, s / 4u), int(s % 4u)).rgb;
-#endif
         L = min(L * exposure, vec3(kMaxRadiance));
         display += weight * (sggx && present[a] ? toneMapAggregate(L, specular[a] * exposure,
                                                                   specularVariance[a] * (exposure * exposure))
                                                 : toneMapAces(L));
         hdr += weight * L;
     }
+#else
+    // Every sample of an aggregate shares its radiance: one tone map per aggregate, weighted by
+    // the aggregate's sample count; samples of an aggregate that received no fragment are black.
+    float skyWeight = weight * float(skySamples);
+    display += skyWeight * toneMapAces(sky);
+    hdr += skyWeight * sky;
+    for (uint a = 0u; a < c; ++a) {
+        uint stands = kRouteFragment != 0u ? accumulated[a] : samplesIn[a];
+        if (stands == 0u) continue;
+        vec3 L = present[a] ? min(radiance[a] * exposure, vec3(kMaxRadiance)) : vec3(0.0);
+        float w = weight * float(stands);
+        display += w * (sggx && present[a] ? toneMapAggregate(L, specular[a] * exposure,
+                                                             specularVariance[a] * (exposure * exposure))
+                                           : toneMapAces(L));
+        hdr += w * L;
+    }
+#endif
     imageStore(outHdr, pixel, vec4(hdr, 1.0));
     imageStore(outDisplay, pixel, vec4(display, 1.0));
-    imageStore(outShadingEvents, pixel, uvec4(events));
+    imageStore(outShadingEvents, pixel, uvec4(presentCount));
 }

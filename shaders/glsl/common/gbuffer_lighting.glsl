@@ -12,7 +12,6 @@
 #include "common/depth.glsl"
 #include "common/lights.glsl"
 #include "common/octahedral.glsl"
-#include "common/tile_culling.glsl"
 #include "common/tonemap.glsl"
 
 // GBUFFER_SHADOWS (1: the scene has a shadowed light, agaa/common/shadow_map.h): the shadow-map
@@ -25,6 +24,8 @@
 #define SHADOW_CONSTANTS_BINDING 10
 #include "common/shadow.glsl"
 #endif
+// After shadow.glsl: with shadow maps the tile keeps its shadowed lights in a mask of their own.
+#include "common/tile_culling.glsl"
 
 #if GBUFFER_MS
 layout(set = 0, binding = 2) uniform sampler2DMSArray gDepth;
@@ -83,11 +84,15 @@ void shadeGBufferSurface(ivec2 pixel, uint s, vec3 P, out vec3 radiance, out vec
     for (uint i = nextTileLight(0u); i < kMaxLights; i = nextTileLight(i + 1u)) {
         vec3 L, irradiance;
         if (!lightIncidence(lights[i], P, L, irradiance)) continue;
-#if GBUFFER_SHADOWS
-        irradiance *= shadowVisibilityPoint(i, P, surface.normal);
-#endif
         lit += evaluateBrdf(surface, V, L, irradiance);
     }
+#if GBUFFER_SHADOWS
+    for (uint i = nextTileShadowedLight(0u); i < kMaxLights; i = nextTileShadowedLight(i + 1u)) {
+        vec3 L, irradiance;
+        if (!lightIncidence(lights[i], P, L, irradiance)) continue;
+        lit += evaluateBrdf(surface, V, L, irradiance * shadowVisibilityPoint(i, P, surface.normal));
+    }
+#endif
     radiance = min((lit + er.rgb) * frame.depthParams.z, vec3(kMaxRadiance));
     display = toneMapAces(radiance);
 }
@@ -112,10 +117,12 @@ void shadeGBufferSurfaceShadowedPerSample(ivec2 pixel, uint s, vec3 P, out vec3 
     for (uint i = nextTileLight(0u); i < kMaxLights; i = nextTileLight(i + 1u)) {
         vec3 L, irradiance;
         if (!lightIncidence(lights[i], P, L, irradiance)) continue;
-        vec3 c = evaluateBrdf(surface, V, L, irradiance);
-        int layer = shadowLayer(i);
-        if (layer < 0) unshadowed += c;
-        else shadowedLight[layer] += c;
+        unshadowed += evaluateBrdf(surface, V, L, irradiance);
+    }
+    for (uint i = nextTileShadowedLight(0u); i < kMaxLights; i = nextTileShadowedLight(i + 1u)) {
+        vec3 L, irradiance;
+        if (!lightIncidence(lights[i], P, L, irradiance)) continue;
+        shadowedLight[shadowLayer(i)] += evaluateBrdf(surface, V, L, irradiance);
     }
     uint maps = uint(shadow.params.x);
     radiance = vec3(0.0);

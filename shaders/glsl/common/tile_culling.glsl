@@ -14,13 +14,26 @@ layout(constant_id = 2) const uint kTileLightCulling = 1u;
 shared uint sTileMinBits;
 shared uint sTileMaxBits;
 shared uint sLightMask[kMaxLights / 32u];
+#ifdef AGAA_SHADOW_GLSL
+// With shadow maps (common/shadow.glsl included before this file) the lights that cast shadows
+// go to a mask of their own, and lighting loops walk the two masks one after the other: a loop
+// over every light that asked `does this one cast a shadow?` would make every light pay for the
+// shadow taps on lavapipe, which executes both sides of any branch it cannot resolve at compile
+// time. sLightMask then holds only the unshadowed lights.
+shared uint sShadowedLightMask[kMaxLights / 32u];
+#endif
 
 void tileBoundsBegin() {
     if (gl_LocalInvocationIndex == 0u) {
         sTileMinBits = 0x7f7fffffu; // FLT_MAX: positive floats order like their bits
         sTileMaxBits = 0u;
     }
-    for (uint i = gl_LocalInvocationIndex; i < kMaxLights / 32u; i += kTileSize * kTileSize) sLightMask[i] = 0u;
+    for (uint i = gl_LocalInvocationIndex; i < kMaxLights / 32u; i += kTileSize * kTileSize) {
+        sLightMask[i] = 0u;
+#ifdef AGAA_SHADOW_GLSL
+        sShadowedLightMask[i] = 0u;
+#endif
+    }
     barrier();
 }
 
@@ -41,12 +54,23 @@ bool sphereTouchesBox(vec3 c, float r, vec3 lo, vec3 hi) {
     return dot(d, d) <= r * r;
 }
 
+// Records light i as touching the tile, in the mask its shadow decides.
+void tileAddLight(uint i) {
+#ifdef AGAA_SHADOW_GLSL
+    if (shadowLayer(i) >= 0) {
+        atomicOr(sShadowedLightMask[i / 32u], 1u << (i % 32u));
+        return;
+    }
+#endif
+    atomicOr(sLightMask[i / 32u], 1u << (i % 32u));
+}
+
 // Culls every light against this workgroup's tile.
 void tileCullLights() {
     if (!tileHasGeometry()) return; // sky-only tile: nothing is lit
     if (kTileLightCulling == 0u) {
         for (uint i = gl_LocalInvocationIndex; i < frame.counts.w; i += kTileSize * kTileSize)
-            atomicOr(sLightMask[i / 32u], 1u << (i % 32u));
+            tileAddLight(i);
         return;
     }
     float tmin = uintBitsToFloat(sTileMinBits);
@@ -69,11 +93,12 @@ void tileCullLights() {
         float range = light.positionRange.w;
         bool touches = type == kLightDirectional || range <= 0.0 ||
                        sphereTouchesBox(light.positionRange.xyz, range, boxLo, boxHi);
-        if (touches) atomicOr(sLightMask[i / 32u], 1u << (i % 32u));
+        if (touches) tileAddLight(i);
     }
 }
 
-// Next culled light index at or after `start`, or kMaxLights when none.
+// Next culled light index at or after `start`, or kMaxLights when none. With shadow maps: the
+// next light that casts no shadow (nextTileShadowedLight walks the others).
 uint nextTileLight(uint start) {
     for (uint w = start / 32u; w < kMaxLights / 32u; ++w) {
         uint bits = sLightMask[w];
@@ -82,4 +107,15 @@ uint nextTileLight(uint start) {
     }
     return kMaxLights;
 }
+
+#ifdef AGAA_SHADOW_GLSL
+uint nextTileShadowedLight(uint start) {
+    for (uint w = start / 32u; w < kMaxLights / 32u; ++w) {
+        uint bits = sShadowedLightMask[w];
+        if (w == start / 32u) bits &= ~0u << (start % 32u);
+        if (bits != 0u) return w * 32u + uint(findLSB(bits));
+    }
+    return kMaxLights;
+}
+#endif
 #endif

@@ -68,6 +68,10 @@ struct AgaaConstants {
     // x debug view (0 none, 1 aggregates), y position mode (0 mean of sample positions, 1 UE4 pixel centre),
     // z has emissive, w normal distribution (kNdfToksvig, kNdfSggx)
     uvec4 options;
+    // x clustering distance (kDistancePosition, kDistancePlane), y generation routing (0 per sample,
+    // 1 per fragment); z, w unused. The shaders take both as specialisation constants; the CPU
+    // references read them here.
+    uvec4 modes;
 };
 
 SHARED_END

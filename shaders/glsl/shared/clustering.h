@@ -106,8 +106,36 @@ inline_fn float aggregateDistance(float ax, float ay, float az, float anx, float
     return r;
 }
 
+// The plane variant (AggregateDistance::Plane, agaa/aggregate/agaa_constants.h): the position
+// term is the mean of the squared distances of each sample to the other's tangent plane, in units
+// of k, so samples of one plane are 0 apart however far apart they lie on it (a flat floor at
+// grazing angles spreads a pixel's samples over more than k in depth); the normal term is
+// Equation 1's.
+inline_fn float aggregatePlaneDistance(float ax, float ay, float az, float anx, float any, float anz, float bx,
+                                       float by, float bz, float bnx, float bny, float bnz) {
+    PRECISE float dx = ax - bx;
+    PRECISE float dy = ay - by;
+    PRECISE float dz = az - bz;
+    PRECISE float da = (dx * anx + dy * any) + dz * anz;
+    PRECISE float db = (dx * bnx + dy * bny) + dz * bnz;
+    PRECISE float position = (da * da + db * db) * 0.5f;
+    PRECISE float cosine = (anx * bnx + any * bny) + anz * bnz;
+    PRECISE float o = 1.0f - cosine;
+    PRECISE float r = position + o * o;
+    return r;
+}
+
+SHARED_CONST kDistancePosition = 0u;
+SHARED_CONST kDistancePlane = 1u;
+
+inline_fn float clusterDistance(uint mode, float ax, float ay, float az, float anx, float any, float anz, float bx,
+                                float by, float bz, float bnx, float bny, float bnz) {
+    if (mode == kDistancePlane) return aggregatePlaneDistance(ax, ay, az, anx, any, anz, bx, by, bz, bnx, bny, bnz);
+    return aggregateDistance(ax, ay, az, anx, any, anz, bx, by, bz, bnx, bny, bnz);
+}
+
 #define AGAA_DIST(a, b) \
-    aggregateDistance(px[a], py[a], pz[a], nx[a], ny[a], nz[a], px[b], py[b], pz[b], nx[b], ny[b], nz[b])
+    clusterDistance(mode, px[a], py[a], pz[a], nx[a], ny[a], nz[a], px[b], py[b], pz[b], nx[b], ny[b], nz[b])
 
 // Algorithm 1. Inputs: n samples (valid = not sky), positions divided by k, unit normals.
 // Output: ids[s] for s < n: each valid sample's aggregate id (0 for sky samples), and the
@@ -121,7 +149,8 @@ inline_fn float aggregateDistance(float ax, float ay, float az, float anx, float
 //  2(a) every valid sample joins its nearest seed.
 // Ties go to the lowest sample index (strict comparisons while scanning upwards) and, in the
 // assignment, to the lowest aggregate id.
-inline_fn uint clusterSamples(uint n, uint c, float threshold, IN_ARRAY(float) px[kMaxSamples],
+// mode: kDistancePosition (Equation 1) or kDistancePlane.
+inline_fn uint clusterSamples(uint n, uint c, uint mode, float threshold, IN_ARRAY(float) px[kMaxSamples],
                               IN_ARRAY(float) py[kMaxSamples], IN_ARRAY(float) pz[kMaxSamples],
                               IN_ARRAY(float) nx[kMaxSamples], IN_ARRAY(float) ny[kMaxSamples],
                               IN_ARRAY(float) nz[kMaxSamples], IN_ARRAY(bool) valid[kMaxSamples],
@@ -153,7 +182,7 @@ inline_fn uint clusterSamples(uint n, uint c, float threshold, IN_ARRAY(float) p
     PRECISE float best = -1.0f;
     for (uint s = 0u; s < n; ++s) {
         if (!valid[s]) continue;
-        PRECISE float dm = aggregateDistance(px[s], py[s], pz[s], nx[s], ny[s], nz[s], mx, my, mz, mnx, mny, mnz);
+        PRECISE float dm = clusterDistance(mode, px[s], py[s], pz[s], nx[s], ny[s], nz[s], mx, my, mz, mnx, mny, mnz);
         if (dm > best) {
             best = dm;
             seeds[0] = s;
