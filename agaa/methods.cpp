@@ -120,7 +120,7 @@ std::unique_ptr<Technique> createTechnique(const std::string& method, eng::vk::D
         s.distance = agaaOption<AggregateDistance>(
             "clustering distance", settings.agaaDistance,
             {{"position", AggregateDistance::Position}, {"plane", AggregateDistance::Plane}});
-        s.skipShading = settings.agaaSkipShading;
+        s.breakdown = settings.agaaBreakdown;
         return std::make_unique<AggregateAA>(device, scene, s);
     }
     throw std::invalid_argument("--method '" + method + "' is unknown (known: " + knownMethodNames() + ")");

@@ -25,7 +25,8 @@ enum class AggregateNdf : uint32_t { Toksvig = 0, Sggx = 1, Auto = 2 };
 // Registers: each invocation shades its own pixel's aggregates (a SIMD group pays for its pixel
 // with the most aggregates); Compact: aggregate 0 of every pixel in registers, every further
 // aggregate of the tile appended to a list in shared memory and shaded with all lanes busy.
-// Auto: Compact when c >= 2 (measured rule: agaa/aggregate/README.md).
+// Auto: Compact for c >= 2 on GPUs, Registers on CPU devices (lavapipe), where the list's
+// barriers cost more than it saves (measured: agaa/aggregate/README.md, "Lighting schedule").
 enum class AggregateShading : uint32_t { Registers = 0, Compact = 1, Auto = 2 };
 // Which aggregate a generation fragment feeds (shaders/glsl/agaa/generation.glsl): Samples, each
 // visible sample its own metadata aggregate (AG-buffer counts equal the metadata's); Fragment,
@@ -44,6 +45,13 @@ enum class SubgroupReduction : uint32_t { Off = 0, On = 1, Auto = 2 };
 // however far apart (SBAA's plane predicate), so a flat surface at grazing angles stays one
 // aggregate.
 enum class AggregateDistance : uint32_t { Position = 0, Plane = 1 };
+// Parts a benchmark can remove (AggregateSettings::breakdown bits; specialisation constants).
+namespace AggregateBreakdown {
+inline constexpr uint32_t kLightingWithoutShading = 1;   // lighting.glsl: step 3 skipped
+inline constexpr uint32_t kGenerationWithoutAtomics = 2; // generation.glsl: material only
+inline constexpr uint32_t kGenerationEmpty = 4;          // generation.glsl: an empty fragment shader
+inline constexpr uint32_t kVisibilityWithoutNormals = 8; // visibility.frag: no face-normal encoding
+} // namespace AggregateBreakdown
 
 struct AggregateSettings {
     uint32_t samples = 8;              // n
@@ -60,9 +68,9 @@ struct AggregateSettings {
     AggregateAtomics atomics = AggregateAtomics::Auto;
     SubgroupReduction subgroupReduction = SubgroupReduction::Auto;
     AggregateDistance distance = AggregateDistance::Position;
-    // Benchmark support (agaa-timings --breakdown): the lighting pass skips step 3, so the
-    // difference to a full run is what lighting the aggregates costs. The image is not lit.
-    bool skipShading = false;
+    // Benchmark support (agaa-timings --breakdown): AggregateBreakdown bits, each removing one
+    // part of one pass so that the difference to a full run is that part's cost. Not an image.
+    uint32_t breakdown = 0;
     EffectSettings effects; // scene-driven shadows (taps: the footprint filter), alpha-to-coverage, ...
 };
 

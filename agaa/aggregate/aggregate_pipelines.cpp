@@ -84,10 +84,13 @@ AggregateAA::AggregateAA(vk::Device& device, const eng::frame::GpuScene& scene,
         m_settings.subgroupReduction = fragmentSubgroups && caps.deviceType != VK_PHYSICAL_DEVICE_TYPE_CPU
                                            ? SubgroupReduction::On
                                            : SubgroupReduction::Off;
-    // Measured rule (agaa/aggregate/README.md): one aggregate per pixel has nothing to compact.
+    // Rule (agaa/aggregate/README.md, "Lighting schedule"): one aggregate per pixel has nothing
+    // to compact; on CPU devices (lavapipe) the list's barriers cost more than the idle lanes it
+    // saves (measured), so only GPUs compact.
     if (m_settings.shading == AggregateShading::Auto)
-        m_settings.shading =
-            m_settings.aggregates >= 2 ? AggregateShading::Compact : AggregateShading::Registers;
+        m_settings.shading = m_settings.aggregates >= 2 && caps.deviceType != VK_PHYSICAL_DEVICE_TYPE_CPU
+                                 ? AggregateShading::Compact
+                                 : AggregateShading::Registers;
 
     m_constantsBuffer =
         vk::createBuffer(device, sizeof(shared::AgaaConstants), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
@@ -108,9 +111,10 @@ AggregateAA::AggregateAA(vk::Device& device, const eng::frame::GpuScene& scene,
         effectSpecialization(m_features, settings.samples, settings.aggregates, settings.effects.shadowTaps,
                              settings.effects.shadowFootprint);
     lightingSpec.push_back(m_settings.shading == AggregateShading::Compact ? 1u : 0u); // id 7
-    lightingSpec.push_back(settings.skipShading ? 1u : 0u);                            // id 8
-    lightingSpec.push_back(uint32_t(m_settings.ndf));                                  // id 9
-    lightingSpec.push_back(uint32_t(m_settings.routing));                              // id 10
+    lightingSpec.push_back(settings.breakdown & AggregateBreakdown::kLightingWithoutShading ? 1u
+                                                                                            : 0u); // id 8
+    lightingSpec.push_back(uint32_t(m_settings.ndf));                                              // id 9
+    lightingSpec.push_back(uint32_t(m_settings.routing));                                          // id 10
     m_lightingPipeline =
         vk::createComputePipeline(device, lighting, m_lightingLayout.layout, {lightingSpec}, "agaa.lighting");
     m_debugPipeline = vk::createComputePipeline(device, kAgaaDebugAggregatesComp, m_debugLayout.layout, {},
@@ -186,7 +190,8 @@ VkPipeline AggregateAA::visibilityPipeline(AlphaPath alpha, bool doubleSided) {
     d.layout = m_visibilityLayout.layout;
     // Paper section 3.6: masked materials sample alpha here only, with alpha-to-coverage; the
     // generation pass inherits the coverage through its depth EQUAL test.
-    d.specialization.values = {uint32_t(alpha)};
+    d.specialization.values = {
+        uint32_t(alpha), m_settings.breakdown & AggregateBreakdown::kVisibilityWithoutNormals ? 1u : 0u};
     d.alphaToCoverage = alpha == AlphaPath::Coverage;
     d.colorFormats = {VK_FORMAT_R8G8_UNORM};
     d.depthFormat = m_depthFormat;
@@ -225,6 +230,11 @@ VkPipeline AggregateAA::generationPipeline(bool doubleSided) {
     d.specialization.values = effectSpecialization(
         m_features, uint32_t(m_settings.ndf),
         recording ? uint32_t(AggregateRouting::Samples) : uint32_t(m_settings.routing), 1);
+    // id 7: the benchmark's breakdown (0 the whole pass, 1 material only, 2 an empty shader)
+    const uint32_t b = m_settings.breakdown;
+    d.specialization.values.push_back(b & AggregateBreakdown::kGenerationEmpty            ? 2u
+                                      : b & AggregateBreakdown::kGenerationWithoutAtomics ? 1u
+                                                                                          : 0u);
     if (m_hasEmissive) d.colorFormats = {VK_FORMAT_B10G11R11_UFLOAT_PACK32};
     d.depthFormat = m_depthFormat;
     d.samples = VK_SAMPLE_COUNT_4_BIT;
@@ -264,9 +274,11 @@ std::vector<VariantChoice> AggregateAA::variants() const {
     const bool compact = m_settings.shading == AggregateShading::Compact;
     v.push_back({"lighting-schedule",
                  compact ? "compacted per-tile list (aggregate 0 in registers)" : "registers (per pixel)",
-                 m_requested.shading != AggregateShading::Auto
-                     ? std::string("setting --agaa-lighting")
-                     : "c = " + std::to_string(m_settings.aggregates) + (compact ? " >= 2" : " < 2")});
+                 m_requested.shading != AggregateShading::Auto ? std::string("setting --agaa-lighting")
+                 : m_settings.aggregates < 2                   ? std::string("c = 1: nothing to compact")
+                 : caps.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU
+                     ? std::string("CPU device: the list's barriers cost more than its idle lanes save")
+                     : std::string("GPU, c >= 2")});
     v.push_back(
         {"generation-routing",
          m_settings.routing == AggregateRouting::Fragment ? "per fragment (Algorithm 2)" : "per sample",

@@ -58,7 +58,7 @@ Technique& FrameRenderer::technique(const RenderRequest& r) {
         std::to_string(r.settings.seedThreshold) + (r.settings.pixelCentrePosition ? "/centre" : "") + "/" +
         r.settings.ndf + "/" + r.settings.agaaLighting + "/" + r.settings.agaaRouting + "/" +
         r.settings.agaaAtomics + "/" + r.settings.agaaSubgroupReduce + "/" + r.settings.agaaDistance +
-        (r.settings.agaaSkipShading ? "/skip-shading" : "") + "/effects" +
+        "/breakdown" + std::to_string(r.settings.agaaBreakdown) + "/effects" +
         (r.settings.effects.forceAll ? "-all" : "") + "/" + std::to_string(r.settings.effects.shadowMapSize) +
         "/" + std::to_string(r.settings.effects.shadowTaps) + "/" +
         std::to_string(uint32_t(r.settings.effects.shadowFootprint));

@@ -56,8 +56,8 @@ struct MethodSettings {
     std::string agaaAtomics = "auto";
     std::string agaaSubgroupReduce = "auto";
     std::string agaaDistance = "position";
-    bool agaaSkipShading = false; // agaa-timings --breakdown only
-    EffectSettings effects;       // scene-driven shadows, alpha-to-coverage, emissive, normal maps
+    uint32_t agaaBreakdown = 0; // agaa-timings --breakdown only (AggregateBreakdown bits)
+    EffectSettings effects;     // scene-driven shadows, alpha-to-coverage, emissive, normal maps
 };
 
 class Technique {

@@ -13,10 +13,13 @@
 //     shading costs against one plain sample's;
 //   - visibility + generation against the per-sample G-buffer pass of Simple/Complex (or of the
 //     reference) at the same n: the cost of AGAA's two raster passes against the one they replace;
-//   - with --breakdown, the lighting pass without its shading step (the prologue: sample walk,
-//     normalisation, tile culling, resolve), so the shading's share is the difference.
+//   - with --breakdown, where each AGAA pass's time goes, from runs that each remove one part
+//     (agaa/aggregate/agaa_constants.h AggregateBreakdown): lighting = shading + the rest;
+//     generation = atomics and routing + material + raster/depth/stencil; visibility = face-normal
+//     encoding + the rest. Differences of medians: read them as estimates, not exact sums.
 // Exit codes: 0 done; 2 bad arguments; 3 the device lacks something required.
 
+#include "agaa/aggregate/agaa_constants.h"
 #include "agaa/common/frame_renderer.h"
 #include "agaa/methods.h"
 #include "engine/scene/scene_error.h"
@@ -227,14 +230,40 @@ int main(int argc, char** argv) {
                                                     {"passes", passes},
                                                     {"variants", variants}};
                 if (breakdown && job.method == "agaa") {
-                    agaa::RenderRequest r = request(job);
-                    r.settings.agaaSkipShading = true;
-                    double prologue = shadingMs(renderer.render(r));
-                    std::printf("      %-28s %9.2f ms  (lighting without its shading step)\n",
-                                "agaa.lighting.prologue", prologue);
-                    std::printf("      %-28s %9.2f ms  (the difference: lighting the aggregates)\n",
-                                "agaa.lighting.shading", shadingMs(res) - prologue);
-                    out["scenes"][name][job.label()]["lighting_prologue_ms"] = prologue;
+                    namespace parts = agaa::AggregateBreakdown;
+                    auto without = [&](uint32_t bits) {
+                        agaa::RenderRequest r = request(job);
+                        r.settings.agaaBreakdown = bits;
+                        return renderer.render(r);
+                    };
+                    agaa::RenderResult noShading = without(parts::kLightingWithoutShading);
+                    agaa::RenderResult noAtomics =
+                        without(parts::kGenerationWithoutAtomics | parts::kVisibilityWithoutNormals);
+                    agaa::RenderResult empty = without(parts::kGenerationEmpty);
+                    const double lighting = shadingMs(res), prologue = shadingMs(noShading);
+                    const double generation = passMs(res, "agaa.generation");
+                    const double material = passMs(noAtomics, "agaa.generation");
+                    const double raster = passMs(empty, "agaa.generation");
+                    const double visibility = passMs(res, "agaa.visibility");
+                    const double noNormals = passMs(noAtomics, "agaa.visibility");
+                    std::printf("      breakdown: lighting %.2f = shading %.2f + the rest %.2f (sample walk, "
+                                "normalisation, culling, resolve)\n",
+                                lighting, lighting - prologue, prologue);
+                    std::printf(
+                        "      breakdown: generation %.2f = atomics and routing %.2f + material %.2f + "
+                        "raster, depth and stencil %.2f\n",
+                        generation, generation - material, material - raster, raster);
+                    std::printf(
+                        "      breakdown: visibility %.2f = face-normal encoding %.2f + the rest %.2f\n",
+                        visibility, visibility - noNormals, noNormals);
+                    out["scenes"][name][job.label()]["breakdown_ms"] = {
+                        {"lighting_shading", lighting - prologue},
+                        {"lighting_rest", prologue},
+                        {"generation_atomics", generation - material},
+                        {"generation_material", material - raster},
+                        {"generation_raster", raster},
+                        {"visibility_normals", visibility - noNormals},
+                        {"visibility_rest", noNormals}};
                 }
                 results[job.label()] = std::move(res);
             }

@@ -73,6 +73,9 @@ layout(push_constant) uniform Push { uint material; } pc;
 // branch it cannot resolve at compile time.
 layout(constant_id = 0) const uint kNdf = 0u;
 layout(constant_id = 1) const uint kRouteFragment = 0u;
+// Benchmark breakdown (agaa/aggregate/agaa_constants.h AggregateBreakdown): 1 evaluates the
+// material but adds nothing, 2 returns at once (the pass's raster, depth and stencil cost alone).
+layout(constant_id = 7) const uint kBreakdownPart = 0u;
 
 #include "common/material.glsl"
 
@@ -121,6 +124,7 @@ void addToAggregate(uint slot, uint k, uint ndf, AgQuantized f) {
 }
 
 void main() {
+    if (kBreakdownPart == 2u) return;
     GpuMaterial gm = materials[pc.material];
     MaterialSample m = evaluateMaterial(gm, inUv, inNormal, inTangent, gl_FrontFacing);
 #if AGAA_EMISSIVE
@@ -181,6 +185,13 @@ void main() {
         }
     }
 #endif
+    if (kBreakdownPart == 1u) {
+        // Keep the material's evaluation alive without the atomics: an add no value reaches (an
+        // atomic, as every other access to the AG-buffer here: a plain store would make the
+        // synchronisation validation see writes racing between draws).
+        if (f.q[0] + f.q[6] + f.q[9] == 0xFFFFFFFFu) atomicAdd(agBuffer[0], 1u);
+        return;
+    }
     uint perAggregate[kMaxAggregates] = uint[](0u, 0u, 0u, 0u);
     uint b = metadataBits(c);
     if (kRouteFragment != 0u) {

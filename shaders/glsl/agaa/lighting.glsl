@@ -297,10 +297,6 @@ void main() {
     vec3 specularVariance[kMaxAggregates] = vec3[](vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0));
     if (kSkipShading != 0u) {
     } else if (kCompactShading != 0u) {
-        // Aggregate 0 of every covered pixel: every lane of a SIMD group busy but for sky pixels.
-        if (inside && present[0])
-            shadeAggregate(surfaces[0], tangents[0], bitangents[0], alphas[0], positions[0], depthSigma[0], pixel,
-                           pixelIndex, 0u, samplesIn[0], sggx, radiance[0], specular[0], specularVariance[0]);
         // The tile's further aggregates, packed: lane j shades entry j of each round. The slots
         // are taken in whatever order the appends ran; an entry's result depends only on its own
         // values and the tile's lights, so the image does not depend on that order.
@@ -362,6 +358,12 @@ void main() {
             }
             barrier(); // the next round overwrites the list
         }
+        // Aggregate 0 of every covered pixel: every lane of a SIMD group busy but for sky pixels.
+        // After the list's rounds: no barrier follows it, so lavapipe (whose compute barriers
+        // split the shader into coroutine segments) keeps its loop free of frame spills.
+        if (inside && present[0])
+            shadeAggregate(surfaces[0], tangents[0], bitangents[0], alphas[0], positions[0], depthSigma[0], pixel,
+                           pixelIndex, 0u, samplesIn[0], sggx, radiance[0], specular[0], specularVariance[0]);
     } else if (inside) {
         for (uint a = 0u; a < c; ++a) {
             if (!present[a]) continue;

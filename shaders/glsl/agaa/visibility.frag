@@ -8,6 +8,8 @@
 
 // Masked materials: 0 opaque, 1 discard, 2 alpha-to-coverage (common/alpha_coverage.glsl).
 layout(constant_id = 0) const uint kAlphaPath = 0u;
+// Benchmark breakdown (agaa/aggregate/agaa_constants.h AggregateBreakdown): 1 writes no face normal.
+layout(constant_id = 1) const uint kSkipNormal = 0u;
 
 layout(set = 0, binding = 0) uniform Frame { FrameConstants frame; };
 layout(set = 0, binding = 1, std430) readonly buffer Materials { GpuMaterial materials[]; };
@@ -37,5 +39,5 @@ void main() {
         GpuMaterial m = materials[pc.material];
         coverage = maskedCoverage(kAlphaPath, materialAlpha(m, inUv), m.emissive.w);
     }
-    outNormal = vec4(vec2(encodeHemisphereNormal(N, V)) / 255.0, 0.0, coverage);
+    outNormal = vec4(kSkipNormal != 0u ? vec2(0.0) : vec2(encodeHemisphereNormal(N, V)) / 255.0, 0.0, coverage);
 }
