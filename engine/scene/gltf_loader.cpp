@@ -11,8 +11,12 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <cstring>
 #include <fstream>
+#include <iterator>
 #include <limits>
+#include <map>
+#include <string_view>
 
 namespace eng::scene {
 
@@ -159,24 +163,36 @@ class GltfConverter {
         }
     }
 
-    // Iterative would avoid deep recursion, but a node is visited once (m_visited),
-    // so depth is bounded by the node count; cycles end at the visited check.
-    void visit(int nodeIndex, const glm::mat4& parent, const std::string& referrer) {
-        if (nodeIndex < 0 || static_cast<size_t>(nodeIndex) >= m_model.nodes.size()) {
-            throw SceneError(m_source + ": " + referrer + ": node " + std::to_string(nodeIndex) +
-                             " out of range (" + std::to_string(m_model.nodes.size()) + " nodes)");
-        }
-        const std::string field = "nodes[" + std::to_string(nodeIndex) + "]";
-        if (m_visited[static_cast<size_t>(nodeIndex)]) {
-            warn(referrer + ": " + field + " already visited (a cycle or a second parent); ignored");
-            return;
-        }
-        m_visited[static_cast<size_t>(nodeIndex)] = true;
-        const tinygltf::Node& node = m_model.nodes[static_cast<size_t>(nodeIndex)];
-        const glm::mat4 world = parent * localMatrix(node, m_source, field, m_scene.stats.warnings);
-        m_instances.push_back({nodeIndex, world});
-        for (size_t c = 0; c < node.children.size(); ++c) {
-            visit(node.children[c], world, field + ".children[" + std::to_string(c) + "]");
+    // Depth-first over the node hierarchy with an explicit stack: a valid file may nest nodes
+    // tens of thousands deep (a chain of children), which recursion would turn into a stack
+    // overflow. Children are visited in order; a node is visited once (m_visited), so a cycle or
+    // a second parent ends at that check.
+    void visit(int rootIndex, const glm::mat4& rootParent, const std::string& rootReferrer) {
+        struct Pending {
+            int node;
+            glm::mat4 parent;
+            std::string referrer;
+        };
+        std::vector<Pending> stack{{rootIndex, rootParent, rootReferrer}};
+        while (!stack.empty()) {
+            Pending p = std::move(stack.back());
+            stack.pop_back();
+            if (p.node < 0 || static_cast<size_t>(p.node) >= m_model.nodes.size()) {
+                throw SceneError(m_source + ": " + p.referrer + ": node " + std::to_string(p.node) +
+                                 " out of range (" + std::to_string(m_model.nodes.size()) + " nodes)");
+            }
+            const std::string field = "nodes[" + std::to_string(p.node) + "]";
+            if (m_visited[static_cast<size_t>(p.node)]) {
+                warn(p.referrer + ": " + field + " already visited (a cycle or a second parent); ignored");
+                continue;
+            }
+            m_visited[static_cast<size_t>(p.node)] = true;
+            const tinygltf::Node& node = m_model.nodes[static_cast<size_t>(p.node)];
+            const glm::mat4 world = p.parent * localMatrix(node, m_source, field, m_scene.stats.warnings);
+            m_instances.push_back({p.node, world});
+            for (size_t c = node.children.size(); c-- > 0;) {
+                stack.push_back({node.children[c], world, field + ".children[" + std::to_string(c) + "]"});
+            }
         }
     }
 
@@ -416,21 +432,142 @@ Scene loadGltfModel(const tinygltf::Model& model, const std::string& sourceName)
     return GltfConverter(model, sourceName).run();
 }
 
+namespace {
+
+// Deeper JSON than this is refused before tinygltf parses it: its JSON parser recurses per level
+// and overflows the stack on an array nested 20,000 deep. No glTF needs a tenth of this.
+constexpr size_t kMaxJsonNesting = 512;
+
+// The JSON text of a .gltf file, or of a .glb's first (JSON) chunk; empty when the GLB header is
+// malformed (tinygltf then reports that).
+std::string_view jsonText(const std::vector<char>& bytes, bool glb) {
+    if (!glb) return {bytes.data(), bytes.size()};
+    auto u32 = [&](size_t at) {
+        uint32_t v = 0;
+        std::memcpy(&v, bytes.data() + at, 4);
+        return v;
+    };
+    if (bytes.size() < 20 || u32(16) != 0x4E4F534Au) return {}; // chunk type 'JSON'
+    const size_t length = u32(12);
+    if (length > bytes.size() - 20) return {};
+    return {bytes.data() + 20, length};
+}
+
+void checkJsonNesting(const std::string& source, std::string_view json) {
+    size_t depth = 0;
+    bool inString = false, escaped = false;
+    for (size_t i = 0; i < json.size(); ++i) {
+        const char ch = json[i];
+        if (inString) {
+            if (escaped)
+                escaped = false;
+            else if (ch == '\\')
+                escaped = true;
+            else if (ch == '"')
+                inString = false;
+        } else if (ch == '"') {
+            inString = true;
+        } else if (ch == '[' || ch == '{') {
+            if (++depth > kMaxJsonNesting)
+                throw SceneError(source + ": JSON nests deeper than " + std::to_string(kMaxJsonNesting) +
+                                 " levels (at byte " + std::to_string(i) + "); refused (allowed: up to " +
+                                 std::to_string(kMaxJsonNesting) + ")");
+        } else if ((ch == ']' || ch == '}') && depth > 0) {
+            --depth;
+        }
+    }
+}
+
+// tinygltf reads a buffer or image URI with an ifstream, which opens a directory on Linux and
+// then asks for an absurd size (std::bad_alloc): refuse anything but a regular file, by name.
+bool readRegularFile(std::vector<unsigned char>* out, std::string* err, const std::string& path, void* user) {
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(path, ec)) {
+        if (err != nullptr)
+            *err +=
+                "'" + path + "' is " +
+                (std::filesystem::is_directory(path, ec) ? "a directory" : "not a readable regular file") +
+                ", not a buffer or image file\n";
+        return false;
+    }
+    return tinygltf::ReadWholeFile(out, err, path, user);
+}
+
+// A message for people: lines no longer than a few hundred characters (a failed data URI would
+// otherwise be echoed whole, megabytes of base64) and nlohmann's internal exception ids removed.
+std::string readable(std::string text) {
+    const std::string prefix = "[json.exception.";
+    for (size_t at; (at = text.find(prefix)) != std::string::npos;) {
+        const size_t end = text.find("] ", at);
+        if (end == std::string::npos) break;
+        text.replace(at, end + 2 - at, "invalid JSON: ");
+    }
+    constexpr size_t kMaxLine = 240;
+    std::string out;
+    size_t start = 0;
+    while (start <= text.size()) {
+        size_t end = text.find('\n', start);
+        if (end == std::string::npos) end = text.size();
+        std::string line = text.substr(start, end - start);
+        if (line.size() > kMaxLine)
+            line = line.substr(0, kMaxLine) + "... (" + std::to_string(line.size() - kMaxLine) +
+                   " more characters)";
+        out += (out.empty() ? "" : "\n") + line;
+        start = end + 1;
+    }
+    return out;
+}
+
+} // namespace
+
+// Many warnings of one kind (one root node listed 5,000 times) become a few and a count: the same
+// text once its numbers are masked counts as one kind.
+void summariseWarnings(std::vector<std::string>& warnings, size_t keepPerKind) {
+    std::map<std::string, size_t> seen;
+    std::vector<std::string> kept;
+    std::vector<std::string> kinds; // in order of first appearance
+    for (const std::string& w : warnings) {
+        std::string kind; // every run of digits becomes one '#'
+        for (char ch : w)
+            if (!std::isdigit(static_cast<unsigned char>(ch)))
+                kind += ch;
+            else if (kind.empty() || kind.back() != '#')
+                kind += '#';
+        size_t& n = seen[kind];
+        if (n == 0) kinds.push_back(kind);
+        if (n++ < keepPerKind) kept.push_back(readable(w));
+    }
+    for (const std::string& kind : kinds)
+        if (seen[kind] > keepPerKind)
+            kept.push_back(std::to_string(seen[kind] - keepPerKind) + " more warnings like: " +
+                           readable(kind.substr(0, std::min<size_t>(kind.size(), 160))));
+    warnings = std::move(kept);
+}
+
 Scene loadGltf(const std::filesystem::path& path) {
     const std::string source = path.string();
     const std::string ext = lowerExtension(path);
     if (ext != ".gltf" && ext != ".glb") {
         throw SceneError(source + ": extension '" + ext + "' is not .gltf or .glb");
     }
+    std::error_code ec;
+    if (std::filesystem::is_directory(path, ec)) {
+        throw SceneError(source + ": is a directory, not a .gltf or .glb file");
+    }
+    std::vector<char> bytes;
     {
         std::ifstream probe(path, std::ios::binary);
         if (!probe) {
             throw SceneError(source + ": cannot open the file for reading");
         }
+        bytes.assign(std::istreambuf_iterator<char>(probe), std::istreambuf_iterator<char>());
     }
+    checkJsonNesting(source, jsonText(bytes, ext == ".glb"));
     tinygltf::TinyGLTF gltf;
     // Our decoder always yields RGBA8 and reports failures per image.
     gltf.SetImageLoader(&decodeImageRgba8, nullptr);
+    gltf.SetFsCallbacks({&tinygltf::FileExists, &tinygltf::ExpandFilePath, &readRegularFile,
+                         &tinygltf::WriteWholeFile, nullptr});
     tinygltf::Model model;
     std::string err;
     std::string warn;
@@ -444,13 +581,15 @@ Scene loadGltf(const std::filesystem::path& path) {
         err += e.what();
     }
     if (!ok) {
-        throw SceneError(source + ": " +
-                         (err.empty() ? std::string("tinygltf failed without a message") : trimmed(err)));
+        throw SceneError(
+            source + ": " +
+            (err.empty() ? std::string("tinygltf failed without a message") : readable(trimmed(err))));
     }
     Scene scene = loadGltfModel(model, source);
     if (!warn.empty()) {
         scene.stats.warnings.push_back(source + ": " + trimmed(warn));
     }
+    summariseWarnings(scene.stats.warnings);
     return scene;
 }
 

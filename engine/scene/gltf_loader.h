@@ -11,6 +11,7 @@
 
 #include <filesystem>
 #include <string>
+#include <vector>
 
 namespace eng::scene {
 
@@ -20,5 +21,9 @@ Scene loadGltf(const std::filesystem::path& path);
 // The same conversion from a model already in memory; sourceName prefixes every
 // message and becomes Scene::source.
 Scene loadGltfModel(const tinygltf::Model& model, const std::string& sourceName);
+
+// Keeps at most keepPerKind warnings of each kind (the same text with its numbers masked) and
+// adds one line per kind with the count of those left out; lines are bounded in length.
+void summariseWarnings(std::vector<std::string>& warnings, size_t keepPerKind = 5);
 
 } // namespace eng::scene

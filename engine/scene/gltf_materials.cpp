@@ -19,6 +19,13 @@ namespace {
 // before allocating.
 constexpr uint64_t kMaxTexels = 16384ull * 16384ull;
 
+// stb_image's reason for its last failure. It gives none for some (a corrupt zlib stream in a
+// PNG returns NULL without setting one), and a NULL appended to a std::string would crash.
+std::string decodeFailure() {
+    const char* reason = stbi_failure_reason();
+    return reason != nullptr ? std::string(reason) : std::string("corrupt or unsupported image data");
+}
+
 uint8_t toUnorm8(float v) {
     return static_cast<uint8_t>(std::lround(std::clamp(v, 0.0f, 1.0f) * 255.0f));
 }
@@ -182,7 +189,7 @@ class MaterialConverter {
             stbi_load_from_memory(bytes.data(), static_cast<int>(bytes.size()), &w, &h, &comp, 4);
         if (pixels == nullptr) {
             throw SceneError(m_source + ": " + field + ".bufferView: cannot decode image (" +
-                             stbi_failure_reason() + ")");
+                             decodeFailure() + ")");
         }
         out.width = static_cast<uint32_t>(w);
         out.height = static_cast<uint32_t>(h);
@@ -274,8 +281,7 @@ bool decodeImageRgba8(tinygltf::Image* image, const int imageIndex, std::string*
     stbi_uc* pixels = stbi_load_from_memory(bytes, size, &w, &h, &comp, 4);
     if (pixels == nullptr) {
         if (err != nullptr) {
-            *err +=
-                "images[" + std::to_string(imageIndex) + "]: cannot decode (" + stbi_failure_reason() + ")\n";
+            *err += "images[" + std::to_string(imageIndex) + "]: cannot decode (" + decodeFailure() + ")\n";
         }
         return false;
     }

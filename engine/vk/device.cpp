@@ -96,6 +96,11 @@ void Device::createInstance(const DeviceOptions& options) {
     vkEnumerateInstanceExtensionProperties(nullptr, &extCount, exts.data());
     std::vector<const char*> enabled;
     m_debugUtils = hasExtension(exts, VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
+    // Without the messenger no validation message would reach the counter: a validated run
+    // would pass however many errors it raised.
+    if (m_validation && !m_debugUtils)
+        throw MissingCapability("validation was requested but the instance lacks VK_EXT_debug_utils, so "
+                                "validation messages could not be counted");
     if (m_debugUtils) enabled.push_back(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
     for (const char* name : options.instanceExtensions) {
         if (!hasExtension(exts, name))

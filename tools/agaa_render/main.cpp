@@ -44,6 +44,7 @@ struct Options {
     std::optional<std::string> stats, graph;
     bool validate = false, caps = false, help = false;
     bool noShadowCasters = false; // --shadow-casters none
+    bool builtinGiven = false;
     std::string device;
     uint32_t frames = 1, warmup = 0;
 };
@@ -148,9 +149,10 @@ Options parse(int argc, char** argv) {
             o.help = true;
         else if (a == "--scene")
             o.sceneFile = value();
-        else if (a == "--builtin")
+        else if (a == "--builtin") {
             o.builtin = value();
-        else if (a == "--method")
+            o.builtinGiven = true;
+        } else if (a == "--method")
             r.method = value();
         else if (a == "--samples") {
             std::string v = value();
@@ -250,14 +252,27 @@ Options parse(int argc, char** argv) {
                               r.method + " (allowed: " + (allowed.empty() ? std::string("none") : allowed) +
                               ")");
     }
+    if (o.sceneFile && o.builtinGiven)
+        throw BadArgument("--scene and --builtin both name a scene; give one of them");
     r.timedFrames = o.frames;
     r.warmupFrames = o.warmup;
     return o;
 }
 
+// Creates the folder an output goes to, before anything renders; a parent that is a file (or
+// cannot be created) is the user's input, refused with the flag and the path.
+void prepareOutputFolder(const std::string& flag, const std::filesystem::path& path) {
+    if (!path.has_parent_path()) return;
+    const std::filesystem::path parent = path.parent_path();
+    std::error_code ec;
+    std::filesystem::create_directories(parent, ec);
+    if (ec || !std::filesystem::is_directory(parent))
+        throw BadArgument(flag + " '" + path.string() + "': cannot use '" + parent.string() +
+                          "' as its folder (" + (ec ? ec.message() : std::string("not a directory")) + ")");
+}
+
 void writeText(const std::filesystem::path& path, const std::string& text) {
-    if (path.has_parent_path()) std::filesystem::create_directories(path.parent_path());
-    std::ofstream f(path);
+    std::ofstream f(path); // its folder: prepareOutputFolder, before rendering
     if (!f) throw eng::io::IoError("cannot write " + path.string());
     f << text;
 }
@@ -330,7 +345,6 @@ int run(const Options& o) {
         return 1;
     }
     std::filesystem::path prefix(o.out);
-    if (prefix.has_parent_path()) std::filesystem::create_directories(prefix.parent_path());
     eng::io::writeExr(prefix.string() + ".exr", r.hdr);
     eng::io::writePng(prefix.string() + ".png", eng::io::quantizeToU8(eng::io::srgbEncoded(r.display)));
     std::cout << "wrote " << prefix.string() << ".exr and " << prefix.string() << ".png (" << o.request.method
@@ -378,6 +392,11 @@ int main(int argc, char** argv) {
             std::cout << "\n";
             return 0;
         }
+        if (!o.caps) {
+            prepareOutputFolder("--out", o.out);
+            if (o.stats) prepareOutputFolder("--stats", *o.stats);
+            if (o.graph) prepareOutputFolder("--graph", *o.graph);
+        }
         return run(o);
     } catch (const BadArgument& e) {
         std::cerr << "agaa-render: " << e.what() << "\n";
@@ -394,5 +413,13 @@ int main(int argc, char** argv) {
     } catch (const eng::vk::MissingCapability& e) {
         std::cerr << "agaa-render: the device lacks a required capability: " << e.what() << "\n";
         return kExitMissingCapability;
+    } catch (const std::filesystem::filesystem_error& e) {
+        std::cerr << "agaa-render: cannot write '" << e.path1().string() << "': " << e.code().message()
+                  << "\n";
+        return kExitBadInput;
+    } catch (const std::exception& e) {
+        // Nothing a user types should get here; if it does, say so rather than abort.
+        std::cerr << "agaa-render: internal error: " << e.what() << "\n";
+        return 1;
     }
 }
