@@ -4,6 +4,7 @@
 #   tools/deps.sh            build + test dependencies
 #   tools/deps.sh --viewer   also GLFW for samples/viewer
 #   tools/deps.sh --browser  also Chromium and Chart.js for the report's browser test
+#   tools/deps.sh --fuzz     also clang and its runtime libraries (libFuzzer, sanitizers)
 set -euo pipefail
 
 packages=(
@@ -18,8 +19,9 @@ for arg in "$@"; do
   case "$arg" in
     --viewer) packages+=(libglfw3-dev) ;;
     --browser) packages+=(chromium) ;;
-    -h|--help) sed -n '2,7p' "$0"; exit 0 ;;
-    *) echo "deps.sh: unknown option '$arg' (allowed: --viewer, --browser)" >&2; exit 2 ;;
+    --fuzz) packages+=(clang libclang-rt-14-dev) ;;
+    -h|--help) sed -n '2,8p' "$0"; exit 0 ;;
+    *) echo "deps.sh: unknown option '$arg' (allowed: --viewer, --browser, --fuzz)" >&2; exit 2 ;;
   esac
 done
 
