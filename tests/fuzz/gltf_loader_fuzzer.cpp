@@ -39,7 +39,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     try {
         eng::scene::Scene scene = eng::scene::loadGltf(path);
         for (const eng::scene::Vertex& v : scene.vertices)
-            if (!std::isfinite(v.position.x) || !std::isfinite(v.position.y) || !std::isfinite(v.position.z)) {
+            if (!std::isfinite(v.position.x) || !std::isfinite(v.position.y) ||
+                !std::isfinite(v.position.z)) {
                 std::fprintf(stderr, "finding: a non-finite position reached the scene\n");
                 std::abort();
             }
