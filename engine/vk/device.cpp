@@ -410,7 +410,7 @@ VKAPI_ATTR VkBool32 VKAPI_CALL Device::onMessage(VkDebugUtilsMessageSeverityFlag
     const char* id = data->pMessageIdName ? data->pMessageIdName : "";
     bool error = isErrorId(id);
     if (error) {
-        self->m_validationErrors.fetch_add(1);
+        self->m_validationErrors->fetch_add(1);
         std::lock_guard lock(self->m_messagesMutex);
         if (self->m_messages.size() < 64) self->m_messages.emplace_back(data->pMessage ? data->pMessage : id);
     }
@@ -428,7 +428,7 @@ std::vector<std::string> Device::validationMessages() const {
 void Device::resetValidationErrors() {
     std::lock_guard lock(m_messagesMutex);
     m_messages.clear();
-    m_validationErrors = 0;
+    m_validationErrors->store(0);
 }
 
 void Device::submitAndWait(const std::function<void(VkCommandBuffer)>& record) {

@@ -12,6 +12,7 @@
 #include <atomic>
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <mutex>
 #include <string>
 #include <vector>
@@ -47,7 +48,11 @@ class Device {
     bool validationEnabled() const { return m_validation; }
 
     // Validation messages counted as errors since creation (or the last reset).
-    uint32_t validationErrors() const { return m_validationErrors.load(); }
+    uint32_t validationErrors() const { return m_validationErrors->load(); }
+    // The same count, in a cell that outlives the device: messages raised while it is destroyed
+    // (leaked objects reported by vkDestroyDevice) land there too, so a caller can check after
+    // destruction.
+    std::shared_ptr<const std::atomic<uint32_t>> validationErrorCounter() const { return m_validationErrors; }
     std::vector<std::string> validationMessages() const;
     void resetValidationErrors();
 
@@ -91,7 +96,7 @@ class Device {
     bool m_validation = false;
     bool m_debugUtils = false;
     bool m_quiet = false;
-    std::atomic<uint32_t> m_validationErrors{0};
+    std::shared_ptr<std::atomic<uint32_t>> m_validationErrors = std::make_shared<std::atomic<uint32_t>>(0);
     mutable std::mutex m_messagesMutex;
     std::vector<std::string> m_messages;
     PFN_vkSetDebugUtilsObjectNameEXT m_setObjectName = nullptr;

@@ -12,12 +12,24 @@
 
 namespace agaa::test {
 
-inline std::unique_ptr<eng::vk::Device> makeValidatedDevice() {
+// Destroys the device, then fails the current test if the validation layer raised errors while
+// it was destroyed (leaked objects are reported by vkDestroyDevice, after any check a test makes).
+struct CheckedDeviceDeleter {
+    void operator()(eng::vk::Device* device) const {
+        std::shared_ptr<const std::atomic<uint32_t>> counter = device->validationErrorCounter();
+        const uint32_t before = counter->load();
+        delete device;
+        EXPECT_EQ(counter->load(), before) << "validation errors raised while the device was destroyed";
+    }
+};
+using ValidatedDevice = std::unique_ptr<eng::vk::Device, CheckedDeviceDeleter>;
+
+inline ValidatedDevice makeValidatedDevice() {
     eng::vk::DeviceOptions options;
     options.validation = true;
     options.synchronizationValidation = true;
     options.quiet = true;
-    return std::make_unique<eng::vk::Device>(options);
+    return ValidatedDevice(new eng::vk::Device(options));
 }
 
 // Fails the current test if the device saw any validation message, listing them.

@@ -317,11 +317,7 @@ nlohmann::json statsJson(const Options& o, const agaa::RenderResult& r, const en
     return j;
 }
 
-int run(const Options& o) {
-    eng::vk::DeviceOptions deviceOptions;
-    deviceOptions.validation = o.validate;
-    deviceOptions.deviceName = o.device;
-    eng::vk::Device device(deviceOptions);
+int renderWith(const Options& o, eng::vk::Device& device) {
     if (o.caps) {
         std::cout << device.caps().describe();
         return 0;
@@ -375,6 +371,25 @@ int run(const Options& o) {
         return 1;
     }
     return 0;
+}
+
+// Every validation message counts, up to and including the device's destruction (where leaked
+// objects are reported).
+int run(const Options& o) {
+    eng::vk::DeviceOptions deviceOptions;
+    deviceOptions.validation = o.validate;
+    deviceOptions.deviceName = o.device;
+    auto device = std::make_unique<eng::vk::Device>(deviceOptions);
+    std::shared_ptr<const std::atomic<uint32_t>> errors = device->validationErrorCounter();
+    int rc = renderWith(o, *device);
+    const uint32_t before = errors->load();
+    device.reset();
+    if (errors->load() > before) {
+        std::cerr << "agaa-render: " << errors->load() - before
+                  << " validation error(s) while the device was destroyed\n";
+        return 1;
+    }
+    return rc;
 }
 
 } // namespace
