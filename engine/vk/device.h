@@ -54,6 +54,10 @@ class Device {
     // destruction.
     std::shared_ptr<const std::atomic<uint32_t>> validationErrorCounter() const { return m_validationErrors; }
     std::vector<std::string> validationMessages() const;
+    // Buffers and images alive now (each with its memory and views), kept by engine/vk/resources:
+    // the soak test's measure of what a long run holds on to.
+    int64_t liveResources() const { return m_liveResources.load(); }
+    void trackResource(int delta) const { m_liveResources.fetch_add(delta); }
     void resetValidationErrors();
 
     // Records with record(), submits, and waits on a fence. Used for whole frames
@@ -97,6 +101,7 @@ class Device {
     bool m_debugUtils = false;
     bool m_quiet = false;
     std::shared_ptr<std::atomic<uint32_t>> m_validationErrors = std::make_shared<std::atomic<uint32_t>>(0);
+    mutable std::atomic<int64_t> m_liveResources{0};
     mutable std::mutex m_messagesMutex;
     std::vector<std::string> m_messages;
     PFN_vkSetDebugUtilsObjectNameEXT m_setObjectName = nullptr;

@@ -112,10 +112,12 @@ Buffer createBuffer(const Device& device, VkDeviceSize size, VkBufferUsageFlags 
     }
     device.setName(VK_OBJECT_TYPE_BUFFER, b.buffer, name);
     device.setName(VK_OBJECT_TYPE_DEVICE_MEMORY, b.memory, name + ".memory");
+    device.trackResource(+1);
     return b;
 }
 
 void destroyBuffer(const Device& device, Buffer& b) {
+    if (b.buffer) device.trackResource(-1);
     if (b.buffer) vkDestroyBuffer(device.device(), b.buffer, nullptr);
     if (b.memory) vkFreeMemory(device.device(), b.memory, nullptr);
     b = Buffer{};
@@ -182,6 +184,7 @@ Image createImage(const Device& device, const ImageDesc& desc, const std::string
     device.setName(VK_OBJECT_TYPE_IMAGE, img.image, name);
     device.setName(VK_OBJECT_TYPE_IMAGE_VIEW, img.view, name + ".view");
     device.setName(VK_OBJECT_TYPE_DEVICE_MEMORY, img.memory, name + ".memory");
+    device.trackResource(+1);
     return img;
 }
 
@@ -197,6 +200,7 @@ void destroyImage(const Device& device, Image& img) {
     if (img.sampledView && img.sampledView != img.view)
         vkDestroyImageView(device.device(), img.sampledView, nullptr);
     if (img.view) vkDestroyImageView(device.device(), img.view, nullptr);
+    if (img.image) device.trackResource(-1);
     if (img.image) vkDestroyImage(device.device(), img.image, nullptr);
     if (img.memory) vkFreeMemory(device.device(), img.memory, nullptr);
     img = Image{};
