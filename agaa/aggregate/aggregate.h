@@ -62,6 +62,7 @@ class AggregateAA final : public Technique {
     VkPipeline visibilityPipeline(AlphaPath alpha, bool doubleSided);
     VkPipeline generationPipeline(bool doubleSided);
     void createLayouts(const eng::frame::GpuScene& scene);
+    void release(); // the destructor's work, also for a constructor that throws
 
     eng::vk::Device& m_device;
     AggregateSettings m_settings;  // every Auto resolved

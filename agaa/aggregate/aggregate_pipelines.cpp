@@ -92,33 +92,40 @@ AggregateAA::AggregateAA(vk::Device& device, const eng::frame::GpuScene& scene,
                                  ? AggregateShading::Compact
                                  : AggregateShading::Registers;
 
-    m_constantsBuffer =
-        vk::createBuffer(device, sizeof(shared::AgaaConstants), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
-                         vk::MemoryUse::Upload, "agaa.constants");
-    m_fetchSampler = vk::createSampler(device, VK_FILTER_NEAREST, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE, 0.0f,
-                                       "agaa.fetchSampler");
-    createLayouts(scene);
+    // A later step that throws (out of memory) takes what was made before it along.
+    try {
+        m_constantsBuffer =
+            vk::createBuffer(device, sizeof(shared::AgaaConstants), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
+                             vk::MemoryUse::Upload, "agaa.constants");
+        m_fetchSampler = vk::createSampler(device, VK_FILTER_NEAREST, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE,
+                                           0.0f, "agaa.fetchSampler");
+        createLayouts(scene);
 
-    m_clusterPipeline = vk::createComputePipeline(
-        device, kAgaaClusterComp, m_clusterLayout.layout,
-        {{settings.samples, settings.aggregates, uint32_t(settings.distance)}}, "agaa.cluster");
-    const bool shadows = m_shadow->enabled();
-    std::span<const uint32_t> lighting =
-        m_hasEmissive ? (shadows ? std::span<const uint32_t>(kAgaaLightingEmissiveShadowComp)
-                                 : kAgaaLightingEmissiveComp)
-                      : (shadows ? std::span<const uint32_t>(kAgaaLightingShadowComp) : kAgaaLightingComp);
-    std::vector<uint32_t> lightingSpec =
-        effectSpecialization(m_features, settings.samples, settings.aggregates, settings.effects.shadowTaps,
-                             settings.effects.shadowFootprint);
-    lightingSpec.push_back(m_settings.shading == AggregateShading::Compact ? 1u : 0u); // id 7
-    lightingSpec.push_back(settings.breakdown & AggregateBreakdown::kLightingWithoutShading ? 1u
-                                                                                            : 0u); // id 8
-    lightingSpec.push_back(uint32_t(m_settings.ndf));                                              // id 9
-    lightingSpec.push_back(uint32_t(m_settings.routing));                                          // id 10
-    m_lightingPipeline =
-        vk::createComputePipeline(device, lighting, m_lightingLayout.layout, {lightingSpec}, "agaa.lighting");
-    m_debugPipeline = vk::createComputePipeline(device, kAgaaDebugAggregatesComp, m_debugLayout.layout, {},
-                                                "agaa.debug.aggregates");
+        m_clusterPipeline = vk::createComputePipeline(
+            device, kAgaaClusterComp, m_clusterLayout.layout,
+            {{settings.samples, settings.aggregates, uint32_t(settings.distance)}}, "agaa.cluster");
+        const bool shadows = m_shadow->enabled();
+        std::span<const uint32_t> lighting =
+            m_hasEmissive
+                ? (shadows ? std::span<const uint32_t>(kAgaaLightingEmissiveShadowComp)
+                           : kAgaaLightingEmissiveComp)
+                : (shadows ? std::span<const uint32_t>(kAgaaLightingShadowComp) : kAgaaLightingComp);
+        std::vector<uint32_t> lightingSpec =
+            effectSpecialization(m_features, settings.samples, settings.aggregates,
+                                 settings.effects.shadowTaps, settings.effects.shadowFootprint);
+        lightingSpec.push_back(m_settings.shading == AggregateShading::Compact ? 1u : 0u); // id 7
+        lightingSpec.push_back(settings.breakdown & AggregateBreakdown::kLightingWithoutShading ? 1u
+                                                                                                : 0u); // id 8
+        lightingSpec.push_back(uint32_t(m_settings.ndf));                                              // id 9
+        lightingSpec.push_back(uint32_t(m_settings.routing)); // id 10
+        m_lightingPipeline = vk::createComputePipeline(device, lighting, m_lightingLayout.layout,
+                                                       {lightingSpec}, "agaa.lighting");
+        m_debugPipeline = vk::createComputePipeline(device, kAgaaDebugAggregatesComp, m_debugLayout.layout,
+                                                    {}, "agaa.debug.aggregates");
+    } catch (...) {
+        release();
+        throw;
+    }
 }
 
 void AggregateAA::createLayouts(const eng::frame::GpuScene& scene) {
@@ -166,6 +173,10 @@ void AggregateAA::createLayouts(const eng::frame::GpuScene& scene) {
 }
 
 AggregateAA::~AggregateAA() {
+    release();
+}
+
+void AggregateAA::release() {
     VkDevice d = m_device.device();
     vkDeviceWaitIdle(d);
     for (VkPipeline p : m_visibilityPipelines)

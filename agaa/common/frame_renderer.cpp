@@ -40,8 +40,14 @@ FrameRenderer::FrameRenderer(vk::Device& device, const eng::scene::Scene& scene)
         vk::createBuffer(device, sizeof(shared::FrameConstants), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
                          vk::MemoryUse::Upload, "frame.constants");
     size_t lightCount = std::max<size_t>(1, scene.lights.size());
-    m_lights = vk::createBuffer(device, lightCount * sizeof(shared::GpuLight),
-                                VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, vk::MemoryUse::Upload, "frame.lights");
+    try {
+        m_lights =
+            vk::createBuffer(device, lightCount * sizeof(shared::GpuLight),
+                             VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, vk::MemoryUse::Upload, "frame.lights");
+    } catch (...) {
+        vk::destroyBuffer(device, m_frameConstants); // the members' own destructors release the rest
+        throw;
+    }
 }
 
 FrameRenderer::~FrameRenderer() {
@@ -90,11 +96,13 @@ RenderResult FrameRenderer::render(const RenderRequest& request) {
             vk::destroyBuffer(device, display);
             vk::destroyBuffer(device, events);
         }
-    } host{
-        m_device,
-        eng::frame::createReadbackBuffer(m_device, w, h, VK_FORMAT_R32G32B32A32_SFLOAT, "readback.hdr"),
-        eng::frame::createReadbackBuffer(m_device, w, h, VK_FORMAT_R32G32B32A32_SFLOAT, "readback.display"),
-        eng::frame::createReadbackBuffer(m_device, w, h, VK_FORMAT_R32_UINT, "readback.events")};
+    } host{m_device, {}, {}, {}};
+    // One at a time into the owner: one that fails leaves the ones before it to ~HostBuffers.
+    host.hdr =
+        eng::frame::createReadbackBuffer(m_device, w, h, VK_FORMAT_R32G32B32A32_SFLOAT, "readback.hdr");
+    host.display =
+        eng::frame::createReadbackBuffer(m_device, w, h, VK_FORMAT_R32G32B32A32_SFLOAT, "readback.display");
+    host.events = eng::frame::createReadbackBuffer(m_device, w, h, VK_FORMAT_R32_UINT, "readback.events");
     const vk::Buffer& hdrHost = host.hdr;
     const vk::Buffer& displayHost = host.display;
     const vk::Buffer& eventsHost = host.events;

@@ -107,13 +107,22 @@ ShadowMapPass::ShadowMapPass(vk::Device& device, const eng::frame::GpuScene& sce
     }
     m_sampler = vk::createSampler(device, VK_FILTER_NEAREST, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE, 0.0f,
                                   m_name + ".shadow.sampler");
-    m_constantsBuffer =
-        vk::createBuffer(device, sizeof(shared::ShadowConstants), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
-                         vk::MemoryUse::Upload, m_name + ".shadow.constants");
+    try {
+        m_constantsBuffer =
+            vk::createBuffer(device, sizeof(shared::ShadowConstants), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
+                             vk::MemoryUse::Upload, m_name + ".shadow.constants");
+    } catch (...) {
+        release(); // out of memory: the pipelines, layout and sampler made above go with it
+        throw;
+    }
 }
 
 ShadowMapPass::~ShadowMapPass() {
     if (!enabled()) return;
+    release();
+}
+
+void ShadowMapPass::release() {
     VkDevice d = m_device.device();
     vkDeviceWaitIdle(d);
     for (VkPipeline p : m_pipelines)

@@ -53,6 +53,7 @@ class ShadowMapPass {
                               const shared::FrameConstants* frame, float* texelMetres);
 
   private:
+    void release(); // the destructor's work, also for a constructor that throws
     eng::vk::Device& m_device;
     std::string m_name;
     EffectSettings m_settings;

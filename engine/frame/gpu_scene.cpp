@@ -110,54 +110,61 @@ GpuScene::GpuScene(vk::Device& device, const scene::Scene& scene) : m_device(dev
         throw std::invalid_argument(scene.source + ": " + std::to_string(scene.textures.size()) +
                                     " textures; at most " + std::to_string(shared::kMaxSceneTextures - 1) +
                                     " are supported");
-    // Host-visible vertex data: lavapipe's memory is all host-visible; on a discrete GPU this
-    // is read over the bus (a staging copy would be the next step there).
-    m_vertices = vk::createBuffer(device, std::max<size_t>(16, scene.vertices.size() * sizeof(scene::Vertex)),
-                                  VK_BUFFER_USAGE_VERTEX_BUFFER_BIT | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
-                                  vk::MemoryUse::Upload, "scene.vertices");
-    m_indices = vk::createBuffer(device, std::max<size_t>(16, scene.indices.size() * 4),
-                                 VK_BUFFER_USAGE_INDEX_BUFFER_BIT | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
-                                 vk::MemoryUse::Upload, "scene.indices");
-    if (!scene.vertices.empty()) vk::writeBuffer(device, m_vertices, bytesOf(scene.vertices));
-    if (!scene.indices.empty()) vk::writeBuffer(device, m_indices, bytesOf(scene.indices));
-    std::vector<shared::GpuMaterial> materials = makeGpuMaterials(scene);
-    if (materials.empty()) materials.push_back(shared::GpuMaterial{});
-    m_materials =
-        vk::createBuffer(device, materials.size() * sizeof(shared::GpuMaterial),
-                         VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, vk::MemoryUse::Upload, "scene.materials");
-    vk::writeBuffer(device, m_materials, bytesOf(materials));
+    // Whatever was created is released if a later step throws (out of memory, a lost device).
+    try {
+        // Host-visible vertex data: lavapipe's memory is all host-visible; on a discrete GPU this
+        // is read over the bus (a staging copy would be the next step there).
+        m_vertices =
+            vk::createBuffer(device, std::max<size_t>(16, scene.vertices.size() * sizeof(scene::Vertex)),
+                             VK_BUFFER_USAGE_VERTEX_BUFFER_BIT | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+                             vk::MemoryUse::Upload, "scene.vertices");
+        m_indices = vk::createBuffer(device, std::max<size_t>(16, scene.indices.size() * 4),
+                                     VK_BUFFER_USAGE_INDEX_BUFFER_BIT | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+                                     vk::MemoryUse::Upload, "scene.indices");
+        if (!scene.vertices.empty()) vk::writeBuffer(device, m_vertices, bytesOf(scene.vertices));
+        if (!scene.indices.empty()) vk::writeBuffer(device, m_indices, bytesOf(scene.indices));
+        std::vector<shared::GpuMaterial> materials = makeGpuMaterials(scene);
+        if (materials.empty()) materials.push_back(shared::GpuMaterial{});
+        m_materials =
+            vk::createBuffer(device, materials.size() * sizeof(shared::GpuMaterial),
+                             VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, vk::MemoryUse::Upload, "scene.materials");
+        vk::writeBuffer(device, m_materials, bytesOf(materials));
 
-    m_sampler =
-        vk::createSampler(device, VK_FILTER_LINEAR, VK_SAMPLER_ADDRESS_MODE_REPEAT, 16.0f, "scene.sampler");
-    uploadTextures();
+        m_sampler = vk::createSampler(device, VK_FILTER_LINEAR, VK_SAMPLER_ADDRESS_MODE_REPEAT, 16.0f,
+                                      "scene.sampler");
+        uploadTextures();
 
-    vk::Binding binding{0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
-                        VK_SHADER_STAGE_FRAGMENT_BIT | VK_SHADER_STAGE_COMPUTE_BIT,
-                        shared::kMaxSceneTextures};
-    m_textureSetLayout = vk::createSetLayout(device, std::span(&binding, 1), "scene.textures.layout");
-    VkDescriptorPoolSize size{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, shared::kMaxSceneTextures};
-    VkDescriptorPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
-    poolInfo.maxSets = 1;
-    poolInfo.poolSizeCount = 1;
-    poolInfo.pPoolSizes = &size;
-    VK_CHECK(vkCreateDescriptorPool(device.device(), &poolInfo, nullptr, &m_pool));
-    VkDescriptorSetAllocateInfo alloc{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
-    alloc.descriptorPool = m_pool;
-    alloc.descriptorSetCount = 1;
-    alloc.pSetLayouts = &m_textureSetLayout;
-    VK_CHECK(vkAllocateDescriptorSets(device.device(), &alloc, &m_textureSet));
-    // Unused slots point at the white fallback, so no descriptor is ever undefined.
-    std::vector<VkDescriptorImageInfo> infos(shared::kMaxSceneTextures);
-    for (uint32_t i = 0; i < shared::kMaxSceneTextures; ++i) {
-        const vk::Image& img = i < scene.textures.size() ? m_textures[i] : m_textures.back();
-        infos[i] = {m_sampler, img.view, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
+        vk::Binding binding{0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
+                            VK_SHADER_STAGE_FRAGMENT_BIT | VK_SHADER_STAGE_COMPUTE_BIT,
+                            shared::kMaxSceneTextures};
+        m_textureSetLayout = vk::createSetLayout(device, std::span(&binding, 1), "scene.textures.layout");
+        VkDescriptorPoolSize size{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, shared::kMaxSceneTextures};
+        VkDescriptorPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
+        poolInfo.maxSets = 1;
+        poolInfo.poolSizeCount = 1;
+        poolInfo.pPoolSizes = &size;
+        VK_CHECK(vkCreateDescriptorPool(device.device(), &poolInfo, nullptr, &m_pool));
+        VkDescriptorSetAllocateInfo alloc{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
+        alloc.descriptorPool = m_pool;
+        alloc.descriptorSetCount = 1;
+        alloc.pSetLayouts = &m_textureSetLayout;
+        VK_CHECK(vkAllocateDescriptorSets(device.device(), &alloc, &m_textureSet));
+        // Unused slots point at the white fallback, so no descriptor is ever undefined.
+        std::vector<VkDescriptorImageInfo> infos(shared::kMaxSceneTextures);
+        for (uint32_t i = 0; i < shared::kMaxSceneTextures; ++i) {
+            const vk::Image& img = i < scene.textures.size() ? m_textures[i] : m_textures.back();
+            infos[i] = {m_sampler, img.view, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
+        }
+        VkWriteDescriptorSet write{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+        write.dstSet = m_textureSet;
+        write.descriptorCount = shared::kMaxSceneTextures;
+        write.descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
+        write.pImageInfo = infos.data();
+        vkUpdateDescriptorSets(device.device(), 1, &write, 0, nullptr);
+    } catch (...) {
+        release();
+        throw;
     }
-    VkWriteDescriptorSet write{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
-    write.dstSet = m_textureSet;
-    write.descriptorCount = shared::kMaxSceneTextures;
-    write.descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
-    write.pImageInfo = infos.data();
-    vkUpdateDescriptorSets(device.device(), 1, &write, 0, nullptr);
 }
 
 void GpuScene::uploadTextures() {
@@ -190,8 +197,16 @@ void GpuScene::uploadTextures() {
             total += m.rgba.size();
         pending.push_back(std::move(p));
     }
-    vk::Buffer staging = vk::createBuffer(m_device, total, VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
-                                          vk::MemoryUse::Upload, "scene.textures.staging");
+    // The staging buffer lives for this call only, on every path out (a texture's allocation or
+    // the upload's submission may throw).
+    struct Staging {
+        vk::Device& device;
+        vk::Buffer buffer;
+        ~Staging() { vk::destroyBuffer(device, buffer); }
+    } stagingOwner{m_device, {}};
+    stagingOwner.buffer = vk::createBuffer(m_device, total, VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
+                                           vk::MemoryUse::Upload, "scene.textures.staging");
+    const vk::Buffer& staging = stagingOwner.buffer;
     rg::Graph graph;
     std::vector<rg::Texture> handles;
     for (size_t i = 0; i < sources.size(); ++i) {
@@ -256,10 +271,13 @@ void GpuScene::uploadTextures() {
         graph.execute(info);
     });
     graph.releaseTransients();
-    vk::destroyBuffer(m_device, staging);
 }
 
 GpuScene::~GpuScene() {
+    release();
+}
+
+void GpuScene::release() {
     VkDevice d = m_device.device();
     vkDeviceWaitIdle(d);
     if (m_pool) vkDestroyDescriptorPool(d, m_pool, nullptr);
@@ -270,6 +288,10 @@ GpuScene::~GpuScene() {
     vk::destroyBuffer(m_device, m_vertices);
     vk::destroyBuffer(m_device, m_indices);
     vk::destroyBuffer(m_device, m_materials);
+    m_textures.clear();
+    m_pool = VK_NULL_HANDLE;
+    m_textureSetLayout = VK_NULL_HANDLE;
+    m_sampler = VK_NULL_HANDLE;
 }
 
 void GpuScene::recordDraws(VkCommandBuffer cmd, VkPipelineLayout layout,

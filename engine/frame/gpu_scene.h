@@ -42,6 +42,7 @@ class GpuScene {
     VkDeviceSize bytes() const;
 
   private:
+    void release(); // destroys whatever exists (the destructor, and a constructor that throws)
     void uploadTextures();
 
     vk::Device& m_device;

@@ -18,6 +18,17 @@ struct MissingCapability : std::runtime_error {
     explicit MissingCapability(const std::string& what) : std::runtime_error(what) {}
 };
 
+// Device or host memory ran out while creating the named resource (VK_ERROR_OUT_OF_*_MEMORY from
+// an allocation): the message names the resource and its size. Nothing is leaked by the throw.
+struct OutOfMemory : std::runtime_error {
+    explicit OutOfMemory(const std::string& what) : std::runtime_error(what) {}
+};
+
+// VK_ERROR_DEVICE_LOST from a submit or a wait: the device can do nothing more.
+struct DeviceLost : std::runtime_error {
+    explicit DeviceLost(const std::string& what) : std::runtime_error(what) {}
+};
+
 } // namespace eng::vk
 
 #define VK_CHECK(expr)                                                                                       \

@@ -30,6 +30,15 @@ bool envFlag(const char* name) {
     return v && *v && std::strcmp(v, "0") != 0;
 }
 
+// A positive count from the environment (fault injection), 0 when unset or not a number.
+uint32_t envCount(const char* name) {
+    const char* v = std::getenv(name);
+    if (!v || !*v) return 0;
+    char* end = nullptr;
+    unsigned long n = std::strtoul(v, &end, 10);
+    return end && *end == '\0' && n <= 0xFFFFFFFFul ? uint32_t(n) : 0;
+}
+
 // Real GPUs before lavapipe; among equals the first enumerated.
 int typeRank(VkPhysicalDeviceType type) {
     switch (type) {
@@ -78,6 +87,9 @@ Device::~Device() {
 
 void Device::createInstance(const DeviceOptions& options) {
     m_validation = options.validation || envFlag("AGAA_VALIDATE");
+    m_failAllocation = options.failAllocation ? options.failAllocation : envCount("AGAA_FAIL_ALLOCATION");
+    m_loseDeviceAtSubmit =
+        options.loseDeviceAtSubmit ? options.loseDeviceAtSubmit : envCount("AGAA_LOSE_DEVICE");
 
     uint32_t layerCount = 0;
     vkEnumerateInstanceLayerProperties(&layerCount, nullptr);
@@ -431,6 +443,12 @@ void Device::resetValidationErrors() {
     m_validationErrors->store(0);
 }
 
+VkResult Device::allocateMemory(const VkMemoryAllocateInfo& info, VkDeviceMemory* memory) const {
+    if (m_failAllocation != 0 && m_allocations.fetch_add(1) + 1 == m_failAllocation)
+        return VK_ERROR_OUT_OF_DEVICE_MEMORY;
+    return vkAllocateMemory(m_device, &info, nullptr, memory);
+}
+
 void Device::submitAndWait(const std::function<void(VkCommandBuffer)>& record) {
     VkCommandBufferAllocateInfo alloc{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
     alloc.commandPool = m_commandPool;
@@ -441,16 +459,39 @@ void Device::submitAndWait(const std::function<void(VkCommandBuffer)>& record) {
     VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
     begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
     VK_CHECK(vkBeginCommandBuffer(cmd, &begin));
-    record(cmd);
+    try {
+        record(cmd);
+    } catch (...) {
+        vkFreeCommandBuffers(m_device, m_commandPool, 1, &cmd);
+        throw;
+    }
     VK_CHECK(vkEndCommandBuffer(cmd));
     VkCommandBufferSubmitInfo cmdInfo{VK_STRUCTURE_TYPE_COMMAND_BUFFER_SUBMIT_INFO};
     cmdInfo.commandBuffer = cmd;
     VkSubmitInfo2 submit{VK_STRUCTURE_TYPE_SUBMIT_INFO_2};
     submit.commandBufferInfoCount = 1;
     submit.pCommandBufferInfos = &cmdInfo;
-    VK_CHECK(vkQueueSubmit2(m_queue, 1, &submit, m_fence));
-    VK_CHECK(vkWaitForFences(m_device, 1, &m_fence, VK_TRUE, UINT64_MAX));
-    VK_CHECK(vkResetFences(m_device, 1, &m_fence));
+    const bool injectLoss = m_loseDeviceAtSubmit != 0 && ++m_submits == m_loseDeviceAtSubmit;
+    VkResult r = injectLoss ? VK_ERROR_DEVICE_LOST : vkQueueSubmit2(m_queue, 1, &submit, m_fence);
+    const char* call = "vkQueueSubmit2";
+    if (r == VK_SUCCESS) {
+        call = "vkWaitForFences";
+        r = vkWaitForFences(m_device, 1, &m_fence, VK_TRUE, UINT64_MAX);
+        if (r == VK_SUCCESS) VK_CHECK(vkResetFences(m_device, 1, &m_fence));
+    }
+    // Expected failures are reported, not aborted on (STYLE.md, Errors): the caller unwinds and
+    // releases what it holds; a lost device is the end of the run.
+    if (r == VK_ERROR_DEVICE_LOST) {
+        vkFreeCommandBuffers(m_device, m_commandPool, 1, &cmd);
+        throw DeviceLost(
+            std::string(call) + " returned VK_ERROR_DEVICE_LOST" +
+            (injectLoss ? " (injected: AGAA_LOSE_DEVICE / DeviceOptions::loseDeviceAtSubmit)" : ""));
+    }
+    if (r == VK_ERROR_OUT_OF_HOST_MEMORY || r == VK_ERROR_OUT_OF_DEVICE_MEMORY) {
+        vkFreeCommandBuffers(m_device, m_commandPool, 1, &cmd);
+        throw OutOfMemory(std::string(call) + " returned " + resultName(r));
+    }
+    VK_CHECK(r);
     vkFreeCommandBuffers(m_device, m_commandPool, 1, &cmd);
 }
 

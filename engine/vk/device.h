@@ -30,6 +30,12 @@ struct DeviceOptions {
     // MissingCapability when absent. Headless by default.
     std::vector<const char*> instanceExtensions;
     bool swapchain = false;
+    // Fault injection (tests; also AGAA_FAIL_ALLOCATION and AGAA_LOSE_DEVICE in the environment):
+    // the failAllocation-th device memory allocation (1-based; 0 = none) returns
+    // VK_ERROR_OUT_OF_DEVICE_MEMORY, and the loseDeviceAtSubmit-th submission reports
+    // VK_ERROR_DEVICE_LOST.
+    uint32_t failAllocation = 0;
+    uint32_t loseDeviceAtSubmit = 0;
 };
 
 class Device {
@@ -76,6 +82,10 @@ class Device {
     uint32_t findMemoryType(uint32_t typeBits, VkMemoryPropertyFlags required,
                             VkMemoryPropertyFlags preferred) const;
 
+    // vkAllocateMemory through the fault injector: every device memory allocation of
+    // engine/vk/resources goes through here.
+    VkResult allocateMemory(const VkMemoryAllocateInfo& info, VkDeviceMemory* memory) const;
+
     // Lists every Vulkan 1.3 device the loader sees (for error messages and --caps).
     static std::vector<std::string> listDevices();
 
@@ -102,6 +112,9 @@ class Device {
     bool m_quiet = false;
     std::shared_ptr<std::atomic<uint32_t>> m_validationErrors = std::make_shared<std::atomic<uint32_t>>(0);
     mutable std::atomic<int64_t> m_liveResources{0};
+    uint32_t m_failAllocation = 0, m_loseDeviceAtSubmit = 0;
+    mutable std::atomic<uint32_t> m_allocations{0};
+    uint32_t m_submits = 0;
     mutable std::mutex m_messagesMutex;
     std::vector<std::string> m_messages;
     PFN_vkSetDebugUtilsObjectNameEXT m_setObjectName = nullptr;

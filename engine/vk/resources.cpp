@@ -72,6 +72,17 @@ uint32_t bytesPerTexel(VkFormat f) {
     }
 }
 
+namespace {
+// An allocation that ran out of memory is the caller's to report (STYLE.md, Errors): thrown with
+// the resource's name and size, after the half-made object is destroyed.
+[[noreturn]] void throwAllocationFailure(VkResult r, const std::string& name, VkDeviceSize bytes) {
+    if (r == VK_ERROR_OUT_OF_DEVICE_MEMORY || r == VK_ERROR_OUT_OF_HOST_MEMORY)
+        throw OutOfMemory("cannot allocate " + std::to_string(bytes) + " bytes for '" + name + "' (" +
+                          resultName(r) + ")");
+    checkFailed("vkAllocateMemory", __FILE__, __LINE__, r);
+}
+} // namespace
+
 Buffer createBuffer(const Device& device, VkDeviceSize size, VkBufferUsageFlags usage, MemoryUse use,
                     const std::string& name) {
     Buffer b;
@@ -102,7 +113,10 @@ Buffer createBuffer(const Device& device, VkDeviceSize size, VkBufferUsageFlags 
     VkMemoryAllocateInfo alloc{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
     alloc.allocationSize = req.size;
     alloc.memoryTypeIndex = type;
-    VK_CHECK(vkAllocateMemory(device.device(), &alloc, nullptr, &b.memory));
+    if (VkResult r = device.allocateMemory(alloc, &b.memory); r != VK_SUCCESS) {
+        vkDestroyBuffer(device.device(), b.buffer, nullptr);
+        throwAllocationFailure(r, name, alloc.allocationSize);
+    }
     VK_CHECK(vkBindBufferMemory(device.device(), b.buffer, b.memory, 0));
     if (use != MemoryUse::GpuOnly) {
         VK_CHECK(vkMapMemory(device.device(), b.memory, 0, VK_WHOLE_SIZE, 0, &b.mapped));
@@ -164,7 +178,10 @@ Image createImage(const Device& device, const ImageDesc& desc, const std::string
     VkMemoryAllocateInfo alloc{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
     alloc.allocationSize = req.size;
     alloc.memoryTypeIndex = device.findMemoryType(req.memoryTypeBits, 0, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
-    VK_CHECK(vkAllocateMemory(device.device(), &alloc, nullptr, &img.memory));
+    if (VkResult r = device.allocateMemory(alloc, &img.memory); r != VK_SUCCESS) {
+        vkDestroyImage(device.device(), img.image, nullptr);
+        throwAllocationFailure(r, name, alloc.allocationSize);
+    }
     VK_CHECK(vkBindImageMemory(device.device(), img.image, img.memory, 0));
     img.bytes = req.size;
 

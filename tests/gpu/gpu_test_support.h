@@ -24,8 +24,8 @@ struct CheckedDeviceDeleter {
 };
 using ValidatedDevice = std::unique_ptr<eng::vk::Device, CheckedDeviceDeleter>;
 
-inline ValidatedDevice makeValidatedDevice() {
-    eng::vk::DeviceOptions options;
+// `options` may carry fault injection (DeviceOptions::failAllocation, loseDeviceAtSubmit).
+inline ValidatedDevice makeValidatedDevice(eng::vk::DeviceOptions options = {}) {
     options.validation = true;
     options.synchronizationValidation = true;
     options.quiet = true;

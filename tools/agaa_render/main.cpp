@@ -428,6 +428,12 @@ int main(int argc, char** argv) {
     } catch (const eng::vk::MissingCapability& e) {
         std::cerr << "agaa-render: the device lacks a required capability: " << e.what() << "\n";
         return kExitMissingCapability;
+    } catch (const eng::vk::OutOfMemory& e) {
+        std::cerr << "agaa-render: out of memory: " << e.what() << "\n";
+        return 1;
+    } catch (const eng::vk::DeviceLost& e) {
+        std::cerr << "agaa-render: the device was lost: " << e.what() << "\n";
+        return 1;
     } catch (const std::filesystem::filesystem_error& e) {
         std::cerr << "agaa-render: cannot write '" << e.path1().string() << "': " << e.code().message()
                   << "\n";

@@ -1,0 +1,81 @@
+// Faults (issue 19): every device memory allocation of an AGAA frame, and every submission, is
+// made to fail in turn (DeviceOptions fault injection). Each must surface as an exception that
+// names what failed, and leave nothing behind: the validation layer reports any object still
+// alive when the device is destroyed, and the test device's deleter fails the test on it.
+
+#include "agaa/common/frame_renderer.h"
+#include "engine/scene/scenegen.h"
+#include "engine/vk/check.h"
+#include "gpu_test_support.h"
+
+#include <gtest/gtest.h>
+
+#include <set>
+#include <string>
+
+namespace {
+
+agaa::RenderRequest agaaFrame() {
+    agaa::RenderRequest r;
+    r.method = "agaa";
+    r.settings.samples = 8;
+    r.settings.aggregates = 2;
+    r.view.width = r.view.height = 32;
+    return r;
+}
+
+TEST(Faults, EveryAllocationOfAnAgaaFrameFailsCleanlyNamingTheResource) {
+    eng::scene::Scene scene = eng::scene::loadBuiltin("railings"); // shadow map, point lights
+    std::set<std::string> failed;
+    uint32_t k = 1;
+    for (;; ++k) {
+        ASSERT_LT(k, 200u) << "the sweep must reach a frame with no failure";
+        eng::vk::DeviceOptions options;
+        options.failAllocation = k;
+        auto device = agaa::test::makeValidatedDevice(options);
+        bool rendered = false;
+        try {
+            agaa::FrameRenderer renderer(*device, scene);
+            renderer.render(agaaFrame());
+            rendered = true;
+        } catch (const eng::vk::OutOfMemory& e) {
+            const std::string what = e.what();
+            EXPECT_NE(what.find("cannot allocate"), std::string::npos) << what;
+            EXPECT_NE(what.find("VK_ERROR_OUT_OF_DEVICE_MEMORY"), std::string::npos) << what;
+            const size_t open = what.find('\''), close = what.rfind('\'');
+            ASSERT_LT(open, close) << "the message must name the resource: " << what;
+            failed.insert(what.substr(open + 1, close - open - 1));
+        }
+        agaa::test::expectNoValidationErrors(*device);
+        if (rendered) break; // k is past the frame's last allocation
+    }
+    std::printf("[ measured ] an AGAA (8, 2) frame of railings makes %u device memory allocations\n", k - 1);
+    EXPECT_GE(failed.size(), 10u) << "the sweep must have failed many distinct resources";
+    for (const char* name :
+         {"scene.vertices", "frame.lights", "agaa.agBuffer", "agaa.shadow.map", "readback.hdr"})
+        EXPECT_TRUE(failed.count(name)) << name << " never failed in the sweep";
+}
+
+TEST(Faults, ADeviceLostAtAnySubmissionIsReportedAsSuch) {
+    eng::scene::Scene scene = eng::scene::loadBuiltin("railings");
+    uint32_t k = 1;
+    for (;; ++k) {
+        ASSERT_LT(k, 20u) << "the sweep must reach a frame with no loss";
+        eng::vk::DeviceOptions options;
+        options.loseDeviceAtSubmit = k;
+        auto device = agaa::test::makeValidatedDevice(options);
+        bool rendered = false;
+        try {
+            agaa::FrameRenderer renderer(*device, scene);
+            renderer.render(agaaFrame());
+            rendered = true;
+        } catch (const eng::vk::DeviceLost& e) {
+            EXPECT_NE(std::string(e.what()).find("VK_ERROR_DEVICE_LOST"), std::string::npos) << e.what();
+        }
+        agaa::test::expectNoValidationErrors(*device);
+        if (rendered) break;
+    }
+    EXPECT_GE(k, 2u) << "at least the texture upload and the frame itself are submissions";
+}
+
+} // namespace
