@@ -281,7 +281,13 @@ bool decodeImageRgba8(tinygltf::Image* image, const int imageIndex, std::string*
     stbi_uc* pixels = stbi_load_from_memory(bytes, size, &w, &h, &comp, 4);
     if (pixels == nullptr) {
         if (err != nullptr) {
-            *err += "images[" + std::to_string(imageIndex) + "]: cannot decode (" + decodeFailure() + ")\n";
+            // Which image: its index and where it came from (tinygltf clears a data URI before
+            // decoding it; one that is still there is named, never echoed).
+            const std::string from = image->uri.empty() || image->uri.rfind("data:", 0) == 0
+                                         ? std::string("embedded")
+                                         : "'" + image->uri + "'";
+            *err += "images[" + std::to_string(imageIndex) + "] (" + from + "): cannot decode (" +
+                    decodeFailure() + ")\n";
         }
         return false;
     }

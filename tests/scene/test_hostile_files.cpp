@@ -152,6 +152,10 @@ TEST_F(HostileFiles, CorruptPngTextureIsRefusedNamingTheImage) {
         EXPECT_NE(message.find("images[0]"), std::string::npos) << message;
         EXPECT_NE(message.find("cannot decode"), std::string::npos) << message;
     }
+    EXPECT_NE(loadError(file).find("'leaf.png'"), std::string::npos)
+        << "an external image is named by its URI";
+    EXPECT_NE(loadError(dataUri).find("images[0] (embedded)"), std::string::npos)
+        << "a data URI is not echoed";
 }
 
 TEST_F(HostileFiles, ADirectoryIsNotASceneOrABuffer) {
