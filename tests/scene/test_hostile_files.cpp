@@ -6,6 +6,7 @@
 #include "engine/scene/leaf_texture.h"
 
 #include "gltf_test_model.h"
+#include "loader_test_support.h"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -17,24 +18,9 @@ namespace {
 
 using test::TestModel;
 
-std::string loadError(const std::filesystem::path& path) {
-    try {
-        loadGltf(path);
-    } catch (const SceneError& e) {
-        return e.what();
-    }
-    ADD_FAILURE() << path << " loaded but must have been refused";
-    return {};
-}
+using test::loadError;
 
-class HostileFiles : public ::testing::Test {
-  protected:
-    void SetUp() override {
-        m_dir = test::makeTempDir(::testing::UnitTest::GetInstance()->current_test_info()->name());
-    }
-    void TearDown() override { std::filesystem::remove_all(m_dir); }
-    std::filesystem::path m_dir;
-};
+using HostileFiles = test::TempDirTest;
 
 // A chain of children 25,000 deep is a valid file: the node walk used to recurse per level.
 TEST_F(HostileFiles, NodeChainTwentyFiveThousandDeepLoads) {

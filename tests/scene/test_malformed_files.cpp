@@ -5,6 +5,7 @@
 #include "engine/scene/prng.h"
 
 #include "gltf_test_model.h"
+#include "loader_test_support.h"
 
 #include <gtest/gtest.h>
 
@@ -15,30 +16,14 @@ namespace {
 
 using test::TestModel;
 
-// Loads path and returns the SceneError message; fails the test if it loads.
-std::string loadError(const std::filesystem::path& path) {
-    try {
-        loadGltf(path);
-    } catch (const SceneError& e) {
-        return e.what();
-    }
-    ADD_FAILURE() << path << " loaded but must have been refused";
-    return {};
-}
+using test::loadError;
 
 void expectNames(const std::string& message, const std::filesystem::path& file, const std::string& field) {
     EXPECT_NE(message.find(file.string()), std::string::npos) << "message must name the file: " << message;
     EXPECT_NE(message.find(field), std::string::npos) << "message must name '" << field << "': " << message;
 }
 
-class MalformedFiles : public ::testing::Test {
-  protected:
-    void SetUp() override {
-        m_dir = test::makeTempDir(::testing::UnitTest::GetInstance()->current_test_info()->name());
-    }
-    void TearDown() override { std::filesystem::remove_all(m_dir); }
-    std::filesystem::path m_dir;
-};
+using MalformedFiles = test::TempDirTest;
 
 TEST_F(MalformedFiles, AccessorBufferViewOutOfRange) {
     TestModel m = test::makeTriangleModel();
