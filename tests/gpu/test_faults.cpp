@@ -24,31 +24,43 @@ agaa::RenderRequest agaaFrame() {
     return r;
 }
 
-TEST(Faults, EveryAllocationOfAnAgaaFrameFailsCleanlyNamingTheResource) {
-    eng::scene::Scene scene = eng::scene::loadBuiltin("railings"); // shadow map, point lights
-    std::set<std::string> failed;
-    uint32_t k = 1;
-    for (;; ++k) {
-        ASSERT_LT(k, 200u) << "the sweep must reach a frame with no failure";
+// Renders an AGAA frame of `scene` on a fresh validated device for k = 1, 2, ... with fault k
+// injected by `inject`, until a frame renders; each failure must be a `Fault` exception, checked
+// by `onFault`, and leave no validation message (the device deleter checks its destruction).
+// Returns the first k that rendered.
+template <class Fault, class Inject, class OnFault>
+uint32_t sweepFaults(const eng::scene::Scene& scene, uint32_t limit, Inject inject, OnFault onFault) {
+    for (uint32_t k = 1; k < limit; ++k) {
         eng::vk::DeviceOptions options;
-        options.failAllocation = k;
+        inject(options, k);
         auto device = agaa::test::makeValidatedDevice(options);
         bool rendered = false;
         try {
             agaa::FrameRenderer renderer(*device, scene);
             renderer.render(agaaFrame());
             rendered = true;
-        } catch (const eng::vk::OutOfMemory& e) {
-            const std::string what = e.what();
+        } catch (const Fault& e) {
+            onFault(std::string(e.what()));
+        }
+        agaa::test::expectNoValidationErrors(*device);
+        if (rendered) return k;
+    }
+    ADD_FAILURE() << "the sweep must reach a frame with no fault within " << limit;
+    return limit;
+}
+
+TEST(Faults, EveryAllocationOfAnAgaaFrameFailsCleanlyNamingTheResource) {
+    eng::scene::Scene scene = eng::scene::loadBuiltin("railings"); // shadow map, point lights
+    std::set<std::string> failed;
+    const uint32_t k = sweepFaults<eng::vk::OutOfMemory>(
+        scene, 200, [](eng::vk::DeviceOptions& o, uint32_t n) { o.failAllocation = n; },
+        [&](const std::string& what) {
             EXPECT_NE(what.find("cannot allocate"), std::string::npos) << what;
             EXPECT_NE(what.find("VK_ERROR_OUT_OF_DEVICE_MEMORY"), std::string::npos) << what;
             const size_t open = what.find('\''), close = what.rfind('\'');
             ASSERT_LT(open, close) << "the message must name the resource: " << what;
             failed.insert(what.substr(open + 1, close - open - 1));
-        }
-        agaa::test::expectNoValidationErrors(*device);
-        if (rendered) break; // k is past the frame's last allocation
-    }
+        });
     std::printf("[ measured ] an AGAA (8, 2) frame of railings makes %u device memory allocations\n", k - 1);
     EXPECT_GE(failed.size(), 10u) << "the sweep must have failed many distinct resources";
     for (const char* name :
@@ -58,23 +70,14 @@ TEST(Faults, EveryAllocationOfAnAgaaFrameFailsCleanlyNamingTheResource) {
 
 TEST(Faults, ADeviceLostAtAnySubmissionIsReportedAsSuch) {
     eng::scene::Scene scene = eng::scene::loadBuiltin("railings");
-    uint32_t k = 1;
-    for (;; ++k) {
-        ASSERT_LT(k, 20u) << "the sweep must reach a frame with no loss";
-        eng::vk::DeviceOptions options;
-        options.loseDeviceAtSubmit = k;
-        auto device = agaa::test::makeValidatedDevice(options);
-        bool rendered = false;
-        try {
-            agaa::FrameRenderer renderer(*device, scene);
-            renderer.render(agaaFrame());
-            rendered = true;
-        } catch (const eng::vk::DeviceLost& e) {
-            EXPECT_NE(std::string(e.what()).find("VK_ERROR_DEVICE_LOST"), std::string::npos) << e.what();
-        }
-        agaa::test::expectNoValidationErrors(*device);
-        if (rendered) break;
-    }
+    uint32_t losses = 0;
+    const uint32_t k = sweepFaults<eng::vk::DeviceLost>(
+        scene, 20, [](eng::vk::DeviceOptions& o, uint32_t n) { o.loseDeviceAtSubmit = n; },
+        [&](const std::string& what) {
+            ++losses;
+            EXPECT_NE(what.find("VK_ERROR_DEVICE_LOST"), std::string::npos) << what;
+        });
+    EXPECT_EQ(losses, k - 1) << "every submission before the first clean frame must have reported the loss";
     EXPECT_GE(k, 2u) << "at least the texture upload and the frame itself are submissions";
 }
 
