@@ -27,7 +27,18 @@ const std::vector<MethodInfo>& knownMethods() {
          {"complex"}},
         {"fxaa", "FXAA 3.11 quality (Lottes 2009), preset 39, on the no-AA image", false, false},
         {"agaa",
-         "aggregate G-buffer anti-aliasing: n visibility samples, c aggregates lit once each",
+         "aggregate G-buffer anti-aliasing: n visibility samples, c aggregates lit once each "
+         "(--agaa-generation picks the path; auto by default)",
+         true,
+         true,
+         {"aggregates"}},
+        {"agaa-accumulate",
+         "agaa with the accumulate path: visibility prepass + accumulation kernel into the AG-buffer",
+         true,
+         true,
+         {"aggregates"}},
+        {"agaa-samples",
+         "agaa with the samples path: one per-sample G-buffer pass, aggregated at the top of each tile",
          true,
          true,
          {"aggregates"}},
@@ -69,14 +80,15 @@ std::unique_ptr<Technique> createTechnique(const std::string& method, eng::vk::D
                                            const eng::frame::GpuScene& scene,
                                            const MethodSettings& settings) {
     if (method == "reference")
-        return std::make_unique<Reference>(device, scene,
-                                           ReferenceSettings{settings.samples, settings.effects});
+        return std::make_unique<Reference>(
+            device, scene, ReferenceSettings{settings.samples, settings.effects, settings.sampleRateShading});
     if (method == "noaa")
         return std::make_unique<Reference>(device, scene, ReferenceSettings{1, settings.effects}, "noaa");
     if (method == "simple-complex" || method == "simple-complex-naive") {
         SimpleComplexSettings s; // thresholds: the documented defaults (simple_complex.h)
         s.samples = settings.samples;
         s.effects = settings.effects;
+        s.sampleRateShading = settings.sampleRateShading;
         if (method == "simple-complex-naive") s.schedule = SimpleComplexSchedule::Naive;
         if (!settings.debug.empty() && settings.debug != "complex")
             throw std::invalid_argument("--debug '" + settings.debug + "' is not a debug view of " + method +
@@ -85,7 +97,7 @@ std::unique_ptr<Technique> createTechnique(const std::string& method, eng::vk::D
         return std::make_unique<SimpleComplex>(device, scene, s, method);
     }
     if (method == "fxaa") return std::make_unique<Fxaa>(device, scene, FxaaSettings{});
-    if (method == "agaa") {
+    if (method == "agaa" || method == "agaa-accumulate" || method == "agaa-samples") {
         AggregateSettings s;
         s.samples = settings.samples;
         s.aggregates = settings.aggregates;
@@ -120,6 +132,20 @@ std::unique_ptr<Technique> createTechnique(const std::string& method, eng::vk::D
         s.distance = agaaOption<AggregateDistance>(
             "clustering distance", settings.agaaDistance,
             {{"position", AggregateDistance::Position}, {"plane", AggregateDistance::Plane}});
+        s.generation = agaaOption<AggregateGeneration>("generation", settings.agaaGeneration,
+                                                       {{"auto", AggregateGeneration::Auto},
+                                                        {"accumulate", AggregateGeneration::Accumulate},
+                                                        {"samples", AggregateGeneration::Samples},
+                                                        {"coverage", AggregateGeneration::Coverage}});
+        if (method != "agaa") {
+            if (settings.agaaGeneration != "auto")
+                throw std::invalid_argument("--agaa-generation applies to --method agaa only; " + method +
+                                            " is the " + method.substr(5) + " path already");
+            s.generation =
+                method == "agaa-samples" ? AggregateGeneration::Samples : AggregateGeneration::Accumulate;
+        }
+        s.sampleRateShading = settings.sampleRateShading;
+        s.curvatureRoughness = settings.curvatureRoughness;
         s.breakdown = settings.agaaBreakdown;
         return std::make_unique<AggregateAA>(device, scene, s);
     }

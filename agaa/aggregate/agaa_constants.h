@@ -45,6 +45,20 @@ enum class SubgroupReduction : uint32_t { Off = 0, On = 1, Auto = 2 };
 // however far apart (SBAA's plane predicate), so a flat surface at grazing angles stays one
 // aggregate.
 enum class AggregateDistance : uint32_t { Position = 0, Plane = 1 };
+// How the aggregates are generated (agaa/aggregate/README.md, "Generation paths"):
+//  - Accumulate: the visibility prepass, Algorithm 1 on its depth and face normals, then the
+//    accumulation kernel rasterises the scene again and sums each fragment into the AG-buffer
+//    (paper sections 3.3-3.4): 2 raster passes, c x 20 bytes per pixel of aggregates;
+//  - Samples: the UE4 variant (seed 004): one raster pass writes the per-sample G-buffer (the
+//    reference's, agaa/common/sample_gbuffer.h), Algorithm 1 runs on its depth and shading normal
+//    with metal and dielectric kept apart, and the lighting pass averages each aggregate's samples
+//    at the top of its tile: 1 raster pass, the whole per-sample G-buffer in memory;
+//  - Coverage: the paper's blend-based coverage routing into c-sample targets. It needs mixed
+//    attachment samples and a sample-mask override (VK_NV_framebuffer_mixed_samples or
+//    VK_AMD_mixed_attachment_samples, and VK_NV_sample_mask_override_coverage); it is not built:
+//    no device that offers both was available to test it, so it is refused by name;
+//  - Auto: the rule of AggregateAA's constructor (measured in the README).
+enum class AggregateGeneration : uint32_t { Accumulate = 0, Samples = 1, Coverage = 2, Auto = 3 };
 // Parts a benchmark can remove (AggregateSettings::breakdown bits; specialisation constants).
 namespace AggregateBreakdown {
 inline constexpr uint32_t kLightingWithoutShading = 1;   // lighting.glsl: step 3 skipped
@@ -68,6 +82,13 @@ struct AggregateSettings {
     AggregateAtomics atomics = AggregateAtomics::Auto;
     SubgroupReduction subgroupReduction = SubgroupReduction::Auto;
     AggregateDistance distance = AggregateDistance::Position;
+    AggregateGeneration generation = AggregateGeneration::Auto;
+    // Samples path only: sample-rate shading in the fill pass (every sample runs the material),
+    // and Kaplanyan curvature roughness there (seed 004's constants; common/curvature_roughness.glsl).
+    bool sampleRateShading = false;
+    bool curvatureRoughness = false;
+    float curvatureMaxFootprint = 0.3f;
+    float curvatureBoost = 2.0f;
     // Benchmark support (agaa-timings --breakdown): AggregateBreakdown bits, each removing one
     // part of one pass so that the difference to a full run is that part's cost. Not an image.
     uint32_t breakdown = 0;

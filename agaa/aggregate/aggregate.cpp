@@ -7,6 +7,7 @@
 #include "shared/clustering.h"
 
 #include <algorithm>
+#include <stdexcept>
 
 namespace agaa {
 namespace rg = eng::rg;
@@ -41,8 +42,10 @@ FrameTargets AggregateAA::addPasses(rg::Graph& graph, const FrameInputs& in) {
     const uint32_t pixels = in.width * in.height;
     const eng::frame::GpuScene* scene = in.scene;
 
+    const bool samplesPath = m_settings.generation == AggregateGeneration::Samples;
     std::vector<VkPipeline> visibilityPipelines, generationPipelines;
-    for (const eng::scene::Draw& draw : scene->scene().draws) {
+    for (const eng::scene::Draw& draw :
+         samplesPath ? std::vector<eng::scene::Draw>{} : scene->scene().draws) {
         const eng::scene::Material& m = scene->scene().materials.at(draw.material);
         const bool masked = m.alphaMode == eng::scene::AlphaMode::Mask || m_features.forced;
         visibilityPipelines.push_back(visibilityPipeline(
@@ -76,51 +79,59 @@ FrameTargets AggregateAA::addPasses(rg::Graph& graph, const FrameInputs& in) {
         vkCmdSetScissor(cmd, 0, 1, &scissor);
     };
 
-    // ---- 1. visibility prepass -------------------------------------------------------------
+    // ---- 1. visibility prepass, or the samples path's per-sample G-buffer ------------------
     struct Visibility {
         rg::Buffer frame, agaa, materials;
         rg::Texture depth, normal;
     };
+    SampleGBuffer gbuffer;
+    if (samplesPath) gbuffer = m_gbuffer->add(graph, in);
     const rg::TextureDesc sampleDesc{VK_FORMAT_UNDEFINED, in.width, in.height, layers, VK_SAMPLE_COUNT_4_BIT};
     auto desc = [&](VkFormat f) {
         rg::TextureDesc d = sampleDesc;
         d.format = f;
         return d;
     };
-    const Visibility& vis = graph.addGraphics<Visibility>(
-        "agaa.visibility",
-        [&](rg::Builder& b, Visibility& d) {
-            d.frame = b.read(in.frameConstants, rg::Use::UniformRead);
-            d.agaa = b.read(agaaConstants, rg::Use::UniformRead);
-            d.materials = b.read(materials, rg::Use::StorageReadFragment);
-            d.depth =
-                b.write(b.create("agaa.visibility.depth", desc(m_depthFormat)), rg::Use::DepthStencilWrite);
-            d.normal = b.write(b.create("agaa.visibility.normal", desc(VK_FORMAT_R8G8_UNORM)),
-                               rg::Use::ColorAttachment);
-        },
-        [=, this](const rg::Context& ctx, const Visibility& d) {
-            VkCommandBuffer cmd = ctx.cmd();
-            VkRenderingAttachmentInfo color =
-                attachment(ctx.texture(d.normal).view, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
-                           VK_ATTACHMENT_LOAD_OP_CLEAR);
-            VkRenderingAttachmentInfo depth =
-                attachment(ctx.texture(d.depth).view, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL,
-                           VK_ATTACHMENT_LOAD_OP_CLEAR);
-            depth.clearValue.depthStencil = {0.0f, 0}; // reversed Z: 0 = far (sky); stencil 0 for generation
-            beginRendering(cmd, in.width, in.height, layers, &color, depth);
-            vk::PushDescriptors()
-                .uniform(0, ctx.buffer(d.frame).buffer)
-                .storage(1, ctx.buffer(d.materials).buffer)
-                .uniform(2, ctx.buffer(d.agaa).buffer)
-                .push(m_device, cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, m_visibilityLayout.layout);
-            drawScene(cmd, m_visibilityLayout.layout, visibilityPipelines);
-            vkCmdEndRendering(cmd);
-        });
+    const Visibility* visPass = nullptr;
+    if (!samplesPath)
+        visPass = &graph.addGraphics<Visibility>(
+            "agaa.visibility",
+            [&](rg::Builder& b, Visibility& d) {
+                d.frame = b.read(in.frameConstants, rg::Use::UniformRead);
+                d.agaa = b.read(agaaConstants, rg::Use::UniformRead);
+                d.materials = b.read(materials, rg::Use::StorageReadFragment);
+                d.depth = b.write(b.create("agaa.visibility.depth", desc(m_depthFormat)),
+                                  rg::Use::DepthStencilWrite);
+                d.normal = b.write(b.create("agaa.visibility.normal", desc(VK_FORMAT_R8G8_UNORM)),
+                                   rg::Use::ColorAttachment);
+            },
+            [=, this](const rg::Context& ctx, const Visibility& d) {
+                VkCommandBuffer cmd = ctx.cmd();
+                VkRenderingAttachmentInfo color =
+                    attachment(ctx.texture(d.normal).view, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+                               VK_ATTACHMENT_LOAD_OP_CLEAR);
+                VkRenderingAttachmentInfo depth =
+                    attachment(ctx.texture(d.depth).view, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL,
+                               VK_ATTACHMENT_LOAD_OP_CLEAR);
+                depth.clearValue.depthStencil = {0.0f,
+                                                 0}; // reversed Z: 0 = far (sky); stencil 0 for generation
+                beginRendering(cmd, in.width, in.height, layers, &color, depth);
+                vk::PushDescriptors()
+                    .uniform(0, ctx.buffer(d.frame).buffer)
+                    .storage(1, ctx.buffer(d.materials).buffer)
+                    .uniform(2, ctx.buffer(d.agaa).buffer)
+                    .push(m_device, cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, m_visibilityLayout.layout);
+                drawScene(cmd, m_visibilityLayout.layout, visibilityPipelines);
+                vkCmdEndRendering(cmd);
+            });
+    // What the clustering reads: the prepass's depth and face normals, or the G-buffer's.
+    const rg::Texture sampleDepth = samplesPath ? gbuffer.depth : visPass->depth;
+    const rg::Texture sampleNormal = samplesPath ? gbuffer.normal : visPass->normal;
 
     // ---- 2. clustering ----------------------------------------------------------------------
     struct Cluster {
         rg::Buffer frame, agaa, metadata;
-        rg::Texture depth, normal, count;
+        rg::Texture depth, normal, albedoMetal, count;
     };
     const uint32_t words = shared::metadataWords(m_settings.samples, c);
     const Cluster& cl = graph.addCompute<Cluster>(
@@ -128,8 +139,9 @@ FrameTargets AggregateAA::addPasses(rg::Graph& graph, const FrameInputs& in) {
         [&](rg::Builder& b, Cluster& d) {
             d.frame = b.read(in.frameConstants, rg::Use::UniformRead);
             d.agaa = b.read(agaaConstants, rg::Use::UniformRead);
-            d.depth = b.read(vis.depth, rg::Use::SampledCompute);
-            d.normal = b.read(vis.normal, rg::Use::SampledCompute);
+            d.depth = b.read(sampleDepth, rg::Use::SampledCompute);
+            d.normal = b.read(sampleNormal, rg::Use::SampledCompute);
+            if (samplesPath) d.albedoMetal = b.read(gbuffer.albedoMetal, rg::Use::SampledCompute);
             // c = 1 needs no metadata bits; keep a minimal buffer so the binding stays valid.
             d.metadata = b.write(
                 b.create("agaa.metadata", {std::max<VkDeviceSize>(4, VkDeviceSize(pixels) * words * 4)}),
@@ -141,18 +153,19 @@ FrameTargets AggregateAA::addPasses(rg::Graph& graph, const FrameInputs& in) {
         [=, this](const rg::Context& ctx, const Cluster& d) {
             VkCommandBuffer cmd = ctx.cmd();
             vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, m_clusterPipeline);
-            vk::PushDescriptors()
-                .uniform(0, ctx.buffer(d.frame).buffer)
+            vk::PushDescriptors pd;
+            pd.uniform(0, ctx.buffer(d.frame).buffer)
                 .uniform(1, ctx.buffer(d.agaa).buffer)
                 .sampled(2, m_fetchSampler, ctx.texture(d.depth).sampledView)
                 .sampled(3, m_fetchSampler, ctx.texture(d.normal).sampledView)
                 .storage(4, ctx.buffer(d.metadata).buffer)
-                .storageImage(5, ctx.texture(d.count).view)
-                .push(m_device, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, m_clusterLayout.layout);
+                .storageImage(5, ctx.texture(d.count).view);
+            if (samplesPath) pd.sampled(6, m_fetchSampler, ctx.texture(d.albedoMetal).sampledView);
+            pd.push(m_device, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, m_clusterLayout.layout);
             vkCmdDispatch(cmd, groups(in.width, 8), groups(in.height, 8), 1);
         });
-    m_resources.depth = vis.depth;
-    m_resources.normal = vis.normal;
+    m_resources.depth = sampleDepth;
+    m_resources.normal = sampleNormal;
     m_resources.metadata = cl.metadata;
     m_resources.aggregateCount = cl.count;
 
@@ -178,7 +191,7 @@ FrameTargets AggregateAA::addPasses(rg::Graph& graph, const FrameInputs& in) {
                 d.agaa = b.read(agaaConstants, rg::Use::UniformRead);
                 d.metadata = b.read(cl.metadata, rg::Use::StorageReadCompute);
                 d.count = b.read(cl.count, rg::Use::StorageImageReadCompute);
-                d.depth = b.read(vis.depth, rg::Use::SampledCompute);
+                d.depth = b.read(sampleDepth, rg::Use::SampledCompute);
                 d.hdr = b.write(b.create("agaa.debug.hdr", outDesc), rg::Use::StorageImageWriteCompute);
                 d.display =
                     b.write(b.create("agaa.debug.display", outDesc), rg::Use::StorageImageWriteCompute);
@@ -203,103 +216,130 @@ FrameTargets AggregateAA::addPasses(rg::Graph& graph, const FrameInputs& in) {
         return {dbg.hdr, dbg.display, dbg.events};
     }
 
-    // ---- 3. AG-buffer generation (accumulation kernel) -------------------------------------
-    struct Clear {
-        rg::Buffer agBuffer;
-    };
-    const VkDeviceSize agBytes = VkDeviceSize(pixels) * c * shared::kAggregateWords * 4;
-    const Clear& clear = graph.addPass<Clear>(
-        "agaa.clear", rg::PassKind::Transfer,
-        [&](rg::Builder& b, Clear& d) {
-            d.agBuffer = b.write(b.create("agaa.agBuffer", {agBytes}), rg::Use::TransferDst);
-        },
-        [](const rg::Context& ctx, const Clear& d) {
-            vkCmdFillBuffer(ctx.cmd(), ctx.buffer(d.agBuffer).buffer, 0, VK_WHOLE_SIZE, 0);
-        });
-    rg::Buffer records;
-    if (m_recordTarget) {
-        struct ClearRecords {
-            rg::Buffer records;
-        };
-        rg::Buffer imported =
-            graph.importBuffer("agaa.fragmentRecords", {m_recordTarget->buffer, m_recordTarget->size},
-                               std::nullopt, std::nullopt);
-        records = graph
-                      .addPass<ClearRecords>(
-                          "agaa.clearRecords", rg::PassKind::Transfer,
-                          [&](rg::Builder& b, ClearRecords& d) {
-                              d.records = b.write(imported, rg::Use::TransferDst);
-                          },
-                          [](const rg::Context& ctx, const ClearRecords& d) {
-                              vkCmdFillBuffer(ctx.cmd(), ctx.buffer(d.records).buffer, 0, 4, 0); // count only
-                          })
-                      .records;
-    }
-    struct Generation {
-        rg::Buffer frame, agaa, materials, metadata, agBuffer, records;
-        rg::Texture depth, emissive;
-    };
+    // ---- 3. AG-buffer generation (accumulation kernel; the samples path has none) -----------
     const bool emissive = m_hasEmissive;
-    const bool recording = m_recordTarget != nullptr;
-    const bool int64 = m_settings.atomics == AggregateAtomics::Bits64;
-    const VkPipelineLayout generationLayout = recording ? m_recordLayout.layout : m_generationLayout.layout;
-    const Generation& gen = graph.addGraphics<Generation>(
-        "agaa.generation",
-        [&](rg::Builder& b, Generation& d) {
-            d.frame = b.read(in.frameConstants, rg::Use::UniformRead);
-            d.agaa = b.read(agaaConstants, rg::Use::UniformRead);
-            d.materials = b.read(materials, rg::Use::StorageReadFragment);
-            d.metadata = b.read(cl.metadata, rg::Use::StorageReadFragment);
-            d.agBuffer = b.readWrite(clear.agBuffer, rg::Use::StorageReadWriteFragment);
-            d.depth = b.readWrite(vis.depth, rg::Use::DepthStencilRead); // EQUAL test, stencil written
-            if (emissive)
-                d.emissive = b.write(b.create("agaa.emissive", desc(VK_FORMAT_B10G11R11_UFLOAT_PACK32)),
-                                     rg::Use::ColorAttachment);
-            if (recording) d.records = b.readWrite(records, rg::Use::StorageReadWriteFragment);
-        },
-        [=, this](const rg::Context& ctx, const Generation& d) {
-            VkCommandBuffer cmd = ctx.cmd();
-            VkRenderingAttachmentInfo depth =
-                attachment(ctx.texture(d.depth).view, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL,
-                           VK_ATTACHMENT_LOAD_OP_LOAD);
-            VkRenderingAttachmentInfo color{};
-            if (emissive)
-                color = attachment(ctx.texture(d.emissive).view, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
-                                   VK_ATTACHMENT_LOAD_OP_CLEAR);
-            beginRendering(cmd, in.width, in.height, layers, emissive ? &color : nullptr, depth);
-            vk::PushDescriptors pd;
-            pd.uniform(0, ctx.buffer(d.frame).buffer)
-                .storage(1, ctx.buffer(d.materials).buffer)
-                .uniform(2, ctx.buffer(d.agaa).buffer)
-                .storage(3, ctx.buffer(d.metadata).buffer)
-                .storage(4, ctx.buffer(d.agBuffer).buffer);
-            if (recording)
-                pd.storage(5, ctx.buffer(d.records).buffer);
-            else if (int64)
-                pd.storage(6, ctx.buffer(d.agBuffer).buffer); // the same buffer as 64-bit words
-            pd.push(m_device, cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, generationLayout);
-            drawScene(cmd, generationLayout, generationPipelines);
-            vkCmdEndRendering(cmd);
-        });
-    m_resources.agBuffer = gen.agBuffer;
-    m_resources.depth = gen.depth; // the generation pass wrote the stencil: later readers use that version
+    rg::Buffer agBuffer;
+    rg::Texture lightingDepth = sampleDepth, emissiveSamples;
+    if (!samplesPath) {
+        struct Clear {
+            rg::Buffer agBuffer;
+        };
+        const VkDeviceSize agBytes = VkDeviceSize(pixels) * c * shared::kAggregateWords * 4;
+        const Clear& clear = graph.addPass<Clear>(
+            "agaa.clear", rg::PassKind::Transfer,
+            [&](rg::Builder& b, Clear& d) {
+                d.agBuffer = b.write(b.create("agaa.agBuffer", {agBytes}), rg::Use::TransferDst);
+            },
+            [](const rg::Context& ctx, const Clear& d) {
+                vkCmdFillBuffer(ctx.cmd(), ctx.buffer(d.agBuffer).buffer, 0, VK_WHOLE_SIZE, 0);
+            });
+        rg::Buffer records;
+        if (m_recordTarget) {
+            struct ClearRecords {
+                rg::Buffer records;
+            };
+            rg::Buffer imported =
+                graph.importBuffer("agaa.fragmentRecords", {m_recordTarget->buffer, m_recordTarget->size},
+                                   std::nullopt, std::nullopt);
+            records =
+                graph
+                    .addPass<ClearRecords>(
+                        "agaa.clearRecords", rg::PassKind::Transfer,
+                        [&](rg::Builder& b, ClearRecords& d) {
+                            d.records = b.write(imported, rg::Use::TransferDst);
+                        },
+                        [](const rg::Context& ctx, const ClearRecords& d) {
+                            vkCmdFillBuffer(ctx.cmd(), ctx.buffer(d.records).buffer, 0, 4, 0); // count only
+                        })
+                    .records;
+        }
+        struct Generation {
+            rg::Buffer frame, agaa, materials, metadata, agBuffer, records;
+            rg::Texture depth, emissive;
+        };
+        const bool recording = m_recordTarget != nullptr;
+        const bool int64 = m_settings.atomics == AggregateAtomics::Bits64;
+        const VkPipelineLayout generationLayout =
+            recording ? m_recordLayout.layout : m_generationLayout.layout;
+        const Generation& gen = graph.addGraphics<Generation>(
+            "agaa.generation",
+            [&](rg::Builder& b, Generation& d) {
+                d.frame = b.read(in.frameConstants, rg::Use::UniformRead);
+                d.agaa = b.read(agaaConstants, rg::Use::UniformRead);
+                d.materials = b.read(materials, rg::Use::StorageReadFragment);
+                d.metadata = b.read(cl.metadata, rg::Use::StorageReadFragment);
+                d.agBuffer = b.readWrite(clear.agBuffer, rg::Use::StorageReadWriteFragment);
+                d.depth =
+                    b.readWrite(visPass->depth, rg::Use::DepthStencilRead); // EQUAL test, stencil written
+                if (emissive)
+                    d.emissive = b.write(b.create("agaa.emissive", desc(VK_FORMAT_B10G11R11_UFLOAT_PACK32)),
+                                         rg::Use::ColorAttachment);
+                if (recording) d.records = b.readWrite(records, rg::Use::StorageReadWriteFragment);
+            },
+            [=, this](const rg::Context& ctx, const Generation& d) {
+                VkCommandBuffer cmd = ctx.cmd();
+                VkRenderingAttachmentInfo depth =
+                    attachment(ctx.texture(d.depth).view, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL,
+                               VK_ATTACHMENT_LOAD_OP_LOAD);
+                VkRenderingAttachmentInfo color{};
+                if (emissive)
+                    color = attachment(ctx.texture(d.emissive).view, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+                                       VK_ATTACHMENT_LOAD_OP_CLEAR);
+                beginRendering(cmd, in.width, in.height, layers, emissive ? &color : nullptr, depth);
+                vk::PushDescriptors pd;
+                pd.uniform(0, ctx.buffer(d.frame).buffer)
+                    .storage(1, ctx.buffer(d.materials).buffer)
+                    .uniform(2, ctx.buffer(d.agaa).buffer)
+                    .storage(3, ctx.buffer(d.metadata).buffer)
+                    .storage(4, ctx.buffer(d.agBuffer).buffer);
+                if (recording)
+                    pd.storage(5, ctx.buffer(d.records).buffer);
+                else if (int64)
+                    pd.storage(6, ctx.buffer(d.agBuffer).buffer); // the same buffer as 64-bit words
+                pd.push(m_device, cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, generationLayout);
+                drawScene(cmd, generationLayout, generationPipelines);
+                vkCmdEndRendering(cmd);
+            });
+        agBuffer = gen.agBuffer;
+        lightingDepth = gen.depth; // the generation pass wrote the stencil: later readers use that version
+        if (emissive) emissiveSamples = gen.emissive;
+    }
+    m_resources.agBuffer = agBuffer;
+    m_resources.depth = lightingDepth;
 
     // ---- 4. tiled lighting, aggregating at the top of each tile ------------------------------
     struct Lighting {
-        rg::Buffer frame, lights, agaa, metadata, agBuffer, shadowConstants;
+        rg::Buffer frame, lights, agaa, metadata, agBuffer, shadowConstants, exported;
         rg::Texture depth, count, emissive, shadowMap, hdr, display, events;
+        rg::Texture normal, albedoMetal; // samples path: the G-buffer (emissive: its emissive + roughness)
     };
+    rg::Buffer exportTarget;
+    if (m_exportTarget)
+        exportTarget =
+            graph.importBuffer("agaa.aggregateExport", {m_exportTarget->buffer, m_exportTarget->size},
+                               std::nullopt, std::nullopt);
+    const bool exporting = m_exportTarget != nullptr;
     const Lighting& lit = graph.addCompute<Lighting>(
         "agaa.lighting",
         [&](rg::Builder& b, Lighting& d) {
             d.frame = b.read(in.frameConstants, rg::Use::UniformRead);
             d.lights = b.read(in.lights, rg::Use::StorageReadCompute);
             d.agaa = b.read(agaaConstants, rg::Use::UniformRead);
-            d.depth = b.read(gen.depth, rg::Use::SampledCompute);
+            d.depth = b.read(lightingDepth, rg::Use::SampledCompute);
             d.metadata = b.read(cl.metadata, rg::Use::StorageReadCompute);
             d.count = b.read(cl.count, rg::Use::StorageImageReadCompute);
-            d.agBuffer = b.read(gen.agBuffer, rg::Use::StorageReadCompute);
-            if (emissive) d.emissive = b.read(gen.emissive, rg::Use::SampledCompute);
+            if (samplesPath) {
+                d.normal = b.read(gbuffer.normal, rg::Use::SampledCompute);
+                d.albedoMetal = b.read(gbuffer.albedoMetal, rg::Use::SampledCompute);
+                d.emissive = b.read(gbuffer.emissiveRoughness, rg::Use::SampledCompute);
+                if (exporting) {
+                    d.exported = b.write(exportTarget, rg::Use::StorageWriteCompute);
+                    b.sideEffect();
+                }
+            } else {
+                d.agBuffer = b.read(agBuffer, rg::Use::StorageReadCompute);
+                if (emissive) d.emissive = b.read(emissiveSamples, rg::Use::SampledCompute);
+            }
             if (shadows) {
                 d.shadowMap = b.read(shadowMaps.map, rg::Use::SampledCompute);
                 d.shadowConstants = b.read(shadowMaps.constants, rg::Use::UniformRead);
@@ -310,7 +350,8 @@ FrameTargets AggregateAA::addPasses(rg::Graph& graph, const FrameInputs& in) {
         },
         [=, this](const rg::Context& ctx, const Lighting& d) {
             VkCommandBuffer cmd = ctx.cmd();
-            vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, m_lightingPipeline);
+            vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE,
+                              exporting ? m_exportPipeline : m_lightingPipeline);
             vk::PushDescriptors pd;
             pd.uniform(0, ctx.buffer(d.frame).buffer)
                 .storage(1, ctx.buffer(d.lights).buffer)
@@ -318,11 +359,18 @@ FrameTargets AggregateAA::addPasses(rg::Graph& graph, const FrameInputs& in) {
                 .sampled(3, m_fetchSampler, ctx.texture(d.depth).sampledView)
                 .storage(4, ctx.buffer(d.metadata).buffer)
                 .storageImage(5, ctx.texture(d.count).view)
-                .storage(6, ctx.buffer(d.agBuffer).buffer)
                 .storageImage(7, ctx.texture(d.hdr).view)
                 .storageImage(8, ctx.texture(d.display).view)
                 .storageImage(9, ctx.texture(d.events).view);
-            if (emissive) pd.sampled(10, m_fetchSampler, ctx.texture(d.emissive).sampledView);
+            if (samplesPath) {
+                pd.sampled(6, m_fetchSampler, ctx.texture(d.normal).sampledView)
+                    .sampled(10, m_fetchSampler, ctx.texture(d.emissive).sampledView)
+                    .sampled(13, m_fetchSampler, ctx.texture(d.albedoMetal).sampledView);
+                if (exporting) pd.storage(14, ctx.buffer(d.exported).buffer);
+            } else {
+                pd.storage(6, ctx.buffer(d.agBuffer).buffer);
+                if (emissive) pd.sampled(10, m_fetchSampler, ctx.texture(d.emissive).sampledView);
+            }
             if (shadows)
                 pd.sampled(11, m_shadow->sampler(), ctx.texture(d.shadowMap).sampledView)
                     .uniform(12, ctx.buffer(d.shadowConstants).buffer);
@@ -333,6 +381,9 @@ FrameTargets AggregateAA::addPasses(rg::Graph& graph, const FrameInputs& in) {
 }
 
 void AggregateAA::addSampleReadback(rg::Graph& graph, const FrameInputs& in, const vk::Buffer& host) {
+    if (m_settings.generation == AggregateGeneration::Samples)
+        throw std::logic_error(
+            "agaa: the sample readback reads the visibility prepass (accumulate path only)");
     if (!m_readbackPipeline)
         m_readbackPipeline = vk::createComputePipeline(m_device, kAgaaSampleReadbackComp,
                                                        m_readbackLayout.layout, {}, "agaa.sampleReadback");

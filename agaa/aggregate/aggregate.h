@@ -1,13 +1,19 @@
 #pragma once
-// Aggregate G-Buffer Anti-Aliasing (Crassin et al.; DESIGN section 4) as a render-graph node:
+// Aggregate G-Buffer Anti-Aliasing (Crassin et al.; DESIGN section 4) as a render-graph node.
+// The accumulate generation path (AggregateGeneration::Accumulate):
 //   agaa.visibility  n-sample depth + 8-bit face normals (layered 4x emulation above 4)
 //   agaa.cluster     Algorithm 1 -> bit-packed metadata + aggregate count per pixel
 //   agaa.generation  accumulation kernel: fixed-point integer atomics into c aggregates per pixel
-//   agaa.lighting    tiled deferred, aggregates built at the top of each tile, each lit once
+//   agaa.lighting    tiled deferred, aggregates normalised at the top of each tile, each lit once
+// The samples path (AggregateGeneration::Samples, the UE4 variant of seed 004):
+//   agaa.gbuffer     the per-sample G-buffer (agaa/common/sample_gbuffer.h): the only raster pass
+//   agaa.cluster     Algorithm 1 on the G-buffer's depth and shading normal, models kept apart
+//   agaa.lighting    each aggregate averaged from its samples at the top of the tile, lit once
 // With --debug aggregates the lighting is replaced by a view of the clustering, and the graph
 // culls the generation passes nothing reads any more.
 
 #include "agaa/aggregate/agaa_constants.h"
+#include "agaa/common/sample_gbuffer.h"
 #include "agaa/common/shadow_map.h"
 #include "agaa/common/technique.h"
 #include "engine/vk/device.h"
@@ -22,10 +28,10 @@ namespace agaa {
 
 // Handles of the passes' outputs from the last addPasses(), for tests and tools.
 struct AggregateResources {
-    eng::rg::Texture depth, normal; // per-sample visibility
+    eng::rg::Texture depth, normal; // per-sample visibility (samples path: the G-buffer's)
     eng::rg::Buffer metadata;
     eng::rg::Texture aggregateCount;
-    eng::rg::Buffer agBuffer; // after generation
+    eng::rg::Buffer agBuffer; // after generation (accumulate path only)
     eng::rg::Buffer agaaConstants;
 };
 
@@ -54,6 +60,12 @@ class AggregateAA final : public Technique {
     // the first addPasses() (it selects the generation pipeline variant); nullptr turns it off.
     void setFragmentRecordTarget(const eng::vk::Buffer* host) { m_recordTarget = host; }
 
+    // Test support, samples path without emissive or shadows: the lighting pass writes what its
+    // step 1 read and built (shaders/glsl/agaa/lighting.glsl AGAA_EXPORT: 16 floats per sample,
+    // then 16 per aggregate) into `host`, a buffer of pixels * (n + c) * 64 bytes. Set before the
+    // first addPasses(); nullptr turns it off.
+    void setAggregateExportTarget(const eng::vk::Buffer* host);
+
     // Test support: copies the clustering kernel's per-sample inputs (uvec2 per sample: depth
     // bits, theta | phi << 8) into `host` (pixels * n * 8 bytes). Call after addPasses().
     void addSampleReadback(eng::rg::Graph& graph, const FrameInputs& inputs, const eng::vk::Buffer& host);
@@ -61,6 +73,8 @@ class AggregateAA final : public Technique {
   private:
     VkPipeline visibilityPipeline(AlphaPath alpha, bool doubleSided);
     VkPipeline generationPipeline(bool doubleSided);
+    VkPipeline lightingPipeline(bool exporting); // the lighting variant for this path and scene
+    void resolveGeneration(); // Auto -> a path, or MissingCapability for a path the device lacks
     void createLayouts(const eng::frame::GpuScene& scene);
     void release(); // the destructor's work, also for a constructor that throws
 
@@ -78,12 +92,16 @@ class AggregateAA final : public Technique {
         m_lightingLayout, m_debugLayout, m_readbackLayout;
     std::array<VkPipeline, 6> m_visibilityPipelines{}; // [alpha path][double-sided]
     std::unique_ptr<ShadowMapPass> m_shadow;
+    std::unique_ptr<SampleGBufferPass> m_gbuffer;      // samples path only
     std::array<VkPipeline, 4> m_generationPipelines{}; // [recording][double-sided]
     VkPipeline m_clusterPipeline = VK_NULL_HANDLE, m_lightingPipeline = VK_NULL_HANDLE,
-               m_debugPipeline = VK_NULL_HANDLE, m_readbackPipeline = VK_NULL_HANDLE;
+               m_exportPipeline = VK_NULL_HANDLE, m_debugPipeline = VK_NULL_HANDLE,
+               m_readbackPipeline = VK_NULL_HANDLE;
     VkSampler m_fetchSampler = VK_NULL_HANDLE;
     AggregateResources m_resources;
     const eng::vk::Buffer* m_recordTarget = nullptr;
+    const eng::vk::Buffer* m_exportTarget = nullptr;
+    std::string m_generationCause; // why this path (stats variants)
 };
 
 } // namespace agaa

@@ -4,6 +4,7 @@
 
 #include "engine/vk/check.h"
 #include "shaders/agaa/cluster_comp.h"
+#include "shaders/agaa/cluster_gbuffer_comp.h"
 #include "shaders/agaa/debug_aggregates_comp.h"
 #include "shaders/agaa/generation_emissive_frag.h"
 #include "shaders/agaa/generation_emissive_int64_frag.h"
@@ -17,6 +18,11 @@
 #include "shaders/agaa/lighting_comp.h"
 #include "shaders/agaa/lighting_emissive_comp.h"
 #include "shaders/agaa/lighting_emissive_shadow_comp.h"
+#include "shaders/agaa/lighting_gbuffer_comp.h"
+#include "shaders/agaa/lighting_gbuffer_emissive_comp.h"
+#include "shaders/agaa/lighting_gbuffer_emissive_shadow_comp.h"
+#include "shaders/agaa/lighting_gbuffer_export_comp.h"
+#include "shaders/agaa/lighting_gbuffer_shadow_comp.h"
 #include "shaders/agaa/lighting_shadow_comp.h"
 #include "shaders/agaa/sample_readback_comp.h"
 #include "shaders/agaa/scene_vert.h"
@@ -50,14 +56,19 @@ AggregateAA::AggregateAA(vk::Device& device, const eng::frame::GpuScene& scene,
     if (!caps.supportsSamples(4))
         throw vk::MissingCapability(caps.deviceName +
                                     " lacks 4x MSAA (AGAA rasterises n >= 4 samples as 4x layers)");
-    if (!caps.postDepthCoverage)
+    resolveGeneration();
+    const bool samplesPath = m_settings.generation == AggregateGeneration::Samples;
+    if (!samplesPath && !caps.postDepthCoverage)
         throw vk::MissingCapability(caps.deviceName +
                                     " lacks VK_EXT_post_depth_coverage (the accumulation kernel needs the "
-                                    "post-depth-test sample mask)");
-    // The paper's 4-byte depth + stencil per sample; D32S8 where D24S8 is not offered at 4x.
+                                    "post-depth-test sample mask; allowed here: --agaa-generation samples)");
+    // The paper's 4-byte depth + stencil per sample; D32S8 where D24S8 is not offered at 4x. The
+    // samples path uses the G-buffer's D32 depth.
     const VkImageUsageFlags depthUsage =
         VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT;
-    if (vk::supportsImage(device, VK_FORMAT_D24_UNORM_S8_UINT, depthUsage, VK_SAMPLE_COUNT_4_BIT))
+    if (samplesPath)
+        m_depthFormat = SampleGBufferPass::kDepthFormat;
+    else if (vk::supportsImage(device, VK_FORMAT_D24_UNORM_S8_UINT, depthUsage, VK_SAMPLE_COUNT_4_BIT))
         m_depthFormat = VK_FORMAT_D24_UNORM_S8_UINT;
     else if (vk::supportsImage(device, VK_FORMAT_D32_SFLOAT_S8_UINT, depthUsage, VK_SAMPLE_COUNT_4_BIT))
         m_depthFormat = VK_FORMAT_D32_SFLOAT_S8_UINT;
@@ -99,33 +110,92 @@ AggregateAA::AggregateAA(vk::Device& device, const eng::frame::GpuScene& scene,
                              vk::MemoryUse::Upload, "agaa.constants");
         m_fetchSampler = vk::createSampler(device, VK_FILTER_NEAREST, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE,
                                            0.0f, "agaa.fetchSampler");
+        if (samplesPath)
+            m_gbuffer = std::make_unique<SampleGBufferPass>(
+                device, scene, settings.samples, "agaa", m_features,
+                GBufferOptions{settings.sampleRateShading, settings.curvatureRoughness,
+                               settings.curvatureMaxFootprint, settings.curvatureBoost});
         createLayouts(scene);
 
         m_clusterPipeline = vk::createComputePipeline(
-            device, kAgaaClusterComp, m_clusterLayout.layout,
-            {{settings.samples, settings.aggregates, uint32_t(settings.distance)}}, "agaa.cluster");
-        const bool shadows = m_shadow->enabled();
-        std::span<const uint32_t> lighting =
-            m_hasEmissive
-                ? (shadows ? std::span<const uint32_t>(kAgaaLightingEmissiveShadowComp)
-                           : kAgaaLightingEmissiveComp)
-                : (shadows ? std::span<const uint32_t>(kAgaaLightingShadowComp) : kAgaaLightingComp);
-        std::vector<uint32_t> lightingSpec =
-            effectSpecialization(m_features, settings.samples, settings.aggregates,
-                                 settings.effects.shadowTaps, settings.effects.shadowFootprint);
-        lightingSpec.push_back(m_settings.shading == AggregateShading::Compact ? 1u : 0u); // id 7
-        lightingSpec.push_back(settings.breakdown & AggregateBreakdown::kLightingWithoutShading ? 1u
-                                                                                                : 0u); // id 8
-        lightingSpec.push_back(uint32_t(m_settings.ndf));                                              // id 9
-        lightingSpec.push_back(uint32_t(m_settings.routing)); // id 10
-        m_lightingPipeline = vk::createComputePipeline(device, lighting, m_lightingLayout.layout,
-                                                       {lightingSpec}, "agaa.lighting");
+            device, samplesPath ? std::span<const uint32_t>(kAgaaClusterGbufferComp) : kAgaaClusterComp,
+            m_clusterLayout.layout, {{settings.samples, settings.aggregates, uint32_t(settings.distance)}},
+            "agaa.cluster");
+        m_lightingPipeline = lightingPipeline(false);
         m_debugPipeline = vk::createComputePipeline(device, kAgaaDebugAggregatesComp, m_debugLayout.layout,
                                                     {}, "agaa.debug.aggregates");
     } catch (...) {
         release();
         throw;
     }
+}
+
+void AggregateAA::resolveGeneration() {
+    const vk::Capabilities& caps = m_device.caps();
+    if (m_settings.generation == AggregateGeneration::Coverage) {
+        std::string missing;
+        if (!caps.mixedSamples)
+            missing = "mixed attachment samples (VK_NV_framebuffer_mixed_samples or "
+                      "VK_AMD_mixed_attachment_samples)";
+        if (!caps.coverageOverride)
+            missing += (missing.empty() ? "" : " and ") + std::string("VK_NV_sample_mask_override_coverage");
+        if (!missing.empty())
+            throw vk::MissingCapability(
+                caps.deviceName + " lacks " + missing +
+                " (--agaa-generation coverage; allowed here: accumulate, samples, auto)");
+        throw vk::MissingCapability(
+            "--agaa-generation coverage is not built: " + caps.deviceName +
+            " offers mixed samples and the coverage override, but the blend-based route was never run on "
+            "such a device (allowed: accumulate, samples, auto)");
+    }
+    if (m_settings.generation != AggregateGeneration::Auto) {
+        m_generationCause = "setting --agaa-generation";
+        return;
+    }
+    // Rule (agaa/aggregate/README.md, "Generation paths", measured at 320x180 and 640x360):
+    // the samples path rasterises the scene once instead of twice, so it is chosen wherever its
+    // per-sample G-buffer stays within kSamplesPathMaxSamples samples per pixel; above that the
+    // lighting walk's n G-buffer fetches per pixel and the G-buffer's memory outweigh the raster
+    // pass it saves.
+    constexpr uint32_t kSamplesPathMaxSamples = 16;
+    const bool samples = m_settings.samples <= kSamplesPathMaxSamples;
+    m_settings.generation = samples ? AggregateGeneration::Samples : AggregateGeneration::Accumulate;
+    m_generationCause = "n = " + std::to_string(m_settings.samples) + (samples ? " <= " : " > ") +
+                        std::to_string(kSamplesPathMaxSamples) + " samples per pixel";
+}
+
+VkPipeline AggregateAA::lightingPipeline(bool exporting) {
+    const bool shadows = m_shadow->enabled();
+    std::span<const uint32_t> code;
+    if (m_settings.generation == AggregateGeneration::Samples) {
+        if (exporting && (m_hasEmissive || shadows))
+            throw std::logic_error(
+                "agaa: the aggregate export supports scenes without emissive or shadows only");
+        code = exporting       ? std::span<const uint32_t>(kAgaaLightingGbufferExportComp)
+               : m_hasEmissive ? (shadows ? std::span<const uint32_t>(kAgaaLightingGbufferEmissiveShadowComp)
+                                          : kAgaaLightingGbufferEmissiveComp)
+                               : (shadows ? std::span<const uint32_t>(kAgaaLightingGbufferShadowComp)
+                                          : kAgaaLightingGbufferComp);
+    } else {
+        code = m_hasEmissive
+                   ? (shadows ? std::span<const uint32_t>(kAgaaLightingEmissiveShadowComp)
+                              : kAgaaLightingEmissiveComp)
+                   : (shadows ? std::span<const uint32_t>(kAgaaLightingShadowComp) : kAgaaLightingComp);
+    }
+    std::vector<uint32_t> spec =
+        effectSpecialization(m_features, m_settings.samples, m_settings.aggregates,
+                             m_settings.effects.shadowTaps, m_settings.effects.shadowFootprint);
+    spec.push_back(m_settings.shading == AggregateShading::Compact ? 1u : 0u);                    // id 7
+    spec.push_back(m_settings.breakdown & AggregateBreakdown::kLightingWithoutShading ? 1u : 0u); // id 8
+    spec.push_back(uint32_t(m_settings.ndf));                                                     // id 9
+    spec.push_back(uint32_t(m_settings.routing));                                                 // id 10
+    return vk::createComputePipeline(m_device, code, m_lightingLayout.layout, {spec},
+                                     exporting ? "agaa.lighting.export" : "agaa.lighting");
+}
+
+void AggregateAA::setAggregateExportTarget(const vk::Buffer* host) {
+    m_exportTarget = host;
+    if (host && !m_exportPipeline) m_exportPipeline = lightingPipeline(true);
 }
 
 void AggregateAA::createLayouts(const eng::frame::GpuScene& scene) {
@@ -147,18 +217,33 @@ void AggregateAA::createLayouts(const eng::frame::GpuScene& scene) {
     if (m_settings.atomics == AggregateAtomics::Bits64) generation.pushBindings.push_back({6, kSsbo, kFs});
     m_generationLayout = vk::createPipelineLayout(m_device, generation, "agaa.generation.layout");
 
+    const bool samplesPath = m_settings.generation == AggregateGeneration::Samples;
     vk::LayoutDesc cluster;
     cluster.pushBindings = {{0, kUbo, kCs},     {1, kUbo, kCs},  {2, kSampled, kCs},
                             {3, kSampled, kCs}, {4, kSsbo, kCs}, {5, kImage, kCs}};
+    if (samplesPath) cluster.pushBindings.push_back({6, kSampled, kCs}); // the G-buffer's albedo + metallic
     m_clusterLayout = vk::createPipelineLayout(m_device, cluster, "agaa.cluster.layout");
 
+    // Binding 6: the AG-buffer (accumulate) or the G-buffer's normals (samples); 10 the per-sample
+    // emissive (accumulate, emissive scenes) or the G-buffer's emissive + roughness (samples).
     vk::LayoutDesc lighting;
-    lighting.pushBindings = {{0, kUbo, kCs},   {1, kSsbo, kCs},  {2, kUbo, kCs},  {3, kSampled, kCs},
-                             {4, kSsbo, kCs},  {5, kImage, kCs}, {6, kSsbo, kCs}, {7, kImage, kCs},
-                             {8, kImage, kCs}, {9, kImage, kCs}};
-    if (m_hasEmissive) lighting.pushBindings.push_back({10, kSampled, kCs});
+    lighting.pushBindings = {{0, kUbo, kCs},
+                             {1, kSsbo, kCs},
+                             {2, kUbo, kCs},
+                             {3, kSampled, kCs},
+                             {4, kSsbo, kCs},
+                             {5, kImage, kCs},
+                             {6, samplesPath ? kSampled : kSsbo, kCs},
+                             {7, kImage, kCs},
+                             {8, kImage, kCs},
+                             {9, kImage, kCs}};
+    if (m_hasEmissive || samplesPath) lighting.pushBindings.push_back({10, kSampled, kCs});
     lighting.pushBindings.push_back({11, kSampled, kCs}); // shadow maps (pushed for shadowed scenes only)
     lighting.pushBindings.push_back({12, kUbo, kCs});
+    if (samplesPath) {
+        lighting.pushBindings.push_back({13, kSampled, kCs}); // the G-buffer's albedo + metallic
+        lighting.pushBindings.push_back({14, kSsbo, kCs});    // the test export (its variant only)
+    }
     m_lightingLayout = vk::createPipelineLayout(m_device, lighting, "agaa.lighting.layout");
 
     vk::LayoutDesc debug;
@@ -183,7 +268,8 @@ void AggregateAA::release() {
         if (p) vkDestroyPipeline(d, p, nullptr);
     for (VkPipeline p : m_generationPipelines)
         if (p) vkDestroyPipeline(d, p, nullptr);
-    for (VkPipeline p : {m_clusterPipeline, m_lightingPipeline, m_debugPipeline, m_readbackPipeline})
+    for (VkPipeline p :
+         {m_clusterPipeline, m_lightingPipeline, m_exportPipeline, m_debugPipeline, m_readbackPipeline})
         if (p) vkDestroyPipeline(d, p, nullptr);
     vkDestroySampler(d, m_fetchSampler, nullptr);
     for (vk::PipelineLayout* l : {&m_visibilityLayout, &m_generationLayout, &m_recordLayout, &m_clusterLayout,
@@ -290,6 +376,24 @@ std::vector<VariantChoice> AggregateAA::variants() const {
                  : caps.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU
                      ? std::string("CPU device: the list's barriers cost more than its idle lanes save")
                      : std::string("GPU, c >= 2")});
+    const bool samplesPath = m_settings.generation == AggregateGeneration::Samples;
+    v.push_back({"generation",
+                 samplesPath ? "samples: one G-buffer pass, aggregated at the top of each tile"
+                             : "accumulate: visibility prepass + accumulation kernel",
+                 m_generationCause});
+    if (samplesPath) {
+        v.push_back({"fill-shading",
+                     m_settings.sampleRateShading ? "sample rate (supersampled materials)"
+                                                  : "pixel rate, per-sample coverage",
+                     "setting --sample-rate-shading"});
+        v.push_back({"curvature-roughness", m_settings.curvatureRoughness ? "on" : "off",
+                     "setting --curvature-roughness"});
+        v.push_back(
+            {"clustering-distance",
+             m_settings.distance == AggregateDistance::Plane ? "tangent-plane distance" : "Equation 1",
+             "setting --agaa-distance"});
+        return v; // routing, atomics and subgroup reduction belong to the accumulation kernel
+    }
     v.push_back(
         {"generation-routing",
          m_settings.routing == AggregateRouting::Fragment ? "per fragment (Algorithm 2)" : "per sample",
@@ -320,7 +424,8 @@ bool AggregateAA::isStorage(const std::string& name) const {
 
 std::string AggregateAA::storageCategory(const std::string& name) const {
     auto starts = [&](const char* prefix) { return name.rfind(prefix, 0) == 0; };
-    if (starts("agaa.visibility.") || starts("agaa.emissive")) return "per-sample";
+    // The samples path keeps the whole per-sample G-buffer (20 bytes per sample): it is storage.
+    if (starts("agaa.visibility.") || starts("agaa.emissive") || starts("agaa.gbuffer.")) return "per-sample";
     if (starts("agaa.agBuffer")) return "per-aggregate";
     if (starts("agaa.metadata") || starts("agaa.aggregateCount")) return "metadata";
     return "transient";

@@ -10,6 +10,7 @@ PixelClusters clusterPixel(uint32_t x, uint32_t y, const PixelSamples& in,
     float px[shared::kMaxSamples] = {}, py[shared::kMaxSamples] = {}, pz[shared::kMaxSamples] = {};
     float nx[shared::kMaxSamples] = {}, ny[shared::kMaxSamples] = {}, nz[shared::kMaxSamples] = {};
     bool valid[shared::kMaxSamples] = {};
+    uint32_t model[shared::kMaxSamples] = {}; // the prepass has no shading model: all one
     float vx, vy, vz;
     shared::pixelCentreToCamera(x, y, agaa.ndcParams.x, agaa.ndcParams.y, agaa.ndcParams.z, agaa.ndcParams.w,
                                 vx, vy, vz);
@@ -27,8 +28,8 @@ PixelClusters clusterPixel(uint32_t x, uint32_t y, const PixelSamples& in,
     }
     PixelClusters out;
     uint32_t ids[shared::kMaxSamples] = {};
-    out.count =
-        shared::clusterSamples(n, c, agaa.modes.x, agaa.clustering.y, px, py, pz, nx, ny, nz, valid, ids);
+    out.count = shared::clusterSamples(n, c, agaa.modes.x, agaa.clustering.y, px, py, pz, nx, ny, nz, model,
+                                       valid, ids);
     for (uint32_t s = 0; s < shared::kMaxSamples; ++s)
         out.ids[s] = ids[s];
     for (uint32_t w = 0; w < agaa.shape.z; ++w)

@@ -63,10 +63,12 @@ Technique& FrameRenderer::technique(const RenderRequest& r) {
         "/" + r.settings.debug + "/" + std::to_string(r.settings.characteristicLength) + "/" +
         std::to_string(r.settings.seedThreshold) + (r.settings.pixelCentrePosition ? "/centre" : "") + "/" +
         r.settings.ndf + "/" + r.settings.agaaLighting + "/" + r.settings.agaaRouting + "/" +
-        r.settings.agaaAtomics + "/" + r.settings.agaaSubgroupReduce + "/" + r.settings.agaaDistance +
-        "/breakdown" + std::to_string(r.settings.agaaBreakdown) + "/effects" +
-        (r.settings.effects.forceAll ? "-all" : "") + "/" + std::to_string(r.settings.effects.shadowMapSize) +
-        "/" + std::to_string(r.settings.effects.shadowTaps) + "/" +
+        r.settings.agaaAtomics + "/" + r.settings.agaaSubgroupReduce + "/" + r.settings.agaaDistance + "/" +
+        r.settings.agaaGeneration + (r.settings.sampleRateShading ? "/srs" : "") +
+        (r.settings.curvatureRoughness ? "/curvature" : "") + "/breakdown" +
+        std::to_string(r.settings.agaaBreakdown) + "/effects" + (r.settings.effects.forceAll ? "-all" : "") +
+        "/" + std::to_string(r.settings.effects.shadowMapSize) + "/" +
+        std::to_string(r.settings.effects.shadowTaps) + "/" +
         std::to_string(uint32_t(r.settings.effects.shadowFootprint));
     auto it = m_techniques.find(key);
     if (it == m_techniques.end())

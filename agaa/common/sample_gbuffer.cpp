@@ -6,6 +6,7 @@
 #include "shaders/reference/gbuffer_frag.h"
 #include "shaders/reference/gbuffer_vert.h"
 
+#include <bit>
 #include <stdexcept>
 
 namespace agaa {
@@ -13,8 +14,10 @@ namespace rg = eng::rg;
 namespace vk = eng::vk;
 
 SampleGBufferPass::SampleGBufferPass(vk::Device& device, const eng::frame::GpuScene& scene, uint32_t samples,
-                                     std::string name, const eng::scene::SceneFeatures& features)
-    : m_device(device), m_samples(samples), m_name(std::move(name)), m_features(features) {
+                                     std::string name, const eng::scene::SceneFeatures& features,
+                                     const GBufferOptions& options)
+    : m_device(device), m_samples(samples), m_name(std::move(name)), m_features(features),
+      m_options(options) {
     if (!eng::frame::isSupportedSampleCount(samples))
         throw std::invalid_argument("--samples " + std::to_string(samples) + " is not supported (allowed: " +
                                     eng::frame::supportedSampleCounts() + ")");
@@ -22,6 +25,9 @@ SampleGBufferPass::SampleGBufferPass(vk::Device& device, const eng::frame::GpuSc
         throw vk::MissingCapability(device.caps().deviceName +
                                     " lacks 4x MSAA colour/depth (needed for --samples " +
                                     std::to_string(samples) + ")");
+    if (options.sampleRateShading && !device.caps().sampleRateShading)
+        throw vk::MissingCapability(device.caps().deviceName +
+                                    " lacks sampleRateShading (--sample-rate-shading on; allowed here: off)");
     vk::LayoutDesc layout;
     layout.pushBindings = {
         {0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT},
@@ -47,6 +53,11 @@ VkPipeline SampleGBufferPass::pipeline(AlphaPath alpha, bool doubleSided) {
     d.fragment = kReferenceGbufferFrag;
     d.layout = m_layout.layout;
     d.specialization.values = effectSpecialization(m_features, uint32_t(alpha), 0, 1);
+    d.specialization.values.resize(8, 0u); // id 7: unused by the fill pass
+    d.specialization.values.push_back(m_options.curvatureRoughness ? 1u : 0u);                   // id 8
+    d.specialization.values.push_back(std::bit_cast<uint32_t>(m_options.curvatureMaxFootprint)); // id 9
+    d.specialization.values.push_back(std::bit_cast<uint32_t>(m_options.curvatureBoost));        // id 10
+    d.sampleShading = m_options.sampleRateShading && m_samples > 1;
     d.alphaToCoverage = alpha == AlphaPath::Coverage;
     d.colorFormats = {kNormalFormat, kAlbedoMetalFormat, kEmissiveRoughnessFormat};
     d.depthFormat = kDepthFormat;

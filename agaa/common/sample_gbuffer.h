@@ -22,6 +22,19 @@ struct SampleGBuffer {
     eng::rg::Texture emissiveRoughness; // RGBA16F
 };
 
+// How the fill pass runs. The defaults are the reference's: one material evaluation per pixel
+// written to every covered sample, and the material's own roughness.
+struct GBufferOptions {
+    // Sample-rate shading (VkPhysicalDeviceFeatures::sampleRateShading, minSampleShading 1): every
+    // sample runs the material, so textures and normal maps are supersampled too (the UE4 talk's
+    // supersampled G-buffer, seed 004). Off: pixel-rate shading with per-sample coverage.
+    bool sampleRateShading = false;
+    // Kaplanyan curvature roughness (common/curvature_roughness.glsl) with the talk's constants.
+    bool curvatureRoughness = false;
+    float curvatureMaxFootprint = 0.3f; // AgaaKaplanyanRoughnessMaxFootprint, GGX alpha^2 units
+    float curvatureBoost = 2.0f;        // AgaaKaplanyanRoughnessBoost
+};
+
 class SampleGBufferPass {
   public:
     static constexpr VkFormat kDepthFormat = VK_FORMAT_D32_SFLOAT;
@@ -29,12 +42,14 @@ class SampleGBufferPass {
     static constexpr VkFormat kAlbedoMetalFormat = VK_FORMAT_R8G8B8A8_SRGB;
     static constexpr VkFormat kEmissiveRoughnessFormat = VK_FORMAT_R16G16B16A16_SFLOAT;
 
-    // Throws std::invalid_argument for an unsupported n, MissingCapability without 4x MSAA.
+    // Throws std::invalid_argument for an unsupported n, MissingCapability without 4x MSAA or,
+    // when options.sampleRateShading asks for it, without sampleRateShading.
     // `name` prefixes the pass, its pipelines and its resources ("<name>.gbuffer.*").
     // `features`: the scene's (agaa/common/effects.h); they pick the alpha path of masked draws
     // (alpha-to-coverage at n > 1, discard at 1) and the normal-map / emissive fetch variants.
     SampleGBufferPass(eng::vk::Device& device, const eng::frame::GpuScene& scene, uint32_t samples,
-                      std::string name, const eng::scene::SceneFeatures& features);
+                      std::string name, const eng::scene::SceneFeatures& features,
+                      const GBufferOptions& options = {});
     ~SampleGBufferPass();
     SampleGBufferPass(const SampleGBufferPass&) = delete;
     SampleGBufferPass& operator=(const SampleGBufferPass&) = delete;
@@ -48,6 +63,7 @@ class SampleGBufferPass {
     SampleGBuffer add(eng::rg::Graph& graph, const FrameInputs& inputs);
     bool isStorage(const std::string& resourceName) const;
     uint32_t samples() const { return m_samples; }
+    const GBufferOptions& options() const { return m_options; }
 
   private:
     VkPipeline pipeline(AlphaPath alpha, bool doubleSided); // [alpha path][double-sided], made on first use
@@ -57,6 +73,7 @@ class SampleGBufferPass {
     std::string m_name;
     eng::vk::PipelineLayout m_layout;
     eng::scene::SceneFeatures m_features;
+    GBufferOptions m_options;
     std::array<VkPipeline, 6> m_pipelines{};
 };
 

@@ -56,6 +56,13 @@ struct MethodSettings {
     std::string agaaAtomics = "auto";
     std::string agaaSubgroupReduce = "auto";
     std::string agaaDistance = "position";
+    // AGAA generation path "auto" | "accumulate" | "samples" | "coverage" (AggregateGeneration).
+    std::string agaaGeneration = "auto";
+    // The fill pass of the per-sample G-buffer (reference, Simple/Complex, AGAA's samples path):
+    // sample-rate shading (supersampled materials) instead of pixel rate with per-sample coverage.
+    bool sampleRateShading = false;
+    // AGAA samples path: Kaplanyan curvature roughness in the fill pass (seed 004).
+    bool curvatureRoughness = false;
     uint32_t agaaBreakdown = 0; // agaa-timings --breakdown only (AggregateBreakdown bits)
     EffectSettings effects;     // scene-driven shadows, alpha-to-coverage, emissive, normal maps
 };

@@ -19,7 +19,8 @@ Reference::Reference(vk::Device& device, const eng::frame::GpuScene& scene, cons
                      std::string name)
     : m_device(device), m_settings(settings), m_name(std::move(name)), m_scene(scene.scene()),
       m_features(effectiveFeatures(scene.scene(), settings.effects)),
-      m_gbuffer(device, scene, settings.samples, m_name, m_features), // validates n and 4x MSAA support
+      m_gbuffer(device, scene, settings.samples, m_name, m_features,
+                GBufferOptions{.sampleRateShading = settings.sampleRateShading}), // validates n, 4x MSAA, SRS
       m_shadow(device, scene, m_features, settings.effects, m_name) {
 
     vk::LayoutDesc lighting;
@@ -51,7 +52,13 @@ bool Reference::isStorage(const std::string& resourceName) const {
 }
 
 std::vector<VariantChoice> Reference::variants() const {
-    return effectVariants(m_features, m_scene, m_settings.samples, 1);
+    std::vector<VariantChoice> v = effectVariants(m_features, m_scene, m_settings.samples, 1);
+    if (m_settings.samples > 1)
+        v.push_back({"fill-shading",
+                     m_settings.sampleRateShading ? "sample rate (supersampled materials)"
+                                                  : "pixel rate, per-sample coverage",
+                     "setting --sample-rate-shading"});
+    return v;
 }
 
 FrameTargets Reference::addPasses(rg::Graph& graph, const FrameInputs& in) {

@@ -17,6 +17,10 @@ namespace agaa {
 struct ReferenceSettings {
     uint32_t samples = 8;
     EffectSettings effects; // scene-driven shadows, alpha-to-coverage, emissive, normal maps
+    // Sample-rate shading in the fill pass: the ground truth with supersampled materials
+    // (textures and normal maps evaluated at every sample), for AGAA's samples path with the same
+    // switch. Off (default): the material once per pixel, written to its covered samples.
+    bool sampleRateShading = false;
 };
 
 class Reference final : public Technique {

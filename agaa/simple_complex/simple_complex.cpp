@@ -39,7 +39,8 @@ SimpleComplex::SimpleComplex(vk::Device& device, const eng::frame::GpuScene& sce
                              const SimpleComplexSettings& settings, std::string name)
     : m_device(device), m_settings(settings), m_name(std::move(name)), m_scene(scene.scene()),
       m_features(effectiveFeatures(scene.scene(), settings.effects)),
-      m_gbuffer(device, scene, settings.samples, m_name, m_features),
+      m_gbuffer(device, scene, settings.samples, m_name, m_features,
+                GBufferOptions{.sampleRateShading = settings.sampleRateShading}),
       m_shadow(device, scene, m_features, settings.effects, m_name) {
     checkSettings(settings);
     vk::LayoutDesc lighting;

@@ -39,7 +39,8 @@ struct SimpleComplexSettings {
     float depthSlopeScale = 1.0f;
     SimpleComplexSchedule schedule = SimpleComplexSchedule::DeferPerSample;
     SimpleComplexDebugView debugView = SimpleComplexDebugView::None;
-    EffectSettings effects; // scene-driven shadows, alpha-to-coverage, emissive, normal maps
+    EffectSettings effects;         // scene-driven shadows, alpha-to-coverage, emissive, normal maps
+    bool sampleRateShading = false; // the fill pass at sample rate (agaa/common/sample_gbuffer.h)
 };
 
 class SimpleComplex final : public Technique {

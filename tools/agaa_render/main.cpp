@@ -57,6 +57,8 @@ const char* kUsage =
     "                   [--agaa-ndf auto|sggx|toksvig] [--agaa-lighting auto|compact|registers]\n"
     "                   [--agaa-routing samples|fragment] [--agaa-atomics auto|32|64]\n"
     "                   [--agaa-subgroup-reduce auto|on|off] [--agaa-distance position|plane]\n"
+    "                   [--agaa-generation auto|accumulate|samples|coverage] [--sample-rate-shading on|off]\n"
+    "                   [--curvature-roughness on|off]\n"
     "                   [--effects scene|all] [--shadow-taps N] [--shadow-footprint F] [--shadow-map-size N] "
     "[--shadow-casters scene|none]\n"
     "                   [--validate] [--device NAME] [--caps] [--help]\n"
@@ -87,6 +89,15 @@ const char* kUsage =
     "                    pixel across the subgroup first (auto: on for GPUs, off on CPU devices)\n"
     "  --agaa-distance position|plane  AGAA clustering: Equation 1 (default), or the samples' distance\n"
     "                    to each other's tangent plane (a flat surface stays one aggregate)\n"
+    "  --agaa-generation auto|accumulate|samples|coverage  AGAA generation path: the accumulation\n"
+    "                    kernel after a visibility prepass, or one per-sample G-buffer pass aggregated at\n"
+    "                    the top of each lighting tile (UE4); coverage routing needs mixed samples and\n"
+    "                    the sample-mask override and is not built (exit 3); auto (default): samples for\n"
+    "                    n <= 16, else accumulate\n"
+    "  --sample-rate-shading on|off  per-sample G-buffer fill at sample rate: materials and normal maps\n"
+    "                    supersampled (reference, simple-complex, AGAA samples path; default off)\n"
+    "  --curvature-roughness on|off  AGAA samples path: Kaplanyan curvature roughness in the fill pass\n"
+    "                    (max footprint 0.3, boost 2.0; default off)\n"
     "  --agaa-position mean|centre  AGAA shading point: mean of the samples (default) or UE4's\n"
     "                    mean depth on the pixel-centre ray\n"
     "  --effects scene|all  passes and shader variants from the scene's features (default), or every\n"
@@ -188,6 +199,12 @@ Options parse(int argc, char** argv) {
             r.settings.agaaSubgroupReduce = oneOf(a, value(), {"auto", "on", "off"});
         } else if (a == "--agaa-distance") {
             r.settings.agaaDistance = oneOf(a, value(), {"position", "plane"});
+        } else if (a == "--agaa-generation") {
+            r.settings.agaaGeneration = oneOf(a, value(), {"auto", "accumulate", "samples", "coverage"});
+        } else if (a == "--sample-rate-shading") {
+            r.settings.sampleRateShading = oneOf(a, value(), {"on", "off"}) == "on";
+        } else if (a == "--curvature-roughness") {
+            r.settings.curvatureRoughness = oneOf(a, value(), {"on", "off"}) == "on";
         } else if (a == "--effects") {
             std::string v = value();
             if (v != "scene" && v != "all")

@@ -5,7 +5,14 @@
 //      the pixel's sky samples, and its view-distance range for the tile bounds; then it turns
 //      the accumulations into normalised aggregates (divide by the sample count; filtered
 //      roughness from the Toksvig length, or the anisotropic lobe of the SGGX matrix,
-//      shared/sggx.h);
+//      shared/sggx.h). Two generation paths feed it (agaa/aggregate/agaa_constants.h
+//      AggregateGeneration):
+//      - accumulate (AGAA_GBUFFER 0): the AG-buffer the accumulation kernel summed
+//        (agaa/generation.glsl) holds each aggregate's fixed-point sums;
+//      - samples (AGAA_GBUFFER 1, seed 004): the same walk also reads each sample's G-buffer
+//        (reference/gbuffer.frag) and sums its Toksvig vector or SGGX matrix, albedo and metallic
+//        into its aggregate here, in registers at the top of the tile, in float: no AG-buffer,
+//        no second raster pass;
 //   2. tile depth bounds and light culling in shared memory (common/tile_culling.glsl);
 //   3. each aggregate lit once per light with the reference's BRDF (common/brdf.glsl). Two
 //      schedules (specialisation id 7, agaa/aggregate/agaa_constants.h AggregateShading):
@@ -39,11 +46,42 @@ layout(set = 0, binding = 2) uniform Agaa { AgaaConstants agaa; };
 layout(set = 0, binding = 3) uniform sampler2DMSArray visibilityDepth;
 layout(set = 0, binding = 4, std430) readonly buffer Metadata { uint metadata[]; };
 layout(set = 0, binding = 5, r8ui) uniform readonly uimage2D aggregateCount;
+#ifndef AGAA_GBUFFER
+#define AGAA_GBUFFER 0
+#endif
+#ifndef AGAA_EXPORT
+#define AGAA_EXPORT 0
+#endif
+#if AGAA_GBUFFER
+// The per-sample G-buffer (agaa/common/sample_gbuffer.h): binding 3 is its depth.
+layout(set = 0, binding = 6) uniform sampler2DMSArray gNormal;
+layout(set = 0, binding = 13) uniform sampler2DMSArray gAlbedoMetal;
+layout(set = 0, binding = 10) uniform sampler2DMSArray gEmissiveRoughness;
+#define emissiveSamples gEmissiveRoughness // rgb: the per-sample emissive the resolve adds
+#include "common/octahedral.glsl"
+#else
 layout(set = 0, binding = 6, std430) readonly buffer AgBuffer { uint agBuffer[]; };
+#endif
+#if AGAA_EXPORT
+// Test support (tests/agaa/test_agaa_samples_gpu.cpp): what step 1 read and built, for a CPU
+// aggregation written apart from this file. 16 floats per record: sample s of pixel p at
+// p * n + s, aggregate a of pixel p at pixels * n + p * c + a (layouts in exportSample and
+// exportAggregate below).
+layout(set = 0, binding = 14, std430) writeonly buffer Export { float exportData[]; };
+void exportRecord(uint record, vec4 a, vec4 b, vec4 c, vec4 d) {
+    uint o = record * 16u;
+    for (uint i = 0u; i < 4u; ++i) {
+        exportData[o + i] = a[i];
+        exportData[o + 4u + i] = b[i];
+        exportData[o + 8u + i] = c[i];
+        exportData[o + 12u + i] = d[i];
+    }
+}
+#endif
 layout(set = 0, binding = 7, rgba32f) uniform writeonly image2D outHdr;
 layout(set = 0, binding = 8, rgba32f) uniform writeonly image2D outDisplay;
 layout(set = 0, binding = 9, r32ui) uniform writeonly uimage2D outShadingEvents;
-#if AGAA_EMISSIVE
+#if AGAA_EMISSIVE && !AGAA_GBUFFER
 layout(set = 0, binding = 10) uniform sampler2DMSArray emissiveSamples;
 #endif
 
@@ -197,16 +235,51 @@ void main() {
     uint samplesIn[kMaxAggregates] = uint[](0u, 0u, 0u, 0u);
     uint skySamples = 0u;
     float tmin = 1e30, tmax = -1e30;
+    const bool sggx = kNdf == kNdfSggx;
+#if AGAA_GBUFFER
+    // Per aggregate: the sums of its samples' normal distribution (Toksvig: the vector in xyz of
+    // moment0; SGGX: the matrix's diagonal in moment0, its off-diagonal xy, xz, yz in moment1),
+    // albedo and metallic. The same per-sample terms as the accumulation kernel's, unquantised.
+    vec3 moment0[kMaxAggregates] = vec3[](vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0));
+    vec3 moment1[kMaxAggregates] = vec3[](vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0));
+    vec4 albedoMetalSum[kMaxAggregates] = vec4[](vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0));
+#endif
     if (inside) {
         for (uint s = 0u; s < n; ++s) {
-            float d = texelFetch(visibilityDepth, ivec3(pixel, s / 4u), int(s % 4u)).r;
+            ivec3 at = ivec3(pixel, s / 4u);
+            float d = texelFetch(visibilityDepth, at, int(s % 4u)).r;
             if (isSky(d)) {
                 skySamples += 1u;
+#if AGAA_EXPORT
+                exportRecord(pixelIndex * n + s, vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0));
+#endif
                 continue;
             }
             uint a = sampleAggregate(s, pixelIndex);
             vec3 P = viewPositionFromDepth(vec2(pixel) + frame.samplePositions[s].xy, d, frame.extent,
                                            frame.depthParams, frame.projParams);
+#if AGAA_GBUFFER
+            vec3 N = decodeOctahedral(texelFetch(gNormal, at, int(s % 4u)).rg);
+            vec4 albedoMetal = texelFetch(gAlbedoMetal, at, int(s % 4u));
+            float roughness = texelFetch(gEmissiveRoughness, at, int(s % 4u)).a;
+            float alpha = roughness * roughness;
+            if (sggx) {
+                // The sample's GGX lobe as an SGGX matrix, S = (1 - a^2) N N^T + a^2 I (shared/sggx.h).
+                float ca = clamp(alpha, kMinGgxAlpha, kMaxGgxAlpha);
+                float a2 = ca * ca;
+                vec3 Nw = N * (1.0 - a2);
+                moment0[a] += Nw * N + a2;
+                moment1[a] += vec3(Nw.x * N.y, Nw.x * N.z, Nw.y * N.z);
+            } else {
+                // Roughness as normal variance: the Toksvig length of the sample's alpha.
+                moment0[a] += N * toksvigLength(alpha, agaa.toksvig.x, agaa.toksvig.y, agaa.toksvig.z);
+            }
+            albedoMetalSum[a] += albedoMetal;
+#if AGAA_EXPORT
+            exportRecord(pixelIndex * n + s, vec4(N, roughness), albedoMetal, vec4(P, float(a)),
+                         vec4(1.0, 0.0, 0.0, 0.0));
+#endif
+#endif
             float t = -P.z;
             depthSum[a] += t;
             depthSquares[a] += t * t;
@@ -220,16 +293,19 @@ void main() {
     vec3 positions[kMaxAggregates];
     float depthSigma[kMaxAggregates] = float[](0.0, 0.0, 0.0, 0.0);
     bool present[kMaxAggregates] = bool[](false, false, false, false);
-    const bool sggx = kNdf == kNdfSggx;
     vec3 tangents[kMaxAggregates], bitangents[kMaxAggregates];
     vec2 alphas[kMaxAggregates]; // SGGX: (alphaT, alphaB), clamped to the BRDF's range
     uint presentCount = 0u;
     uint accumulated[kMaxAggregates] = uint[](0u, 0u, 0u, 0u);
     for (uint a = 0u; a < c; ++a) {
+#if AGAA_GBUFFER
+        uint k = samplesIn[a]; // every sample the metadata assigns was read here
+#else
         uint base = (pixelIndex * c + a) * kAggregateWords;
         uint w[kAggregateWords];
         for (uint j = 0u; j < kAggregateWords; ++j) w[j] = inside ? agBuffer[base + j] : 0u;
         uint k = aggregateSampleCount(kNdf, w[0], w[4]); // samples the generation pass accumulated
+#endif
         // An aggregate with no accumulated sample (no fragment passed EQUAL for it) has nothing to
         // normalise: it is not lit, and its samples resolve to black rather than to a division by 0.
         present[a] = a < count && k > 0u && samplesIn[a] > 0u;
@@ -248,33 +324,56 @@ void main() {
                                                                frame.projParams);
         positions[a] = P;
         vec3 V = normalize(-P); // |P| >= znear > 0
+        // The aggregate's means: normal-distribution moments, albedo, metallic.
+        vec3 mean0, mean1, albedo;
+        float metallic;
+#if AGAA_GBUFFER
+        mean0 = moment0[a] / fs;
+        mean1 = moment1[a] / fs;
+        albedo = albedoMetalSum[a].rgb / fs;
+        metallic = albedoMetalSum[a].a / fs;
+#else
         if (sggx) {
             uint scale = unitScale(kSggxFieldBits, n);
-            SggxLobe lobe = sggxLobe(meanUnit(w[0] & 0xFFFFu, k, scale), meanUnit(w[0] >> 16u, k, scale),
-                                     meanUnit(w[1] & 0xFFFFu, k, scale), meanUnit(w[1] >> 16u, k, scale) - 0.5,
-                                     meanUnit(w[2] & 0xFFFFu, k, scale) - 0.5, meanUnit(w[2] >> 16u, k, scale) - 0.5,
-                                     V, kSggxOffDiagonal, kMinSggxEigenvalue);
+            mean0 = vec3(meanUnit(w[0] & 0xFFFFu, k, scale), meanUnit(w[0] >> 16u, k, scale),
+                         meanUnit(w[1] & 0xFFFFu, k, scale));
+            // Off-diagonal entries are stored offset by 1/2 (generation.glsl).
+            mean1 = vec3(meanUnit(w[1] >> 16u, k, scale) - 0.5, meanUnit(w[2] & 0xFFFFu, k, scale) - 0.5,
+                         meanUnit(w[2] >> 16u, k, scale) - 0.5);
+            albedo = vec3(meanUnit(w[3] & 0xFFFFu, k, scale), meanUnit(w[3] >> 16u, k, scale),
+                          meanUnit(w[4] & 0xFFFFu, k, scale));
+            metallic =
+                meanUnit((w[4] >> 16u) & ((1u << kSggxMetallicBits) - 1u), k, unitScale(kSggxMetallicBits, n));
+        } else {
+            mean0 = vec3(meanSigned(w[0] & kNormalFieldMask, k, kNormalScale), meanSigned(w[1], k, kNormalScale),
+                         meanSigned(w[2], k, kNormalScale));
+            mean1 = vec3(0.0);
+            albedo = vec3(meanUnit(w[3] & 0xFFFFu, k, kUnormScale), meanUnit(w[3] >> 16u, k, kUnormScale),
+                          meanUnit(w[4] & 0xFFFFu, k, kUnormScale));
+            metallic = meanUnit(w[4] >> 16u, k, kUnormScale);
+        }
+#endif
+        surfaces[a].albedo = albedo;
+        surfaces[a].metallic = metallic;
+        if (sggx) {
+            SggxLobe lobe = sggxLobe(mean0.x, mean0.y, mean0.z, mean1.x, mean1.y, mean1.z, V, kSggxOffDiagonal,
+                                     kMinSggxEigenvalue);
             surfaces[a].normal = lobe.normal;
             tangents[a] = lobe.tangent;
             bitangents[a] = lobe.bitangent;
             alphas[a] = clamp(vec2(lobe.alphaT, lobe.alphaB), kMinGgxAlpha, kMaxGgxAlpha);
             surfaces[a].roughness = sqrt(alphas[a].x); // unused by the anisotropic BRDF
-            surfaces[a].albedo = vec3(meanUnit(w[3] & 0xFFFFu, k, scale), meanUnit(w[3] >> 16u, k, scale),
-                                      meanUnit(w[4] & 0xFFFFu, k, scale));
-            surfaces[a].metallic =
-                meanUnit((w[4] >> 16u) & ((1u << kSggxMetallicBits) - 1u), k, unitScale(kSggxMetallicBits, n));
         } else {
-            vec3 toksvig = vec3(meanSigned(w[0] & kNormalFieldMask, k, kNormalScale),
-                                meanSigned(w[1], k, kNormalScale), meanSigned(w[2], k, kNormalScale));
-            float len = length(toksvig);
+            float len = length(mean0);
             // |N| -> 0 when opposing normals cancel: no mean direction; shade facing the viewer
             // (the filtered roughness is then 1, so the direction barely matters).
-            surfaces[a].normal = len > kMinNormalLength ? toksvig / len : V;
+            surfaces[a].normal = len > kMinNormalLength ? mean0 / len : V;
             surfaces[a].roughness = sqrt(filteredAlpha(len, agaa.toksvig.x)); // the BRDF squares it back
-            surfaces[a].albedo = vec3(meanUnit(w[3] & 0xFFFFu, k, kUnormScale), meanUnit(w[3] >> 16u, k, kUnormScale),
-                                      meanUnit(w[4] & 0xFFFFu, k, kUnormScale));
-            surfaces[a].metallic = meanUnit(w[4] >> 16u, k, kUnormScale);
         }
+#if AGAA_EXPORT
+        exportRecord(uint(size.x * size.y) * n + pixelIndex * c + a, vec4(mean0, mean1.x), vec4(mean1.yz, albedo.rg),
+                     vec4(albedo.b, metallic, float(k), surfaces[a].roughness), vec4(surfaces[a].normal, 1.0));
+#endif
         // Depth variance (E[t^2] - E[t]^2, clamped: cancellation can make it slightly negative):
         // the aggregate's extent along the view ray, the footprint shadow filtering samples in.
         depthSigma[a] = sqrt(max(depthSquares[a] / fs - meanDepth * meanDepth, 0.0));

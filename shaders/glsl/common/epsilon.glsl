@@ -38,5 +38,10 @@ const float kMinSggxEigenvalue = 0.25;
 // Two-point tone mapping (agaa/lighting.glsl): below this specular radiance an aggregate has no
 // highlight to spread, and the spike (S^2 + var) / S would divide by ~0.
 const float kMinSpikeRadiance = 1.0e-8;
+// Curvature roughness (common/curvature_roughness.glsl): a quad-normal variance below this is
+// interpolation rounding, not curvature. A flat face's interpolated unit normals differ by fp32
+// rounding (about 1e-7 per component, so a variance near 1e-14); the bias it would add is invisible
+// anyway (alpha^2 + 2e-10).
+const float kMinCurvatureVariance = 1.0e-10;
 
 #endif

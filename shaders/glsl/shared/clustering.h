@@ -134,10 +134,21 @@ inline_fn float clusterDistance(uint mode, float ax, float ay, float az, float a
     return aggregateDistance(ax, ay, az, anx, any, anz, bx, by, bz, bnx, bny, bnz);
 }
 
-#define AGAA_DIST(a, b) \
-    clusterDistance(mode, px[a], py[a], pz[a], nx[a], ny[a], nz[a], px[b], py[b], pz[b], nx[b], ny[b], nz[b])
+// Samples of different shading models (metal against dielectric; the samples path reads it from
+// the G-buffer, the prepass has none) are this far apart on top of their distance, so they never
+// share an aggregate while c leaves a seed for each model (seed 004: pre-filtered shading assumes
+// one shading model per aggregate). Any distance between samples of one pixel is far below it:
+// positions are in units of k and the normal term is at most 4.
+SHARED_CONST_FLOAT kShadingModelDistance = 1.0e6f;
+// The G-buffer's metallic at or above which a sample is shaded as a metal.
+SHARED_CONST_FLOAT kMetalModelThreshold = 0.5f;
 
-// Algorithm 1. Inputs: n samples (valid = not sky), positions divided by k, unit normals.
+#define AGAA_DIST(a, b)                                                                                            \
+    (clusterDistance(mode, px[a], py[a], pz[a], nx[a], ny[a], nz[a], px[b], py[b], pz[b], nx[b], ny[b], nz[b]) + \
+     (model[a] != model[b] ? kShadingModelDistance : 0.0f))
+
+// Algorithm 1. Inputs: n samples (valid = not sky), positions divided by k, unit normals, shading
+// models (all 0 when there is no model to separate).
 // Output: ids[s] for s < n: each valid sample's aggregate id (0 for sky samples), and the
 // number of aggregates. Entries from n up are not written.
 //  1(b) mean position and normal of the valid samples;
@@ -153,7 +164,8 @@ inline_fn float clusterDistance(uint mode, float ax, float ay, float az, float a
 inline_fn uint clusterSamples(uint n, uint c, uint mode, float threshold, IN_ARRAY(float) px[kMaxSamples],
                               IN_ARRAY(float) py[kMaxSamples], IN_ARRAY(float) pz[kMaxSamples],
                               IN_ARRAY(float) nx[kMaxSamples], IN_ARRAY(float) ny[kMaxSamples],
-                              IN_ARRAY(float) nz[kMaxSamples], IN_ARRAY(bool) valid[kMaxSamples],
+                              IN_ARRAY(float) nz[kMaxSamples], IN_ARRAY(uint) model[kMaxSamples],
+                              IN_ARRAY(bool) valid[kMaxSamples],
                               OUT_ARRAY(uint) ids[kMaxSamples]) {
     uint count = 0u;
     PRECISE float mx = 0.0f, my = 0.0f, mz = 0.0f, mnx = 0.0f, mny = 0.0f, mnz = 0.0f;

@@ -24,11 +24,13 @@ using std::sqrt;
 #define SHARED_BEGIN namespace shared {
 #define SHARED_END }
 #define SHARED_CONST inline constexpr uint32_t
+#define SHARED_CONST_FLOAT inline constexpr float
 #define inline_fn inline
 #else
 #define inline_fn
 #define SHARED_BEGIN
 #define SHARED_END
 #define SHARED_CONST const uint
+#define SHARED_CONST_FLOAT const float
 #endif
 #endif
