@@ -80,7 +80,7 @@ TEST(AgaaClusteringGpu, MetadataMatchesTheCpuReferenceBitForBit) {
             eng::frame::createReadbackBuffer(*device, size, size, VK_FORMAT_R8_UINT, "test.counts");
         shared::FrameConstants frame{};
         shared::AgaaConstants constants{};
-        agaa::RenderRequest r = request("agaa", k.n, k.c, size);
+        agaa::RenderRequest r = request("agaa-accumulate", k.n, k.c, size);
         r.settings.debug = "aggregates"; // clustering only: the graph culls generation
         r.settings.agaaDistance = k.distance;
         r.extraPasses = [&](eng::rg::Graph& graph, agaa::Technique& tech, const agaa::FrameInputs& in) {
@@ -157,7 +157,7 @@ TEST(AgaaGpu, AccumulationMatchesACpuReplayOfTheSameFragments) {
         vk::Buffer metadata =
             vk::createBuffer(*device, std::max<VkDeviceSize>(4, VkDeviceSize(size) * size * words * 4),
                              VK_BUFFER_USAGE_TRANSFER_DST_BIT, vk::MemoryUse::Readback, "test.meta");
-        agaa::RenderRequest r = request("agaa", k.n, k.c, size);
+        agaa::RenderRequest r = request("agaa-accumulate", k.n, k.c, size);
         auto& technique = dynamic_cast<agaa::AggregateAA&>(renderer.technique(r));
         technique.setFragmentRecordTarget(&records);
         r.extraPasses = [&](eng::rg::Graph& graph, agaa::Technique& tech, const agaa::FrameInputs&) {
@@ -332,7 +332,7 @@ TEST(AgaaGpu, MemoryIsSplitAndBelowTheReference) {
     auto device = agaa::test::makeValidatedDevice();
     eng::scene::Scene scene = eng::scene::loadBuiltin("railings");
     agaa::FrameRenderer renderer(*device, scene);
-    agaa::RenderResult ag = renderer.render(request("agaa", 8, 2, 64));
+    agaa::RenderResult ag = renderer.render(request("agaa-accumulate", 8, 2, 64));
     agaa::RenderResult ref = renderer.render(request("reference", 8, 1, 64));
     EXPECT_GT(ag.bytesPerPixelSplit["per-sample"], 0.0);
     EXPECT_GT(ag.bytesPerPixelSplit["per-aggregate"], 0.0);

@@ -27,7 +27,7 @@ namespace vk = eng::vk;
 
 agaa::RenderRequest agaaRequest(uint32_t n, uint32_t c, uint32_t size) {
     agaa::RenderRequest r;
-    r.method = "agaa";
+    r.method = "agaa-accumulate"; // the accumulation kernel's paths
     r.settings.samples = n;
     r.settings.aggregates = c;
     r.view.width = r.view.height = size;

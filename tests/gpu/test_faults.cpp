@@ -17,7 +17,7 @@ namespace {
 
 agaa::RenderRequest agaaFrame() {
     agaa::RenderRequest r;
-    r.method = "agaa";
+    r.method = "agaa-samples"; // what auto picks on lavapipe
     r.settings.samples = 8;
     r.settings.aggregates = 2;
     r.view.width = r.view.height = 32;
@@ -64,7 +64,7 @@ TEST(Faults, EveryAllocationOfAnAgaaFrameFailsCleanlyNamingTheResource) {
     std::printf("[ measured ] an AGAA (8, 2) frame of railings makes %u device memory allocations\n", k - 1);
     EXPECT_GE(failed.size(), 10u) << "the sweep must have failed many distinct resources";
     for (const char* name :
-         {"scene.vertices", "frame.lights", "agaa.agBuffer", "agaa.shadow.map", "readback.hdr"})
+         {"scene.vertices", "frame.lights", "agaa.gbuffer.normal", "agaa.shadow.map", "readback.hdr"})
         EXPECT_TRUE(failed.count(name)) << name << " never failed in the sweep";
 }
 

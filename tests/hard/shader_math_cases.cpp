@@ -724,6 +724,37 @@ std::vector<EdgeCase> shaderMathCases() {
             });
     }
 
+    // Curvature roughness (common/curvature_roughness.glsl), twin in double: Kaplanyan's kernel
+    // min(boost 1/4 (|dN/dx|^2 + |dN/dy|^2), max footprint) added to alpha^2, unchanged below the
+    // variance floor (a flat face's interpolation rounding) and for NaN derivatives.
+    for (const auto& [dx, dy, roughness, guards] :
+         std::vector<std::tuple<glm::vec3, glm::vec3, float, std::vector<std::string>>>{
+             {{1e-7f, -1e-7f, 0.0f}, {0.0f, 1e-7f, 0.0f}, 0.3f, {"kMinCurvatureVariance"}}, // flat
+             {{3e-5f, 0.0f, 0.0f}, {0.0f, 0.0f, 0.0f}, 0.3f, {"kMinCurvatureVariance"}},    // just above
+             {{0.05f, 0.0f, 0.0f}, {0.0f, 0.02f, 0.0f}, 0.1f, {}},                          // a sphere
+             {{2.0f, 0.0f, 0.0f}, {0.0f, 2.0f, 0.0f}, 0.02f, {}}, // sub-pixel sphere: clamped
+             {{std::nanf(""), 0.0f, 0.0f}, {0.0f, 0.0f, 0.0f}, 0.5f, {"kMinCurvatureVariance"}},
+         }) {
+        const float maxFootprint = 0.3f, boost = 2.0f;
+        MathCase in = op(kOpCurvature, glm::vec4(dx, 0), glm::vec4(dy, 0),
+                         glm::vec4(roughness, maxFootprint, boost, 0));
+        add("curvatureRoughness dx=" + fmt(dx.x) + " dy=" + fmt(dy.y) + " r=" + fmt(roughness), guards, in,
+            [dx, dy, roughness, maxFootprint, boost](const MathResult& r) -> std::string {
+                const double variance =
+                    0.25 * (double(dx.x) * dx.x + double(dx.y) * dx.y + double(dx.z) * dx.z +
+                            double(dy.x) * dy.x + double(dy.y) * dy.y + double(dy.z) * dy.z);
+                if (!(variance > 1e-10)) // exactly the material's roughness
+                    return r.r0.x == roughness ? std::string()
+                                               : "flat: " + fmt(r.r0.x) + " != " + fmt(roughness);
+                const double a = double(roughness) * roughness;
+                const double a2 =
+                    std::min(a * a + std::min(double(boost) * variance, double(maxFootprint)), 1.0);
+                if (std::string e = near("filtered roughness", r.r0.x, std::pow(a2, 0.25), 1e-5); !e.empty())
+                    return e;
+                return r.r0.x >= roughness ? std::string() : "smoother than the material";
+            });
+    }
+
     return cases;
 }
 

@@ -45,6 +45,7 @@ enum MathOp : uint32_t {
     kOpBrdfAniso = 18,
     kOpSggxLobe = 19,
     kOpToneMapAggregate = 20,
+    kOpCurvature = 21,
 };
 
 struct EdgeCase {
