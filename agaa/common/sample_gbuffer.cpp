@@ -4,6 +4,7 @@
 #include "engine/vk/check.h"
 #include "engine/vk/descriptors.h"
 #include "shaders/reference/gbuffer_frag.h"
+#include "shaders/reference/gbuffer_sample_rate_frag.h"
 #include "shaders/reference/gbuffer_vert.h"
 
 #include <bit>
@@ -50,14 +51,16 @@ VkPipeline SampleGBufferPass::pipeline(AlphaPath alpha, bool doubleSided) {
     if (p) return p;
     vk::GraphicsPipelineDesc d;
     d.vertex = kReferenceGbufferVert;
-    d.fragment = kReferenceGbufferFrag;
+    const bool sampleRate = m_options.sampleRateShading && m_samples > 1;
+    d.fragment =
+        sampleRate ? std::span<const uint32_t>(kReferenceGbufferSampleRateFrag) : kReferenceGbufferFrag;
     d.layout = m_layout.layout;
     d.specialization.values = effectSpecialization(m_features, uint32_t(alpha), 0, 1);
     d.specialization.values.resize(8, 0u); // id 7: unused by the fill pass
     d.specialization.values.push_back(m_options.curvatureRoughness ? 1u : 0u);                   // id 8
     d.specialization.values.push_back(std::bit_cast<uint32_t>(m_options.curvatureMaxFootprint)); // id 9
     d.specialization.values.push_back(std::bit_cast<uint32_t>(m_options.curvatureBoost));        // id 10
-    d.sampleShading = m_options.sampleRateShading && m_samples > 1;
+    d.sampleShading = sampleRate; // minSampleShading 1: one invocation per sample
     d.alphaToCoverage = alpha == AlphaPath::Coverage;
     d.colorFormats = {kNormalFormat, kAlbedoMetalFormat, kEmissiveRoughnessFormat};
     d.depthFormat = kDepthFormat;

@@ -1,0 +1,62 @@
+// Per-sample G-buffer: 16 bytes per sample plus depth (DESIGN section 5):
+//   RT0 RG16_SNORM   shading normal, octahedral, view space
+//   RT1 RGBA8_SRGB   albedo (sRGB-encoded for precision in the darks), A metallic
+//   RT2 RGBA16F      emissive radiance (HDR), A roughness
+#include "shared/frame.h"
+
+// Masked materials (agaa/common/effects.h AlphaPath): 0 opaque (samples nothing), 1 discard below
+// the cutoff (1 sample per pixel), 2 alpha-to-coverage (MSAA; common/alpha_coverage.glsl).
+layout(constant_id = 0) const uint kAlphaPath = 0u;
+// Curvature roughness (common/curvature_roughness.glsl; agaa/common/sample_gbuffer.h
+// GBufferOptions): id 8 on/off, ids 9 and 10 the talk's max footprint and boost. Off for the
+// reference and Simple/Complex, whose samples must be the material's own.
+layout(constant_id = 8) const uint kCurvatureRoughness = 0u;
+layout(constant_id = 9) const float kCurvatureMaxFootprint = 0.3;
+layout(constant_id = 10) const float kCurvatureBoost = 2.0;
+
+layout(set = 0, binding = 0) uniform Frame { FrameConstants frame; };
+layout(set = 0, binding = 1, std430) readonly buffer Materials { GpuMaterial materials[]; };
+layout(set = 1, binding = 0) uniform sampler2D textures[kMaxSceneTextures];
+layout(push_constant) uniform Push { uint material; } pc;
+
+#include "common/material.glsl"
+#include "common/octahedral.glsl"
+#include "common/alpha_coverage.glsl"
+#include "common/curvature_roughness.glsl"
+
+// GBUFFER_SAMPLE_RATE (gbuffer_sample_rate.frag; agaa/common/sample_gbuffer.h GBufferOptions):
+// the inputs are interpolated at each sample's own position, so the material, its textures and
+// normal map run once per sample (the supersampled G-buffer). Sample shading alone would only run
+// more invocations: without the `sample` qualifier each may still read the pixel-centre values.
+#ifndef GBUFFER_SAMPLE_RATE
+#define GBUFFER_SAMPLE_RATE 0
+#endif
+#if GBUFFER_SAMPLE_RATE
+#define INTERPOLATION sample
+#else
+#define INTERPOLATION
+#endif
+layout(location = 0) INTERPOLATION in vec3 inNormal;
+layout(location = 1) INTERPOLATION in vec4 inTangent;
+layout(location = 2) INTERPOLATION in vec2 inUv;
+
+layout(location = 0) out vec4 outNormal; // xy octahedral; w coverage alpha (alpha-to-coverage reads it)
+layout(location = 1) out vec4 outAlbedoMetal;
+layout(location = 2) out vec4 outEmissiveRoughness;
+
+void main() {
+    // The geometric normal's derivatives first: in uniform control flow, before any discard.
+    float glen = length(inNormal);
+    vec3 geometric = glen > kMinNormalLength ? inNormal / glen : vec3(0.0, 0.0, 1.0);
+    vec3 dNdx = kCurvatureRoughness != 0u ? dFdx(geometric) : vec3(0.0);
+    vec3 dNdy = kCurvatureRoughness != 0u ? dFdy(geometric) : vec3(0.0);
+    GpuMaterial m = materials[pc.material];
+    float coverage = 1.0;
+    if (kAlphaPath != 0u) coverage = maskedCoverage(kAlphaPath, materialAlpha(m, inUv), m.emissive.w);
+    MaterialSample s = evaluateMaterial(m, inUv, inNormal, inTangent, gl_FrontFacing);
+    if (kCurvatureRoughness != 0u)
+        s.roughness = curvatureRoughness(s.roughness, dNdx, dNdy, kCurvatureMaxFootprint, kCurvatureBoost);
+    outNormal = vec4(encodeOctahedral(s.normal), 0.0, coverage);
+    outAlbedoMetal = vec4(s.albedo, s.metallic);
+    outEmissiveRoughness = vec4(min(s.emissive, vec3(kMaxRadiance)), s.roughness);
+}
