@@ -85,7 +85,7 @@ class AggregateAA final : public Technique {
     eng::scene::SceneFeatures m_features;
     AggregateNdf m_requestedNdf; // m_settings.ndf is the resolved one (never Auto)
     bool m_hasEmissive = false;
-    VkFormat m_depthFormat = VK_FORMAT_D24_UNORM_S8_UINT;
+    VkFormat m_depthFormat = VK_FORMAT_D32_SFLOAT_S8_UINT;
     shared::AgaaConstants m_constants{};
     eng::vk::Buffer m_constantsBuffer;
     eng::vk::PipelineLayout m_visibilityLayout, m_generationLayout, m_recordLayout, m_clusterLayout,

@@ -62,19 +62,22 @@ AggregateAA::AggregateAA(vk::Device& device, const eng::frame::GpuScene& scene,
         throw vk::MissingCapability(caps.deviceName +
                                     " lacks VK_EXT_post_depth_coverage (the accumulation kernel needs the "
                                     "post-depth-test sample mask; allowed here: --agaa-generation samples)");
-    // The paper's 4-byte depth + stencil per sample; D32S8 where D24S8 is not offered at 4x. The
-    // samples path uses the G-buffer's D32 depth.
+    // The visibility depth has the reference's precision: D32_SFLOAT with stencil where offered at
+    // 4x (issue 14: with D24_UNORM, reversed Z gained nothing, visibility differences against the
+    // reference's D32 counted as AGAA's error, and a fragment whose depth rounded to 0 near the far
+    // plane was sky in the prepass but passed EQUAL in generation). D24S8 only as a fallback
+    // (reported in the variants). The samples path uses the G-buffer's D32 depth.
     const VkImageUsageFlags depthUsage =
         VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT;
     if (samplesPath)
         m_depthFormat = SampleGBufferPass::kDepthFormat;
-    else if (vk::supportsImage(device, VK_FORMAT_D24_UNORM_S8_UINT, depthUsage, VK_SAMPLE_COUNT_4_BIT))
-        m_depthFormat = VK_FORMAT_D24_UNORM_S8_UINT;
     else if (vk::supportsImage(device, VK_FORMAT_D32_SFLOAT_S8_UINT, depthUsage, VK_SAMPLE_COUNT_4_BIT))
         m_depthFormat = VK_FORMAT_D32_SFLOAT_S8_UINT;
+    else if (vk::supportsImage(device, VK_FORMAT_D24_UNORM_S8_UINT, depthUsage, VK_SAMPLE_COUNT_4_BIT))
+        m_depthFormat = VK_FORMAT_D24_UNORM_S8_UINT;
     else
         throw vk::MissingCapability(caps.deviceName +
-                                    " offers no 4x sampled depth-stencil format (D24S8 or D32S8)");
+                                    " offers no 4x sampled depth-stencil format (D32S8 or D24S8)");
 
     // Generation atomics and their subgroup pre-reduction: what the device offers, or what was asked.
     const bool fragmentSubgroups =
@@ -156,8 +159,8 @@ void AggregateAA::resolveGeneration() {
     // foliage, furball and metal): the samples path rasterises the scene once instead of twice and
     // its frame was faster than the accumulate path's at every n measured on lavapipe (1.1x to
     // 1.6x at n = 8, 16 and 32). What it costs is memory: the whole per-sample G-buffer, 20 n + 5
-    // bytes per pixel against about 6 n + 45. Up to n = 16 that is at most 325 B/px (670 MB at
-    // 1920x1080); at n = 32 it is 645 B/px, 2.7x the accumulate path's, so above
+    // bytes per pixel against about 10 n + 45. Up to n = 16 that is at most 325 B/px (670 MB at
+    // 1920x1080); at n = 32 it is 645 B/px, 1.8x the accumulate path's 365, so above
     // kSamplesPathMaxSamples the rule keeps the accumulate path's memory, as the paper's design does.
     constexpr uint32_t kSamplesPathMaxSamples = 16;
     const bool samples = m_settings.samples <= kSamplesPathMaxSamples;
@@ -165,7 +168,7 @@ void AggregateAA::resolveGeneration() {
     m_generationCause = "n = " + std::to_string(m_settings.samples) + (samples ? " <= " : " > ") +
                         std::to_string(kSamplesPathMaxSamples) +
                         (samples ? ": one raster pass, per-sample G-buffer memory affordable"
-                                 : ": the per-sample G-buffer would be 2.7x the AG-buffer's memory");
+                                 : ": the per-sample G-buffer would be 1.8x the accumulate path's memory");
 }
 
 VkPipeline AggregateAA::lightingPipeline(bool exporting) {
@@ -398,6 +401,12 @@ std::vector<VariantChoice> AggregateAA::variants() const {
              "setting --agaa-distance"});
         return v; // routing, atomics and subgroup reduction belong to the accumulation kernel
     }
+    v.push_back({"visibility-depth",
+                 m_depthFormat == VK_FORMAT_D32_SFLOAT_S8_UINT
+                     ? "D32_SFLOAT_S8_UINT (the reference's precision)"
+                     : "D24_UNORM_S8_UINT (fallback)",
+                 m_depthFormat == VK_FORMAT_D32_SFLOAT_S8_UINT ? "device offers D32S8 at 4x"
+                                                               : "device lacks D32S8 at 4x"});
     v.push_back(
         {"generation-routing",
          m_settings.routing == AggregateRouting::Fragment ? "per fragment (Algorithm 2)" : "per sample",

@@ -346,4 +346,26 @@ TEST(AgaaGpu, MemoryIsSplitAndBelowTheReference) {
     agaa::test::expectNoValidationErrors(*device);
 }
 
+// Issue 14: the accumulate path's visibility depth has the reference's precision (D32 float with
+// stencil) wherever the device offers it at 4x, and the variants say which format ran. With
+// D24_UNORM the prepass and the reference saw different visibility, counted as AGAA's error.
+TEST(AgaaGpu, VisibilityDepthHasTheReferencePrecision) {
+    auto device = agaa::test::makeValidatedDevice();
+    eng::scene::Scene scene = eng::scene::loadBuiltin("hard-far");
+    agaa::FrameRenderer renderer(*device, scene);
+    agaa::RenderRequest r = request("agaa-accumulate", 8, 2, 32);
+    agaa::RenderResult res = renderer.render(r);
+    const auto& technique = dynamic_cast<agaa::AggregateAA&>(renderer.technique(r));
+    const bool d32s8 = vk::supportsImage(
+        *device, VK_FORMAT_D32_SFLOAT_S8_UINT,
+        VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT, VK_SAMPLE_COUNT_4_BIT);
+    EXPECT_EQ(technique.depthFormat(), d32s8 ? VK_FORMAT_D32_SFLOAT_S8_UINT : VK_FORMAT_D24_UNORM_S8_UINT);
+    bool reported = false;
+    for (const agaa::VariantChoice& v : res.variants)
+        reported = reported || (v.effect == "visibility-depth" &&
+                                v.variant.rfind(d32s8 ? "D32_SFLOAT_S8_UINT" : "D24_UNORM_S8_UINT", 0) == 0);
+    EXPECT_TRUE(reported) << "the stats variants must name the visibility depth format";
+    agaa::test::expectNoValidationErrors(*device);
+}
+
 } // namespace

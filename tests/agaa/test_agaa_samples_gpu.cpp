@@ -196,8 +196,9 @@ TEST(AgaaSamplesGpu, AggregationMatchesAnIndependentCpuAggregation) {
         EXPECT_EQ(mismatches, 0u) << k.scene << " " << k.ndf
                                   << ": aggregates differ from the CPU aggregation";
         EXPECT_EQ(sharedModels, 0u) << k.scene << ": a metal and a dielectric sample share an aggregate";
-        if (std::string(k.scene) == "metal")
+        if (std::string(k.scene) == "metal") {
             EXPECT_GT(mixedModels, 0u) << "the metal scene must have pixels that mix metal and dielectric";
+        }
     }
     agaa::test::expectNoValidationErrors(*device);
 }
@@ -229,7 +230,9 @@ TEST(AgaaSamplesGpu, PlaneEqualsTheReference) {
             // At 64x64 a pixel of the plane is 6 cm wide, close to k = 10 cm: at n = 32 the samples'
             // spread alone can pass the seed threshold (Equation 1's position term), and the
             // plane is then lit as two aggregates of the same surface: still equal to the reference.
-            if (n <= 8) EXPECT_EQ(b.shadingEventsMax, 1u) << "n=" << n << ": a flat pixel is one aggregate";
+            if (n <= 8) {
+                EXPECT_EQ(b.shadingEventsMax, 1u) << "n=" << n << ": a flat pixel is one aggregate";
+            }
         }
     agaa::test::expectNoValidationErrors(*device);
 }
@@ -354,7 +357,9 @@ TEST(AgaaSamplesGpu, CoverageRoutingIsRefusedByName) {
     } catch (const vk::MissingCapability& e) {
         const std::string what = e.what();
         EXPECT_NE(what.find("coverage"), std::string::npos) << what;
-        if (!device->caps().mixedSamples) EXPECT_NE(what.find("mixed"), std::string::npos) << what;
+        if (!device->caps().mixedSamples) {
+            EXPECT_NE(what.find("mixed"), std::string::npos) << what;
+        }
     }
     agaa::test::expectNoValidationErrors(*device);
 }

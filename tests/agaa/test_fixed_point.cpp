@@ -74,6 +74,46 @@ TEST(Toksvig, SingleSampleRoughnessRoundTrips) {
     }
 }
 
+// Issue 14: near mirrors the Toksvig length is within a few 1e-6 of 1, close to the 21-bit step
+// of the stored vector (2 / 2^21 = 9.5e-7 in [-1, 1]). Measured here for a flat aggregate (every
+// sample the same normal and alpha, so any change of alpha is the encoding's): the relative alpha
+// error through quantisation, accumulation of k samples and the filtered-alpha mapping.
+TEST(Toksvig, NearMirrorAlphaErrorThroughTheAgBufferIsMeasured) {
+    const float alphaMin = agaa::kMinGgxAlpha;
+    const float smax = 2.0f / (alphaMin * alphaMin) - 2.0f;
+    double worstBelow5e3 = 0.0, worstAbove1e2 = 0.0;
+    for (float alpha : {0.001f, 0.002f, 0.003f, 0.005f, 0.01f, 0.02f, 0.05f}) {
+        std::string line;
+        for (uint32_t k : {1u, 8u, 32u}) {
+            // The normal along a diagonal spreads |N| over three stored components, as a surface
+            // at an angle to the view does; along an axis only one component carries it.
+            for (bool diagonal : {false, true}) {
+                float len = toksvigLength(alpha, smax, alphaMin, agaa::kMaxGgxAlpha);
+                float c = diagonal ? len / std::sqrt(3.0f) : len;
+                uint32_t q = quantizeSigned(c, kNormalScale), z = quantizeSigned(0.0f, kNormalScale);
+                float x = meanSigned(q * k, k, kNormalScale);
+                float y = diagonal ? x : meanSigned(z * k, k, kNormalScale);
+                float w = diagonal ? x : meanSigned(z * k, k, kNormalScale);
+                float stored = std::sqrt(x * x + y * y + w * w);
+                double err = std::abs(double(filteredAlpha(stored, smax)) - alpha) / alpha;
+                if (alpha <= 0.005f) worstBelow5e3 = std::max(worstBelow5e3, err);
+                if (alpha >= 0.01f) worstAbove1e2 = std::max(worstAbove1e2, err);
+                char buf[64];
+                std::snprintf(buf, sizeof buf, " k=%u%s %.1f%%", k, diagonal ? " diag" : "", 100.0 * err);
+                line += buf;
+            }
+        }
+        std::printf("[ measured ] Toksvig alpha %.3f: relative alpha error%s\n", alpha, line.c_str());
+    }
+    std::printf("[ measured ] worst: %.1f%% for alpha <= 0.005, %.2f%% for alpha >= 0.01\n",
+                100.0 * worstBelow5e3, 100.0 * worstAbove1e2);
+    // What the README states: the encoding holds alpha >= 0.01 to within 1 %; below 0.005 the
+    // 21-bit step dominates and the error reaches tens of percent (the README's answer: the mapping
+    // should spend the words' unused range, as SGGX's per-n scales do).
+    EXPECT_LT(worstAbove1e2, 0.01);
+    EXPECT_GT(worstBelow5e3, worstAbove1e2) << "near mirrors must be where the encoding is weakest";
+}
+
 TEST(Toksvig, GuardsAtTheEdges) {
     const float alphaMin = agaa::kMinGgxAlpha;
     const float smax = 2.0f / (alphaMin * alphaMin) - 2.0f;

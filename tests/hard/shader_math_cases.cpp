@@ -1,6 +1,7 @@
 #include "shader_math_cases.h"
 
 #include "engine/frame/frame_constants.h"
+#include "engine/frame/sample_pattern.h"
 #include "shared/sggx.h"
 
 #include <algorithm>
@@ -363,16 +364,31 @@ std::vector<EdgeCase> shaderMathCases() {
          {5, 5, 5, 0},
          {0, 0, 0},
          {}},
-        {"point light just inside the direction guard (d = 0.99e-4)",
+        {"point light at 0.99e-4 m (d^2 = 1e-8)",
          {"kMinLightDistance2"},
          {0.99e-4f, 0, 0, 0},
          {0, 0, -1, point},
          {5, 5, 5, 0},
          {0, 0, 0},
          {}},
-        {"point light just outside the direction guard (d = 1.01e-4)",
+        {"point light at 1.01e-4 m",
          {"kMinLightDistance2"},
          {1.01e-4f, 0, 0, 0},
+         {0, 0, -1, point},
+         {5, 5, 5, 0},
+         {0, 0, 0},
+         {}},
+        // Issue 14: between these two the direction guard once disagreed with the falloff's floor.
+        {"point light just inside the shared guard (d = 0.0099, d^2 < 1e-4)",
+         {"kMinLightDistance2"},
+         {0.0099f, 0, 0, 0},
+         {0, 0, -1, point},
+         {5, 5, 5, 0},
+         {0, 0, 0},
+         {}},
+        {"point light just outside the shared guard (d = 0.0101)",
+         {"kMinLightDistance2"},
+         {0.0101f, 0, 0, 0},
          {0, 0, -1, point},
          {5, 5, 5, 0},
          {0, 0, 0},
@@ -432,9 +448,8 @@ std::vector<EdgeCase> shaderMathCases() {
                 } else {
                     D3 to = pos - P;
                     double d2 = glm::dot(to, to);
-                    // The shader compares in fp32: the direction guard's boundary is kMinLightDistance2^2.
-                    L = float(d2) > float(kMinLightDistance2 * kMinLightDistance2) ? to / std::sqrt(d2)
-                                                                                   : D3(0, 0, 1);
+                    // The shader compares in fp32; the direction and the falloff share one guard.
+                    L = float(d2) > float(kMinLightDistance2) ? to / std::sqrt(d2) : D3(0, 0, 1);
                     double att = window(d2, l.posRange.w) / std::max(d2, kMinLightDistance2);
                     double spotAbs = 0.0;
                     if (uint32_t(l.dirType.w) == 2u) {
@@ -722,6 +737,56 @@ std::vector<EdgeCase> shaderMathCases() {
                 const double t2 = 0.8 * 0.8;
                 return near("spike ratio", r.r1.x, t2 / (0.04 * std::sqrt(2.0 * t2 - 0.04 * 0.04)), 1e-5);
             });
+    }
+
+    // Pixel footprint (common/depth.glsl) with the projection the frame really uses: its
+    // proj[1][1] is negative (Vulkan's y flip), and the footprint must not be (issue 14).
+    {
+        eng::scene::Scene scene;
+        eng::scene::Camera camera;
+        camera.view = glm::mat4(1.0f);
+        camera.yfov = 0.8f;
+        scene.cameras.push_back(camera);
+        eng::frame::ViewSettings view;
+        view.width = 96;
+        view.height = 64;
+        const shared::FrameConstants f =
+            eng::frame::makeFrameConstants(scene, view, eng::frame::makeSamplePattern(1));
+        for (float t : {0.1f, 2.0f, 500.0f})
+            add("pixelFootprint t=" + fmt(t) + " (projParams.y = " + fmt(f.projParams.y) + ")", {},
+                op(kOpPixelFootprint, glm::vec4(t, 0, 0, 0), f.extent, f.projParams),
+                [t](const MathResult& r) {
+                    // One pixel of 64 rows across a 0.8 rad vertical field of view.
+                    return near("footprint", r.r0.x, 2.0 * t * std::tan(0.4) / 64.0, 1e-5);
+                });
+    }
+
+    // Face normal from derivatives (common/face_normal.glsl): the guard is on the sine of the angle
+    // between dP/dx and dP/dy, so micrometre footprints keep their plane (issue 14) and only
+    // parallel derivatives fall back to the camera direction.
+    {
+        struct FaceIn {
+            const char* what;
+            glm::vec3 dx, dy, towards;
+            bool fallback;
+        };
+        const glm::vec3 towards(0.6f, 0.0f, 0.8f);
+        for (const FaceIn& f : std::vector<FaceIn>{
+                 {"a 1 cm footprint", {0.01f, 0, 0}, {0, 0.01f, 0}, towards, false},
+                 {"a micrometre footprint (near plane)", {1e-6f, 0, 0}, {0, 1e-6f, 0}, towards, false},
+                 {"a 10 nm footprint", {1e-8f, 0, 0}, {0, 0, -1e-8f}, towards, false},
+                 {"parallel derivatives (edge-on sliver)", {1e-3f, 0, 0}, {2e-3f, 0, 0}, towards, true},
+                 {"nearly parallel, sine 1e-7", {1.0f, 0, 0}, {1.0f, 1e-7f, 0}, towards, true},
+                 {"nearly parallel, sine 1e-5", {1.0f, 0, 0}, {1.0f, 1e-5f, 0}, towards, false},
+                 {"zero derivatives", {0, 0, 0}, {0, 0, 0}, towards, true},
+             })
+            add("faceNormal " + std::string(f.what), {"kMinFaceNormalSine"},
+                op(kOpFaceNormal, glm::vec4(f.dx, 0), glm::vec4(f.dy, 0), glm::vec4(f.towards, 0)),
+                [f](const MathResult& r) -> std::string {
+                    D3 n = f.fallback ? D3(f.towards) : glm::normalize(glm::cross(D3(f.dx), D3(f.dy)));
+                    if (glm::dot(n, D3(f.towards)) < 0.0) n = -n;
+                    return near3("N", glm::vec3(r.r0), n, 1e-5, 1e-5);
+                });
     }
 
     // Curvature roughness (common/curvature_roughness.glsl), twin in double: Kaplanyan's kernel

@@ -46,6 +46,8 @@ enum MathOp : uint32_t {
     kOpSggxLobe = 19,
     kOpToneMapAggregate = 20,
     kOpCurvature = 21,
+    kOpPixelFootprint = 22,
+    kOpFaceNormal = 23,
 };
 
 struct EdgeCase {

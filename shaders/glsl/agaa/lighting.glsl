@@ -200,7 +200,7 @@ void shadeAggregate(SurfaceInputs surface, vec3 T, vec3 B, vec2 alphas, vec3 P, 
     vec3 V = normalize(-P); // |P| >= znear > 0
 #if AGAA_SHADOWS
     // The aggregate's footprint: depth standard deviation along the ray, one pixel across.
-    float pixelSize = -P.z * 2.0 * frame.extent.w / frame.projParams.y;
+    float pixelSize = pixelFootprint(-P.z, frame.extent, frame.projParams);
 #endif
     for (uint i = nextTileLight(0u); i < kMaxLights; i = nextTileLight(i + 1u)) {
         vec3 L, irradiance;

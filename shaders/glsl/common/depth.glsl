@@ -10,6 +10,13 @@ float viewDistanceFromDepth(float d, float znear, float zfar) {
 
 bool isSky(float d) { return d <= 0.0; }
 
+// Height in metres of one pixel's footprint at view distance t: 2 t / (|p11| height). |p11|:
+// the Vulkan projection flips y, so proj[1][1] (projParams.y) is negative (issue 14: without the
+// abs() the shadow footprint's pixel offsets pointed the other way, 1/8 px off centre).
+float pixelFootprint(float t, vec4 extent, vec4 projParams) {
+    return t * 2.0 * extent.w / abs(projParams.y);
+}
+
 // View-space point at view distance t on the ray through pixel-space position pixelPos.
 vec3 viewPositionAtDistance(vec2 pixelPos, float t, vec4 extent, vec4 projParams) {
     vec2 ndc = pixelPos * extent.zw * 2.0 - 1.0;

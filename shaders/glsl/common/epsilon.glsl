@@ -38,6 +38,11 @@ const float kMinSggxEigenvalue = 0.25;
 // Two-point tone mapping (agaa/lighting.glsl): below this specular radiance an aggregate has no
 // highlight to spread, and the spike (S^2 + var) / S would divide by ~0.
 const float kMinSpikeRadiance = 1.0e-8;
+// Face normal from screen-space derivatives (common/face_normal.glsl): below this sine of the
+// angle between dP/dx and dP/dy the derivatives are parallel (a sliver seen edge-on) and the
+// primitive has no plane to take a normal from. fp32 rounding of the derivatives gives a sine
+// error near 1e-7; a real triangle, even at grazing angles, is far above 1e-6.
+const float kMinFaceNormalSine = 1.0e-6;
 // Curvature roughness (common/curvature_roughness.glsl): a quad-normal variance below this is
 // interpolation rounding, not curvature. A flat face's interpolated unit normals differ by fp32
 // rounding (about 1e-7 per component, so a variance near 1e-14); the bias it would add is invisible

@@ -24,9 +24,11 @@ bool lightIncidence(GpuLight light, vec3 P, out vec3 L, out vec3 irradiance) {
     }
     vec3 toLight = light.positionRange.xyz - P;
     float d2 = dot(toLight, toLight);
-    // A light inside the geometry (d -> 0): the floor keeps 1/d^2 finite and the
-    // direction falls back to the view axis.
-    L = d2 > kMinLightDistance2 * kMinLightDistance2 ? toLight * inversesqrt(d2) : vec3(0.0, 0.0, 1.0);
+    // A light inside the geometry (d -> 0): the floor keeps 1/d^2 finite and the direction falls
+    // back to the view axis, both below the same squared distance (m^2; issue 14: the direction
+    // guard once squared it again, an m^4 threshold, so a light 1e-4..1e-2 m away kept its
+    // direction while its falloff was already floored).
+    L = d2 > kMinLightDistance2 ? toLight * inversesqrt(d2) : vec3(0.0, 0.0, 1.0);
     float attenuation = rangeWindow(d2, light.positionRange.w) / max(d2, kMinLightDistance2);
     if (type == kLightSpot) {
         float cd = dot(light.directionType.xyz, -L);

@@ -18,6 +18,8 @@ vec3 gbufferNormal(ivec2 pixel, uint s) { return vec3(0.0, 0.0, 1.0); }
 #define texture(sampler, uv) vec4(0.5, 0.5, 1.0, 1.0)
 #include "common/brdf.glsl"
 #include "common/curvature_roughness.glsl"
+#define AGAA_NO_DERIVATIVES // face_normal.glsl's fragment-only part
+#include "common/face_normal.glsl"
 #include "common/depth.glsl"
 #include "common/hemisphere_normal.glsl"
 #include "common/lights.glsl"
@@ -64,6 +66,8 @@ const uint kOpBrdfAniso = 18u;   // albedo a.xyz, metallic a.w, N b.xyz, V c.xyz
                                  // -> r0.xyz radiance, r1.xyz its specular part (E = 1)
 const uint kOpSggxLobe = 19u;    // S diagonal a.xyz, off-diagonal (xy, xz, yz) b.xyz, V c.xyz -> r0 (N, alphaT), r1 (T, alphaB)
 const uint kOpToneMapAggregate = 20u; // L a.xyz, S b.xyz, variance c.xyz -> r0.xyz; r1.x spike ratio of (d.x, d.y)
+const uint kOpPixelFootprint = 22u; // t a.x, extent b, projParams c -> r0.x
+const uint kOpFaceNormal = 23u;  // dP/dx a.xyz, dP/dy b.xyz, towards camera c.xyz -> r0.xyz
 const uint kOpCurvature = 21u;   // dN/dx a.xyz, dN/dy b.xyz, roughness c.x, max footprint c.y, boost c.z -> r0.x
 
 void main() {
@@ -114,6 +118,10 @@ void main() {
                                  kMinSggxEigenvalue);
         r0 = vec4(lobe.normal, lobe.alphaT);
         r1 = vec4(lobe.tangent, lobe.alphaB);
+    } else if (op == kOpFaceNormal) {
+        r0.xyz = faceNormalFromDerivatives(k.a.xyz, k.b.xyz, k.c.xyz);
+    } else if (op == kOpPixelFootprint) {
+        r0.x = pixelFootprint(k.a.x, k.b, k.c);
     } else if (op == kOpCurvature) {
         r0.x = curvatureRoughness(k.c.x, k.a.xyz, k.b.xyz, k.c.y, k.c.z);
     } else if (op == kOpToneMapAggregate) {
