@@ -139,6 +139,26 @@ void addFurball(SubjectSink& sink, const glm::vec3& centre, float radius, float 
                     sink.material(plainMaterial("fur.hair", {0.55f, 0.36f, 0.2f}, 0.0f, 0.35f)));
 }
 
+void addSpikeBall(SubjectSink& sink, const glm::vec3& centre, float radius, int count) {
+    Prng& rng = sink.rng();
+    const int gold = sink.material(plainMaterial("spikes.gold", {1.0f, 0.78f, 0.34f}, 1.0f, 0.02f));
+    const int spikes = sink.scaled(count);
+    TubeOptions tube;
+    tube.sides = 6;
+    tube.capEnd = true;
+    MeshData mesh;
+    constexpr float kGoldenAngle = 2.39996323f; // pi (3 - sqrt 5)
+    for (int i = 0; i < spikes; ++i) {
+        // Fibonacci lattice: even area per direction; a small jitter breaks its spirals.
+        const float z = 1.0f - 2.0f * (static_cast<float>(i) + rng.range(0.25f, 0.75f)) / spikes;
+        const float r = std::sqrt(std::max(0.0f, 1.0f - z * z));
+        const float phi = kGoldenAngle * static_cast<float>(i) + rng.range(-0.05f, 0.05f);
+        const glm::vec3 dir(r * std::cos(phi), z, r * std::sin(phi));
+        addTube(mesh, {centre + dir * (0.3f * radius), centre + dir * radius}, {0.0025f, 0.0025f}, tube);
+    }
+    sink.addSubject("spikes", mesh, gold);
+}
+
 void addMetalLattice(SubjectSink& sink, const glm::vec3& centre, const glm::vec2& size) {
     Prng& rng = sink.rng();
     const int steel = sink.material(plainMaterial("metal.steel", {0.91f, 0.92f, 0.92f}, 1.0f, 0.18f));

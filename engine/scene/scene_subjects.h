@@ -53,6 +53,11 @@ void addFurball(SubjectSink& sink, const glm::vec3& centre, float radius, float 
 // spanning size.x by size.y in a plane facing +Z.
 void addMetalLattice(SubjectSink& sink, const glm::vec3& centre, const glm::vec2& size);
 
+// A ball of thin glossy gold spikes (issue 14's thin glossy metal): `count` cylinders of 2.5 mm
+// radius running radially from 0.3 to 1 x radius, metallic 1, roughness 0.02, directions spread
+// evenly over the sphere (a Fibonacci lattice with a seeded jitter).
+void addSpikeBall(SubjectSink& sink, const glm::vec3& centre, float radius, int count);
+
 // Branching twigs carrying alpha-masked leaf cards, rising from base.
 void addFoliage(SubjectSink& sink, const glm::vec3& base, float width, float height);
 

@@ -17,7 +17,7 @@ constexpr float kYfov = 0.7f; // radians (40 degrees)
 constexpr float kAspect16x9 = 16.0f / 9.0f;
 constexpr int kPointLights = 16;
 
-enum class Kind { Furball, Metal, Foliage, Bamboo, Railings, Plane, Default };
+enum class Kind { Furball, Metal, Foliage, Bamboo, Railings, Plane, Default, Spikes };
 
 struct KindName {
     Kind kind;
@@ -27,7 +27,7 @@ struct KindName {
 constexpr KindName kKinds[] = {
     {Kind::Furball, "furball"}, {Kind::Metal, "metal"},       {Kind::Foliage, "foliage"},
     {Kind::Bamboo, "bamboo"},   {Kind::Railings, "railings"}, {Kind::Plane, "plane"},
-    {Kind::Default, "default"},
+    {Kind::Default, "default"}, {Kind::Spikes, "spikes"},
 };
 
 std::string knownList() {
@@ -62,8 +62,10 @@ void addLights(ModelBuilder& builder, const Bounds& subject, const Stage& stage,
     const glm::vec3 centre = 0.5f * (subject.min + subject.max);
     const glm::vec3 extent = subject.max - subject.min;
     const float size = std::max({extent.x, extent.y, extent.z, 0.1f});
-    for (int k = 0; k < kPointLights; ++k) {
-        const float a = 6.28318530718f * (static_cast<float>(k) + 0.5f) / kPointLights;
+    // The spike ball: one shadowed sun and 8 point lights (issue 14's measurement).
+    const int pointLights = kind == Kind::Spikes ? 8 : kPointLights;
+    for (int k = 0; k < pointLights; ++k) {
+        const float a = 6.28318530718f * (static_cast<float>(k) + 0.5f) / pointLights;
         glm::vec3 p;
         float radius = 0.0f;
         if (kind == Kind::Plane) {
@@ -80,7 +82,7 @@ void addLights(ModelBuilder& builder, const Bounds& subject, const Stage& stage,
                 p.z = std::max(p.z, *stage.wallZ + 0.1f);
             }
         }
-        const glm::vec3 color = hueToRgb(static_cast<float>(k) / kPointLights, 0.6f);
+        const glm::vec3 color = hueToRgb(static_cast<float>(k) / pointLights, 0.6f);
         // ~0.6 lux at the ring radius; range 2.5x so the falloff window covers the subject.
         const float intensity = 0.6f * radius * radius;
         builder.addPointLight("point." + std::to_string(k), p, color, intensity, 2.5f * radius + 0.5f);
@@ -149,6 +151,13 @@ Stage buildKind(Kind kind, SubjectSink& sink) {
         stage.wallZ = 0.0f;
         break;
     }
+    case Kind::Spikes:
+        // Thin glossy metal where AGAA once looked worse than no AA (issue 14): 6000 gold spikes.
+        stage.floorY = 0.0f;
+        addFloor(sink, 0.0f, 3.0f, {0.1f, 0.1f, 0.11f});
+        addSpikeBall(sink, {0.0f, 1.05f, 0.0f}, 1.0f, 6000);
+        stage.viewDir = {0.0f, -0.2f, -1.0f};
+        break;
     case Kind::Default:
         // Railings in front, fur and foliage behind, all on one floor before a wall.
         stage.floorY = 0.0f;

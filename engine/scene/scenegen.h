@@ -25,7 +25,7 @@ struct GenOptions {
 
 inline constexpr float kMaxDensity = 8.0f;
 
-// furball, metal, foliage, bamboo, railings, plane, default. generateScene and loadBuiltin also
+// furball, metal, foliage, bamboo, railings, plane, default, spikes. generateScene and loadBuiltin also
 // accept the adversarial hard-* kinds (adversarial_scenes.h: hardSceneKinds()), which this list leaves out.
 std::vector<std::string> sceneKinds();
 

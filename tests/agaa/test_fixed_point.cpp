@@ -217,7 +217,9 @@ TEST(FixedPointSggx, FlatPixelRoundTripsNormalAndAlpha) {
                 const float tolerance = 4.0f / float(unitScale(kSggxFieldBits, n));
                 EXPECT_NEAR(lobe.alphaT * lobe.alphaT, alpha * alpha, tolerance) << "n=" << n;
                 EXPECT_NEAR(lobe.alphaB * lobe.alphaB, alpha * alpha, tolerance) << "n=" << n;
-                EXPECT_NEAR(sggxSpikeRatio(lobe.alphaT, std::max(lobe.alphaB, 1e-3f)), 1.0f, 0.05f)
+                EXPECT_NEAR(
+                    sggxSpikeRatio(lobe.alphaT, std::max(lobe.alphaB, 1e-3f), std::max(lobe.alphaB, 1e-3f)),
+                    1.0f, 0.05f)
                     << "a flat pixel has no highlight to spread";
             }
 }
@@ -241,7 +243,7 @@ TEST(FixedPointSggx, TubeSpreadIsAnisotropicAndKeepsTheMaterialAlphaAlongTheAxis
     EXPECT_GT(std::abs(lobe.tangent.x), 0.999f) << "the wide axis is across the tube";
     EXPECT_GT(lobe.alphaT, 0.6f);
     EXPECT_NEAR(lobe.alphaB, alpha, 0.25f * alpha) << "along the tube only the material roughness remains";
-    const float ratio = sggxSpikeRatio(lobe.alphaT, lobe.alphaB);
+    const float ratio = sggxSpikeRatio(lobe.alphaT, lobe.alphaB, lobe.alphaB);
     EXPECT_GT(ratio, 5.0f) << "a glossy tube's highlight lights a small fraction of its samples";
     EXPECT_NEAR(ratio,
                 lobe.alphaT * lobe.alphaT /

@@ -726,7 +726,7 @@ std::vector<EdgeCase> shaderMathCases() {
              {{6e4f, 1.0f, 0.0f}, {6e4f, 0.5f, 0.0f}, {1e9f, 1e3f, 0.0f}, {"kMaxRadiance"}},
          }) {
         MathCase in = op(kOpToneMapAggregate, glm::vec4(L, 0), glm::vec4(S, 0), glm::vec4(var, 0),
-                         glm::vec4(0.8f, 0.04f, 0, 0));
+                         glm::vec4(0.8f, 0.04f, 0.04f, 0));
         add("toneMapAggregate L=" + fmt(L.x) + " S=" + fmt(S.x) + " var=" + fmt(var.x), guards, in,
             [L, S, var](const MathResult& r) -> std::string {
                 D3 want(toneMapAggregate(L.x, S.x, var.x), toneMapAggregate(L.y, S.y, var.y),
@@ -736,6 +736,18 @@ std::vector<EdgeCase> shaderMathCases() {
                     if (r.r0[i] < 0.0f || r.r0[i] > 1.0f) return "E[T(L)] outside [0, 1]";
                 const double t2 = 0.8 * 0.8;
                 return near("spike ratio", r.r1.x, t2 / (0.04 * std::sqrt(2.0 * t2 - 0.04 * 0.04)), 1e-5);
+            });
+    }
+    // The spike ratio with a material lobe narrower than both axes (issue 14): each axis
+    // contributes A^2 / (a sqrt(2 A^2 - a^2)); a = alphaB leaves the narrow axis at 1.
+    for (const auto& [aT, aB, a] : std::vector<std::tuple<float, float, float>>{
+             {0.8f, 0.04f, 0.04f}, {0.6f, 0.5f, 0.001f}, {0.3f, 0.3f, 0.3f}, {0.9f, 0.9f, 0.001f}}) {
+        MathCase in = op(kOpToneMapAggregate, glm::vec4(0.1f, 0, 0, 0), glm::vec4(0.0f), glm::vec4(0.0f),
+                         glm::vec4(aT, aB, a, 0));
+        add("sggxSpikeRatio alphaT=" + fmt(aT) + " alphaB=" + fmt(aB) + " material=" + fmt(a), {}, in,
+            [aT, aB, a](const MathResult& r) -> std::string {
+                auto axis = [](double A, double m) { return A * A / (m * std::sqrt(2.0 * A * A - m * m)); };
+                return near("spike ratio", r.r1.x, axis(aT, a) * axis(aB, a), 1e-5);
             });
     }
 

@@ -147,6 +147,12 @@ layout(constant_id = 8) const uint kSkipShading = 0u;
 // same value). A constant, not a uniform: lavapipe executes both sides of every branch whose
 // condition is not known at compile time, so a uniform choice would pay for both BRDFs.
 layout(constant_id = 9) const uint kNdf = 0u;
+// The two-point resolve (common/tonemap.glsl toneMapAggregate, shared/sggx.h spike ratio) spreads an
+// aggregate's specular over its samples: SGGX aggregates always; Toksvig aggregates where the
+// generation path knows the samples' own material alpha (the samples path), so that an aggregate
+// of mirror-like samples whose normals spread wide is resolved as sparse highlights, not as the
+// glow of its mean (issue 14).
+const bool kTwoPoint = kNdf == kNdfSggx || AGAA_GBUFFER != 0;
 // Specialisation id 10 (AggregateRouting): 1 when the generation pass routed whole fragments
 // (Algorithm 2); an aggregate then stands for the samples it received, which need not be the
 // samples the metadata assigned it, so the resolve weights it by its accumulated count.
@@ -173,16 +179,24 @@ shared vec4 sBitangent[kListRound];
 shared uint sOwner[kListRound];
 shared uint sEntryCount;
 
-// One light's contribution to an aggregate.
+// One light's contribution to an aggregate. alphas: SGGX (alphaT, alphaB); Toksvig with the
+// two-point resolve (filtered alpha, the samples' material alpha). SGGX carries the material alpha
+// in surface.roughness (its anisotropic BRDF reads the alphas only).
 void addLight(SurfaceInputs surface, vec3 T, vec3 B, vec2 alphas, vec3 V, vec3 L, vec3 irradiance, bool sggx,
               inout vec3 radiance, inout vec3 specular, inout vec3 specularVariance) {
+    vec3 spec;
     if (sggx) {
-        vec3 spec;
         radiance += evaluateBrdfAnisotropic(surface, T, B, alphas.x, alphas.y, V, L, irradiance, spec);
         // Var = (E[L^2] / E[L]^2 - 1) E[L]^2 per light; highlights of different lights
         // fall on different samples, so their variances add.
         specular += spec;
-        specularVariance += (sggxSpikeRatio(alphas.x, alphas.y) - 1.0) * spec * spec;
+        specularVariance +=
+            (sggxSpikeRatio(alphas.x, alphas.y, surface.roughness * surface.roughness) - 1.0) * spec * spec;
+    } else if (kTwoPoint) {
+        radiance += evaluateBrdfSplit(surface, V, L, irradiance, spec);
+        specular += spec;
+        float axis = spikeRatioAxis(alphas.x, alphas.y); // isotropic: both axes alike
+        specularVariance += (axis * axis - 1.0) * spec * spec;
     } else {
         radiance += evaluateBrdf(surface, V, L, irradiance);
     }
@@ -243,6 +257,7 @@ void main() {
     vec3 moment0[kMaxAggregates] = vec3[](vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0));
     vec3 moment1[kMaxAggregates] = vec3[](vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0));
     vec4 albedoMetalSum[kMaxAggregates] = vec4[](vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0));
+    float materialAlphaSum[kMaxAggregates] = float[](0.0, 0.0, 0.0, 0.0); // the two-point resolve's
 #endif
     if (inside) {
         for (uint s = 0u; s < n; ++s) {
@@ -275,6 +290,7 @@ void main() {
                 moment0[a] += N * toksvigLength(alpha, agaa.toksvig.x, agaa.toksvig.y, agaa.toksvig.z);
             }
             albedoMetalSum[a] += albedoMetal;
+            materialAlphaSum[a] += clamp(alpha, kMinGgxAlpha, kMaxGgxAlpha);
 #if AGAA_EXPORT
             exportRecord(pixelIndex * n + s, vec4(N, roughness), albedoMetal, vec4(P, float(a)),
                          vec4(1.0, 0.0, 0.0, 0.0));
@@ -362,13 +378,24 @@ void main() {
             tangents[a] = lobe.tangent;
             bitangents[a] = lobe.bitangent;
             alphas[a] = clamp(vec2(lobe.alphaT, lobe.alphaB), kMinGgxAlpha, kMaxGgxAlpha);
-            surfaces[a].roughness = sqrt(alphas[a].x); // unused by the anisotropic BRDF
+            // The material alpha of the spike ratio (the anisotropic BRDF reads only the alphas):
+            // the samples' own where known; else the narrow axis, taken as pure material.
+#if AGAA_GBUFFER
+            surfaces[a].roughness = sqrt(clamp(materialAlphaSum[a] / fs, kMinGgxAlpha, alphas[a].y));
+#else
+            surfaces[a].roughness = sqrt(alphas[a].y);
+#endif
         } else {
             float len = length(mean0);
             // |N| -> 0 when opposing normals cancel: no mean direction; shade facing the viewer
             // (the filtered roughness is then 1, so the direction barely matters).
             surfaces[a].normal = len > kMinNormalLength ? mean0 / len : V;
             surfaces[a].roughness = sqrt(filteredAlpha(len, agaa.toksvig.x)); // the BRDF squares it back
+#if AGAA_GBUFFER
+            // The two-point resolve's (filtered, material) alphas, in the BRDF's range.
+            float filtered = clamp(surfaces[a].roughness * surfaces[a].roughness, kMinGgxAlpha, kMaxGgxAlpha);
+            alphas[a] = vec2(filtered, clamp(materialAlphaSum[a] / fs, kMinGgxAlpha, filtered));
+#endif
         }
 #if AGAA_EXPORT
         exportRecord(uint(size.x * size.y) * n + pixelIndex * c + a, vec4(mean0, mean1.x), vec4(mean1.yz, albedo.rg),
@@ -391,7 +418,7 @@ void main() {
 
     // ---- 3. light each aggregate once per light ----------------------------------------
     vec3 radiance[kMaxAggregates] = vec3[](vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0));
-    // SGGX: the specular part of the radiance and its variance over the aggregate's samples.
+    // Two-point resolve: the specular part of the radiance and its variance over the aggregate's samples.
     vec3 specular[kMaxAggregates] = vec3[](vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0));
     vec3 specularVariance[kMaxAggregates] = vec3[](vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0));
     if (kSkipShading != 0u) {
@@ -411,7 +438,7 @@ void main() {
                     sPosition[e] = vec4(positions[a], depthSigma[a]);
                     sNormal[e] = vec4(surfaces[a].normal, surfaces[a].roughness);
                     sAlbedo[e] = vec4(surfaces[a].albedo, surfaces[a].metallic);
-                    if (sggx) {
+                    if (kTwoPoint) {
                         sTangent[e] = vec4(tangents[a], alphas[a].x);
                         sBitangent[e] = vec4(bitangents[a], alphas[a].y);
                     }
@@ -429,14 +456,14 @@ void main() {
                 surface.roughness = sNormal[self].w;
                 surface.albedo = sAlbedo[self].rgb;
                 surface.metallic = sAlbedo[self].a;
-                vec4 T = sggx ? sTangent[self] : vec4(0.0);
-                vec4 B = sggx ? sBitangent[self] : vec4(0.0);
+                vec4 T = kTwoPoint ? sTangent[self] : vec4(0.0);
+                vec4 B = kTwoPoint ? sBitangent[self] : vec4(0.0);
                 vec3 lit, spec, variance;
                 shadeAggregate(surface, T.xyz, B.xyz, vec2(T.w, B.w), sPosition[self].xyz, sPosition[self].w,
                                ownerPixel, uint(ownerPixel.y * size.x + ownerPixel.x), (owner >> 8u) & 3u,
                                owner >> 10u, sggx, lit, spec, variance);
                 sPosition[self].xyz = lit;
-                if (sggx) {
+                if (kTwoPoint) {
                     sNormal[self].xyz = spec;
                     sAlbedo[self].xyz = variance;
                 }
@@ -448,7 +475,7 @@ void main() {
                 if (slot >= lo && slot < lo + kListRound) {
                     uint e = slot - lo;
                     radiance[a] = sPosition[e].xyz;
-                    if (sggx) {
+                    if (kTwoPoint) {
                         specular[a] = sNormal[e].xyz;
                         specularVariance[a] = sAlbedo[e].xyz;
                     }
@@ -491,7 +518,7 @@ void main() {
         vec3 L = present[a] ? radiance[a] : vec3(0.0);
         L += texelFetch(emissiveSamples, ivec3(pixel, s / 4u), int(s % 4u)).rgb;
         L = min(L * exposure, vec3(kMaxRadiance));
-        display += weight * (sggx && present[a] ? toneMapAggregate(L, specular[a] * exposure,
+        display += weight * (kTwoPoint && present[a] ? toneMapAggregate(L, specular[a] * exposure,
                                                                   specularVariance[a] * (exposure * exposure))
                                                 : toneMapAces(L));
         hdr += weight * L;
@@ -507,7 +534,7 @@ void main() {
         if (stands == 0u) continue;
         vec3 L = present[a] ? min(radiance[a] * exposure, vec3(kMaxRadiance)) : vec3(0.0);
         float w = weight * float(stands);
-        display += w * (sggx && present[a] ? toneMapAggregate(L, specular[a] * exposure,
+        display += w * (kTwoPoint && present[a] ? toneMapAggregate(L, specular[a] * exposure,
                                                              specularVariance[a] * (exposure * exposure))
                                            : toneMapAces(L));
         hdr += w * L;

@@ -65,6 +65,19 @@ vec3 evaluateBrdf(SurfaceInputs s, vec3 V, vec3 L, vec3 irradiance) {
     return (diffuseLobe(s, F) + specular) * irradiance * g.NoL;
 }
 
+// evaluateBrdf's value, with its specular part returned too (AGAA's two-point resolve spreads
+// the specular part of a Toksvig aggregate over its samples: agaa/lighting.glsl).
+vec3 evaluateBrdfSplit(SurfaceInputs s, vec3 V, vec3 L, vec3 irradiance, out vec3 specularOut) {
+    specularOut = vec3(0.0);
+    BrdfAngles g;
+    if (!brdfAngles(s.normal, V, L, g)) return vec3(0.0);
+    float alpha = clamp(s.roughness * s.roughness, kMinGgxAlpha, kMaxGgxAlpha);
+    vec3 F = surfaceFresnel(s, g.VoH);
+    vec3 specular = F * (ggxD(g.NoH, alpha) * smithVisibility(g.NoV, max(g.NoL, kMinCosine), alpha));
+    specularOut = specular * irradiance * g.NoL;
+    return diffuseLobe(s, F) * irradiance * g.NoL + specularOut;
+}
+
 // Anisotropic GGX (Burley 2012; Heitz 2014 for the height-correlated visibility), alphas ax
 // along T and ay along B; for AGAA's SGGX aggregates (shared/sggx.h). With ax == ay it returns
 // evaluateBrdf's value (tested): the tangent components are rescaled to the clamped cosines.

@@ -79,17 +79,28 @@ inline_fn SggxLobe sggxLobe(float sxx, float syy, float szz, float sxy, float sx
 }
 
 // Spread of the per-sample specular radiance inside an aggregate, as E[L^2] / E[L]^2 at the
-// lobe's centre. Model (slope space, Gaussian lobes): every sample reflects with the material
-// lobe of variance m = alphaB^2 / 2 per axis (the narrow axis is taken as pure material), its
-// normal spread by g = (alphaT^2 - alphaB^2) / 2 along the tangent only. Then
-//   E[D] = N(0, m + g) x N(0, m),  E[D^2] = N(0, m/2 + g) x N(0, m/2) / (4 pi m),
-// whose ratio at h = 0 is  alphaT^2 / (alphaB sqrt(2 alphaT^2 - alphaB^2)):  1 for an isotropic
-// lobe (a flat pixel: every sample alike), about alphaT / (sqrt(2) alphaB) for a thin glossy
-// tube (its highlight lights a fraction of the samples, each far brighter than the mean).
-// Inputs: alphaT >= alphaB >= the BRDF's alpha floor > 0, so 2 alphaT^2 - alphaB^2 >= alphaT^2 > 0.
-inline_fn float sggxSpikeRatio(float alphaT, float alphaB) {
-    float t2 = alphaT * alphaT;
-    return t2 / (alphaB * sqrt(2.0f * t2 - alphaB * alphaB));
+// lobe's centre. Model (slope space, Gaussian lobes), per axis of the aggregate's lobe (alpha A):
+// every sample reflects with the material lobe of variance m = a^2 / 2 (a: the samples' own GGX
+// alpha), its normal spread by g = (A^2 - a^2) / 2. Then
+//   E[D] = N(0, m + g),  E[D^2] = N(0, m/2 + g) / (2 sqrt(pi m)),
+// whose ratio at h = 0 is  A^2 / (a sqrt(2 A^2 - a^2)):  1 when the aggregate's lobe is the
+// material's (a flat pixel: every sample alike), about A / (sqrt(2) a) when the normals spread
+// far beyond it (a highlight lights a fraction of the samples, each far brighter than the mean).
+// Inputs: A >= a >= the BRDF's alpha floor > 0, so 2 A^2 - a^2 >= A^2 > 0.
+inline_fn float spikeRatioAxis(float A, float a) {
+    float A2 = A * A;
+    return A2 / (a * sqrt(2.0f * A2 - a * a));
+}
+
+// The anisotropic lobe's ratio, both axes. alphaMaterial: the samples' mean material alpha where
+// the generation path knows it (the samples path reads each sample's roughness); the accumulate
+// path stores none and passes alphaB, taking the narrow axis as pure material (then only the
+// tangent spreads). Issue 14: on a ball of thin mirror-like spikes a pixel's spikes point every
+// way, both axes come out wide, and with alphaB as the material the ratio was about 1 where the
+// samples' 1e-3 lobes make it hundreds: the resolve tone-mapped the mean, a grey glow.
+// Inputs: alphaT >= alphaB >= alphaMaterial >= the BRDF's alpha floor (callers clamp).
+inline_fn float sggxSpikeRatio(float alphaT, float alphaB, float alphaMaterial) {
+    return spikeRatioAxis(alphaT, alphaMaterial) * spikeRatioAxis(alphaB, alphaMaterial);
 }
 
 SHARED_END

@@ -126,7 +126,7 @@ void main() {
         r0.x = curvatureRoughness(k.c.x, k.a.xyz, k.b.xyz, k.c.y, k.c.z);
     } else if (op == kOpToneMapAggregate) {
         r0.xyz = toneMapAggregate(k.a.xyz, k.b.xyz, k.c.xyz);
-        r1.x = sggxSpikeRatio(k.d.x, k.d.y);
+        r1.x = sggxSpikeRatio(k.d.x, k.d.y, k.d.z);
     } else if (op == kOpLight) {
         GpuLight light;
         light.positionRange = k.a;

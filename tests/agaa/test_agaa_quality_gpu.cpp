@@ -1,0 +1,167 @@
+// AGAA must never look worse than no AA (issue 14), measured on every built-in and every hard-*
+// scene: display RMSE (the technique's tone-mapped resolve, sRGB-encoded) against the per-sample
+// reference at the same n, and the linear mean radiance against the reference's. The table it
+// prints is the README's quality table (AGAA_QUALITY_SIZE re-runs it at another size,
+// AGAA_QUALITY_NO_SHADOWS=1 without shadowed lights, AGAA_QUALITY_EXPOSURE=E at another exposure,
+// AGAA_QUALITY_METAL_ROUGHNESS=R with every metal at roughness R, AGAA_QUALITY_REFERENCE_SAMPLES=N
+// against the reference at n = N,
+// AGAA_QUALITY_NDF=sggx|toksvig with one normal distribution: the measurements behind the README's causes).
+
+#include "agaa/common/frame_renderer.h"
+#include "engine/io/metrics.h"
+#include "engine/io/tone_map.h"
+#include "engine/scene/adversarial_scenes.h"
+#include "engine/scene/scenegen.h"
+#include "gpu_test_support.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <iterator>
+#include <string>
+#include <vector>
+
+namespace {
+
+eng::io::ImageF encoded(const eng::io::ImageF& display) {
+    eng::io::ImageF out = display;
+    for (size_t i = 0; i < out.rgba.size(); ++i)
+        if (i % 4 != 3) out.rgba[i] = eng::io::linearToSrgb(out.rgba[i]);
+    return out;
+}
+
+// Mean linear radiance over the image (rgb averaged), the energy the resolve kept.
+double meanRadiance(const eng::io::ImageF& hdr) {
+    double sum = 0.0;
+    for (size_t i = 0; i < hdr.rgba.size(); ++i)
+        if (i % 4 != 3) sum += hdr.rgba[i];
+    return sum / double(hdr.rgba.size() / 4 * 3);
+}
+
+agaa::RenderRequest request(const std::string& method, uint32_t n, uint32_t c, uint32_t size) {
+    agaa::RenderRequest r;
+    r.method = method;
+    r.settings.samples = n;
+    r.settings.aggregates = c;
+    r.view.width = r.view.height = size;
+    if (const char* e = std::getenv("AGAA_QUALITY_EXPOSURE")) r.view.exposure = float(std::atof(e));
+    return r;
+}
+
+uint32_t qualitySize() {
+    const char* env = std::getenv("AGAA_QUALITY_SIZE");
+    return env ? uint32_t(std::clamp(std::atoi(env), 16, 512)) : 64;
+}
+
+std::vector<std::string> everyScene() {
+    std::vector<std::string> scenes = eng::scene::sceneKinds();
+    for (const std::string& h : eng::scene::hardSceneKinds())
+        scenes.push_back(h);
+    return scenes;
+}
+
+// Where AGAA is still worse than no AA (issue 14, open): measured at 64x64, n = 8, and listed so
+// that the test guards every other scene and c, and notices when a gap closes (it then fails and
+// asks for the entry to go). The README's quality table gives each with its numbers.
+struct KnownGap {
+    const char* scene;
+    uint32_t c;
+    const char* measured;
+};
+constexpr KnownGap kDisplayGaps[] = {
+    {"hard-mirror", 1, "1.56x no-AA"},
+    {"hard-far", 1, "1.64x no-AA"},
+    {"hard-many-lights", 1, "1.95x no-AA"},
+    {"hard-degenerate", 1, "1.03x no-AA"},
+};
+// The energy bound at c = 2, AGAA's default: spikes breaks it against the 8-sample reference, whose
+// mean is not converged there (a few mirror sparkles carry it: 0.118 at 64x64 n = 8, 0.200 at
+// n = 32, 0.22 to 0.30 at 128x128; AGAA's stays 0.21 to 0.25); hard-light-inside sits on it (AGAA
+// +18.1 %, no-AA +18.0 %: a light inside the geometry puts the mean in a few samples).
+constexpr KnownGap kEnergyGaps[] = {{"spikes", 2, "+78 % mean radiance"},
+                                    {"hard-light-inside", 2, "+18.1 % against no-AA's +18.0 %"}};
+
+const KnownGap* knownGap(const KnownGap* begin, const KnownGap* end, const std::string& scene, uint32_t c) {
+    for (const KnownGap* g = begin; g != end; ++g)
+        if (scene == g->scene && c == g->c) return g;
+    return nullptr;
+}
+
+class QualityScene : public ::testing::TestWithParam<std::string> {};
+
+// For c = 1, 2 and 4: AGAA(8, c)'s display error against the reference is at most no-AA's. At
+// c = 2 its linear mean radiance is within 10 % of the reference's, or, where the 8-sample
+// reference is itself a noisy estimate of the pixel (a few firefly samples carry the mean: hard-
+// mirror, hard-light-inside), no further from it than no-AA's one-sample estimate is.
+TEST_P(QualityScene, AgaaIsNeverWorseThanNoAaAndKeepsTheEnergy) {
+    auto device = agaa::test::makeValidatedDevice();
+    eng::scene::Scene scene = eng::scene::loadBuiltin(GetParam());
+    if (std::getenv("AGAA_QUALITY_NO_SHADOWS"))
+        for (eng::scene::Light& l : scene.lights)
+            l.castsShadows = false;
+    if (const char* r = std::getenv("AGAA_QUALITY_METAL_ROUGHNESS"))
+        for (eng::scene::Material& m : scene.materials)
+            if (m.metallicFactor >= 0.5f) m.roughnessFactor = float(std::atof(r));
+    const char* ndf = std::getenv("AGAA_QUALITY_NDF");
+    agaa::FrameRenderer renderer(*device, scene);
+    const uint32_t size = qualitySize(), n = 8;
+    // AGAA_QUALITY_REFERENCE_SAMPLES=32: the reference at another n (AGAA stays at 8).
+    const char* refSamples = std::getenv("AGAA_QUALITY_REFERENCE_SAMPLES");
+    const bool measuredSetting = size == 64 && !std::getenv("AGAA_QUALITY_NO_SHADOWS") && !ndf &&
+                                 !std::getenv("AGAA_QUALITY_EXPOSURE") &&
+                                 !std::getenv("AGAA_QUALITY_METAL_ROUGHNESS") && !refSamples;
+    const agaa::RenderResult ref =
+        renderer.render(request("reference", refSamples ? uint32_t(std::atoi(refSamples)) : n, 1, size));
+    const agaa::RenderResult noaa = renderer.render(request("noaa", 1, 1, size));
+    const eng::io::ImageF refDisplay = encoded(ref.display);
+    const double noaaError = eng::io::rmse(encoded(noaa.display), refDisplay);
+    const double refMean = meanRadiance(ref.hdr), noaaMean = meanRadiance(noaa.hdr);
+    std::printf("[ measured ] %-18s reference mean %.4g, no-AA display RMSE %.4f (mean %.4g)\n",
+                GetParam().c_str(), refMean, noaaError, noaaMean);
+    for (uint32_t c : {1u, 2u, 4u}) {
+        agaa::RenderRequest r = request("agaa", n, c, size);
+        if (ndf) r.settings.ndf = ndf;
+        const agaa::RenderResult ag = renderer.render(r);
+        const double error = eng::io::rmse(encoded(ag.display), refDisplay);
+        const double mean = meanRadiance(ag.hdr);
+        std::printf(
+            "[ measured ] %-18s agaa (8, %u): display RMSE %.4f (%.2fx no-AA), mean %.4g (%+.1f %%)\n",
+            GetParam().c_str(), c, error, noaaError > 0 ? error / noaaError : 0.0, mean,
+            refMean > 0 ? 100.0 * (mean - refMean) / refMean : 0.0);
+        // A scene no-AA renders exactly (one surface per pixel) leaves AGAA the same slack.
+        const bool displayOk = error <= std::max(noaaError, 1e-3);
+        const bool energyOk = c != 2 || std::abs(mean - refMean) <=
+                                            std::max({0.1 * refMean, std::abs(noaaMean - refMean), 1e-3});
+        if (!measuredSetting) continue; // a measurement run: print only
+        const KnownGap* displayGap =
+            knownGap(std::begin(kDisplayGaps), std::end(kDisplayGaps), GetParam(), c);
+        const KnownGap* energyGap = knownGap(std::begin(kEnergyGaps), std::end(kEnergyGaps), GetParam(), c);
+        if (displayGap) {
+            EXPECT_FALSE(displayOk) << GetParam() << " c=" << c
+                                    << " is no longer worse than no AA (it measured " << displayGap->measured
+                                    << "): remove it from kDisplayGaps";
+        } else {
+            EXPECT_TRUE(displayOk) << GetParam() << " c=" << c << ": AGAA worse than no AA";
+        }
+        if (energyGap) {
+            EXPECT_FALSE(energyOk) << GetParam() << " c=" << c
+                                   << " now keeps the reference's energy (it measured " << energyGap->measured
+                                   << "): remove it from kEnergyGaps";
+        } else {
+            EXPECT_TRUE(energyOk) << GetParam() << " c=" << c
+                                  << ": AGAA's mean radiance is not the reference's";
+        }
+    }
+    agaa::test::expectNoValidationErrors(*device);
+}
+
+INSTANTIATE_TEST_SUITE_P(Every, QualityScene, ::testing::ValuesIn(everyScene()), [](const auto& info) {
+    std::string s = info.param;
+    for (char& ch : s)
+        if (ch == '-') ch = '_';
+    return s;
+});
+
+} // namespace
