@@ -54,6 +54,8 @@ std::string joined(const std::vector<std::string>& v) {
 std::string usage() {
     return "usage: agaa-bench --out DIR [--scenes a,b] [--methods a,b] [--samples 8,32] [--aggregates 1,2]\n"
            "                  [--size WxH] [--frames K] [--warmup K] [--temporal K] [--full] [--job I/N]\n"
+           "                  [--agaa-generation auto|accumulate|samples|coverage] [--sample-rate-shading "
+           "on|off]\n"
            "                  [--validate] [--help]\n"
            "       agaa-bench --out DIR --merge DIR1 DIR2 ...\n"
            "\n"
@@ -80,6 +82,10 @@ std::string usage() {
            "  --job I/N         run only jobs I, I+N, I+2N, ... of the plan (split a sweep; merge with "
            "--merge)\n"
            "  --merge DIR...    merge the jobs of several output directories into --out, without rendering\n"
+           "  --agaa-generation P  AGAA's generation path for method agaa (default auto); the methods\n"
+           "                    agaa-accumulate and agaa-samples sweep both paths side by side\n"
+           "  --sample-rate-shading on|off  every per-sample G-buffer fill at sample rate, the truths'\n"
+           "                    too: errors against the supersampled ground truth (default off)\n"
            "  --validate        Khronos validation layer on; a validation error makes the exit status 1\n"
            "\n"
            "exit status: 0 done; 1 a job failed or validation errors; 2 bad arguments or missing Chart.js;\n"
@@ -127,6 +133,17 @@ BenchOptions parseOptions(int argc, char** argv) {
                                       eng::frame::supportedSampleCounts() + ")");
                 samples->push_back(n);
             }
+        } else if (a == "--agaa-generation") {
+            const std::string v = value();
+            if (v != "auto" && v != "accumulate" && v != "samples" && v != "coverage")
+                throw BadArgument("--agaa-generation '" + v +
+                                  "' is not one of: auto, accumulate, samples, coverage");
+            s.agaaGeneration = v;
+        } else if (a == "--sample-rate-shading") {
+            const std::string v = value();
+            if (v != "on" && v != "off")
+                throw BadArgument("--sample-rate-shading '" + v + "' is not one of: on, off");
+            s.sampleRateShading = v == "on";
         } else if (a == "--aggregates") {
             aggregates.emplace();
             for (const std::string& v : splitList(a, value()))

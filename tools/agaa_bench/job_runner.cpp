@@ -56,6 +56,8 @@ RenderRequest JobRunner::request(const std::string& method, uint32_t samples, ui
     r.method = method;
     r.settings.samples = samples;
     if (aggregates != kAggregatesWhenUnused) r.settings.aggregates = aggregates;
+    if (method == "agaa") r.settings.agaaGeneration = m_settings.agaaGeneration;
+    r.settings.sampleRateShading = m_settings.sampleRateShading;
     r.view.width = width;
     r.view.height = height;
     if (orbitDegrees != 0.0f) {

@@ -25,6 +25,12 @@ struct SweepSettings {
     float temporalStepDegrees = 0.5f;
     uint32_t temporalMaxWidth = 320; // the path renders at the sweep size scaled down to this width
     bool validate = false;
+    // Applied to every job and to the truths: AGAA's generation path for method "agaa" (the
+    // agaa-accumulate and agaa-samples methods pin theirs), and sample-rate shading of every
+    // per-sample G-buffer fill, the truths' included (errors are then against the supersampled
+    // ground truth).
+    std::string agaaGeneration = "auto";
+    bool sampleRateShading = false;
 };
 
 // n and c of a method that does not take them: n is the single sample it renders, c is 0 (none).
