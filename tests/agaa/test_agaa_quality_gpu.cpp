@@ -118,8 +118,9 @@ TEST_P(QualityScene, AgaaIsNeverWorseThanNoAaAndKeepsTheEnergy) {
     const eng::io::ImageF refDisplay = encoded(ref.display);
     const double noaaError = eng::io::rmse(encoded(noaa.display), refDisplay);
     const double refMean = meanRadiance(ref.hdr), noaaMean = meanRadiance(noaa.hdr);
-    std::printf("[ measured ] %-18s reference mean %.4g, no-AA display RMSE %.4f (mean %.4g)\n",
-                GetParam().c_str(), refMean, noaaError, noaaMean);
+    std::printf(
+        "[ measured ] %-18s reference mean %.4g, no-AA display RMSE %.4f, linear RMSE %.4g (mean %.4g)\n",
+        GetParam().c_str(), refMean, noaaError, eng::io::rmse(noaa.hdr, ref.hdr), noaaMean);
     for (uint32_t c : {1u, 2u, 4u}) {
         agaa::RenderRequest r = request("agaa", n, c, size);
         if (ndf) r.settings.ndf = ndf;
@@ -127,9 +128,10 @@ TEST_P(QualityScene, AgaaIsNeverWorseThanNoAaAndKeepsTheEnergy) {
         const double error = eng::io::rmse(encoded(ag.display), refDisplay);
         const double mean = meanRadiance(ag.hdr);
         std::printf(
-            "[ measured ] %-18s agaa (8, %u): display RMSE %.4f (%.2fx no-AA), mean %.4g (%+.1f %%)\n",
-            GetParam().c_str(), c, error, noaaError > 0 ? error / noaaError : 0.0, mean,
-            refMean > 0 ? 100.0 * (mean - refMean) / refMean : 0.0);
+            "[ measured ] %-18s agaa (8, %u): display RMSE %.4f (%.2fx no-AA), linear RMSE %.4g, mean %.4g "
+            "(%+.1f %%)\n",
+            GetParam().c_str(), c, error, noaaError > 0 ? error / noaaError : 0.0,
+            eng::io::rmse(ag.hdr, ref.hdr), mean, refMean > 0 ? 100.0 * (mean - refMean) / refMean : 0.0);
         // A scene no-AA renders exactly (one surface per pixel) leaves AGAA the same slack.
         const bool displayOk = error <= std::max(noaaError, 1e-3);
         const bool energyOk = c != 2 || std::abs(mean - refMean) <=
