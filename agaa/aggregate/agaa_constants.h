@@ -14,7 +14,7 @@ enum class AggregateDebugView : uint32_t { None = 0, Aggregates = 1 };
 // Where an aggregate is shaded from: the mean of its samples' view positions (default), or the
 // UE4 shortcut (seed 004): its mean depth on the pixel centre's ray.
 enum class AggregatePosition : uint32_t { SampleMean = 0, PixelCentre = 1 };
-// How an aggregate's normals are filtered (shared/agaa.h layouts, same 20 bytes each): the
+// How an aggregate's normals are filtered (shared/agaa.h layouts, same 24 bytes each): the
 // isotropic Toksvig vector of paper section 3.5.2, or the anisotropic SGGX matrix (shared/sggx.h,
 // the paper's choice for thin glossy rods) with the two-point tone-mapped resolve.
 // Auto: SGGX where the scene has glossy metals (eng::scene::SceneFeatures::glossyMetalMaterials),
@@ -48,7 +48,7 @@ enum class AggregateDistance : uint32_t { Position = 0, Plane = 1 };
 // How the aggregates are generated (agaa/aggregate/README.md, "Generation paths"):
 //  - Accumulate: the visibility prepass, Algorithm 1 on its depth and face normals, then the
 //    accumulation kernel rasterises the scene again and sums each fragment into the AG-buffer
-//    (paper sections 3.3-3.4): 2 raster passes, c x 20 bytes per pixel of aggregates;
+//    (paper sections 3.3-3.4): 2 raster passes, c x 24 bytes per pixel of aggregates;
 //  - Samples: the UE4 variant (seed 004): one raster pass writes the per-sample G-buffer (the
 //    reference's, agaa/common/sample_gbuffer.h), Algorithm 1 runs on its depth and shading normal
 //    with metal and dielectric kept apart, and the lighting pass averages each aggregate's samples

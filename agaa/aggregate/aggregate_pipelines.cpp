@@ -159,8 +159,8 @@ void AggregateAA::resolveGeneration() {
     // foliage, furball and metal): the samples path rasterises the scene once instead of twice and
     // its frame was faster than the accumulate path's at every n measured on lavapipe (1.1x to
     // 1.6x at n = 8, 16 and 32). What it costs is memory: the whole per-sample G-buffer, 20 n + 5
-    // bytes per pixel against about 10 n + 45. Up to n = 16 that is at most 325 B/px (670 MB at
-    // 1920x1080); at n = 32 it is 645 B/px, 1.8x the accumulate path's 365, so above
+    // bytes per pixel against about 10 n + 53. Up to n = 16 that is at most 325 B/px (670 MB at
+    // 1920x1080); at n = 32 it is 645 B/px, 1.7x the accumulate path's 373, so above
     // kSamplesPathMaxSamples the rule keeps the accumulate path's memory, as the paper's design does.
     constexpr uint32_t kSamplesPathMaxSamples = 16;
     const bool samples = m_settings.samples <= kSamplesPathMaxSamples;
@@ -168,7 +168,7 @@ void AggregateAA::resolveGeneration() {
     m_generationCause = "n = " + std::to_string(m_settings.samples) + (samples ? " <= " : " > ") +
                         std::to_string(kSamplesPathMaxSamples) +
                         (samples ? ": one raster pass, per-sample G-buffer memory affordable"
-                                 : ": the per-sample G-buffer would be 1.8x the accumulate path's memory");
+                                 : ": the per-sample G-buffer would be 1.7x the accumulate path's memory");
 }
 
 VkPipeline AggregateAA::lightingPipeline(bool exporting) {
@@ -412,7 +412,7 @@ std::vector<VariantChoice> AggregateAA::variants() const {
          m_settings.routing == AggregateRouting::Fragment ? "per fragment (Algorithm 2)" : "per sample",
          "setting --agaa-routing"});
     const bool int64 = m_settings.atomics == AggregateAtomics::Bits64;
-    v.push_back({"generation-atomics", int64 ? "64-bit (3 per aggregate)" : "32-bit (5 per aggregate)",
+    v.push_back({"generation-atomics", int64 ? "64-bit (3 per aggregate)" : "32-bit (6 per aggregate)",
                  m_requested.atomics != AggregateAtomics::Auto
                      ? std::string("setting --agaa-atomics")
                      : std::string(caps.bufferInt64Atomics ? "device has" : "device lacks") +

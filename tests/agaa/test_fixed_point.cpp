@@ -194,6 +194,45 @@ TEST(FixedPointSggx, NoCarryBetweenFieldsAtAnySampleCount) {
         EXPECT_EQ(w[4] & 0xFFFFu, n * s16);
         EXPECT_EQ((w[4] >> 16) & 1023u, n * s10);
         EXPECT_EQ(aggregateSampleCount(kNdfSggx, uint32_t(w[0]), uint32_t(w[4])), n);
+        // Word 5, the material alpha, at its largest legal value (alpha <= kMaxGgxAlpha < 1).
+        top.q[10] = quantizeUnit(agaa::kMaxGgxAlpha, kMaterialAlphaScale);
+        EXPECT_LT(uint64_t(n) * aggregateIncrement(kNdfSggx, 5, 1, top), uint64_t(1) << 32) << "n=" << n;
+    }
+}
+
+// Issue 14: a mirror (alpha at the BRDF's floor) through the 16-bit matrix fields comes back a
+// step or two of rounding wide; sggxDequantizedAlpha removes what the layout cannot resolve, and
+// keeps a spread that is real (a tube's half circle of normals).
+TEST(FixedPointSggx, NearMirrorAlphaSurvivesTheMatrixQuantisation) {
+    const float alphaMin = agaa::kMinGgxAlpha;
+    for (uint32_t n : {8u, 32u}) {
+        const uint32_t scale = unitScale(kSggxFieldBits, n);
+        const float step = kSggxQuantizationSteps / float(scale);
+        for (const glm::vec3 N : {glm::vec3(0, 0, 1), glm::normalize(glm::vec3(0.3f, -0.5f, 0.8f))}) {
+            // Every sample the same mirror normal: the material alpha is all there is.
+            const float a2 = alphaMin * alphaMin;
+            const glm::vec3 Nw = N * (1.0f - a2);
+            AgQuantized f{};
+            f.q[0] = quantizeUnit(Nw.x * N.x + a2, scale);
+            f.q[1] = quantizeUnit(Nw.y * N.y + a2, scale);
+            f.q[2] = quantizeUnit(Nw.z * N.z + a2, scale);
+            f.q[3] = quantizeUnit(Nw.x * N.y + 0.5f, scale);
+            f.q[4] = quantizeUnit(Nw.x * N.z + 0.5f, scale);
+            f.q[5] = quantizeUnit(Nw.y * N.z + 0.5f, scale);
+            uint32_t w[kAggregateWords] = {};
+            for (uint32_t j = 0; j < kAggregateWords; ++j)
+                w[j] = aggregateIncrement(kNdfSggx, j, n, f);
+            const SggxLobe lobe = decodeLobe(w, n, glm::vec3(0, 0, 1));
+            const float t = sggxDequantizedAlpha(std::max(lobe.alphaT, alphaMin), alphaMin, step);
+            const float b = sggxDequantizedAlpha(std::max(lobe.alphaB, alphaMin), alphaMin, step);
+            std::printf("[ measured ] mirror n=%u: decoded alphaT %.4f alphaB %.4f -> %.4f %.4f\n", n,
+                        lobe.alphaT, lobe.alphaB, t, b);
+            EXPECT_NEAR(t, alphaMin, 1e-6) << "n=" << n;
+            EXPECT_NEAR(b, alphaMin, 1e-6) << "n=" << n;
+        }
+        // A real spread (alpha 0.3 along one axis) passes through nearly unchanged.
+        EXPECT_NEAR(sggxDequantizedAlpha(0.3f, alphaMin, step), std::sqrt(0.09f - step), 1e-5f);
+        EXPECT_GT(sggxDequantizedAlpha(0.3f, alphaMin, step), 0.29f);
     }
 }
 

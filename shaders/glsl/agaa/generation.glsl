@@ -17,9 +17,10 @@
 //    its first visible sample, one set of atomics per fragment. The lighting pass then weights
 //    each aggregate by the samples it received, not by the metadata's assignment.
 // Atomics (variants built from this file):
-//  - AGAA_INT64 (shaderBufferInt64Atomics): the 5 words of an aggregate as one 32-bit and two
-//    64-bit adds. No field ever carries out of its word (layout proof in shared/agaa.h), so a
-//    64-bit add of two words equals two 32-bit adds: the AG-buffer is bit-identical.
+//  - AGAA_INT64 (shaderBufferInt64Atomics): the 6 words of an aggregate as three 64-bit adds
+//    (an aggregate starts on an even word: 6 words each). No field ever carries out of its word
+//    (layout proof in shared/agaa.h), so a 64-bit add of two words equals two 32-bit adds: the
+//    AG-buffer is bit-identical.
 //  - AGAA_SUBGROUP: fragments of one subgroup that target the same (pixel, aggregate) first sum
 //    their increments with subgroupAdd, and one lane adds the sum (integer sums: order-free,
 //    bit-identical). It saves atomics only where a subgroup holds fragments of several primitives
@@ -108,16 +109,9 @@ void addToAggregate(uint slot, uint k, uint ndf, AgQuantized f) {
     if (!adds) return;
 #endif
 #if AGAA_INT64
-    // base is even for even slots (5 words per aggregate): pair the words on 8-byte boundaries.
-    if ((base & 1u) == 0u) {
-        atomicAdd(agBuffer64[base / 2u], uint64_t(inc[0]) | (uint64_t(inc[1]) << 32u));
-        atomicAdd(agBuffer64[base / 2u + 1u], uint64_t(inc[2]) | (uint64_t(inc[3]) << 32u));
-        atomicAdd(agBuffer[base + 4u], inc[4]);
-    } else {
-        atomicAdd(agBuffer[base], inc[0]);
-        atomicAdd(agBuffer64[(base + 1u) / 2u], uint64_t(inc[1]) | (uint64_t(inc[2]) << 32u));
-        atomicAdd(agBuffer64[(base + 1u) / 2u + 1u], uint64_t(inc[3]) | (uint64_t(inc[4]) << 32u));
-    }
+    // base = 6 slot is even: the words pair on 8-byte boundaries.
+    for (uint p = 0u; p < kAggregateWords / 2u; ++p)
+        atomicAdd(agBuffer64[base / 2u + p], uint64_t(inc[2u * p]) | (uint64_t(inc[2u * p + 1u]) << 32u));
 #else
     for (uint w = 0u; w < kAggregateWords; ++w) atomicAdd(agBuffer[base + w], inc[w]);
 #endif
@@ -142,6 +136,8 @@ void main() {
     uint n = agaa.shape.w;
     float alpha = m.roughness * m.roughness;
     AgQuantized f;
+    // The sample's own lobe, for the two-point resolve (shared/agaa.h w5).
+    f.q[10] = quantizeUnit(clamp(alpha, kMinGgxAlpha, kMaxGgxAlpha), kMaterialAlphaScale);
     if (ndf == kNdfSggx) {
         // The sample's GGX lobe as an SGGX matrix (shared/sggx.h), alpha in the BRDF's range.
         float a = clamp(alpha, kMinGgxAlpha, kMaxGgxAlpha);

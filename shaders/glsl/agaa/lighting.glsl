@@ -26,8 +26,8 @@
 //   4. resolve (DESIGN section 6): each aggregate's radiance, tone-mapped and weighted by its
 //      sample fraction, plus the sky for uncovered samples. Without emissive every sample of an
 //      aggregate has the same radiance, so this costs c tone maps, not n; with emissive it runs
-//      per sample (emissive stays per sample, seed 004). With SGGX the tone map takes the
-//      expected value over the aggregate's samples (toneMapAggregate).
+//      per sample (emissive stays per sample, seed 004). The tone map takes the expected value
+//      over the aggregate's samples (toneMapAggregate, the two-point resolve; issue 14).
 #extension GL_GOOGLE_include_directive : require
 #include "shared/ag_buffer.h"
 #include "shared/agaa.h"
@@ -147,12 +147,11 @@ layout(constant_id = 8) const uint kSkipShading = 0u;
 // same value). A constant, not a uniform: lavapipe executes both sides of every branch whose
 // condition is not known at compile time, so a uniform choice would pay for both BRDFs.
 layout(constant_id = 9) const uint kNdf = 0u;
-// The two-point resolve (common/tonemap.glsl toneMapAggregate, shared/sggx.h spike ratio) spreads an
-// aggregate's specular over its samples: SGGX aggregates always; Toksvig aggregates where the
-// generation path knows the samples' own material alpha (the samples path), so that an aggregate
+// The two-point resolve (common/tonemap.glsl toneMapAggregate, shared/sggx.h spike ratio) spreads
+// every aggregate's specular over its samples, from the samples' own material alpha (the samples
+// path reads it per sample, the accumulate path sums it in AG-buffer word 5), so that an aggregate
 // of mirror-like samples whose normals spread wide is resolved as sparse highlights, not as the
-// glow of its mean (issue 14).
-const bool kTwoPoint = kNdf == kNdfSggx || AGAA_GBUFFER != 0;
+// glow of its mean (issue 14). Toksvig and SGGX alike.
 // Specialisation id 10 (AggregateRouting): 1 when the generation pass routed whole fragments
 // (Algorithm 2); an aggregate then stands for the samples it received, which need not be the
 // samples the metadata assigned it, so the resolve weights it by its accumulated count.
@@ -165,12 +164,12 @@ const uint kListRound = kTilePixels;
 
 // One round of the per-tile list, struct-of-arrays. Inputs, written by the aggregate's pixel:
 //   sPosition  xyz view-space shading position, w depth standard deviation (shadow footprint)
-//   sNormal    xyz shading normal, w roughness
+//   sNormal    xyz shading normal, w roughness (SGGX: the square root of the material alpha)
 //   sAlbedo    rgb albedo, a metallic
-//   sTangent   SGGX only: xyz tangent, w alphaT;  sBitangent: xyz bitangent, w alphaB
+//   sTangent   xyz tangent (SGGX), w alphas.x;  sBitangent: xyz bitangent (SGGX), w alphas.y
 //   sOwner     tile pixel index | aggregate id << 8 | the aggregate's sample count << 10
 // Outputs, written in place by the invocation that shades the entry: sPosition.xyz radiance,
-// sNormal.xyz specular part (SGGX), sAlbedo.xyz its variance (SGGX).
+// sNormal.xyz specular part, sAlbedo.xyz its variance over the aggregate's samples.
 shared vec4 sPosition[kListRound];
 shared vec4 sNormal[kListRound];
 shared vec4 sAlbedo[kListRound];
@@ -179,8 +178,8 @@ shared vec4 sBitangent[kListRound];
 shared uint sOwner[kListRound];
 shared uint sEntryCount;
 
-// One light's contribution to an aggregate. alphas: SGGX (alphaT, alphaB); Toksvig with the
-// two-point resolve (filtered alpha, the samples' material alpha). SGGX carries the material alpha
+// One light's contribution to an aggregate. alphas: SGGX (alphaT, alphaB); Toksvig (filtered
+// alpha, the samples' material alpha). SGGX carries the material alpha
 // in surface.roughness (its anisotropic BRDF reads the alphas only).
 void addLight(SurfaceInputs surface, vec3 T, vec3 B, vec2 alphas, vec3 V, vec3 L, vec3 irradiance, bool sggx,
               inout vec3 radiance, inout vec3 specular, inout vec3 specularVariance) {
@@ -192,19 +191,17 @@ void addLight(SurfaceInputs surface, vec3 T, vec3 B, vec2 alphas, vec3 V, vec3 L
         specular += spec;
         specularVariance +=
             (sggxSpikeRatio(alphas.x, alphas.y, surface.roughness * surface.roughness) - 1.0) * spec * spec;
-    } else if (kTwoPoint) {
+    } else {
         radiance += evaluateBrdfSplit(surface, V, L, irradiance, spec);
         specular += spec;
         float axis = spikeRatioAxis(alphas.x, alphas.y); // isotropic: both axes alike
         specularVariance += (axis * axis - 1.0) * spec * spec;
-    } else {
-        radiance += evaluateBrdf(surface, V, L, irradiance);
     }
 }
 
 // One shading event: the aggregate `a` of `pixel` (k samples), seen at P, lit by every light of
-// the tile. radiance: its linear radiance before exposure; SGGX also returns the specular part
-// and the variance of the specular radiance over the aggregate's samples.
+// the tile. radiance: its linear radiance before exposure, with its specular part and the
+// variance of the specular radiance over the aggregate's samples (the two-point resolve's).
 void shadeAggregate(SurfaceInputs surface, vec3 T, vec3 B, vec2 alphas, vec3 P, float sigma, ivec2 pixel,
                     uint pixelIndex, uint a, uint k, bool sggx, out vec3 radiance, out vec3 specular,
                     out vec3 specularVariance) {
@@ -340,10 +337,11 @@ void main() {
                                                                frame.projParams);
         positions[a] = P;
         vec3 V = normalize(-P); // |P| >= znear > 0
-        // The aggregate's means: normal-distribution moments, albedo, metallic.
+        // The aggregate's means: normal-distribution moments, albedo, metallic, material alpha.
         vec3 mean0, mean1, albedo;
-        float metallic;
+        float metallic, materialAlpha;
 #if AGAA_GBUFFER
+        materialAlpha = materialAlphaSum[a] / fs;
         mean0 = moment0[a] / fs;
         mean1 = moment1[a] / fs;
         albedo = albedoMetalSum[a].rgb / fs;
@@ -368,34 +366,35 @@ void main() {
                           meanUnit(w[4] & 0xFFFFu, k, kUnormScale));
             metallic = meanUnit(w[4] >> 16u, k, kUnormScale);
         }
+        materialAlpha = meanUnit(w[5], k, kMaterialAlphaScale);
 #endif
         surfaces[a].albedo = albedo;
         surfaces[a].metallic = metallic;
         if (sggx) {
             SggxLobe lobe = sggxLobe(mean0.x, mean0.y, mean0.z, mean1.x, mean1.y, mean1.z, V, kSggxOffDiagonal,
                                      kMinSggxEigenvalue);
+#if !AGAA_GBUFFER
+            // Fixed-point matrix: spread below its quantisation is rounding (shared/sggx.h).
+            float step = kSggxQuantizationSteps / float(unitScale(kSggxFieldBits, n));
+            float material = clamp(materialAlpha, kMinGgxAlpha, kMaxGgxAlpha);
+            lobe.alphaT = sggxDequantizedAlpha(lobe.alphaT, material, step);
+            lobe.alphaB = sggxDequantizedAlpha(lobe.alphaB, material, step);
+#endif
             surfaces[a].normal = lobe.normal;
             tangents[a] = lobe.tangent;
             bitangents[a] = lobe.bitangent;
             alphas[a] = clamp(vec2(lobe.alphaT, lobe.alphaB), kMinGgxAlpha, kMaxGgxAlpha);
-            // The material alpha of the spike ratio (the anisotropic BRDF reads only the alphas):
-            // the samples' own where known; else the narrow axis, taken as pure material.
-#if AGAA_GBUFFER
-            surfaces[a].roughness = sqrt(clamp(materialAlphaSum[a] / fs, kMinGgxAlpha, alphas[a].y));
-#else
-            surfaces[a].roughness = sqrt(alphas[a].y);
-#endif
+            // The material alpha of the spike ratio (the anisotropic BRDF reads only the alphas).
+            surfaces[a].roughness = sqrt(clamp(materialAlpha, kMinGgxAlpha, alphas[a].y));
         } else {
             float len = length(mean0);
             // |N| -> 0 when opposing normals cancel: no mean direction; shade facing the viewer
             // (the filtered roughness is then 1, so the direction barely matters).
             surfaces[a].normal = len > kMinNormalLength ? mean0 / len : V;
             surfaces[a].roughness = sqrt(filteredAlpha(len, agaa.toksvig.x)); // the BRDF squares it back
-#if AGAA_GBUFFER
             // The two-point resolve's (filtered, material) alphas, in the BRDF's range.
             float filtered = clamp(surfaces[a].roughness * surfaces[a].roughness, kMinGgxAlpha, kMaxGgxAlpha);
-            alphas[a] = vec2(filtered, clamp(materialAlphaSum[a] / fs, kMinGgxAlpha, filtered));
-#endif
+            alphas[a] = vec2(filtered, clamp(materialAlpha, kMinGgxAlpha, filtered));
         }
 #if AGAA_EXPORT
         exportRecord(uint(size.x * size.y) * n + pixelIndex * c + a, vec4(mean0, mean1.x), vec4(mean1.yz, albedo.rg),
@@ -438,10 +437,8 @@ void main() {
                     sPosition[e] = vec4(positions[a], depthSigma[a]);
                     sNormal[e] = vec4(surfaces[a].normal, surfaces[a].roughness);
                     sAlbedo[e] = vec4(surfaces[a].albedo, surfaces[a].metallic);
-                    if (kTwoPoint) {
-                        sTangent[e] = vec4(tangents[a], alphas[a].x);
-                        sBitangent[e] = vec4(bitangents[a], alphas[a].y);
-                    }
+                    sTangent[e] = vec4(tangents[a], alphas[a].x);
+                    sBitangent[e] = vec4(bitangents[a], alphas[a].y);
                     sOwner[e] = self | (a << 8u) | (samplesIn[a] << 10u);
                 }
                 slot += 1u;
@@ -456,17 +453,15 @@ void main() {
                 surface.roughness = sNormal[self].w;
                 surface.albedo = sAlbedo[self].rgb;
                 surface.metallic = sAlbedo[self].a;
-                vec4 T = kTwoPoint ? sTangent[self] : vec4(0.0);
-                vec4 B = kTwoPoint ? sBitangent[self] : vec4(0.0);
+                vec4 T = sTangent[self];
+                vec4 B = sBitangent[self];
                 vec3 lit, spec, variance;
                 shadeAggregate(surface, T.xyz, B.xyz, vec2(T.w, B.w), sPosition[self].xyz, sPosition[self].w,
                                ownerPixel, uint(ownerPixel.y * size.x + ownerPixel.x), (owner >> 8u) & 3u,
                                owner >> 10u, sggx, lit, spec, variance);
                 sPosition[self].xyz = lit;
-                if (kTwoPoint) {
-                    sNormal[self].xyz = spec;
-                    sAlbedo[self].xyz = variance;
-                }
+                sNormal[self].xyz = spec;
+                sAlbedo[self].xyz = variance;
             }
             barrier();
             slot = firstEntry;
@@ -475,10 +470,8 @@ void main() {
                 if (slot >= lo && slot < lo + kListRound) {
                     uint e = slot - lo;
                     radiance[a] = sPosition[e].xyz;
-                    if (kTwoPoint) {
-                        specular[a] = sNormal[e].xyz;
-                        specularVariance[a] = sAlbedo[e].xyz;
-                    }
+                    specular[a] = sNormal[e].xyz;
+                    specularVariance[a] = sAlbedo[e].xyz;
                 }
                 slot += 1u;
             }
@@ -518,7 +511,7 @@ void main() {
         vec3 L = present[a] ? radiance[a] : vec3(0.0);
         L += texelFetch(emissiveSamples, ivec3(pixel, s / 4u), int(s % 4u)).rgb;
         L = min(L * exposure, vec3(kMaxRadiance));
-        display += weight * (kTwoPoint && present[a] ? toneMapAggregate(L, specular[a] * exposure,
+        display += weight * (present[a] ? toneMapAggregate(L, specular[a] * exposure,
                                                                   specularVariance[a] * (exposure * exposure))
                                                 : toneMapAces(L));
         hdr += weight * L;
@@ -534,7 +527,7 @@ void main() {
         if (stands == 0u) continue;
         vec3 L = present[a] ? min(radiance[a] * exposure, vec3(kMaxRadiance)) : vec3(0.0);
         float w = weight * float(stands);
-        display += w * (kTwoPoint && present[a] ? toneMapAggregate(L, specular[a] * exposure,
+        display += w * (present[a] ? toneMapAggregate(L, specular[a] * exposure,
                                                              specularVariance[a] * (exposure * exposure))
                                            : toneMapAces(L));
         hdr += w * L;

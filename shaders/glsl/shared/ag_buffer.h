@@ -63,6 +63,7 @@ struct AgQuantized {
 // What k samples of one fragment add to word w of their aggregate (layouts in shared/agaa.h).
 // The generation pass adds it with atomicAdd; the CPU replay (tests/agaa) with +=.
 inline_fn uint aggregateIncrement(uint ndf, uint w, uint k, AgQuantized f) {
+    if (w == 5u) return k * f.q[10]; // the material alpha, both layouts
     if (ndf == kNdfSggx) {
         if (w == 4u) return k * f.q[8] + ((k * f.q[9]) << 16u) + (k << kCountShift);
         uint lo = w < 3u ? f.q[2u * w] : f.q[6];

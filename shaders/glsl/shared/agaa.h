@@ -12,7 +12,7 @@ SHARED_BEGIN
 SHARED_CONST kNormalAngleLevels = 256u;
 
 // ---- AG-buffer accumulation (fixed point, paper figure 7 adapted to integer atomics) ----
-// 5 words (20 bytes) per aggregate in either normal-distribution layout (AgaaConstants
+// 6 words (24 bytes) per aggregate in either normal-distribution layout (AgaaConstants
 // options.w, agaa/aggregate/agaa_constants.h AggregateNdf). Each sample contributes
 // round(v * scale) with v in [0, 1]; the k samples a fragment routes to an aggregate add k times
 // that, so fields only ever sum n values of at most `scale`.
@@ -36,8 +36,13 @@ SHARED_CONST kNormalAngleLevels = 256u;
 //   w4: albedo B (bits 0..15) | metallic (bits 16..25, 10-bit) | sample count (bits 26..31)
 //   Per-sample precision: 13 bits at n = 8, 11 bits at n = 32 (the Toksvig layout's albedo
 //   precision); metallic 7 bits at n = 8, 5 bits at n = 32 (glTF metallic is mostly 0 or 1).
+//
+// Both layouts, w5: the sum of the samples' own GGX alpha (clamped to the BRDF's range) at the
+// fixed scale 2^26 - 1: the two-point resolve's material lobe (shared/sggx.h sggxSpikeRatio),
+// which the filtered normal distribution no longer holds (issue 14). No overflow at n = 32:
+// 32 * 2^26 = 2^31 < 2^32.
 // tests/agaa/test_fixed_point.cpp checks both layouts' bounds and round trips.
-SHARED_CONST kAggregateWords = 5u;
+SHARED_CONST kAggregateWords = 6u;
 SHARED_CONST kNormalBits = 21u;
 SHARED_CONST kNormalScale = 2097151u;      // 2^21 - 1
 SHARED_CONST kNormalFieldMask = 67108863u; // 2^26 - 1
@@ -46,11 +51,12 @@ SHARED_CONST kUnormBits = 11u;
 SHARED_CONST kUnormScale = 2047u; // 2^11 - 1
 SHARED_CONST kSggxFieldBits = 16u;
 SHARED_CONST kSggxMetallicBits = 10u;
+SHARED_CONST kMaterialAlphaScale = 67108863u; // 2^26 - 1
 SHARED_CONST kNdfToksvig = 0u;
 SHARED_CONST kNdfSggx = 1u;
 // One fragment's quantised attributes (either layout): q[0..5] the normal fields (Toksvig x, y, z
-// in 0..2; SGGX xx, yy, zz, xy, xz, yz), q[6..8] albedo, q[9] metallic.
-SHARED_CONST kQuantizedFields = 10u;
+// in 0..2; SGGX xx, yy, zz, xy, xz, yz), q[6..8] albedo, q[9] metallic, q[10] material alpha.
+SHARED_CONST kQuantizedFields = 11u;
 SHARED_CONST kMaxAggregates = 4u;
 
 struct AgaaConstants {

@@ -103,5 +103,20 @@ inline_fn float sggxSpikeRatio(float alphaT, float alphaB, float alphaMaterial) 
     return spikeRatioAxis(alphaT, alphaMaterial) * spikeRatioAxis(alphaB, alphaMaterial);
 }
 
+// The fixed-point matrix (shared/agaa.h, 16-bit fields of scale unitScale(16, n)) resolves an
+// eigenvalue only to about kSggxQuantizationSteps of its steps: a near-mirror's alpha^2 = 1e-6 lies
+// far below one step (1.2e-4 at n = 8), and rounding left its tangent eigenvalues a step or two
+// wide, a lobe ten times the material's (issue 14: the accumulate path lit hard-mirror 4.4x worse
+// than no AA, its mean radiance 3.6x the reference's). An axis's alpha^2 is therefore the
+// material's plus only the spread that exceeds the quantisation: alphaMaterial^2 + max(alpha^2 -
+// alphaMaterial^2 - step, 0), step = kSggxQuantizationSteps / scale. (Spreads below the step are
+// what the layout cannot tell from rounding.) Inputs: alpha >= 0, alphaMaterial > 0, step >= 0.
+SHARED_CONST_FLOAT kSggxQuantizationSteps = 2.0f;
+inline_fn float sggxDequantizedAlpha(float alpha, float alphaMaterial, float step) {
+    float m2 = alphaMaterial * alphaMaterial;
+    float excess = alpha * alpha - m2 - step;
+    return sqrt(m2 + (excess > 0.0f ? excess : 0.0f));
+}
+
 SHARED_END
 #endif
