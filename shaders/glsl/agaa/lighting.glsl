@@ -178,25 +178,18 @@ shared vec4 sBitangent[kListRound];
 shared uint sOwner[kListRound];
 shared uint sEntryCount;
 
-// One light's contribution to an aggregate. alphas: SGGX (alphaT, alphaB); Toksvig (filtered
-// alpha, the samples' material alpha). SGGX carries the material alpha
-// in surface.roughness (its anisotropic BRDF reads the alphas only).
+// One light's contribution to an aggregate: its radiance, its specular part, and the square of
+// that (the two-point resolve's variance is (spike ratio - 1) times the sum of the squares: the
+// highlights of different lights fall on different samples, so their variances add).
 void addLight(SurfaceInputs surface, vec3 T, vec3 B, vec2 alphas, vec3 V, vec3 L, vec3 irradiance, bool sggx,
-              inout vec3 radiance, inout vec3 specular, inout vec3 specularVariance) {
+              inout vec3 radiance, inout vec3 specular, inout vec3 specularSquares) {
     vec3 spec;
-    if (sggx) {
+    if (sggx)
         radiance += evaluateBrdfAnisotropic(surface, T, B, alphas.x, alphas.y, V, L, irradiance, spec);
-        // Var = (E[L^2] / E[L]^2 - 1) E[L]^2 per light; highlights of different lights
-        // fall on different samples, so their variances add.
-        specular += spec;
-        specularVariance +=
-            (sggxSpikeRatio(alphas.x, alphas.y, surface.roughness * surface.roughness) - 1.0) * spec * spec;
-    } else {
+    else
         radiance += evaluateBrdfSplit(surface, V, L, irradiance, spec);
-        specular += spec;
-        float axis = spikeRatioAxis(alphas.x, alphas.y); // isotropic: both axes alike
-        specularVariance += (axis * axis - 1.0) * spec * spec;
-    }
+    specular += spec;
+    specularSquares += spec * spec;
 }
 
 // One shading event: the aggregate `a` of `pixel` (k samples), seen at P, lit by every light of
@@ -213,10 +206,11 @@ void shadeAggregate(SurfaceInputs surface, vec3 T, vec3 B, vec2 alphas, vec3 P, 
     // The aggregate's footprint: depth standard deviation along the ray, one pixel across.
     float pixelSize = pixelFootprint(-P.z, frame.extent, frame.projParams);
 #endif
+    vec3 specularSquares = vec3(0.0);
     for (uint i = nextTileLight(0u); i < kMaxLights; i = nextTileLight(i + 1u)) {
         vec3 L, irradiance;
         if (!lightIncidence(lights[i], P, L, irradiance)) continue;
-        addLight(surface, T, B, alphas, V, L, irradiance, sggx, radiance, specular, specularVariance);
+        addLight(surface, T, B, alphas, V, L, irradiance, sggx, radiance, specular, specularSquares);
     }
 #if AGAA_SHADOWS
     for (uint i = nextTileShadowedLight(0u); i < kMaxLights; i = nextTileShadowedLight(i + 1u)) {
@@ -224,9 +218,15 @@ void shadeAggregate(SurfaceInputs surface, vec3 T, vec3 B, vec2 alphas, vec3 P, 
         if (!lightIncidence(lights[i], P, L, irradiance)) continue;
         irradiance *= kShadowFootprint == 1u ? shadowVisibilityAggregateSamples(i, pixel, pixelIndex, a, k, surface.normal)
                                              : shadowVisibilityAggregate(i, P, surface.normal, sigma, pixelSize);
-        addLight(surface, T, B, alphas, V, L, irradiance, sggx, radiance, specular, specularVariance);
+        addLight(surface, T, B, alphas, V, L, irradiance, sggx, radiance, specular, specularSquares);
     }
 #endif
+    // The spike ratio E[L^2] / E[L]^2 of the aggregate's samples (shared/sggx.h), once per event:
+    // SGGX, alphas = (alphaT, alphaB) with the material alpha in surface.roughness; Toksvig,
+    // alphas = (filtered alpha, material alpha), both axes alike.
+    float axis = spikeRatioAxis(alphas.x, alphas.y);
+    float ratio = sggx ? sggxSpikeRatio(alphas.x, alphas.y, surface.roughness * surface.roughness) : axis * axis;
+    specularVariance = (ratio - 1.0) * specularSquares;
 }
 
 void main() {
