@@ -84,6 +84,18 @@ const eng::io::ImageF& JobRunner::truth(uint32_t samples) {
     return it->second;
 }
 
+const eng::io::ImageF* JobRunner::supersampledTruth() {
+    // The sweep at sample rate already compares with this truth; without the feature there is none.
+    if (m_settings.sampleRateShading || !m_device.caps().sampleRateShading) return nullptr;
+    if (!m_scene.supersampledTruth) {
+        RenderRequest r = request(kReference, m_settings.truthSamples, kAggregatesWhenUnused,
+                                  m_settings.width, m_settings.height, 0.0f);
+        r.settings.sampleRateShading = true;
+        m_scene.supersampledTruth = srgbEncoded(renderTruth(r).display);
+    }
+    return &*m_scene.supersampledTruth;
+}
+
 const std::vector<eng::io::ImageF>& JobRunner::pathTruth() {
     if (m_scene.pathTruth.empty()) {
         uint32_t w = 0, h = 0;
@@ -165,6 +177,8 @@ JobResult JobRunner::run(const Job& job) {
     }
     const eng::io::ImageF& highRate = truth(m_settings.truthSamples);
     r.errorHighRate = compareImages(display, highRate);
+    if (const eng::io::ImageF* supersampled = supersampledTruth())
+        r.errorSupersampledTruth = compareImages(display, *supersampled);
     if (!path.empty()) {
         TemporalStability t;
         t.frames = m_settings.temporalFrames;

@@ -16,6 +16,7 @@
 #include <filesystem>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -40,12 +41,14 @@ class JobRunner {
         std::map<uint32_t, eng::io::ImageF> truthAtSamples; // reference display, sRGB-encoded, sweep size
         std::vector<eng::io::ImageF> pathTruth;             // high-rate truth along the orbit, temporal size
         std::string truthImage;                             // relative path of the high-rate truth PNG
+        std::optional<eng::io::ImageF> supersampledTruth;   // the high-rate truth at sample rate
     };
 
     void selectScene(const std::string& name);
     RenderRequest request(const std::string& method, uint32_t samples, uint32_t aggregates, uint32_t width,
                           uint32_t height, float orbitDegrees) const;
     const eng::io::ImageF& truth(uint32_t samples);
+    const eng::io::ImageF* supersampledTruth(); // nullptr where it is not measured
     const std::vector<eng::io::ImageF>& pathTruth();
     std::vector<eng::io::ImageF> renderPath(const std::string& method, uint32_t samples, uint32_t aggregates);
     RenderResult renderTruth(const RenderRequest& request);

@@ -241,7 +241,8 @@ std::string jobsTable(const std::vector<JobResult>& results) {
          "<th rowspan=\"2\">bytes / pixel</th><th colspan=\"2\">shading events / pixel</th>"
          "<th colspan=\"4\">vs reference at the same n</th><th colspan=\"4\">vs high-rate truth (reference n="
       << truthN
-      << ")</th><th rowspan=\"2\">temporal<br>&Delta;error</th><th rowspan=\"2\">valid.<br>errors</th>"
+      << ")</th><th rowspan=\"2\">RMSE vs<br>supersampled<br>truth</th><th "
+         "rowspan=\"2\">temporal<br>&Delta;error</th><th rowspan=\"2\">valid.<br>errors</th>"
          "<th rowspan=\"2\">images</th></tr>\n<tr><th>median</th><th>min..max</th><th>mean</th><th>max</th>"
          "<th>RMSE</th><th>PSNR dB</th><th>SSIM</th><th>p99</th><th>RMSE</th><th>PSNR "
          "dB</th><th>SSIM</th><th>p99</th></tr>\n";
@@ -259,9 +260,10 @@ std::string jobsTable(const std::vector<JobResult>& results) {
           << num(r.bytesPerPixel, 1) << "</td><td class=\"num\">" << num(r.shadingEventsMean, 2)
           << "</td><td class=\"num\">" << r.shadingEventsMax << "</td>" << errorCells(r.errorSameN)
           << errorCells(r.errorHighRate) << "<td class=\"num\">"
-          << (r.temporal ? num(r.temporal->meanErrorChange, 5) : "&ndash;") << "</td><td class=\"num\">"
-          << (r.validationEnabled ? std::to_string(r.validationErrors) : "off") << "</td><td><a href=\""
-          << esc(r.imageDisplay) << "\">image</a> <a href=\"" << esc(r.imageHeatmap)
+          << (r.errorSupersampledTruth ? num(r.errorSupersampledTruth->rmse, 4) : "&ndash;")
+          << "</td><td class=\"num\">" << (r.temporal ? num(r.temporal->meanErrorChange, 5) : "&ndash;")
+          << "</td><td class=\"num\">" << (r.validationEnabled ? std::to_string(r.validationErrors) : "off")
+          << "</td><td><a href=\"" << esc(r.imageDisplay) << "\">image</a> <a href=\"" << esc(r.imageHeatmap)
           << "\">error</a></td></tr>\n";
     }
     h << "</table>\n";

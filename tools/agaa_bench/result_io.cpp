@@ -117,6 +117,7 @@ json toJson(const JobResult& r) {
     j["error_vs_same_n_reference"] = errorJson(r.errorSameN);
     j["truth_samples"] = r.truthSamples;
     j["error_vs_high_rate_truth"] = errorJson(r.errorHighRate);
+    j["error_vs_supersampled_truth"] = errorJson(r.errorSupersampledTruth);
     if (r.temporal) {
         const TemporalStability& t = *r.temporal;
         j["temporal"] = {
@@ -168,6 +169,8 @@ JobResult jobFromJson(const json& j) {
         r.errorSameN = errorFromJson(j.at("error_vs_same_n_reference"));
         r.truthSamples = j.at("truth_samples").get<uint32_t>();
         r.errorHighRate = errorFromJson(j.at("error_vs_high_rate_truth"));
+        if (j.contains("error_vs_supersampled_truth")) // absent in files from before issue 13
+            r.errorSupersampledTruth = errorFromJson(j.at("error_vs_supersampled_truth"));
         if (!j.at("temporal").is_null()) {
             const json& tj = j.at("temporal");
             TemporalStability ts;
@@ -227,7 +230,7 @@ void writeResultsCsv(const std::filesystem::path& file, const std::vector<JobRes
     s << "id,scene,method,samples,aggregates,samples_rendered,width,height,frames_timed,frame_ms_median,"
          "frame_ms_min,frame_ms_max,frame_ms_q1,frame_ms_q3,bytes_per_pixel,shading_events_mean,"
          "shading_events_max,rmse_same_n,psnr_same_n,ssim_same_n,p99_same_n,rmse_truth,psnr_truth,ssim_truth,"
-         "p99_truth,temporal_error_change,validation_errors,passes\n";
+         "p99_truth,rmse_supersampled_truth,temporal_error_change,validation_errors,passes\n";
     for (const JobResult& r : results) {
         auto err = [&](const std::optional<ErrorMetrics>& e) {
             if (!e) return std::string(",,,");
@@ -243,8 +246,10 @@ void writeResultsCsv(const std::filesystem::path& file, const std::vector<JobRes
           << csvNumber(r.frameMs.min) << "," << csvNumber(r.frameMs.max) << "," << csvNumber(r.frameMs.q1)
           << "," << csvNumber(r.frameMs.q3) << "," << csvNumber(r.bytesPerPixel) << ","
           << csvNumber(r.shadingEventsMean) << "," << r.shadingEventsMax << "," << err(r.errorSameN) << ","
-          << err(r.errorHighRate) << "," << (r.temporal ? csvNumber(r.temporal->meanErrorChange) : "") << ","
-          << r.validationErrors << "," << csvField(passes) << "\n";
+          << err(r.errorHighRate) << ","
+          << (r.errorSupersampledTruth ? csvNumber(r.errorSupersampledTruth->rmse) : "") << ","
+          << (r.temporal ? csvNumber(r.temporal->meanErrorChange) : "") << "," << r.validationErrors << ","
+          << csvField(passes) << "\n";
     }
     writeTextFile(file, s.str());
 }

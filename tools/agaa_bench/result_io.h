@@ -68,6 +68,10 @@ struct JobResult {
     std::optional<ErrorMetrics> errorSameN;
     uint32_t truthSamples = 32;
     std::optional<ErrorMetrics> errorHighRate; // against the reference at truthSamples, same size
+    // Against the same reference with sample-rate shading (supersampled materials, textures and
+    // alpha; issue 13's second ground truth): absent where the device lacks sampleRateShading or
+    // the sweep already runs at sample rate (errorHighRate is then that truth).
+    std::optional<ErrorMetrics> errorSupersampledTruth;
     std::optional<TemporalStability> temporal;
 
     // Relative to the output directory.
