@@ -2,6 +2,7 @@
 // Constants for CPU tests of the AGAA kernels: a 64x64 view from the origin down -Z.
 
 #include "agaa/aggregate/agaa_constants.h"
+#include "agaa/common/frame_renderer.h"
 #include "engine/frame/frame_constants.h"
 #include "engine/frame/sample_pattern.h"
 
@@ -29,6 +30,16 @@ inline KernelConstants kernelConstants(uint32_t n, uint32_t c, uint32_t size = 6
     s.aggregates = c;
     k.agaa = makeAgaaConstants(s, k.frame, false);
     return k;
+}
+
+// A square frame of `method` at n samples and c aggregates.
+inline RenderRequest request(const std::string& method, uint32_t n, uint32_t c, uint32_t size) {
+    RenderRequest r;
+    r.method = method;
+    r.settings.samples = n;
+    r.settings.aggregates = c;
+    r.view.width = r.view.height = size;
+    return r;
 }
 
 // Reversed-Z depth of a point at view distance t (common/depth.glsl).

@@ -8,6 +8,7 @@
 // AGAA_QUALITY_NDF=sggx|toksvig with one normal distribution: the measurements behind the README's causes).
 
 #include "agaa/common/frame_renderer.h"
+#include "agaa_test_support.h"
 #include "engine/io/metrics.h"
 #include "engine/io/tone_map.h"
 #include "engine/scene/adversarial_scenes.h"
@@ -41,11 +42,7 @@ double meanRadiance(const eng::io::ImageF& hdr) {
 }
 
 agaa::RenderRequest request(const std::string& method, uint32_t n, uint32_t c, uint32_t size) {
-    agaa::RenderRequest r;
-    r.method = method;
-    r.settings.samples = n;
-    r.settings.aggregates = c;
-    r.view.width = r.view.height = size;
+    agaa::RenderRequest r = agaa::test::request(method, n, c, size);
     if (const char* e = std::getenv("AGAA_QUALITY_EXPOSURE")) r.view.exposure = float(std::atof(e));
     return r;
 }

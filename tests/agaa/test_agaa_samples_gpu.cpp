@@ -13,6 +13,7 @@
 #include "agaa/aggregate/aggregate.h"
 #include "agaa/common/frame_renderer.h"
 #include "agaa/methods.h"
+#include "agaa_test_support.h"
 #include "engine/frame/readback.h"
 #include "engine/scene/camera_framing.h"
 #include "engine/scene/gltf_loader.h"
@@ -34,14 +35,7 @@ namespace vk = eng::vk;
 
 constexpr uint32_t kRecordFloats = 16; // lighting.glsl exportRecord
 
-agaa::RenderRequest request(const std::string& method, uint32_t n, uint32_t c, uint32_t size) {
-    agaa::RenderRequest r;
-    r.method = method;
-    r.settings.samples = n;
-    r.settings.aggregates = c;
-    r.view.width = r.view.height = size;
-    return r;
-}
+using agaa::test::request;
 
 // The scene without shadowed lights (the export variant has no shadow maps).
 eng::scene::Scene unshadowed(eng::scene::Scene scene) {

@@ -156,6 +156,7 @@ AgQuantized sggxSample(glm::vec3 n, float alpha, glm::vec3 albedo, float metalli
     f.q[7] = quantizeUnit(albedo.g, scale);
     f.q[8] = quantizeUnit(albedo.b, scale);
     f.q[9] = quantizeUnit(metallic, unitScale(kSggxMetallicBits, samples));
+    f.q[10] = quantizeUnit(a, kMaterialAlphaScale);
     return f;
 }
 
@@ -210,15 +211,7 @@ TEST(FixedPointSggx, NearMirrorAlphaSurvivesTheMatrixQuantisation) {
         const float step = kSggxQuantizationSteps / float(scale);
         for (const glm::vec3 N : {glm::vec3(0, 0, 1), glm::normalize(glm::vec3(0.3f, -0.5f, 0.8f))}) {
             // Every sample the same mirror normal: the material alpha is all there is.
-            const float a2 = alphaMin * alphaMin;
-            const glm::vec3 Nw = N * (1.0f - a2);
-            AgQuantized f{};
-            f.q[0] = quantizeUnit(Nw.x * N.x + a2, scale);
-            f.q[1] = quantizeUnit(Nw.y * N.y + a2, scale);
-            f.q[2] = quantizeUnit(Nw.z * N.z + a2, scale);
-            f.q[3] = quantizeUnit(Nw.x * N.y + 0.5f, scale);
-            f.q[4] = quantizeUnit(Nw.x * N.z + 0.5f, scale);
-            f.q[5] = quantizeUnit(Nw.y * N.z + 0.5f, scale);
+            const AgQuantized f = sggxSample(N, alphaMin, glm::vec3(0.5f), 1.0f, n);
             uint32_t w[kAggregateWords] = {};
             for (uint32_t j = 0; j < kAggregateWords; ++j)
                 w[j] = aggregateIncrement(kNdfSggx, j, n, f);
