@@ -93,7 +93,42 @@ class GltfConverter {
         m_scene.source = source;
     }
 
+    // The extensions this loader implements. glTF 2.0 (section 3.12): an asset whose
+    // extensionsRequired names any other must not be loaded (it would render wrong without a
+    // word: KHR_draco_mesh_compression, KHR_texture_basisu, KHR_texture_transform...); an optional
+    // one in extensionsUsed is ignored with a warning.
+    static constexpr const char* kSupportedExtensions[] = {
+        "KHR_lights_punctual", "KHR_materials_emissive_strength", "KHR_mesh_quantization"};
+
+    void checkExtensions() {
+        std::string supported;
+        for (const char* e : kSupportedExtensions)
+            supported += std::string(supported.empty() ? "" : ", ") + e;
+        auto isSupported = [](const std::string& name) {
+            for (const char* e : kSupportedExtensions)
+                if (name == e) return true;
+            return false;
+        };
+        for (size_t i = 0; i < m_model.extensionsRequired.size(); ++i) {
+            const std::string& name = m_model.extensionsRequired[i];
+            if (!isSupported(name))
+                throw SceneError(m_source + ": extensionsRequired[" + std::to_string(i) + "]: '" +
+                                 boundedName(name) + "' is not supported (supported: " + supported + ")");
+        }
+        for (const std::string& name : m_model.extensionsUsed)
+            if (!isSupported(name))
+                m_scene.stats.warnings.push_back(m_source + ": extensionsUsed: '" + boundedName(name) +
+                                                 "' is not supported; its data is ignored");
+    }
+
+    // A name from the file, cut to a readable length (a hostile file may hold megabytes).
+    static std::string boundedName(const std::string& name) {
+        constexpr size_t kMax = 64;
+        return name.size() <= kMax ? name : name.substr(0, kMax) + "...";
+    }
+
     Scene run() {
+        checkExtensions();
         convertMaterials(m_model, m_source, m_scene);
         collectNodes();
         for (const NodeInstance& instance : m_instances) {

@@ -2,6 +2,7 @@
 // degenerate triangles, zero normals), index and attribute types, cameras.
 
 #include "engine/scene/gltf_loader.h"
+#include "engine/scene/scene_error.h"
 
 #include "gltf_test_model.h"
 
@@ -72,6 +73,39 @@ TEST(GltfLoader, NodeMatrixIsColumnMajor) {
     ASSERT_EQ(s.triangleCount(), 1u);
     expectNear(s.bounds.min, {5, 6, 7}, "bounds.min = translated origin");
     expectNear(s.bounds.max, {6, 7, 7}, "bounds.max = translated (1, 1, 0)");
+}
+
+// glTF 2.0 section 3.12: a required extension the loader does not implement refuses the asset,
+// naming it and the supported ones; an unsupported optional one is a warning.
+TEST(GltfLoader, UnsupportedRequiredExtensionsAreRefusedByName) {
+    for (const char* ext : {"KHR_draco_mesh_compression", "KHR_texture_basisu", "KHR_texture_transform"}) {
+        TestModel m;
+        const int pos = m.addVec3Accessor({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}});
+        m.addMeshNode({{"POSITION", pos}}, m.addIndexAccessor({0, 1, 2}));
+        m.model.extensionsUsed = {"KHR_lights_punctual", ext};
+        m.model.extensionsRequired = {"KHR_lights_punctual", ext};
+        try {
+            loadGltfModel(m.model, "required.gltf");
+            ADD_FAILURE() << ext << " is required and not supported: the asset must be refused";
+        } catch (const SceneError& e) {
+            const std::string what = e.what();
+            EXPECT_NE(what.find("required.gltf: extensionsRequired[1]: '" + std::string(ext) +
+                                "' is not supported"),
+                      std::string::npos)
+                << what;
+            EXPECT_NE(what.find("supported: KHR_lights_punctual"), std::string::npos) << what;
+        }
+    }
+    TestModel m;
+    const int pos = m.addVec3Accessor({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}});
+    m.addMeshNode({{"POSITION", pos}}, m.addIndexAccessor({0, 1, 2}));
+    m.model.extensionsUsed = {"KHR_materials_emissive_strength", "EXT_texture_webp"};
+    m.model.extensionsRequired = {"KHR_materials_emissive_strength"};
+    const Scene s = loadGltfModel(m.model, "optional.gltf");
+    ASSERT_EQ(s.stats.warnings.size(), 1u);
+    EXPECT_NE(s.stats.warnings[0].find("extensionsUsed: 'EXT_texture_webp' is not supported"),
+              std::string::npos)
+        << s.stats.warnings[0];
 }
 
 TEST(GltfLoader, MissingNormalsBecomeFlatFaceNormals) {
