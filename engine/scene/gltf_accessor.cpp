@@ -148,14 +148,11 @@ AccessorReader::AccessorReader(const tinygltf::Model& model, const std::string& 
         fail(f + ".componentType: " + componentTypeName(m_componentType) +
              (m_normalized ? " (normalized)" : "") + " is not allowed for " + context);
     }
-    if (accessor.sparse.isSparse) {
-        fail(f + ".sparse: sparse accessors are not supported");
-    }
-
     m_count = accessor.count;
     const size_t elementSize = static_cast<size_t>(m_componentSize) * static_cast<size_t>(m_components);
+    if (accessor.sparse.isSparse) readSparse(model, accessor, elementSize);
     if (accessor.bufferView < 0) {
-        // glTF: an accessor without a bufferView reads as zeros.
+        // glTF: an accessor without a bufferView reads as zeros (before any sparse substitution).
         m_data = nullptr;
         m_stride = elementSize;
         return;
@@ -180,6 +177,61 @@ AccessorReader::AccessorReader(const tinygltf::Model& model, const std::string& 
     m_data = view.data + accessor.byteOffset;
 }
 
+void AccessorReader::readSparse(const tinygltf::Model& model, const tinygltf::Accessor& accessor,
+                                size_t elementSize) {
+    const std::string f = field() + ".sparse";
+    const auto& sparse = accessor.sparse;
+    if (sparse.count < 1 || static_cast<size_t>(sparse.count) > m_count)
+        fail(f + ".count: " + std::to_string(sparse.count) + " is not in 1.." + std::to_string(m_count) +
+             " (the accessor's count)");
+    const size_t n = static_cast<size_t>(sparse.count);
+    const int indexType = sparse.indices.componentType;
+    const size_t indexSize = indexType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE    ? 1
+                             : indexType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT ? 2
+                             : indexType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT   ? 4
+                                                                                   : 0;
+    if (indexSize == 0)
+        fail(f + ".indices.componentType: " + componentTypeName(indexType) +
+             " is not allowed (UNSIGNED_BYTE, UNSIGNED_SHORT or UNSIGNED_INT)");
+    // Both ranges tightly packed from their byteOffset inside their bufferView.
+    auto range = [&](int viewIndex, int byteOffset, size_t bytes, const std::string& what) {
+        const ViewRange view = resolveView(model, m_source, viewIndex, f + "." + what + ".bufferView");
+        if (byteOffset < 0 || static_cast<size_t>(byteOffset) > view.length ||
+            bytes > view.length - static_cast<size_t>(byteOffset))
+            fail(f + "." + what + ": " + std::to_string(n) + " entries from byteOffset " +
+                 std::to_string(byteOffset) + " need more than the " + std::to_string(view.length) +
+                 " bytes of bufferViews[" + std::to_string(viewIndex) + "]");
+        return view.data + byteOffset;
+    };
+    const uint8_t* indices =
+        range(sparse.indices.bufferView, sparse.indices.byteOffset, n * indexSize, "indices");
+    const uint8_t* values =
+        range(sparse.values.bufferView, sparse.values.byteOffset, n * elementSize, "values");
+    m_sparseIndices.resize(n);
+    m_sparseValues.resize(n);
+    for (size_t k = 0; k < n; ++k) {
+        uint32_t index = 0;
+        std::memcpy(&index, indices + k * indexSize, indexSize); // little-endian, as glTF
+        if (index >= m_count)
+            fail(f + ".indices[" + std::to_string(k) + "]: " + std::to_string(index) +
+                 " is not below the count " + std::to_string(m_count));
+        if (k > 0 && index <= m_sparseIndices[k - 1])
+            fail(f + ".indices[" + std::to_string(k) + "]: " + std::to_string(index) +
+                 " does not increase (glTF requires strictly increasing sparse indices)");
+        m_sparseIndices[k] = index;
+        m_sparseValues[k] = values + k * elementSize;
+    }
+}
+
+const uint8_t* AccessorReader::elementAddress(size_t i) const {
+    if (!m_sparseIndices.empty()) {
+        const auto it = std::lower_bound(m_sparseIndices.begin(), m_sparseIndices.end(), uint32_t(i));
+        if (it != m_sparseIndices.end() && *it == i)
+            return m_sparseValues[size_t(it - m_sparseIndices.begin())];
+    }
+    return m_data ? m_data + i * m_stride : nullptr;
+}
+
 std::string AccessorReader::field() const {
     return "accessors[" + std::to_string(m_accessorIndex) + "]";
 }
@@ -189,11 +241,11 @@ void AccessorReader::fail(const std::string& what) const {
 }
 
 float AccessorReader::component(size_t element, int c) const {
-    if (m_data == nullptr) {
+    const uint8_t* base = elementAddress(element);
+    if (base == nullptr) {
         return 0.0f;
     }
-    const uint8_t* p =
-        elementAddress(element) + static_cast<size_t>(c) * static_cast<size_t>(m_componentSize);
+    const uint8_t* p = base + static_cast<size_t>(c) * static_cast<size_t>(m_componentSize);
     // memcpy: glTF only promises component alignment, and strides can make it odd.
     switch (m_componentType) {
     case TINYGLTF_COMPONENT_TYPE_FLOAT: {
@@ -228,10 +280,10 @@ float AccessorReader::component(size_t element, int c) const {
 }
 
 uint32_t AccessorReader::index(size_t i) const {
-    if (m_data == nullptr) {
+    const uint8_t* p = elementAddress(i);
+    if (p == nullptr) {
         return 0;
     }
-    const uint8_t* p = elementAddress(i);
     switch (m_componentType) {
     case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
         return p[0];

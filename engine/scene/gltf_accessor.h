@@ -45,7 +45,9 @@ class AccessorReader {
 
   private:
     [[noreturn]] void fail(const std::string& what) const;
-    const uint8_t* elementAddress(size_t i) const { return m_data + i * m_stride; }
+    // The element's bytes: a sparse substitute, the bufferView's, or nullptr (zeros).
+    const uint8_t* elementAddress(size_t i) const;
+    void readSparse(const tinygltf::Model& model, const tinygltf::Accessor& accessor, size_t elementSize);
 
     std::string m_source;
     std::string m_context;
@@ -57,6 +59,10 @@ class AccessorReader {
     int m_componentSize = 0;
     int m_components = 0;
     bool m_normalized = false;
+    // Sparse accessors (glTF 2.0 3.6.2.3): the substituted element indices, strictly increasing,
+    // and the address of each one's replacement value (tightly packed).
+    std::vector<uint32_t> m_sparseIndices;
+    std::vector<const uint8_t*> m_sparseValues;
 };
 
 // Reads the indices of a primitive, or 0..vertexCount-1 when it has none.

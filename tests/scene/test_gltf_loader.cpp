@@ -108,6 +108,46 @@ TEST(GltfLoader, UnsupportedRequiredExtensionsAreRefusedByName) {
         << s.stats.warnings[0];
 }
 
+// Sparse accessors (glTF 2.0 3.6.2.3): listed elements are replaced, the rest read from the
+// bufferView; malformed sparse data is refused naming the field.
+TEST(GltfLoader, SparseAccessorsSubstituteTheirElements) {
+    auto model = [](std::vector<uint16_t> indices) {
+        TestModel m;
+        const int pos = m.addVec3Accessor({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}});
+        const std::vector<glm::vec3> values = {{5, 0, 0}, {0, 5, 0}};
+        tinygltf::Accessor& a = m.model.accessors[size_t(pos)];
+        a.sparse.isSparse = true;
+        a.sparse.count = int(indices.size());
+        a.sparse.indices.bufferView = m.addBufferView(indices.data(), indices.size() * 2);
+        a.sparse.indices.byteOffset = 0;
+        a.sparse.indices.componentType = TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT;
+        a.sparse.values.bufferView = m.addBufferView(values.data(), values.size() * sizeof(glm::vec3));
+        a.sparse.values.byteOffset = 0;
+        m.addMeshNode({{"POSITION", pos}}, m.addIndexAccessor({0, 1, 2, 1, 3, 2}));
+        return m;
+    };
+    const Scene s = loadGltfModel(model({1, 3}).model, "sparse.gltf");
+    ASSERT_EQ(s.triangleCount(), 2u);
+    std::vector<glm::vec3> seen;
+    for (uint32_t i : s.indices)
+        seen.push_back(s.vertices[i].position);
+    expectNear(seen[0], {0, 0, 0}, "element 0 keeps its bufferView value");
+    expectNear(seen[1], {5, 0, 0}, "element 1 is replaced by the first sparse value");
+    expectNear(seen[2], {0, 1, 0}, "element 2 keeps its bufferView value");
+    expectNear(seen[4], {0, 5, 0}, "element 3 is replaced by the second sparse value");
+    for (const auto& [indices, what] : std::vector<std::pair<std::vector<uint16_t>, std::string>>{
+             {{3, 1}, "does not increase"}, {{1, 9}, "is not below the count 4"}}) {
+        try {
+            loadGltfModel(model(indices).model, "bad_sparse.gltf");
+            ADD_FAILURE() << what << ": malformed sparse indices must be refused";
+        } catch (const SceneError& e) {
+            EXPECT_NE(std::string(e.what()).find("accessors[0].sparse.indices[1]"), std::string::npos)
+                << e.what();
+            EXPECT_NE(std::string(e.what()).find(what), std::string::npos) << e.what();
+        }
+    }
+}
+
 TEST(GltfLoader, MissingNormalsBecomeFlatFaceNormals) {
     TestModel m;
     // A tent: two triangles sharing an edge at an angle; smooth sharing would blend them.
