@@ -51,19 +51,24 @@ TEST(AgaaPathsGpu, CompactedLightingEqualsThePerPixelScheduleBitForBit) {
     for (const Case& k : cases) {
         eng::scene::Scene scene = eng::scene::loadBuiltin(k.scene);
         agaa::FrameRenderer renderer(*device, scene);
-        agaa::RenderRequest compact = agaaRequest(k.n, k.c, 64);
-        compact.settings.agaaLighting = "compact";
-        agaa::RenderRequest registers = compact;
-        registers.settings.agaaLighting = "registers";
-        agaa::RenderResult a = renderer.render(compact);
-        agaa::RenderResult b = renderer.render(registers);
-        uint64_t extra = 0; // entries that went through the list: events beyond one per pixel
-        for (uint32_t e : a.shadingEvents)
-            extra += e > 1 ? e - 1 : 0;
-        EXPECT_GT(extra, 0u) << k.scene << ": the list must have held entries";
-        EXPECT_EQ(a.hdr.rgba, b.hdr.rgba) << k.scene << " n=" << k.n << " c=" << k.c;
-        EXPECT_EQ(a.display.rgba, b.display.rgba) << k.scene << " n=" << k.n << " c=" << k.c;
-        EXPECT_EQ(a.shadingEvents, b.shadingEvents) << k.scene;
+        // Both generation paths: on a GPU, auto runs the samples path with the compacted list.
+        for (const char* path : {"agaa-accumulate", "agaa-samples"}) {
+            agaa::RenderRequest compact = agaaRequest(k.n, k.c, 64);
+            compact.method = path;
+            compact.settings.agaaLighting = "compact";
+            agaa::RenderRequest registers = compact;
+            registers.settings.agaaLighting = "registers";
+            agaa::RenderResult a = renderer.render(compact);
+            agaa::RenderResult b = renderer.render(registers);
+            uint64_t extra = 0; // entries that went through the list: events beyond one per pixel
+            for (uint32_t e : a.shadingEvents)
+                extra += e > 1 ? e - 1 : 0;
+            EXPECT_GT(extra, 0u) << k.scene << " " << path << ": the list must have held entries";
+            EXPECT_EQ(a.hdr.rgba, b.hdr.rgba) << k.scene << " " << path << " n=" << k.n << " c=" << k.c;
+            EXPECT_EQ(a.display.rgba, b.display.rgba)
+                << k.scene << " " << path << " n=" << k.n << " c=" << k.c;
+            EXPECT_EQ(a.shadingEvents, b.shadingEvents) << k.scene << " " << path;
+        }
     }
     agaa::test::expectNoValidationErrors(*device);
 }

@@ -259,6 +259,24 @@ TEST(AgaaSamplesGpu, RerunsAreBitIdenticalAndTheVariantsNameThePath) {
     agaa::test::expectNoValidationErrors(*device);
 }
 
+// The aggregates debug view on the samples path: the clustering of the G-buffer, one colour per
+// aggregate, with the lit frame's aggregate counts.
+TEST(AgaaSamplesGpu, DebugViewShowsTheLitFramesAggregates) {
+    auto device = agaa::test::makeValidatedDevice();
+    eng::scene::Scene scene = eng::scene::loadBuiltin("railings");
+    agaa::FrameRenderer renderer(*device, scene);
+    agaa::RenderRequest lit = request("agaa-samples", 8, 4, 64);
+    agaa::RenderRequest debug = lit;
+    debug.settings.debug = "aggregates";
+    const agaa::RenderResult a = renderer.render(lit);
+    const agaa::RenderResult b = renderer.render(debug);
+    EXPECT_EQ(a.shadingEvents, b.shadingEvents) << "the view must show the aggregates the frame lit";
+    EXPECT_GT(b.shadingEventsMax, 1u);
+    for (float v : b.display.rgba)
+        ASSERT_TRUE(std::isfinite(v));
+    agaa::test::expectNoValidationErrors(*device);
+}
+
 // A lone sphere or square of roughness 0.2 lit by a point light, seen from `distance` metres.
 eng::scene::Scene curvatureScene(bool sphere, float distance) {
     eng::scene::ModelBuilder b("test.curvature");
