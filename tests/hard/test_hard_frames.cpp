@@ -145,9 +145,9 @@ struct AgaaReadback {
                                                    shared::unitScale(shared::kSggxMetallicBits, n)));
                 } else {
                     const glm::vec3 N(
-                        shared::meanSigned(wd[0] & shared::kNormalFieldMask, k, shared::kNormalScale),
-                        shared::meanSigned(wd[1], k, shared::kNormalScale),
-                        shared::meanSigned(wd[2], k, shared::kNormalScale));
+                        shared::meanSigned(wd[0] & shared::kNormalFieldMask, k, shared::toksvigScaleX(n)),
+                        shared::meanSigned(wd[1], k, shared::toksvigScaleYZ(n)),
+                        shared::meanSigned(wd[2], k, shared::toksvigScaleYZ(n)));
                     const float len = glm::length(N);
                     const float alpha = shared::filteredAlpha(len, smax);
                     albedoMetal = glm::vec4(shared::meanUnit(wd[3] & 0xFFFFu, k, shared::kUnormScale),

@@ -156,9 +156,9 @@ void main() {
         f.q[9] = quantizeUnit(m.metallic, unitScale(kSggxMetallicBits, n));
     } else {
         vec3 t = m.normal * toksvigLength(alpha, agaa.toksvig.x, agaa.toksvig.y, agaa.toksvig.z);
-        f.q[0] = quantizeSigned(t.x, kNormalScale);
-        f.q[1] = quantizeSigned(t.y, kNormalScale);
-        f.q[2] = quantizeSigned(t.z, kNormalScale);
+        f.q[0] = quantizeSigned(t.x, toksvigScaleX(n));
+        f.q[1] = quantizeSigned(t.y, toksvigScaleYZ(n));
+        f.q[2] = quantizeSigned(t.z, toksvigScaleYZ(n));
         f.q[3] = 0u;
         f.q[4] = 0u;
         f.q[5] = 0u;

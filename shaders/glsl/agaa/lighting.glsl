@@ -359,8 +359,9 @@ void main() {
             metallic =
                 meanUnit((w[4] >> 16u) & ((1u << kSggxMetallicBits) - 1u), k, unitScale(kSggxMetallicBits, n));
         } else {
-            mean0 = vec3(meanSigned(w[0] & kNormalFieldMask, k, kNormalScale), meanSigned(w[1], k, kNormalScale),
-                         meanSigned(w[2], k, kNormalScale));
+            const uint sx = toksvigScaleX(n), syz = toksvigScaleYZ(n);
+            mean0 = vec3(meanSigned(w[0] & kNormalFieldMask, k, sx), meanSigned(w[1], k, syz),
+                         meanSigned(w[2], k, syz));
             mean1 = vec3(0.0);
             albedo = vec3(meanUnit(w[3] & 0xFFFFu, k, kUnormScale), meanUnit(w[3] >> 16u, k, kUnormScale),
                           meanUnit(w[4] & 0xFFFFu, k, kUnormScale));

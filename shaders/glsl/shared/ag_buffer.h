@@ -56,6 +56,17 @@ inline_fn uint unitScale(uint bits, uint n) {
     return ((1u << bits) - 1u) / n;
 }
 
+// The Toksvig normal's per-sample scales at n samples (layout in shared/agaa.h): x shares its word
+// with the count (26 bits), y and z have 32; both at most kToksvigMaxScale. n >= 1.
+inline_fn uint toksvigScaleX(uint n) {
+    uint s = kNormalFieldMask / n;
+    return s < kToksvigMaxScale ? s : kToksvigMaxScale;
+}
+inline_fn uint toksvigScaleYZ(uint n) {
+    uint s = 4294967295u / n;
+    return s < kToksvigMaxScale ? s : kToksvigMaxScale;
+}
+
 struct AgQuantized {
     uint q[kQuantizedFields];
 };

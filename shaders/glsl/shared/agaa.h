@@ -17,13 +17,20 @@ SHARED_CONST kNormalAngleLevels = 256u;
 // round(v * scale) with v in [0, 1]; the k samples a fragment routes to an aggregate add k times
 // that, so fields only ever sum n values of at most `scale`.
 //
-// Toksvig (paper section 3.5.2), fixed scales:
+// Toksvig (paper section 3.5.2):
 //   w0: bits 26..31 sample count; bits 0..25 sum of Toksvig normal x (offset-binary (x+1)/2)
 //   w1, w2: sums of Toksvig normal y, z
 //   w3: albedo R (bits 0..15) | albedo G (bits 16..31)
 //   w4: albedo B (bits 0..15) | metallic (bits 16..31)
+//   The normal's scales depend on n (toksvigScaleX, toksvigScaleYZ in shared/ag_buffer.h): the
+//   largest that n values at the maximum never carry out of their field, and at most
+//   kToksvigMaxScale = 2^23 - 1, below which fp32 quantisation (floor(v scale + 0.5)) never
+//   exceeds the scale. n <= 8: 23 bits for x, y and z; n = 16: x 22; n = 32: x 21, y and z 23
+//   (issue 14: near mirrors the Toksvig length is within 1e-5 of 1, and the fixed 21 bits of
+//   before gave 2 to 15 % alpha error at alpha 0.002 to 0.005).
 //   No overflow at n = 32, c = 1 (every sample in one aggregate, every value at its maximum):
-//     normal:  32 * (2^21 - 1) = 67108832 < 2^26        (fits below the count bits)
+//     normal x: 32 * (2^21 - 1) = 67108832 < 2^26     (fits below the count bits)
+//     normal y, z: 32 * (2^23 - 1)         < 2^28
 //     16-bit:  32 * (2^11 - 1) = 65504    < 2^16        (no carry into the upper field)
 //     count:   32                         < 2^6
 //
@@ -44,7 +51,8 @@ SHARED_CONST kNormalAngleLevels = 256u;
 // tests/agaa/test_fixed_point.cpp checks both layouts' bounds and round trips.
 SHARED_CONST kAggregateWords = 6u;
 SHARED_CONST kNormalBits = 21u;
-SHARED_CONST kNormalScale = 2097151u;      // 2^21 - 1
+SHARED_CONST kNormalScale = 2097151u;      // 2^21 - 1: the x scale at n = 32
+SHARED_CONST kToksvigMaxScale = 8388607u;  // 2^23 - 1
 SHARED_CONST kNormalFieldMask = 67108863u; // 2^26 - 1
 SHARED_CONST kCountShift = 26u;
 SHARED_CONST kUnormBits = 11u;
