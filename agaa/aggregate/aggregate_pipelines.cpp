@@ -196,7 +196,8 @@ VkPipeline AggregateAA::lightingPipeline(bool exporting) {
     spec.push_back(m_settings.breakdown & AggregateBreakdown::kLightingWithoutShading ? 1u : 0u); // id 8
     spec.push_back(uint32_t(m_settings.ndf));                                                     // id 9
     spec.push_back(uint32_t(m_settings.routing));                                                 // id 10
-    return vk::createComputePipeline(m_device, code, m_lightingLayout.layout, {spec},
+    return vk::createComputePipeline(m_device, code, m_lightingLayout.layout,
+                                     lightingSpecialization(std::move(spec), m_features),
                                      exporting ? "agaa.lighting.export" : "agaa.lighting");
 }
 
@@ -251,6 +252,8 @@ void AggregateAA::createLayouts(const eng::frame::GpuScene& scene) {
         lighting.pushBindings.push_back({13, kSampled, kCs}); // the G-buffer's albedo + metallic
         lighting.pushBindings.push_back({14, kSsbo, kCs});    // the test export (its variant only)
     }
+    for (const vk::Binding& b : environmentBindings())
+        lighting.pushBindings.push_back(b);
     m_lightingLayout = vk::createPipelineLayout(m_device, lighting, "agaa.lighting.layout");
 
     vk::LayoutDesc debug;

@@ -1,5 +1,7 @@
 #include "agaa/common/effects.h"
 
+#include "shared/environment.h"
+
 #include <stdexcept>
 
 namespace agaa {
@@ -51,6 +53,12 @@ std::vector<VariantChoice> effectVariants(const eng::scene::SceneFeatures& f, co
     v.push_back({"normal-maps", f.hasNormalMaps() ? "fetch + Toksvig roughness" : "off",
                  f.hasNormalMaps() ? forced + count(f.normalMappedMaterials, "normal-mapped materials")
                                    : "no normal-mapped materials"});
+    v.push_back({"lighting", scene.lightingMode, scene.lightingCause});
+    v.push_back({"environment",
+                 f.hasEnvironment() ? "SH9 irradiance + " + std::to_string(shared::kEnvironmentLevels) +
+                                          " pre-filtered specular levels"
+                                    : "off",
+                 f.hasEnvironment() ? scene.environment.source : "no environment: a constant sky colour"});
     v.push_back({"light-culling", f.needsLightCulling() ? "tiled" : "off",
                  f.needsLightCulling() ? forced + count(f.pointLights + f.spotLights, "point/spot lights")
                                        : "directional lights only: every light touches every tile"});
@@ -66,6 +74,23 @@ std::vector<uint32_t> effectSpecialization(const eng::scene::SceneFeatures& f, u
             f.hasEmissive() ? 1u : 0u,
             shadowTaps,
             uint32_t(footprint)};
+}
+
+eng::vk::Specialization lightingSpecialization(std::vector<uint32_t> values,
+                                               const eng::scene::SceneFeatures& features) {
+    eng::vk::Specialization s{std::move(values), {}};
+    s.byId.push_back({kSpecEnvironment, features.hasEnvironment() ? 1u : 0u});
+    return s;
+}
+
+std::vector<eng::vk::Binding> environmentBindings() {
+    return {{15, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_COMPUTE_BIT},
+            {16, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT}};
+}
+
+void pushEnvironment(eng::vk::PushDescriptors& descriptors, const eng::frame::GpuScene& scene) {
+    descriptors.sampled(15, scene.environmentSampler(), scene.environmentView())
+        .uniform(16, scene.environmentConstants().buffer);
 }
 
 } // namespace agaa

@@ -4,7 +4,10 @@
 // scene (engine/scene/scene_features.h) or forced on for the benchmark, and how each choice is
 // reported: a VariantChoice names the variant and the scene feature that caused it.
 
+#include "engine/frame/gpu_scene.h"
 #include "engine/scene/scene_features.h"
+#include "engine/vk/descriptors.h"
+#include "engine/vk/pipeline.h"
 
 #include <cstdint>
 #include <string>
@@ -52,6 +55,16 @@ inline constexpr uint32_t kSpecNormalMaps = 3;
 inline constexpr uint32_t kSpecEmissive = 4;
 inline constexpr uint32_t kSpecShadowTaps = 5;
 inline constexpr uint32_t kSpecShadowFootprint = 6; // AGAA lighting only
+// common/environment.glsl, apart from the passes' own ids (which run up to 10).
+inline constexpr uint32_t kSpecEnvironment = 16;
+
+// Every lighting pass: the environment's specialisation (id 16) after `values` (ids 0..n-1), and
+// its two bindings (15: pre-filtered levels, 16: constants), pushed from the scene, which holds a
+// stand-in when it has no environment (engine/frame/gpu_scene.h).
+eng::vk::Specialization lightingSpecialization(std::vector<uint32_t> values,
+                                               const eng::scene::SceneFeatures& features);
+std::vector<eng::vk::Binding> environmentBindings();
+void pushEnvironment(eng::vk::PushDescriptors& descriptors, const eng::frame::GpuScene& scene);
 
 // Alpha handling of a masked material in a raster pass (specialisation constant 0 of
 // reference/gbuffer.frag and agaa/visibility.frag).

@@ -1,5 +1,6 @@
 #include "agaa/common/frame_renderer.h"
 
+#include "engine/frame/exposure.h"
 #include "engine/frame/readback.h"
 #include "engine/frame/sample_pattern.h"
 #include "shared/frame.h"
@@ -76,7 +77,42 @@ Technique& FrameRenderer::technique(const RenderRequest& r) {
     return *it->second;
 }
 
-RenderResult FrameRenderer::render(const RenderRequest& request) {
+float FrameRenderer::meteredExposure(const eng::frame::ViewSettings& view, double& ev100) {
+    std::string key =
+        std::to_string(view.camera) + "/" + std::to_string(view.width) + "x" + std::to_string(view.height);
+    if (view.viewOverride)
+        for (int c = 0; c < 4; ++c)
+            for (int r = 0; r < 4; ++r)
+                key += "/" + std::to_string((*view.viewOverride)[c][r]);
+    auto it = m_meteredExposure.find(key);
+    if (it == m_meteredExposure.end()) {
+        RenderRequest meter;
+        meter.method = "noaa";
+        meter.view = view;
+        meter.view.exposure = eng::frame::meteringExposure(m_scene);
+        const RenderResult r = render(meter);
+        const double luminance =
+            eng::frame::logAverageLuminance(r.hdr.rgba, r.shadingEvents, meter.view.exposure);
+        const double ev = eng::frame::ev100FromLuminance(luminance);
+        it = m_meteredExposure.emplace(key, std::pair{eng::frame::exposureFromEv100(ev), ev}).first;
+    }
+    ev100 = it->second.second;
+    return it->second.first;
+}
+
+RenderResult FrameRenderer::render(const RenderRequest& original) {
+    if (original.autoExposure) {
+        RenderRequest fixed = original;
+        fixed.autoExposure = false;
+        double ev100 = 0.0;
+        fixed.view.exposure = meteredExposure(original.view, ev100);
+        RenderResult r = render(fixed);
+        r.meteredEv100 = ev100;
+        r.variants.push_back({"exposure", "auto: EV100 " + std::to_string(ev100).substr(0, 5),
+                              "log-average luminance of the no-AA frame's covered pixels"});
+        return r;
+    }
+    const RenderRequest& request = original;
     const uint32_t w = request.view.width, h = request.view.height;
     if (w == 0 || h == 0 || w > 8192 || h > 8192)
         throw std::invalid_argument("image size " + std::to_string(w) + "x" + std::to_string(h) +
@@ -150,6 +186,7 @@ RenderResult FrameRenderer::render(const RenderRequest& request) {
     result.graphDot = graph.dumpDot();
     result.graphJson = graph.dumpJson();
     result.variants = tech.variants();
+    result.exposure = request.view.exposure;
     result.features = eng::scene::describe(eng::scene::deriveSceneFeatures(m_scene), m_scene);
 
     uint64_t storage = 0;

@@ -15,6 +15,7 @@
 #include <functional>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -29,6 +30,10 @@ struct RenderRequest {
     // Tools and tests add their own passes (readbacks of intermediate resources) after the
     // technique's; they run in every frame of this request.
     std::function<void(eng::rg::Graph&, Technique&, const FrameInputs&)> extraPasses;
+    // view.exposure replaced by the metered one (engine/frame/exposure.h): the log-average
+    // luminance of the covered pixels of a no-AA frame of the same view, so every method of a
+    // comparison gets the same exposure. Metered once per view and cached.
+    bool autoExposure = false;
 };
 
 struct RenderResult {
@@ -54,6 +59,8 @@ struct RenderResult {
     // (agaa/common/effects.h), and the features themselves in one line.
     std::vector<VariantChoice> variants;
     std::string features;
+    float exposure = 1.0f;              // the one the frame was rendered at
+    std::optional<double> meteredEv100; // autoExposure only
 };
 
 class FrameRenderer {
@@ -67,12 +74,15 @@ class FrameRenderer {
     const eng::scene::Scene& scene() const { return m_scene; }
 
   private:
+    float meteredExposure(const eng::frame::ViewSettings& view, double& ev100);
+
     eng::vk::Device& m_device;
     const eng::scene::Scene& m_scene;
     eng::frame::GpuScene m_gpuScene;
     eng::frame::FrameRunner m_runner;
     eng::vk::Buffer m_frameConstants, m_lights;
-    std::map<std::string, std::unique_ptr<Technique>> m_techniques; // keyed by method and settings
+    std::map<std::string, std::unique_ptr<Technique>> m_techniques;    // keyed by method and settings
+    std::map<std::string, std::pair<float, double>> m_meteredExposure; // keyed by view: exposure, EV100
 };
 
 } // namespace agaa

@@ -171,7 +171,10 @@ std::vector<eng::vk::Binding> SampleGBufferPass::lightingBindings() {
             {7, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs},
             {8, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs},
             {9, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, cs},
-            {10, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, cs}};
+            {10, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, cs},
+            {15, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
+             cs}, // the environment (effects.h environmentBindings)
+            {16, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, cs}};
 }
 
 } // namespace agaa

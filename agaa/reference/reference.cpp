@@ -33,7 +33,8 @@ Reference::Reference(vk::Device& device, const eng::frame::GpuScene& scene, cons
     // Specialisation: id 1 = n (common/gbuffer_lighting.glsl); id 0 is unused here; 2.. the
     // scene's effects, one shadow tap per shading event (agaa/common/effects.h).
     m_lightingPipeline = vk::createComputePipeline(
-        device, code, m_lightingLayout.layout, {effectSpecialization(m_features, 0u, settings.samples, 1)},
+        device, code, m_lightingLayout.layout,
+        lightingSpecialization(effectSpecialization(m_features, 0u, settings.samples, 1), m_features),
         m_name + ".lighting");
     m_fetchSampler = vk::createSampler(device, VK_FILTER_NEAREST, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE, 0.0f,
                                        m_name + ".fetchSampler");
@@ -93,10 +94,12 @@ FrameTargets Reference::addPasses(rg::Graph& graph, const FrameInputs& in) {
             d.events =
                 b.write(b.create(m_name + ".shadingEvents", eventsDesc), rg::Use::StorageImageWriteCompute);
         },
-        [this, shadows, w = in.width, h = in.height](const rg::Context& ctx, const Lighting& d) {
+        [this, shadows, scene = in.scene, w = in.width, h = in.height](const rg::Context& ctx,
+                                                                       const Lighting& d) {
             VkCommandBuffer cmd = ctx.cmd();
             vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, m_lightingPipeline);
             vk::PushDescriptors pd;
+            pushEnvironment(pd, *scene);
             if (shadows)
                 pd.sampled(9, m_shadow.sampler(), ctx.texture(d.shadowMap).sampledView)
                     .uniform(10, ctx.buffer(d.shadowConstants).buffer);

@@ -54,7 +54,8 @@ SimpleComplex::SimpleComplex(vk::Device& device, const eng::frame::GpuScene& sce
     // One shadow tap per shading event, as the reference (agaa/common/effects.h).
     m_lightingPipeline = vk::createComputePipeline(
         device, code, m_lightingLayout.layout,
-        {effectSpecialization(m_features, uint32_t(settings.schedule), settings.samples, 1)},
+        lightingSpecialization(
+            effectSpecialization(m_features, uint32_t(settings.schedule), settings.samples, 1), m_features),
         m_name + ".lighting");
     m_fetchSampler = vk::createSampler(device, VK_FILTER_NEAREST, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE, 0.0f,
                                        m_name + ".fetchSampler");
@@ -113,10 +114,12 @@ FrameTargets SimpleComplex::addLighting(rg::Graph& graph, const FrameInputs& in,
             d.events =
                 b.write(b.create(m_name + ".shadingEvents", eventsDesc), rg::Use::StorageImageWriteCompute);
         },
-        [this, params, shadows, w = in.width, h = in.height](const rg::Context& ctx, const Lighting& d) {
+        [this, params, shadows, scene = in.scene, w = in.width, h = in.height](const rg::Context& ctx,
+                                                                               const Lighting& d) {
             VkCommandBuffer cmd = ctx.cmd();
             vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, m_lightingPipeline);
             eng::vk::PushDescriptors pd;
+            pushEnvironment(pd, *scene);
             if (shadows)
                 pd.sampled(9, m_shadow.sampler(), ctx.texture(d.shadowMap).sampledView)
                     .uniform(10, ctx.buffer(d.shadowConstants).buffer);

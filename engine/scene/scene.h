@@ -4,9 +4,12 @@
 // index ranges with a material. Units are metres, glTF conventions (right-handed,
 // +Y up). The renderer uploads these arrays as they are.
 
+#include "engine/scene/environment.h"
+
 #include <glm/glm.hpp>
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -107,6 +110,16 @@ struct Scene {
         cameras; // never empty: a default camera framing the bounds is added when the file has none
     Bounds bounds;
     LoadStats stats;
+    // Distant lighting and the sky (engine/scene/environment.h); empty: uncovered samples show a
+    // constant sky colour and nothing lights the scene but its lights.
+    Environment environment;
+    // Where the lights came from (engine/scene/default_lighting.h): "scene", "default" or "both",
+    // and why, for the stats.
+    std::string lightingMode = "scene";
+    std::string lightingCause = "the scene's own lights";
+    // The exposure the scene was authored for (the built-in scenes: 1, their lights are sized for
+    // it); none, as for every glTF file: metered (engine/frame/exposure.h).
+    std::optional<float> exposure;
 
     uint32_t triangleCount() const { return static_cast<uint32_t>(indices.size() / 3); }
 };

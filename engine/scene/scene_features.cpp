@@ -22,6 +22,7 @@ void countLights(const Scene& scene, SceneFeatures& f) {
 SceneFeatures deriveSceneFeatures(const Scene& scene) {
     SceneFeatures f;
     countLights(scene, f);
+    f.environment = !scene.environment.empty();
     for (uint32_t i = 0; i < scene.lights.size(); ++i) {
         const Light& light = scene.lights[i];
         if (!light.castsShadows) continue;

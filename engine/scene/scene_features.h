@@ -38,12 +38,16 @@ struct SceneFeatures {
     // to skip work.
     bool skyVisible = true;
     bool forced = false; // every effect forced on (benchmark), not derived
+    // The scene has an environment (Scene::environment: the default sky or a user's map): every
+    // lighting pass adds its pre-filtered light (common/environment.glsl).
+    bool environment = false;
 
     bool hasShadows() const { return !shadowedLights.empty(); }
     bool hasMasked() const { return maskedMaterials > 0; }
     bool hasEmissive() const { return emissiveMaterials > 0; }
     bool hasNormalMaps() const { return normalMappedMaterials > 0; }
     bool hasGlossyMetals() const { return glossyMetalMaterials > 0; }
+    bool hasEnvironment() const { return environment; }
     // Tile light culling only prunes point and spot lights; directional lights touch every tile.
     bool needsLightCulling() const { return forced || pointLights + spotLights > 0; }
 };

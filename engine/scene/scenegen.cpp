@@ -223,7 +223,9 @@ tinygltf::Model generateScene(std::string_view kindName, const GenOptions& optio
 }
 
 Scene loadBuiltin(std::string_view name) {
-    return loadGltfModel(generateScene(name), "builtin:" + std::string(name));
+    Scene scene = loadGltfModel(generateScene(name), "builtin:" + std::string(name));
+    scene.exposure = 1.0f; // the generated lights are sized for it
+    return scene;
 }
 
 } // namespace eng::scene

@@ -17,17 +17,23 @@ VkShaderModule createModule(const Device& device, std::span<const uint32_t> spir
 
 struct SpecializationData {
     std::vector<VkSpecializationMapEntry> entries;
+    std::vector<uint32_t> data;
     VkSpecializationInfo info{};
 };
 
 SpecializationData makeSpecialization(const Specialization& spec) {
     SpecializationData d;
+    d.data = spec.values;
     for (uint32_t i = 0; i < spec.values.size(); ++i)
         d.entries.push_back({i, i * 4u, 4u});
+    for (const auto& [id, value] : spec.byId) {
+        d.entries.push_back({id, uint32_t(d.data.size()) * 4u, 4u});
+        d.data.push_back(value);
+    }
     d.info.mapEntryCount = uint32_t(d.entries.size());
     d.info.pMapEntries = d.entries.data();
-    d.info.dataSize = spec.values.size() * 4;
-    d.info.pData = spec.values.data();
+    d.info.dataSize = d.data.size() * 4;
+    d.info.pData = d.data.data();
     return d;
 }
 
@@ -88,7 +94,7 @@ VkPipeline createComputePipeline(const Device& device, std::span<const uint32_t>
     info.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
     info.stage.module = module;
     info.stage.pName = "main";
-    info.stage.pSpecializationInfo = spec.values.empty() ? nullptr : &sd.info;
+    info.stage.pSpecializationInfo = sd.entries.empty() ? nullptr : &sd.info;
     info.layout = layout;
     VkPipeline pipeline = VK_NULL_HANDLE;
     VK_CHECK(vkCreateComputePipelines(device.device(), VK_NULL_HANDLE, 1, &info, nullptr, &pipeline));
@@ -108,7 +114,7 @@ VkPipeline createGraphicsPipeline(const Device& device, const GraphicsPipelineDe
         s.stage = stage;
         s.module = modules.back();
         s.pName = "main";
-        s.pSpecializationInfo = d.specialization.values.empty() ? nullptr : &sd.info;
+        s.pSpecializationInfo = sd.entries.empty() ? nullptr : &sd.info;
         stages.push_back(s);
     };
     addStage(VK_SHADER_STAGE_VERTEX_BIT, d.vertex, ".vert");

@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <span>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace eng::vk {
@@ -37,9 +38,11 @@ void destroyPipelineLayout(const Device&, PipelineLayout&);
 
 VkDescriptorSetLayout createSetLayout(const Device&, std::span<const Binding>, const std::string& name);
 
-// Specialisation constants, all 32-bit, ids 0..n-1 in order.
+// Specialisation constants, all 32-bit: values for ids 0..n-1 in order, then (id, value) pairs
+// for ids kept apart from the passes' own (effects shared by every lighting pass).
 struct Specialization {
     std::vector<uint32_t> values;
+    std::vector<std::pair<uint32_t, uint32_t>> byId;
 };
 
 VkPipeline createComputePipeline(const Device&, std::span<const uint32_t> spirv, VkPipelineLayout,

@@ -11,6 +11,7 @@
 #include "engine/io/io_error.h"
 #include "engine/io/png.h"
 #include "engine/io/tone_map.h"
+#include "engine/scene/default_lighting.h"
 #include "engine/scene/gltf_loader.h"
 #include "engine/scene/scene_error.h"
 #include "engine/scene/scenegen.h"
@@ -47,11 +48,17 @@ struct Options {
     bool builtinGiven = false;
     std::string device;
     uint32_t frames = 1, warmup = 0;
+    // --exposure: none = the scene's own (built-in scenes: 1), else auto; "auto"; or a value.
+    std::optional<std::string> exposure;
+    std::string lights = "auto";
+    std::optional<std::string> environment;
 };
 
 const char* kUsage =
     "usage: agaa-render [--scene FILE | --builtin NAME] [--method NAME] [--samples N] [--aggregates C]\n"
-    "                   [--width W] [--height H] [--camera I] [--exposure E] [--out PREFIX] [--debug VIEW]\n"
+    "                   [--width W] [--height H] [--camera I] [--exposure auto|E] [--out PREFIX] [--debug "
+    "VIEW]\n"
+    "                   [--lights auto|scene|fill|default|both] [--environment FILE.exr]\n"
     "                   [--stats FILE.json] [--graph FILE.dot] [--frames K] [--warmup K]\n"
     "                   [--characteristic-length K] [--seed-threshold T] [--agaa-position mean|centre]\n"
     "                   [--agaa-ndf auto|sggx|toksvig] [--agaa-lighting auto|compact|registers]\n"
@@ -70,6 +77,15 @@ const char* kUsage =
     "  --aggregates C    AGAA aggregates per pixel, 1..4 (default 2)\n"
     "  --width/--height  image size in pixels, 1..8192 (default 256x256)\n"
     "  --camera I        scene camera index (default 0)\n"
+    "  --exposure auto|E  linear exposure E (1e-6..1e6), or auto: metered from the log-average luminance\n"
+    "                    of a no-AA frame's covered pixels (EV100 = log2(L S / K), S = 100, K = 12.5);\n"
+    "                    default: the scene's own (built-in scenes: 1), else auto\n"
+    "  --lights auto|scene|fill|default|both  scene: the file's lights only; fill: them and a sky at\n"
+    "                    1/4 of their illuminance; default: a 100 klux sun with shadows and a procedural\n"
+    "                    sky instead; both: all of them; auto (default): fill when the scene has lights,\n"
+    "                    else default\n"
+    "  --environment FILE.exr  equirectangular (2:1) environment lighting every method (diffuse SH +\n"
+    "                    pre-filtered specular) and shown as the sky; replaces the default sky and its sun\n"
     "  --debug VIEW      a method's debug view instead of the lit frame (agaa: aggregates; simple-complex: "
     "complex)\n"
     "  --characteristic-length K, --seed-threshold T\n"
@@ -232,8 +248,14 @@ Options parse(int argc, char** argv) {
             r.view.height = parseUint(a, value(), 1, 8192);
         else if (a == "--camera")
             r.view.camera = parseUint(a, value(), 0, 1u << 20);
-        else if (a == "--exposure")
-            r.view.exposure = parseFloat(a, value(), 1e-6f, 1e6f);
+        else if (a == "--exposure") {
+            o.exposure = value();
+            if (*o.exposure != "auto") r.view.exposure = parseFloat(a, *o.exposure, 1e-6f, 1e6f);
+        } else if (a == "--lights") {
+            o.lights = value();
+            eng::scene::parseLightingMode(o.lights); // refuses anything else, naming the values
+        } else if (a == "--environment")
+            o.environment = value();
         else if (a == "--out")
             o.out = value();
         else if (a == "--stats")
@@ -322,6 +344,8 @@ nlohmann::json statsJson(const Options& o, const agaa::RenderResult& r, const en
     if (o.request.method == "agaa") j["aggregates_per_pixel_histogram"] = r.shadingEventsHistogram;
     // Scene-driven effects (agaa/common/effects.h): the features and each variant with its cause.
     j["features"] = r.features;
+    j["exposure"] = r.exposure;
+    if (r.meteredEv100) j["ev100"] = *r.meteredEv100;
     j["effects"] = o.request.settings.effects.forceAll ? "all" : "scene";
     j["variants"] = nlohmann::json::array();
     for (const agaa::VariantChoice& v : r.variants)
@@ -350,9 +374,20 @@ int renderWith(const Options& o, eng::vk::Device& device) {
         throw BadArgument("--camera " + std::to_string(o.request.view.camera) +
                           " is out of range (the scene has " + std::to_string(scene.cameras.size()) +
                           " camera(s))");
+    std::optional<eng::scene::Environment> environment;
+    if (o.environment) {
+        const eng::io::ImageF map = eng::io::readExr(*o.environment);
+        environment = eng::scene::environmentFromEquirect(*o.environment, map.width, map.height, map.rgba);
+    }
+    eng::scene::applyLighting(scene, eng::scene::parseLightingMode(o.lights), std::move(environment),
+                              o.request.view.camera);
 
+    agaa::RenderRequest request = o.request;
+    // Physical exposure: the scene's own when it gives one and --exposure does not, else metered.
+    request.autoExposure = o.exposure ? *o.exposure == "auto" : !scene.exposure.has_value();
+    if (!o.exposure && scene.exposure) request.view.exposure = *scene.exposure;
     agaa::FrameRenderer renderer(device, scene);
-    agaa::RenderResult r = renderer.render(o.request);
+    agaa::RenderResult r = renderer.render(request);
     if (!eng::io::allFinite(r.hdr) || !eng::io::allFinite(r.display)) {
         std::cerr << "agaa-render: internal error: the frame contains NaN or Inf; nothing written\n";
         return 1;

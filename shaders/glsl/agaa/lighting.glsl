@@ -98,6 +98,7 @@ layout(set = 0, binding = 10) uniform sampler2DMSArray emissiveSamples;
 
 #include "common/brdf.glsl"
 #include "common/depth.glsl"
+#include "common/environment.glsl"
 #include "common/lights.glsl"
 #include "common/tile_culling.glsl"
 #include "common/tonemap.glsl"
@@ -207,6 +208,11 @@ void shadeAggregate(SurfaceInputs surface, vec3 T, vec3 B, vec2 alphas, vec3 P, 
     float pixelSize = pixelFootprint(-P.z, frame.extent, frame.projParams);
 #endif
     vec3 specularSquares = vec3(0.0);
+    // The environment through the aggregate's filtered distribution: its mean normal, and its
+    // Toksvig roughness or the SGGX lobe's (the geometric mean of its two alphas). Smooth at the
+    // scale of an aggregate: no spike, so it stays out of the two-point resolve's variance.
+    if (kEnvironment != 0u)
+        radiance += environmentLighting(surface, V, sggx ? sqrt(sqrt(alphas.x * alphas.y)) : surface.roughness);
     for (uint i = nextTileLight(0u); i < kMaxLights; i = nextTileLight(i + 1u)) {
         vec3 L, irradiance;
         if (!lightIncidence(lights[i], P, L, irradiance)) continue;
@@ -496,7 +502,7 @@ void main() {
     // ---- 4. resolve: tone-map each shading event, weight by its sample fraction ------------
     float exposure = frame.depthParams.z;
     float weight = 1.0 / float(n);
-    vec3 sky = frame.skyRadiance.rgb * exposure;
+    vec3 sky = skyRadiance(pixel) * exposure;
     vec3 display = vec3(0.0), hdr = vec3(0.0);
 #if AGAA_EMISSIVE
     for (uint s = 0u; s < n; ++s) {

@@ -7,9 +7,10 @@
 // Requires, declared by the includer before this file: GBUFFER_MS (1: 4x layered
 // G-buffer, 0: one sample per pixel), `frame` (FrameConstants, set 0 binding 0),
 // `lights` (GpuLight[], set 0 binding 1). Declares the G-buffer at set 0
-// bindings 2..5. nextTileLight() needs tileCullLights() to have run.
+// bindings 2..5 and the environment at 15 and 16 (common/environment.glsl). nextTileLight() needs tileCullLights() to have run.
 #include "common/brdf.glsl"
 #include "common/depth.glsl"
+#include "common/environment.glsl"
 #include "common/lights.glsl"
 #include "common/octahedral.glsl"
 #include "common/tonemap.glsl"
@@ -80,7 +81,7 @@ void shadeGBufferSurface(ivec2 pixel, uint s, vec3 P, out vec3 radiance, out vec
     surface.albedo = am.rgb;
     surface.metallic = am.a;
     surface.roughness = er.a;
-    vec3 lit = vec3(0.0);
+    vec3 lit = kEnvironment != 0u ? environmentLighting(surface, V, surface.roughness) : vec3(0.0);
     for (uint i = nextTileLight(0u); i < kMaxLights; i = nextTileLight(i + 1u)) {
         vec3 L, irradiance;
         if (!lightIncidence(lights[i], P, L, irradiance)) continue;
@@ -113,6 +114,7 @@ void shadeGBufferSurfaceShadowedPerSample(ivec2 pixel, uint s, vec3 P, out vec3 
     surface.metallic = am.a;
     surface.roughness = er.a;
     vec3 unshadowed = er.rgb;
+    if (kEnvironment != 0u) unshadowed += environmentLighting(surface, V, surface.roughness);
     vec3 shadowedLight[kMaxShadowMaps] = vec3[](vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0));
     for (uint i = nextTileLight(0u); i < kMaxLights; i = nextTileLight(i + 1u)) {
         vec3 L, irradiance;
@@ -147,7 +149,7 @@ void shadeGBufferSurfaceShadowedPerSample(ivec2 pixel, uint s, vec3 P, out vec3 
 bool shadeGBufferSample(ivec2 pixel, uint s, out vec3 radiance, out vec3 display) {
     float d = gbufferDepth(pixel, s);
     if (isSky(d)) {
-        radiance = frame.skyRadiance.rgb * frame.depthParams.z;
+        radiance = skyRadiance(pixel) * frame.depthParams.z;
         display = toneMapAces(radiance);
         return false;
     }

@@ -1,0 +1,93 @@
+#ifndef AGAA_ENVIRONMENT_GLSL
+#define AGAA_ENVIRONMENT_GLSL
+// Distant environment lighting (issue 16; engine/frame/environment_maps.h): diffuse irradiance
+// from 9 spherical-harmonic coefficients and split-sum pre-filtered specular (Karis 2013), the
+// same for every method. AGAA evaluates it once per aggregate from the aggregate's filtered
+// normal distribution: its mean normal and its Toksvig or SGGX roughness pick the pre-filtered
+// level, which is the same filtering the lights get. The environment is not shadowed.
+//
+// Requires, declared by the includer before this file: `frame` (FrameConstants). Declares the
+// pre-filtered levels at set 0 binding 15 and their constants at binding 16. Specialisation id 16
+// (agaa/common/effects.h kSpecEnvironment): 0 for a scene without an environment, whose passes
+// then compile none of this (bindings 15 and 16 hold a 1x1 black stand-in).
+#include "common/brdf.glsl"
+#include "common/depth.glsl"
+#include "common/epsilon.glsl"
+#include "shared/environment.h"
+
+layout(constant_id = 16) const uint kEnvironment = 0u;
+layout(set = 0, binding = 15) uniform sampler2DArray environmentMap;
+layout(set = 0, binding = 16) uniform Environment { EnvironmentConstants environment; };
+
+// View space -> the map's world space. The view matrix is rigid (a rotation and a translation),
+// so its rotation's inverse is its transpose.
+vec3 environmentDirection(vec3 viewDirection) { return normalize(transpose(mat3(frame.view)) * viewDirection); }
+
+// engine/scene/environment.h's mapping: u = 0.5 + atan2(x, -z) / 2 pi, v = acos(y) / pi.
+vec2 equirectCoordinates(vec3 d) {
+    // At the poles atan2(0, 0) is undefined: any longitude is the same texel row there.
+    float u = length(d.xz) > kMinNormalLength ? 0.5 + atan(d.x, -d.z) / (2.0 * kPi) : 0.5;
+    return vec2(u, acos(clamp(d.y, -1.0, 1.0)) / kPi);
+}
+
+// Irradiance (lux) on a surface with world normal N: E = sum_i c_i Y_i(N), the basis of
+// engine/frame/environment_maps.cpp shBasis. Band-2 ringing can dip below 0 opposite a bright
+// sun: clamped.
+vec3 environmentIrradiance(vec3 N) {
+    float x = N.x, y = N.y, z = N.z;
+    vec3 e = environment.irradianceSh[0].rgb * 0.282095;
+    e += environment.irradianceSh[1].rgb * (0.488603 * y);
+    e += environment.irradianceSh[2].rgb * (0.488603 * z);
+    e += environment.irradianceSh[3].rgb * (0.488603 * x);
+    e += environment.irradianceSh[4].rgb * (1.092548 * x * y);
+    e += environment.irradianceSh[5].rgb * (1.092548 * y * z);
+    e += environment.irradianceSh[6].rgb * (0.315392 * (3.0 * z * z - 1.0));
+    e += environment.irradianceSh[7].rgb * (1.092548 * x * z);
+    e += environment.irradianceSh[8].rgb * (0.546274 * (x * x - y * y));
+    return max(e, vec3(0.0));
+}
+
+// Pre-filtered radiance towards world direction D for perceptual roughness r: the two levels
+// either side of r (level k is r = k / (levels - 1)), blended.
+vec3 environmentRadiance(vec3 D, float roughness) {
+    float level = clamp(roughness, 0.0, 1.0) * environment.params.z;
+    float lower = floor(level);
+    vec2 uv = equirectCoordinates(D);
+    vec3 a = textureLod(environmentMap, vec3(uv, lower), 0.0).rgb;
+    vec3 b = textureLod(environmentMap, vec3(uv, min(lower + 1.0, environment.params.z)), 0.0).rgb;
+    return mix(a, b, level - lower) * environment.params.y;
+}
+
+// The BRDF's half of the split sum, integrated over the hemisphere for GGX with Smith
+// visibility: F0 * A + B (Karis 2014, "Physically Based Shading on Mobile", the analytic fit).
+vec2 environmentBrdf(float roughness, float NoV) {
+    const vec4 c0 = vec4(-1.0, -0.0275, -0.572, 0.022);
+    const vec4 c1 = vec4(1.0, 0.0425, 1.04, -0.04);
+    vec4 r = roughness * c0 + c1;
+    float a004 = min(r.x * r.x, exp2(-9.28 * NoV)) * r.x + r.y;
+    return vec2(-1.04, 1.04) * a004 + r.zw;
+}
+
+// Outgoing radiance towards V (view space) from the whole environment, for a surface of
+// perceptual roughness `roughness` (a point sample's own, or an aggregate's filtered one).
+vec3 environmentLighting(SurfaceInputs s, vec3 V, float roughness) {
+    vec3 N = s.normal;
+    float NoV = max(dot(N, V), kMinCosine);
+    vec3 f0 = mix(vec3(0.04), s.albedo, s.metallic);
+    vec2 ab = environmentBrdf(roughness, NoV);
+    vec3 reflectance = f0 * ab.x + ab.y;
+    vec3 specular = environmentRadiance(environmentDirection(reflect(-V, N)), roughness) * reflectance;
+    // Lambert with the energy the specular lobe leaves, as the punctual lights' diffuseLobe.
+    vec3 diffuse = (1.0 - reflectance) * (1.0 - s.metallic) * s.albedo / kPi *
+                   environmentIrradiance(environmentDirection(N));
+    return diffuse + specular;
+}
+
+// What an uncovered sample of `pixel` sees, before exposure: the environment on the pixel
+// centre's ray in every method (the map is far smoother than a pixel), else the constant sky.
+vec3 skyRadiance(ivec2 pixel) {
+    if (kEnvironment == 0u) return frame.skyRadiance.rgb;
+    vec3 ray = viewPositionAtDistance(vec2(pixel) + 0.5, 1.0, frame.extent, frame.projParams);
+    return environmentRadiance(environmentDirection(normalize(ray)), 0.0);
+}
+#endif
