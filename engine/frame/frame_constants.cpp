@@ -89,6 +89,13 @@ std::vector<shared::GpuMaterial> makeGpuMaterials(const scene::Scene& scene) {
                                                                 : shared::kAlphaBlend;
         g.params = {m.metallicFactor, m.roughnessFactor, m.normalScale, float(mode)};
         g.textures = {m.baseColorTexture, m.metallicRoughnessTexture, m.normalTexture, m.emissiveTexture};
+        for (int slot = 0; slot < 4; ++slot) {
+            const scene::TextureTransform& t = m.textureTransforms[slot];
+            const float c = std::cos(t.rotation), s = std::sin(t.rotation);
+            g.uvMatrix[slot] = {c * t.scale.x, s * t.scale.x, -s * t.scale.y, c * t.scale.y};
+            g.uvOffset[slot / 2][(slot % 2) * 2] = t.offset.x;
+            g.uvOffset[slot / 2][(slot % 2) * 2 + 1] = t.offset.y;
+        }
         out.push_back(g);
     }
     return out;

@@ -97,8 +97,9 @@ class GltfConverter {
     // extensionsRequired names any other must not be loaded (it would render wrong without a
     // word: KHR_draco_mesh_compression, KHR_texture_basisu, KHR_texture_transform...); an optional
     // one in extensionsUsed is ignored with a warning.
-    static constexpr const char* kSupportedExtensions[] = {
-        "KHR_lights_punctual", "KHR_materials_emissive_strength", "KHR_mesh_quantization"};
+    static constexpr const char* kSupportedExtensions[] = {"KHR_lights_punctual",
+                                                           "KHR_materials_emissive_strength",
+                                                           "KHR_mesh_quantization", "KHR_texture_transform"};
 
     void checkExtensions() {
         std::string supported;

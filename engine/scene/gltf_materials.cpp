@@ -81,6 +81,15 @@ class MaterialConverter {
             texture(pbr.baseColorTexture.index, true, pbrField + ".baseColorTexture.index");
         out.metallicRoughnessTexture =
             texture(pbr.metallicRoughnessTexture.index, false, pbrField + ".metallicRoughnessTexture.index");
+        out.textureTransforms[0] = textureTransform(
+            pbr.baseColorTexture.extensions, pbr.baseColorTexture.texCoord, pbrField + ".baseColorTexture");
+        out.textureTransforms[1] =
+            textureTransform(pbr.metallicRoughnessTexture.extensions, pbr.metallicRoughnessTexture.texCoord,
+                             pbrField + ".metallicRoughnessTexture");
+        out.textureTransforms[2] = textureTransform(in.normalTexture.extensions, in.normalTexture.texCoord,
+                                                    field + ".normalTexture");
+        out.textureTransforms[3] = textureTransform(in.emissiveTexture.extensions,
+                                                    in.emissiveTexture.texCoord, field + ".emissiveTexture");
 
         out.normalTexture = texture(in.normalTexture.index, false, field + ".normalTexture.index");
         out.normalScale = finiteOr(in.normalTexture.scale, 1.0f, field + ".normalTexture.scale");
@@ -113,6 +122,43 @@ class MaterialConverter {
         }
         out.doubleSided = in.doubleSided;
         return out;
+    }
+
+    // KHR_texture_transform on a textureInfo; a texCoord other than 0 (the info's or the
+    // extension's override) names a second UV set, which the vertex format does not carry.
+    TextureTransform textureTransform(const tinygltf::ExtensionMap& extensions, int texCoord,
+                                      const std::string& field) {
+        TextureTransform t;
+        int set = texCoord;
+        const auto it = extensions.find("KHR_texture_transform");
+        if (it != extensions.end() && it->second.IsObject()) {
+            const tinygltf::Value& e = it->second;
+            const std::string f = field + ".extensions.KHR_texture_transform";
+            auto pair = [&](const char* name, glm::vec2& out) {
+                if (!e.Has(name)) return;
+                const tinygltf::Value& v = e.Get(name);
+                if (!v.IsArray() || v.ArrayLen() != 2 || !v.Get(0).IsNumber() || !v.Get(1).IsNumber()) {
+                    warn(f + "." + name + ": needs 2 numbers; ignored");
+                    return;
+                }
+                out = {finiteOr(v.Get(0).GetNumberAsDouble(), out.x, f + "." + name + "[0]"),
+                       finiteOr(v.Get(1).GetNumberAsDouble(), out.y, f + "." + name + "[1]")};
+            };
+            pair("offset", t.offset);
+            pair("scale", t.scale);
+            if (e.Has("rotation")) {
+                const tinygltf::Value& v = e.Get("rotation");
+                if (v.IsNumber())
+                    t.rotation = finiteOr(v.GetNumberAsDouble(), 0.0f, f + ".rotation");
+                else
+                    warn(f + ".rotation: not a number; ignored");
+            }
+            if (e.Has("texCoord") && e.Get("texCoord").IsInt()) set = e.Get("texCoord").GetNumberAsInt();
+        }
+        if (set > 0)
+            warn(field + ": uses TEXCOORD_" + std::to_string(set) +
+                 ", a second UV set the renderer does not carry; TEXCOORD_0 is used instead");
+        return t;
     }
 
     float emissiveStrength(const tinygltf::Material& in, const std::string& field) {

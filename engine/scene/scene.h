@@ -36,6 +36,14 @@ struct Texture {
 
 enum class AlphaMode { Opaque, Mask, Blend };
 
+// KHR_texture_transform on one texture slot: uv' = T(offset) R(rotation) S(scale) uv, rotation in
+// radians counter-clockwise in uv space (the extension's reference GLSL).
+struct TextureTransform {
+    glm::vec2 offset{0.0f};
+    float rotation = 0.0f;
+    glm::vec2 scale{1.0f};
+};
+
 // glTF metallic-roughness material. Texture indices are into Scene::textures, -1 = none.
 struct Material {
     std::string name;
@@ -52,6 +60,8 @@ struct Material {
     int32_t metallicRoughnessTexture = -1;
     int32_t normalTexture = -1;
     int32_t emissiveTexture = -1;
+    // Per slot: base colour, metal-roughness, normal, emissive (the order of GpuMaterial::textures).
+    TextureTransform textureTransforms[4];
 };
 
 // One contiguous index range drawn with one material.

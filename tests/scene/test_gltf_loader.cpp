@@ -1,6 +1,7 @@
 // Geometry conversion: node transforms, winding, repairs (flat normals,
 // degenerate triangles, zero normals), index and attribute types, cameras.
 
+#include "engine/frame/frame_constants.h"
 #include "engine/scene/gltf_loader.h"
 #include "engine/scene/scene_error.h"
 
@@ -78,7 +79,7 @@ TEST(GltfLoader, NodeMatrixIsColumnMajor) {
 // glTF 2.0 section 3.12: a required extension the loader does not implement refuses the asset,
 // naming it and the supported ones; an unsupported optional one is a warning.
 TEST(GltfLoader, UnsupportedRequiredExtensionsAreRefusedByName) {
-    for (const char* ext : {"KHR_draco_mesh_compression", "KHR_texture_basisu", "KHR_texture_transform"}) {
+    for (const char* ext : {"KHR_draco_mesh_compression", "KHR_texture_basisu", "EXT_meshopt_compression"}) {
         TestModel m;
         const int pos = m.addVec3Accessor({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}});
         m.addMeshNode({{"POSITION", pos}}, m.addIndexAccessor({0, 1, 2}));
@@ -106,6 +107,45 @@ TEST(GltfLoader, UnsupportedRequiredExtensionsAreRefusedByName) {
     EXPECT_NE(s.stats.warnings[0].find("extensionsUsed: 'EXT_texture_webp' is not supported"),
               std::string::npos)
         << s.stats.warnings[0];
+}
+
+// KHR_texture_transform (issue 16): offset, rotation and scale per texture slot reach the material
+// and the GPU table as uv' = R(rotation) S(scale) uv + offset; a second UV set is a warning.
+TEST(GltfLoader, TextureTransformReachesTheMaterialAndTheGpuTable) {
+    TestModel m;
+    const int pos = m.addVec3Accessor({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}});
+    m.addMeshNode({{"POSITION", pos}}, m.addIndexAccessor({0, 1, 2}));
+    m.model.extensionsUsed = {"KHR_texture_transform"};
+    m.model.extensionsRequired = {"KHR_texture_transform"};
+    tinygltf::Material mat;
+    tinygltf::Value::Object transform;
+    transform["offset"] =
+        tinygltf::Value(tinygltf::Value::Array{tinygltf::Value(-0.5), tinygltf::Value(0.25)});
+    transform["scale"] = tinygltf::Value(tinygltf::Value::Array{tinygltf::Value(2.0), tinygltf::Value(3.0)});
+    transform["rotation"] = tinygltf::Value(1.5707963267948966);
+    mat.pbrMetallicRoughness.baseColorTexture.extensions["KHR_texture_transform"] =
+        tinygltf::Value(transform);
+    mat.normalTexture.texCoord = 1;
+    m.model.materials.push_back(mat);
+    m.model.meshes[0].primitives[0].material = 0;
+    const Scene s = loadGltfModel(m.model, "transform.gltf");
+    ASSERT_FALSE(s.materials.empty());
+    const TextureTransform& t = s.materials[0].textureTransforms[0];
+    EXPECT_EQ(t.offset, glm::vec2(-0.5f, 0.25f));
+    EXPECT_EQ(t.scale, glm::vec2(2.0f, 3.0f));
+    EXPECT_FLOAT_EQ(t.rotation, 1.5707963f);
+    EXPECT_EQ(s.materials[0].textureTransforms[1].scale, glm::vec2(1.0f)) << "slots without it: identity";
+    bool warned = false;
+    for (const std::string& w : s.stats.warnings)
+        warned = warned || w.find("normalTexture: uses TEXCOORD_1") != std::string::npos;
+    EXPECT_TRUE(warned) << "a second UV set is reported, naming the slot";
+    // The GPU table: (1, 0) -> M (1, 0) + offset with M = R(90 deg) S(2, 3): (0, 2) + (-0.5, 0.25).
+    const std::vector<shared::GpuMaterial> gpu = eng::frame::makeGpuMaterials(s);
+    const glm::vec4 M = gpu[0].uvMatrix[0];
+    const glm::vec2 uv = glm::mat2(glm::vec2(M.x, M.y), glm::vec2(M.z, M.w)) * glm::vec2(1, 0) +
+                         glm::vec2(gpu[0].uvOffset[0].x, gpu[0].uvOffset[0].y);
+    EXPECT_NEAR(uv.x, -0.5f, 1e-6f);
+    EXPECT_NEAR(uv.y, 2.25f, 1e-6f);
 }
 
 // Sparse accessors (glTF 2.0 3.6.2.3): listed elements are replaced, the rest read from the

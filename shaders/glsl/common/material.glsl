@@ -36,19 +36,27 @@ vec4 sampleTexture(int index, vec2 uv, vec4 fallback) {
     return index >= 0 ? texture(textures[index], uv) : fallback;
 }
 
+// KHR_texture_transform: slot 0 base colour, 1 metal-roughness, 2 normal, 3 emissive. Affine in uv,
+// so the implicit derivatives (and the MIP level) follow the transformed coordinates.
+vec2 slotUv(GpuMaterial m, uint slot, vec2 uv) {
+    vec4 M = m.uvMatrix[slot];
+    vec4 o = m.uvOffset[slot / 2u];
+    return mat2(M.xy, M.zw) * uv + ((slot & 1u) == 0u ? o.xy : o.zw);
+}
+
 float materialAlpha(GpuMaterial m, vec2 uv) {
-    return m.baseColorFactor.a * sampleTexture(m.textures.x, uv, vec4(1.0)).a;
+    return m.baseColorFactor.a * sampleTexture(m.textures.x, slotUv(m, 0u, uv), vec4(1.0)).a;
 }
 
 MaterialSample evaluateMaterial(GpuMaterial m, vec2 uv, vec3 geometricNormal, vec4 tangent, bool frontFacing) {
     MaterialSample s;
-    vec4 base = m.baseColorFactor * sampleTexture(m.textures.x, uv, vec4(1.0));
+    vec4 base = m.baseColorFactor * sampleTexture(m.textures.x, slotUv(m, 0u, uv), vec4(1.0));
     s.albedo = base.rgb;
     s.alpha = base.a;
-    vec4 mr = sampleTexture(m.textures.y, uv, vec4(1.0)); // glTF: G roughness, B metallic
+    vec4 mr = sampleTexture(m.textures.y, slotUv(m, 1u, uv), vec4(1.0)); // glTF: G roughness, B metallic
     s.metallic = clamp(m.params.x * mr.b, 0.0, 1.0);
     s.roughness = clamp(m.params.y * mr.g, 0.0, 1.0);
-    s.emissive = kEmissiveMaterials != 0u ? m.emissive.rgb * sampleTexture(m.textures.w, uv, vec4(1.0)).rgb : vec3(0.0);
+    s.emissive = kEmissiveMaterials != 0u ? m.emissive.rgb * sampleTexture(m.textures.w, slotUv(m, 3u, uv), vec4(1.0)).rgb : vec3(0.0);
 
     // Interpolated normals can shrink to zero between opposing vertex normals.
     float nlen = length(geometricNormal);
@@ -60,7 +68,7 @@ MaterialSample evaluateMaterial(GpuMaterial m, vec2 uv, vec3 geometricNormal, ve
         if (tlen > kMinNormalLength) {
             t /= tlen;
             vec3 b = cross(N, t) * (tangent.w < 0.0 ? -1.0 : 1.0);
-            vec4 texel = texture(textures[m.textures.z], uv);
+            vec4 texel = texture(textures[m.textures.z], slotUv(m, 2u, uv));
             vec3 tn = texel.xyz * 2.0 - 1.0;
             s.roughness = toksvigRoughness(s.roughness, texel.a);
             tn.xy *= m.params.z;

@@ -30,25 +30,30 @@ struct FrameConstants {
     // Position of sample s (= layer * samplesPerLayer + hardware sample) inside its pixel, in [0,1)^2.
     vec4 samplePositions[kMaxSamples];
     vec4 skyRadiance; // rgb: radiance of uncovered samples
-    vec4 extent; // width, height, 1/width, 1/height
+    vec4 extent;      // width, height, 1/width, 1/height
     vec4 depthParams; // znear, zfar, exposure, unused
-    vec4 projParams; // proj[0][0], proj[1][1], unused, unused
-    uvec4 counts; // samples n, samples per layer, layers, light count
+    vec4 projParams;  // proj[0][0], proj[1][1], unused, unused
+    uvec4 counts;     // samples n, samples per layer, layers, light count
 };
 
 // A punctual light in view space. Intensity already multiplied into colour.
 struct GpuLight {
     vec4 positionRange; // xyz view-space position; w: range (0 = infinite)
     vec4 directionType; // xyz view-space direction the light travels; w: type as float
-    vec4 radiance; // rgb colour * intensity (lux or candela); w unused
-    vec4 spot; // x cos(outer), y 1/max(cos(inner)-cos(outer), eps), zw unused
+    vec4 radiance;      // rgb colour * intensity (lux or candela); w unused
+    vec4 spot;          // x cos(outer), y 1/max(cos(inner)-cos(outer), eps), zw unused
 };
 
 struct GpuMaterial {
     vec4 baseColorFactor;
-    vec4 emissive; // rgb emissiveFactor * strength; w alphaCutoff
-    vec4 params; // x metallic, y roughness, z normalScale, w alphaMode as float
+    vec4 emissive;  // rgb emissiveFactor * strength; w alphaCutoff
+    vec4 params;    // x metallic, y roughness, z normalScale, w alphaMode as float
     ivec4 textures; // base colour, metal-roughness, normal, emissive (-1 = none)
+    // KHR_texture_transform per slot (same order): uv' = M uv + offset, M = R(rotation) S(scale)
+    // stored column-major as (m00, m10, m01, m11); offsets of slots 0, 1 in uvOffset[0].xy, .zw
+    // and of slots 2, 3 in uvOffset[1].
+    vec4 uvMatrix[4];
+    vec4 uvOffset[2];
 };
 
 SHARED_END
