@@ -59,8 +59,8 @@ inline constexpr uint32_t kSpecShadowFootprint = 6; // AGAA lighting only
 inline constexpr uint32_t kSpecEnvironment = 16;
 
 // Every lighting pass: the environment's specialisation (id 16) after `values` (ids 0..n-1), and
-// its two bindings (15: pre-filtered levels, 16: constants), pushed from the scene, which holds a
-// stand-in when it has no environment (engine/frame/gpu_scene.h).
+// its bindings (15: pre-filtered levels, 16: constants, 17: the split sum's BRDF table), pushed from the
+// scene, which holds a stand-in when it has no environment (engine/frame/gpu_scene.h).
 eng::vk::Specialization lightingSpecialization(std::vector<uint32_t> values,
                                                const eng::scene::SceneFeatures& features);
 std::vector<eng::vk::Binding> environmentBindings();

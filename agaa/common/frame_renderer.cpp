@@ -6,6 +6,7 @@
 #include "shared/frame.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <stdexcept>
 
@@ -78,8 +79,13 @@ Technique& FrameRenderer::technique(const RenderRequest& r) {
 }
 
 float FrameRenderer::meteredExposure(const eng::frame::ViewSettings& view, double& ev100) {
+    // Metered at most 128 pixels wide whatever the frame's size, so a sweep's supersampled truth
+    // and its frames share one exposure; keyed by what the metering frame sees.
+    const uint32_t meterWidth = std::min(view.width, 128u);
+    const uint32_t meterHeight =
+        std::max(1u, uint32_t(std::lround(double(view.height) * meterWidth / double(view.width))));
     std::string key =
-        std::to_string(view.camera) + "/" + std::to_string(view.width) + "x" + std::to_string(view.height);
+        std::to_string(view.camera) + "/" + std::to_string(meterWidth) + "x" + std::to_string(meterHeight);
     if (view.viewOverride)
         for (int c = 0; c < 4; ++c)
             for (int r = 0; r < 4; ++r)
@@ -89,6 +95,8 @@ float FrameRenderer::meteredExposure(const eng::frame::ViewSettings& view, doubl
         RenderRequest meter;
         meter.method = "noaa";
         meter.view = view;
+        meter.view.width = meterWidth;
+        meter.view.height = meterHeight;
         meter.view.exposure = eng::frame::meteringExposure(m_scene);
         const RenderResult r = render(meter);
         const double luminance =

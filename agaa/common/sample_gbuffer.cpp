@@ -174,7 +174,8 @@ std::vector<eng::vk::Binding> SampleGBufferPass::lightingBindings() {
             {10, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, cs},
             {15, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
              cs}, // the environment (effects.h environmentBindings)
-            {16, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, cs}};
+            {16, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, cs},
+            {17, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, cs}};
 }
 
 } // namespace agaa

@@ -133,6 +133,46 @@ EnvironmentMaps prefilterEnvironment(const scene::Environment& env, uint32_t lev
     return m;
 }
 
+glm::dvec2 integrateDfg(double NoV, double roughness, uint32_t samples) {
+    const double alpha = std::max(roughness * roughness, kMinGgxAlpha), a2 = alpha * alpha;
+    const glm::dvec3 V(std::sqrt(std::max(0.0, 1.0 - NoV * NoV)), 0.0, NoV); // N = +Z
+    glm::dvec2 ab(0.0);
+    for (uint32_t i = 0; i < samples; ++i) {
+        // Hammersley point i: (i / samples, radical inverse of i in base 2).
+        uint32_t bits = i;
+        bits = (bits << 16u) | (bits >> 16u);
+        bits = ((bits & 0x55555555u) << 1u) | ((bits & 0xAAAAAAAAu) >> 1u);
+        bits = ((bits & 0x33333333u) << 2u) | ((bits & 0xCCCCCCCCu) >> 2u);
+        bits = ((bits & 0x0F0F0F0Fu) << 4u) | ((bits & 0xF0F0F0F0u) >> 4u);
+        bits = ((bits & 0x00FF00FFu) << 8u) | ((bits & 0xFF00FF00u) >> 8u);
+        const double u = (i + 0.5) / samples, w = double(bits) * 2.3283064365386963e-10;
+        // GGX half-vector sampling: pdf(h) = D(h) N.H.
+        const double phi = 2.0 * kPi * u;
+        const double cosTheta = std::sqrt((1.0 - w) / (1.0 + (a2 - 1.0) * w));
+        const double sinTheta = std::sqrt(1.0 - cosTheta * cosTheta);
+        const glm::dvec3 H(sinTheta * std::cos(phi), sinTheta * std::sin(phi), cosTheta);
+        const double VoH = glm::dot(V, H);
+        const glm::dvec3 L = 2.0 * VoH * H - V;
+        if (L.z <= 0.0 || VoH <= 0.0) continue;
+        const double NoL = L.z, NoH = H.z;
+        const double vis = 0.5 / (NoL * std::sqrt(NoV * NoV * (1.0 - a2) + a2) +
+                                  NoV * std::sqrt(NoL * NoL * (1.0 - a2) + a2));
+        // D Vis N.L / pdf(l), pdf(l) = D N.H / (4 V.H).
+        const double weight = vis * NoL * 4.0 * VoH / NoH;
+        const double fc = std::pow(1.0 - VoH, 5.0);
+        ab += glm::dvec2(weight * (1.0 - fc), weight * fc);
+    }
+    return ab / double(samples);
+}
+
+std::vector<glm::vec2> integrateDfgTable(uint32_t size) {
+    std::vector<glm::vec2> table(size_t(size) * size);
+    for (uint32_t j = 0; j < size; ++j)
+        for (uint32_t i = 0; i < size; ++i)
+            table[size_t(j) * size + i] = glm::vec2(integrateDfg((i + 0.5) / size, (j + 0.5) / size));
+    return table;
+}
+
 shared::EnvironmentConstants makeEnvironmentConstants(const EnvironmentMaps* maps, float texelScale) {
     shared::EnvironmentConstants c{};
     if (!maps) return c;

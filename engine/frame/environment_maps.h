@@ -32,6 +32,15 @@ glm::vec3 evaluateIrradianceSh(const std::array<glm::vec3, 9>& sh, const glm::ve
 EnvironmentMaps prefilterEnvironment(const scene::Environment& env,
                                      uint32_t levels = shared::kEnvironmentLevels);
 
+// The BRDF's half of the split sum for GGX with height-correlated Smith visibility (the BRDF of
+// common/brdf.glsl): the directional albedo is F0 * A + B, A = int D Vis N.L (1 - Fc),
+// B = int D Vis N.L Fc, Fc = (1 - V.H)^5, integrated by GGX importance sampling (1024 Hammersley
+// points). Texel (i, j) of the size x size table holds (A, B) at N.V = (i + 0.5) / size and
+// perceptual roughness (j + 0.5) / size.
+inline constexpr uint32_t kDfgTableSize = 32;
+std::vector<glm::vec2> integrateDfgTable(uint32_t size = kDfgTableSize);
+glm::dvec2 integrateDfg(double NoV, double roughness, uint32_t samples = 1024);
+
 // The constants lighting reads (texel scale, levels, the SH), for maps; absent maps give the
 // constants of "no environment".
 shared::EnvironmentConstants makeEnvironmentConstants(const EnvironmentMaps* maps, float texelScale);

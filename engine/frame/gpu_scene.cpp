@@ -200,6 +200,15 @@ void GpuScene::createEnvironment() {
                                      VK_IMAGE_USAGE_TRANSFER_DST_BIT | VK_IMAGE_USAGE_SAMPLED_BIT,
                                      VK_IMAGE_VIEW_TYPE_2D_ARRAY},
                                     "scene.environment");
+    for (const glm::vec2& ab : integrateDfgTable()) {
+        m_dfgTexels.push_back(glm::packHalf1x16(ab.x));
+        m_dfgTexels.push_back(glm::packHalf1x16(ab.y));
+    }
+    m_dfg =
+        vk::createImage(m_device,
+                        {VK_FORMAT_R16G16_SFLOAT, kDfgTableSize, kDfgTableSize, 1, 1, VK_SAMPLE_COUNT_1_BIT,
+                         VK_IMAGE_USAGE_TRANSFER_DST_BIT | VK_IMAGE_USAGE_SAMPLED_BIT, VK_IMAGE_VIEW_TYPE_2D},
+                        "scene.environment.dfg");
     // Longitude wraps, latitude stops at the poles.
     VkSamplerCreateInfo info{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
     info.magFilter = info.minFilter = VK_FILTER_LINEAR;
@@ -208,6 +217,9 @@ void GpuScene::createEnvironment() {
     info.maxLod = 0.0f;
     VK_CHECK(vkCreateSampler(m_device.device(), &info, nullptr, &m_environmentSampler));
     m_device.setName(VK_OBJECT_TYPE_SAMPLER, m_environmentSampler, "scene.environment.sampler");
+    info.addressModeU = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+    VK_CHECK(vkCreateSampler(m_device.device(), &info, nullptr, &m_dfgSampler));
+    m_device.setName(VK_OBJECT_TYPE_SAMPLER, m_dfgSampler, "scene.environment.dfg.sampler");
 }
 
 void GpuScene::uploadTextures() {
@@ -242,6 +254,8 @@ void GpuScene::uploadTextures() {
     }
     const VkDeviceSize environmentOffset = (total + 15) / 16 * 16; // a multiple of the texel size
     total = environmentOffset + m_environmentTexels.size() * sizeof(uint16_t);
+    const VkDeviceSize dfgOffset = (total + 15) / 16 * 16;
+    total = dfgOffset + m_dfgTexels.size() * sizeof(uint16_t);
     // The staging buffer lives for this call only, on every path out (a texture's allocation or
     // the upload's submission may throw).
     struct Staging {
@@ -278,6 +292,14 @@ void GpuScene::uploadTextures() {
                                               rg::Use::SampledFragment));
     }
     vk::writeBuffer(m_device, staging, bytesOf(m_environmentTexels), environmentOffset);
+    vk::writeBuffer(m_device, staging, bytesOf(m_dfgTexels), dfgOffset);
+    const rg::Texture dfg =
+        graph.importTexture("scene.environment.dfg",
+                            rg::PhysicalTexture{m_dfg.image,
+                                                m_dfg.view,
+                                                m_dfg.sampledView,
+                                                {VK_FORMAT_R16G16_SFLOAT, kDfgTableSize, kDfgTableSize, 1}},
+                            std::nullopt, rg::Use::SampledCompute);
     const uint32_t environmentLayers = hasEnvironment() ? shared::kEnvironmentLevels : 1;
     const rg::Texture environment = graph.importTexture(
         "scene.environment",
@@ -293,7 +315,7 @@ void GpuScene::uploadTextures() {
     struct Data {
         rg::Buffer staging;
         std::vector<rg::Texture> textures;
-        rg::Texture environment;
+        rg::Texture environment, dfg;
     };
     graph.addPass<Data>(
         "scene.upload", rg::PassKind::Transfer,
@@ -302,6 +324,7 @@ void GpuScene::uploadTextures() {
             for (rg::Texture t : handles)
                 d.textures.push_back(b.write(t, rg::Use::TransferDst));
             d.environment = b.write(environment, rg::Use::TransferDst);
+            d.dfg = b.write(dfg, rg::Use::TransferDst);
         },
         [&](const rg::Context& ctx, const Data& d) {
             for (size_t i = 0; i < d.textures.size(); ++i) {
@@ -325,6 +348,11 @@ void GpuScene::uploadTextures() {
             copy.imageExtent = {env.desc.width, env.desc.height, 1};
             vkCmdCopyBufferToImage(ctx.cmd(), ctx.buffer(d.staging).buffer, env.image,
                                    VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &copy);
+            copy.bufferOffset = dfgOffset;
+            copy.imageSubresource.layerCount = 1;
+            copy.imageExtent = {kDfgTableSize, kDfgTableSize, 1};
+            vkCmdCopyBufferToImage(ctx.cmd(), ctx.buffer(d.staging).buffer, ctx.texture(d.dfg).image,
+                                   VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &copy);
         });
     graph.compile();
     TransientPool pool(m_device);
@@ -336,6 +364,7 @@ void GpuScene::uploadTextures() {
     });
     graph.releaseTransients();
     m_environmentTexels = {};
+    m_dfgTexels = {};
 }
 
 GpuScene::~GpuScene() {
@@ -349,7 +378,9 @@ void GpuScene::release() {
     if (m_textureSetLayout) vkDestroyDescriptorSetLayout(d, m_textureSetLayout, nullptr);
     if (m_sampler) vkDestroySampler(d, m_sampler, nullptr);
     if (m_environmentSampler) vkDestroySampler(d, m_environmentSampler, nullptr);
+    if (m_dfgSampler) vkDestroySampler(d, m_dfgSampler, nullptr);
     vk::destroyImage(m_device, m_environment);
+    vk::destroyImage(m_device, m_dfg);
     vk::destroyBuffer(m_device, m_environmentConstants);
     for (auto& t : m_textures)
         vk::destroyImage(m_device, t);
@@ -361,6 +392,7 @@ void GpuScene::release() {
     m_textureSetLayout = VK_NULL_HANDLE;
     m_sampler = VK_NULL_HANDLE;
     m_environmentSampler = VK_NULL_HANDLE;
+    m_dfgSampler = VK_NULL_HANDLE;
 }
 
 void GpuScene::recordDraws(VkCommandBuffer cmd, VkPipelineLayout layout,
@@ -392,7 +424,7 @@ bool GpuScene::hasEmissive() const {
 }
 
 VkDeviceSize GpuScene::bytes() const {
-    VkDeviceSize b = m_vertices.size + m_indices.size + m_materials.size + m_environment.bytes;
+    VkDeviceSize b = m_vertices.size + m_indices.size + m_materials.size + m_environment.bytes + m_dfg.bytes;
     for (const auto& t : m_textures)
         b += t.bytes;
     return b;

@@ -46,6 +46,9 @@ class GpuScene {
     bool hasEnvironment() const { return !m_scene.environment.empty(); }
     VkImageView environmentView() const { return m_environment.view; }
     VkSampler environmentSampler() const { return m_environmentSampler; }
+    // The split sum's BRDF table (environment_maps.h integrateDfgTable), RG16F, clamped.
+    VkImageView dfgView() const { return m_dfg.view; }
+    VkSampler dfgSampler() const { return m_dfgSampler; }
     const vk::Buffer& environmentConstants() const { return m_environmentConstants; }
     // Bytes of device memory the scene occupies (not counted as any technique's storage).
     VkDeviceSize bytes() const;
@@ -58,10 +61,10 @@ class GpuScene {
     vk::Device& m_device;
     const scene::Scene& m_scene;
     vk::Buffer m_vertices, m_indices, m_materials, m_environmentConstants;
-    vk::Image m_environment;
-    VkSampler m_environmentSampler = VK_NULL_HANDLE;
-    std::vector<uint16_t> m_environmentTexels; // half floats, until uploaded
-    std::vector<vk::Image> m_textures;         // scene textures, then one 1x1 white fallback
+    vk::Image m_environment, m_dfg;
+    VkSampler m_environmentSampler = VK_NULL_HANDLE, m_dfgSampler = VK_NULL_HANDLE;
+    std::vector<uint16_t> m_environmentTexels, m_dfgTexels; // half floats, until uploaded
+    std::vector<vk::Image> m_textures;                      // scene textures, then one 1x1 white fallback
     VkSampler m_sampler = VK_NULL_HANDLE;
     VkDescriptorSetLayout m_textureSetLayout = VK_NULL_HANDLE;
     VkDescriptorPool m_pool = VK_NULL_HANDLE;

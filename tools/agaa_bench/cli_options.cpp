@@ -114,10 +114,15 @@ BenchOptions parseOptions(int argc, char** argv) {
         else if (a == "--scenes") {
             scenes = splitList(a, value());
             const std::vector<std::string> known = eng::scene::sceneKinds();
-            for (const std::string& sc : *scenes)
-                if (std::find(known.begin(), known.end(), sc) == known.end())
-                    throw BadArgument("--scenes: '" + sc +
-                                      "' is not a built-in scene (known: " + joined(known) + ")");
+            for (const std::string& sc : *scenes) {
+                if (std::find(known.begin(), known.end(), sc) != known.end() || realScenePath(sc)) continue;
+                std::string real;
+                for (const RealScene& r : realScenes())
+                    real += (real.empty() ? "" : ", ") + r.name + " (" +
+                            (sharedScenesDir() / r.file).string() + ")";
+                throw BadArgument("--scenes: '" + sc + "' is not a built-in scene (known: " + joined(known) +
+                                  ") nor a real scene whose file exists (" + real + ")");
+            }
         } else if (a == "--methods") {
             methods = splitList(a, value());
             for (const std::string& m : *methods)

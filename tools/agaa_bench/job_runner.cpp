@@ -3,6 +3,8 @@
 #include "engine/frame/frame_constants.h"
 #include "engine/io/metrics.h"
 #include "engine/io/png.h"
+#include "engine/scene/default_lighting.h"
+#include "engine/scene/gltf_loader.h"
 #include "engine/scene/scenegen.h"
 
 #include <chrono>
@@ -46,7 +48,12 @@ void JobRunner::selectScene(const std::string& name) {
     m_scene.renderer.reset();
     m_scene = SceneState{};
     m_scene.name = name;
-    m_scene.scene = std::make_unique<eng::scene::Scene>(eng::scene::loadBuiltin(name));
+    if (const std::optional<std::filesystem::path> file = realScenePath(name)) {
+        m_scene.scene = std::make_unique<eng::scene::Scene>(eng::scene::loadGltf(*file));
+        eng::scene::applyLighting(*m_scene.scene, eng::scene::LightingMode::Automatic);
+    } else {
+        m_scene.scene = std::make_unique<eng::scene::Scene>(eng::scene::loadBuiltin(name));
+    }
     m_scene.renderer = std::make_unique<FrameRenderer>(m_device, *m_scene.scene);
 }
 
@@ -60,6 +67,8 @@ RenderRequest JobRunner::request(const std::string& method, uint32_t samples, ui
     r.settings.sampleRateShading = m_settings.sampleRateShading;
     r.view.width = width;
     r.view.height = height;
+    // A real scene gives no exposure: metered, the same for every method of the sweep.
+    r.autoExposure = !m_scene.scene->exposure.has_value();
     if (orbitDegrees != 0.0f) {
         const eng::scene::Scene& s = *m_scene.scene;
         const glm::vec3 centre = 0.5f * (s.bounds.min + s.bounds.max);

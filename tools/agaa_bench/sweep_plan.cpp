@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <cstdlib>
 #include <set>
 #include <stdexcept>
 
@@ -92,7 +93,35 @@ void temporalSize(const SweepSettings& settings, uint32_t& width, uint32_t& heig
 }
 
 std::vector<std::string> defaultSweepScenes() {
-    return {"plane", "railings", "foliage", "furball", "metal"};
+    std::vector<std::string> scenes = {"plane", "railings", "foliage", "furball", "metal"};
+    if (realScenePath("ship")) scenes.push_back("ship"); // Godot's AA demo scene: ropes 1-6 cm wide
+    return scenes;
+}
+
+const std::vector<RealScene>& realScenes() {
+    static const std::vector<RealScene> scenes = {{"ship", "dutch_ship_medium/dutch_ship_medium_1k.gltf"},
+                                                  {"chair", "MixedLightingExample/MixedLightingExample.gltf"},
+                                                  {"cubes", "Cubes/Cubes.glb"}};
+    return scenes;
+}
+
+std::filesystem::path sharedScenesDir() {
+    if (const char* env = std::getenv("AGAA_SHARED_SCENES")) return env;
+#ifdef AGAA_SHARED_SCENES_DIR
+    return AGAA_SHARED_SCENES_DIR;
+#else
+    return "../shared/scenes";
+#endif
+}
+
+std::optional<std::filesystem::path> realScenePath(const std::string& name) {
+    for (const RealScene& s : realScenes())
+        if (s.name == name) {
+            const std::filesystem::path file = sharedScenesDir() / s.file;
+            std::error_code ec;
+            if (std::filesystem::is_regular_file(file, ec)) return file;
+        }
+    return std::nullopt;
 }
 
 } // namespace agaa::bench

@@ -6,6 +6,8 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -72,6 +74,20 @@ JobSlice parseJobSlice(const std::string& text);
 void temporalSize(const SweepSettings& settings, uint32_t& width, uint32_t& height);
 
 // The scenes the default sweep covers (thin geometry, fur, foliage, metal, and the flat control).
+// The built-ins the default sweep runs, then the real scenes of sharedScenesDir() that exist.
 std::vector<std::string> defaultSweepScenes();
+
+// Real third-party scenes (../shared/scenes, never copied into the repository), by the short
+// name a sweep, its results and its file names use. They render with the lighting and exposure a
+// user gets by default: lighting auto (engine/scene/default_lighting.h), exposure metered.
+struct RealScene {
+    std::string name; // e.g. "ship"
+    std::string file; // relative to sharedScenesDir()
+};
+const std::vector<RealScene>& realScenes();
+// $AGAA_SHARED_SCENES, else the folder configured at build time (AGAA_SHARED_SCENES_DIR).
+std::filesystem::path sharedScenesDir();
+// The file of a real scene's name, or nullopt when `name` is not one (or its file is missing).
+std::optional<std::filesystem::path> realScenePath(const std::string& name);
 
 } // namespace agaa::bench

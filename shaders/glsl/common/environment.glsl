@@ -1,13 +1,13 @@
 #ifndef AGAA_ENVIRONMENT_GLSL
 #define AGAA_ENVIRONMENT_GLSL
 // Distant environment lighting (issue 16; engine/frame/environment_maps.h): diffuse irradiance
-// from 9 spherical-harmonic coefficients and split-sum pre-filtered specular (Karis 2013), the
-// same for every method. AGAA evaluates it once per aggregate from the aggregate's filtered
-// normal distribution: its mean normal and its Toksvig or SGGX roughness pick the pre-filtered
+// from 9 spherical-harmonic coefficients and split-sum pre-filtered specular (Karis 2013, "Real
+// Shading in Unreal Engine 4"), the same for every method. AGAA evaluates it once per aggregate
+// from the aggregate's filtered normal distribution: its mean normal and its Toksvig or SGGX roughness pick the pre-filtered
 // level, which is the same filtering the lights get. The environment is not shadowed.
 //
 // Requires, declared by the includer before this file: `frame` (FrameConstants). Declares the
-// pre-filtered levels at set 0 binding 15 and their constants at binding 16. Specialisation id 16
+// pre-filtered levels at set 0 binding 15, their constants at 16 and the BRDF table at 17. Specialisation id 16
 // (agaa/common/effects.h kSpecEnvironment): 0 for a scene without an environment, whose passes
 // then compile none of this (bindings 15 and 16 hold a 1x1 black stand-in).
 #include "common/brdf.glsl"
@@ -18,6 +18,7 @@
 layout(constant_id = 16) const uint kEnvironment = 0u;
 layout(set = 0, binding = 15) uniform sampler2DArray environmentMap;
 layout(set = 0, binding = 16) uniform Environment { EnvironmentConstants environment; };
+layout(set = 0, binding = 17) uniform sampler2D environmentDfg;
 
 // View space -> the map's world space. The view matrix is rigid (a rotation and a translation),
 // so its rotation's inverse is its transpose.
@@ -58,14 +59,12 @@ vec3 environmentRadiance(vec3 D, float roughness) {
     return mix(a, b, level - lower) * environment.params.y;
 }
 
-// The BRDF's half of the split sum, integrated over the hemisphere for GGX with Smith
-// visibility: F0 * A + B (Karis 2014, "Physically Based Shading on Mobile", the analytic fit).
+// The BRDF's half of the split sum: the directional albedo F0 * A + B of this BRDF (GGX,
+// height-correlated Smith), integrated on the CPU (environment_maps.h integrateDfgTable) into a
+// 32x32 table over (N.V, roughness). Karis's analytic mobile fit was 16 % dark on a metal of
+// roughness 0.3 against the brute-force integral (tests/features/test_environment_gpu.cpp).
 vec2 environmentBrdf(float roughness, float NoV) {
-    const vec4 c0 = vec4(-1.0, -0.0275, -0.572, 0.022);
-    const vec4 c1 = vec4(1.0, 0.0425, 1.04, -0.04);
-    vec4 r = roughness * c0 + c1;
-    float a004 = min(r.x * r.x, exp2(-9.28 * NoV)) * r.x + r.y;
-    return vec2(-1.04, 1.04) * a004 + r.zw;
+    return textureLod(environmentDfg, vec2(NoV, clamp(roughness, 0.0, 1.0)), 0.0).rg;
 }
 
 // Outgoing radiance towards V (view space) from the whole environment, for a surface of
