@@ -5,6 +5,8 @@
 #   tools/deps.sh --viewer   also GLFW for samples/viewer
 #   tools/deps.sh --browser  also Chromium and Chart.js for the report's browser test
 #   tools/deps.sh --fuzz     also clang and its runtime libraries (libFuzzer, sanitizers)
+#   tools/deps.sh --validator  also node and the Khronos glTF-Validator (npm gltf-validator, into
+#                            build/node, or $AGAA_NODE_DIR)
 set -euo pipefail
 
 packages=(
@@ -15,13 +17,32 @@ packages=(
   libgtest-dev
   libjs-chart.js
 )
+validator=0
+# The npm package's version is pinned: a new validator may report new issues.
+validator_version=2.0.0-dev.3.10
+root="$(cd "$(dirname "$0")/.." && pwd)"
+node_dir="${AGAA_NODE_DIR:-$root/build/node}"
+install_validator() {
+  if [ -f "$node_dir/node_modules/gltf-validator/package.json" ] &&
+     grep -q "\"version\": \"$validator_version\"" "$node_dir/node_modules/gltf-validator/package.json"; then
+    return
+  fi
+  echo "deps.sh: installing gltf-validator@$validator_version into $node_dir"
+  mkdir -p "$node_dir"
+  npm install --silent --no-audit --no-fund --prefix "$node_dir" "gltf-validator@$validator_version"
+}
 for arg in "$@"; do
   case "$arg" in
     --viewer) packages+=(libglfw3-dev) ;;
     --browser) packages+=(chromium) ;;
     --fuzz) packages+=(clang libclang-rt-14-dev) ;;
-    -h|--help) sed -n '2,8p' "$0"; exit 0 ;;
-    *) echo "deps.sh: unknown option '$arg' (allowed: --viewer, --browser, --fuzz)" >&2; exit 2 ;;
+    --validator)
+      packages+=(nodejs)
+      # Debian's nodejs needs its npm package; NodeSource's nodejs bundles npm (and conflicts with it).
+      command -v npm >/dev/null || packages+=(npm)
+      validator=1 ;;
+    -h|--help) sed -n '2,10p' "$0"; exit 0 ;;
+    *) echo "deps.sh: unknown option '$arg' (allowed: --viewer, --browser, --fuzz, --validator)" >&2; exit 2 ;;
   esac
 done
 
@@ -33,6 +54,7 @@ for p in "${packages[@]}"; do
   fi
 done
 if ((${#missing[@]} == 0)); then
+  if ((validator)); then install_validator; fi
   exit 0
 fi
 
@@ -42,3 +64,4 @@ if [ "$(id -u)" -ne 0 ]; then sudo_cmd=(sudo); fi
 export DEBIAN_FRONTEND=noninteractive
 "${sudo_cmd[@]}" apt-get update -qq
 "${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}"
+if ((validator)); then install_validator; fi

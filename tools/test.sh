@@ -12,7 +12,7 @@ root="$(cd "$(dirname "$0")/.." && pwd)"
 cd "$root"
 # --browser: Chromium for the report's browser test (label `browser`), part of the whole suite;
 # --fuzz: clang and its runtime for the loader's fuzz stage.
-tools/deps.sh --browser --fuzz
+tools/deps.sh --browser --fuzz --validator
 # Software Vulkan only: a machine with a GPU still tests the same driver CI uses.
 lvp="$(ls /usr/share/vulkan/icd.d/lvp_icd.*.json 2>/dev/null | head -n1)"
 export VK_ICD_FILENAMES="${VK_ICD_FILENAMES:-$lvp}"

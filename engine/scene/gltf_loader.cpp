@@ -101,6 +101,17 @@ class GltfConverter {
                                                            "KHR_materials_emissive_strength",
                                                            "KHR_mesh_quantization", "KHR_texture_transform"};
 
+    // glTF 2.0 section 3.2 (asset): the major version is the file format's; another major version
+    // (glTF 1.0 or a future 3.x) cannot be read as 2.0.
+    void checkVersion() {
+        const std::string& v = m_model.asset.version;
+        const size_t dot = v.find('.');
+        if (v.empty()) return; // tinygltf refuses a missing asset.version already
+        if (v.substr(0, dot) != "2")
+            throw SceneError(m_source + ": asset.version: '" + boundedName(v) +
+                             "' is not a glTF 2.x asset (supported: 2.0)");
+    }
+
     void checkExtensions() {
         std::string supported;
         for (const char* e : kSupportedExtensions)
@@ -129,6 +140,7 @@ class GltfConverter {
     }
 
     Scene run() {
+        checkVersion();
         checkExtensions();
         convertMaterials(m_model, m_source, m_scene);
         collectNodes();
