@@ -47,9 +47,8 @@ FrameTargets AggregateAA::addPasses(rg::Graph& graph, const FrameInputs& in) {
     for (const eng::scene::Draw& draw :
          samplesPath ? std::vector<eng::scene::Draw>{} : scene->scene().draws) {
         const eng::scene::Material& m = scene->scene().materials.at(draw.material);
-        const bool masked = m.alphaMode == eng::scene::AlphaMode::Mask || m_features.forced;
-        visibilityPipelines.push_back(visibilityPipeline(
-            masked ? maskedAlphaPath(m_settings.samples) : AlphaPath::Opaque, m.doubleSided));
+        visibilityPipelines.push_back(
+            visibilityPipeline(materialAlphaPath(m, m_features.forced, m_settings.samples), m.doubleSided));
         generationPipelines.push_back(generationPipeline(m.doubleSided));
     }
 

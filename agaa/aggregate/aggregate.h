@@ -90,7 +90,7 @@ class AggregateAA final : public Technique {
     eng::vk::Buffer m_constantsBuffer;
     eng::vk::PipelineLayout m_visibilityLayout, m_generationLayout, m_recordLayout, m_clusterLayout,
         m_lightingLayout, m_debugLayout, m_readbackLayout;
-    std::array<VkPipeline, 6> m_visibilityPipelines{}; // [alpha path][double-sided]
+    std::array<VkPipeline, 2 * kAlphaPaths> m_visibilityPipelines{}; // [alpha path][double-sided]
     std::unique_ptr<ShadowMapPass> m_shadow;
     std::unique_ptr<SampleGBufferPass> m_gbuffer;      // samples path only
     std::array<VkPipeline, 4> m_generationPipelines{}; // [recording][double-sided]

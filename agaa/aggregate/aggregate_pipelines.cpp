@@ -299,17 +299,14 @@ VkPipeline AggregateAA::visibilityPipeline(AlphaPath alpha, bool doubleSided) {
     // generation pass inherits the coverage through its depth EQUAL test.
     d.specialization.values = {
         uint32_t(alpha), m_settings.breakdown & AggregateBreakdown::kVisibilityWithoutNormals ? 1u : 0u};
-    d.alphaToCoverage = alpha == AlphaPath::Coverage;
+    d.alphaToCoverage = usesAlphaToCoverage(alpha);
     d.colorFormats = {VK_FORMAT_R8G8_UNORM};
     d.depthFormat = m_depthFormat;
     d.samples = VK_SAMPLE_COUNT_4_BIT;
     d.cullMode = doubleSided ? VK_CULL_MODE_NONE : VK_CULL_MODE_BACK_BIT;
     d.depthCompare = VK_COMPARE_OP_GREATER; // reversed Z
     p = vk::createGraphicsPipeline(m_device, d,
-                                   std::string("agaa.visibility") +
-                                       (alpha == AlphaPath::Coverage  ? ".alphaToCoverage"
-                                        : alpha == AlphaPath::Discard ? ".discard"
-                                                                      : ".opaque") +
+                                   std::string("agaa.visibility") + alphaPathName(alpha) +
                                        (doubleSided ? ".twoSided" : ""));
     return p;
 }

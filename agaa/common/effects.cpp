@@ -47,6 +47,13 @@ std::vector<VariantChoice> effectVariants(const eng::scene::SceneFeatures& f, co
                          (samples > 1 ? "" : "; 1 sample per pixel: no coverage to dither")});
     else
         v.push_back({"alpha", "opaque only", "no masked materials"});
+    if (f.blendedMaterials > 0)
+        v.push_back({"blend",
+                     blendedAlphaPath(samples) == AlphaPath::BlendCoverage
+                         ? "alpha-to-coverage of the alpha"
+                         : "4x4 ordered dither of the alpha",
+                     count(f.blendedMaterials, "blended materials") +
+                         (samples > 1 ? "" : "; 1 sample per pixel: dithered")});
     v.push_back({"emissive", f.hasEmissive() ? "per-sample emissive" : "off",
                  f.hasEmissive() ? forced + count(f.emissiveMaterials, "emissive materials")
                                  : "no emissive materials"});

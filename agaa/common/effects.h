@@ -66,11 +66,36 @@ eng::vk::Specialization lightingSpecialization(std::vector<uint32_t> values,
 std::vector<eng::vk::Binding> environmentBindings();
 void pushEnvironment(eng::vk::PushDescriptors& descriptors, const eng::frame::GpuScene& scene);
 
-// Alpha handling of a masked material in a raster pass (specialisation constant 0 of
-// reference/gbuffer.frag and agaa/visibility.frag).
-enum class AlphaPath : uint32_t { Opaque = 0, Discard = 1, Coverage = 2 };
+// Alpha handling of a material in a raster pass (specialisation constant 0 of
+// reference/gbuffer.frag and agaa/visibility.frag; common/alpha_coverage.glsl). MASK: discard at
+// one sample per pixel, alpha-to-coverage sharpened at the cutoff with MSAA. BLEND (issue 16):
+// translucency as coverage, as the paper does (section 3.6): alpha-to-coverage with the alpha
+// itself, so a surface of alpha a covers about a of each pixel's samples and the resolve blends
+// it with what lies behind; at one sample per pixel an ordered 4x4 dither of the alpha. No sorted
+// blending: a stack of translucent layers resolves by coverage, not by over-compositing.
+enum class AlphaPath : uint32_t { Opaque = 0, Discard = 1, Coverage = 2, BlendCoverage = 3, BlendDither = 4 };
+inline constexpr uint32_t kAlphaPaths = 5;
 inline AlphaPath maskedAlphaPath(uint32_t samples) {
     return samples > 1 ? AlphaPath::Coverage : AlphaPath::Discard;
+}
+inline AlphaPath blendedAlphaPath(uint32_t samples) {
+    return samples > 1 ? AlphaPath::BlendCoverage : AlphaPath::BlendDither;
+}
+// A draw's path: forced effects alpha-test every draw (the benchmark's baseline).
+inline AlphaPath materialAlphaPath(const eng::scene::Material& m, bool forced, uint32_t samples) {
+    if (m.alphaMode == eng::scene::AlphaMode::Blend) return blendedAlphaPath(samples);
+    if (m.alphaMode == eng::scene::AlphaMode::Mask || forced) return maskedAlphaPath(samples);
+    return AlphaPath::Opaque;
+}
+inline bool usesAlphaToCoverage(AlphaPath p) {
+    return p == AlphaPath::Coverage || p == AlphaPath::BlendCoverage;
+}
+inline const char* alphaPathName(AlphaPath p) {
+    return p == AlphaPath::Coverage        ? ".alphaToCoverage"
+           : p == AlphaPath::Discard       ? ".discard"
+           : p == AlphaPath::BlendCoverage ? ".blendCoverage"
+           : p == AlphaPath::BlendDither   ? ".blendDither"
+                                           : ".opaque";
 }
 
 // The ids 2..6 above, filled from the features, appended to a pass's own ids 0 and 1.

@@ -61,15 +61,13 @@ VkPipeline SampleGBufferPass::pipeline(AlphaPath alpha, bool doubleSided) {
     d.specialization.values.push_back(std::bit_cast<uint32_t>(m_options.curvatureMaxFootprint)); // id 9
     d.specialization.values.push_back(std::bit_cast<uint32_t>(m_options.curvatureBoost));        // id 10
     d.sampleShading = sampleRate; // minSampleShading 1: one invocation per sample
-    d.alphaToCoverage = alpha == AlphaPath::Coverage;
+    d.alphaToCoverage = usesAlphaToCoverage(alpha);
     d.colorFormats = {kNormalFormat, kAlbedoMetalFormat, kEmissiveRoughnessFormat};
     d.depthFormat = kDepthFormat;
     d.samples = m_samples > 1 ? VK_SAMPLE_COUNT_4_BIT : VK_SAMPLE_COUNT_1_BIT;
     d.cullMode = doubleSided ? VK_CULL_MODE_NONE : VK_CULL_MODE_BACK_BIT;
     d.depthCompare = VK_COMPARE_OP_GREATER; // reversed Z: nearer is larger
-    const char* path = alpha == AlphaPath::Coverage  ? ".alphaToCoverage"
-                       : alpha == AlphaPath::Discard ? ".discard"
-                                                     : ".opaque";
+    const char* path = alphaPathName(alpha);
     std::string name = m_name + ".gbuffer" + path + (doubleSided ? ".twoSided" : "");
     p = vk::createGraphicsPipeline(m_device, d, name);
     return p;
@@ -93,9 +91,7 @@ SampleGBuffer SampleGBufferPass::add(rg::Graph& graph, const FrameInputs& in) {
     std::vector<VkPipeline> drawPipelines;
     for (const eng::scene::Draw& draw : scene.draws) {
         const eng::scene::Material& m = scene.materials.at(draw.material);
-        const bool masked = m.alphaMode == eng::scene::AlphaMode::Mask || m_features.forced;
-        drawPipelines.push_back(
-            pipeline(masked ? maskedAlphaPath(m_samples) : AlphaPath::Opaque, m.doubleSided));
+        drawPipelines.push_back(pipeline(materialAlphaPath(m, m_features.forced, m_samples), m.doubleSided));
     }
     rg::Buffer materials =
         graph.importBuffer(m_name + ".materials", {gpuScene->materials().buffer, gpuScene->materials().size},

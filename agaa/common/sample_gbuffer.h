@@ -74,7 +74,7 @@ class SampleGBufferPass {
     eng::vk::PipelineLayout m_layout;
     eng::scene::SceneFeatures m_features;
     GBufferOptions m_options;
-    std::array<VkPipeline, 6> m_pipelines{};
+    std::array<VkPipeline, 2 * kAlphaPaths> m_pipelines{}; // [alpha path][double-sided]
 };
 
 } // namespace agaa

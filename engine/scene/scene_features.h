@@ -26,7 +26,7 @@ struct SceneFeatures {
     uint32_t shadowedLightsIgnored = 0;
     // Materials used by at least one non-empty draw.
     uint32_t maskedMaterials = 0;       // AlphaMode::Mask: alpha-to-coverage / discard
-    uint32_t blendedMaterials = 0;      // AlphaMode::Blend: drawn opaque (no sorted transparency)
+    uint32_t blendedMaterials = 0;      // AlphaMode::Blend: alpha-to-coverage (no sorted transparency)
     uint32_t emissiveMaterials = 0;     // emissiveFactor * strength > 0
     uint32_t normalMappedMaterials = 0; // normalTexture >= 0
     // Glossy metals (metallicFactor >= kGlossyMetallic, roughnessFactor <= kGlossyRoughness): the

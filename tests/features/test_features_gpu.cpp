@@ -251,6 +251,57 @@ TEST(FeaturesGpu, MaskedMaterialsUseAlphaToCoverageWithMsaaAndDiscardAtOneSample
     agaa::test::expectNoValidationErrors(*device);
 }
 
+// Issue 16: alphaMode BLEND as translucency by coverage (paper section 3.6). A white quad of
+// alpha 0.5 in front of a dark wall: with MSAA every pixel under it resolves to about half the
+// quad and half the wall (alpha-to-coverage of the alpha: 2 of each 4x layer's samples); at one
+// sample per pixel the ordered dither keeps exactly 8 of each 4x4 block. Without the path the quad
+// would be drawn opaque and white.
+TEST(FeaturesGpu, BlendedMaterialsAreTranslucentByCoverage) {
+    auto device = agaa::test::makeValidatedDevice();
+    Scene scene = agaa::test::emptyScene("test:blended");
+    scene.materials[0].baseColorFactor = {0.05f, 0.05f, 0.05f, 1.0f}; // wall
+    eng::scene::Material glass;
+    glass.baseColorFactor = {1, 1, 1, 0.5f};
+    glass.metallicFactor = 0.0f;
+    glass.alphaMode = eng::scene::AlphaMode::Blend;
+    glass.doubleSided = true;
+    scene.materials.push_back(glass);
+    agaa::test::addRectangle(scene, {-6, -6}, {6, 6}, -10.0f, 0);
+    agaa::test::addRectangle(scene, {-2, -2}, {2, 2}, -6.0f, 1);
+    scene.bounds = {{-6, -6, -10}, {6, 6, -6}};
+    agaa::FrameRenderer renderer(*device, scene);
+    const uint32_t size = 64;
+    // The quad's opaque luminance, and the wall's, for the expected half-and-half resolve.
+    Scene opaque = scene;
+    opaque.materials[1].alphaMode = eng::scene::AlphaMode::Opaque;
+    agaa::FrameRenderer opaqueRenderer(*device, opaque);
+    const glm::ivec2 centre = pixelOf({0.0f, 0.0f, -6.0f}, size),
+                     wallPixel = pixelOf({4.0f, 0.0f, -10.0f}, size);
+    for (const char* method : kMethods) {
+        const uint32_t n = method == std::string("noaa") ? 1 : 8;
+        const agaa::RenderResult r = render(renderer, method, n, size);
+        const agaa::RenderResult full = render(opaqueRenderer, method, n, size);
+        EXPECT_EQ(variantOf(r, "blend"),
+                  n > 1 ? "alpha-to-coverage of the alpha" : "4x4 ordered dither of the alpha")
+            << method;
+        const float wall = luminance(r.hdr, wallPixel), quad = luminance(full.hdr, centre);
+        if (n > 1) {
+            const float got = luminance(r.hdr, centre), half = 0.5f * (wall + quad);
+            EXPECT_NEAR(got, half, 0.15f * (quad - wall)) << method << ": half the samples show the quad";
+        } else {
+            uint32_t kept = 0;
+            for (int y = 0; y < 4; ++y)
+                for (int x = 0; x < 4; ++x) {
+                    const glm::ivec2 p = {(centre.x & ~3) + x, (centre.y & ~3) + y};
+                    kept += luminance(r.hdr, p) > 0.5f * (wall + quad) ? 1u : 0u;
+                }
+            EXPECT_EQ(kept, 8u) << method << ": the dither keeps alpha x 16 pixels of a 4x4 block";
+        }
+        EXPECT_TRUE(eng::io::allFinite(r.display)) << method;
+    }
+    agaa::test::expectNoValidationErrors(*device);
+}
+
 // Seed 004: emissive stays per sample and is added after the aggregate resolve. An emissive
 // square over a dark wall: AGAA matches the reference's per-sample resolve at its edges too.
 TEST(FeaturesGpu, EmissiveIsKeptPerSampleAndMatchesTheReference) {
