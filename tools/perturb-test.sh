@@ -32,7 +32,7 @@ check() { # check DESCRIPTION COUNT: COUNT must be 0
 }
 for variant in "${variants[@]}"; do
   build="$root/build/perturb-$variant"
-  cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DAGAA_BUILD_TESTS=ON \
+  cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release -DAGAA_BUILD_TESTS=ON \
     -DAGAA_TEST_PERTURB="$variant" >/dev/null
   cmake --build "$build" --target test_golden -j2 >/dev/null
   for shard in 0 1; do

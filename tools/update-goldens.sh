@@ -12,7 +12,7 @@ root="$(cd "$(dirname "$0")/.." && pwd)"
 cd "$root"
 build="${AGAA_BUILD_DIR:-build/release}"
 if [ ! -f "$build/CMakeCache.txt" ]; then
-  cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DAGAA_BUILD_TESTS=ON >/dev/null
+  cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release -DAGAA_BUILD_TESTS=ON >/dev/null
 fi
 if ! grep -q '^AGAA_TEST_PERTURB:STRING=none$' "$build/CMakeCache.txt"; then
   echo "update-goldens: $build is a perturbed build (AGAA_TEST_PERTURB); refusing to write goldens from it" >&2
