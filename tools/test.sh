@@ -2,9 +2,12 @@
 # The whole test suite: installs what is missing, builds (Release with
 # assertions), and runs every CTest test. GPU tests run on lavapipe with the
 # Khronos validation layer; a validation message fails them.
-#   tools/test.sh                the whole suite, then the same suite under ASan + UBSan, then a
-#                                120 s libFuzzer run of the glTF loader (AGAA_SANITIZE=0 and
-#                                AGAA_FUZZ_SECONDS=0 skip those two stages)
+#   tools/test.sh                the whole suite (the golden images included: label golden), then
+#                                the perturbation proof that the goldens catch a 1 % BRDF change
+#                                and a flipped metadata bit (tools/perturb-test.sh), then the same
+#                                suite under ASan + UBSan, then a 120 s libFuzzer run of the glTF
+#                                loader (AGAA_PERTURB=0, AGAA_SANITIZE=0 and AGAA_FUZZ_SECONDS=0
+#                                skip those three stages)
 #   tools/test.sh [ctest args]   only the plain build and the chosen tests, e.g. -L cpu
 #   tools/test.sh --sanitize [ctest args]   only the ASan + UBSan build and its tests
 set -euo pipefail
@@ -51,6 +54,11 @@ cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DAGAA_BUILD_TESTS=ON -
 cmake --build "$build" -j"$(nproc)"
 ctest --test-dir "$build" --output-on-failure -j2 "$@"
 if [ "$#" -eq 0 ]; then
+  # Two small builds of test_golden with a deliberate shader error each (build/perturb-*,
+  # incremental): the golden suite must fail on both.
+  if [ "${AGAA_PERTURB:-1}" != 0 ]; then
+    tools/perturb-test.sh
+  fi
   if [ "${AGAA_SANITIZE:-1}" != 0 ]; then
     sanitize
   fi

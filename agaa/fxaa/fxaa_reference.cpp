@@ -102,23 +102,29 @@ bool fxaaIsEdgePixel(const eng::io::ImageF& image, int x, int y, const FxaaSetti
 }
 
 // Step numbers as in shaders/glsl/fxaa/fxaa.comp.
-eng::io::ImageF fxaaReference(const eng::io::ImageF& display, const FxaaSettings& s) {
+eng::io::ImageF fxaaReference(const eng::io::ImageF& display, const FxaaSettings& s,
+                              std::vector<float>* decisionMargins) {
     checkFxaaSettings(s);
     const std::span<const float> steps = fxaaPresetSteps(s.preset);
     const uint32_t stepCount = uint32_t(steps.size());
     const int w = int(display.width), h = int(display.height);
     Reader r{display, w, h};
     eng::io::ImageF out = display;
+    if (decisionMargins) decisionMargins->assign(size_t(w) * size_t(h), INFINITY);
     for (int y = 0; y < h; ++y)
         for (int x = 0; x < w; ++x) {
             float* o = &out.rgba[(size_t(y) * size_t(w) + size_t(x)) * 4];
             o[3] = 1.0f;
+            float unused = INFINITY;
+            float& margin = decisionMargins ? (*decisionMargins)[size_t(y) * size_t(w) + size_t(x)] : unused;
+            auto decide = [&margin](float a, float b) { margin = std::min(margin, std::abs(a - b)); };
             // 1. local contrast
             float lumaM = r.luma(x, y), lumaN = r.luma(x, y - 1), lumaS = r.luma(x, y + 1);
             float lumaW = r.luma(x - 1, y), lumaE = r.luma(x + 1, y);
             float rangeMax = std::max(std::max(lumaN, lumaW), std::max(lumaE, std::max(lumaS, lumaM)));
             float rangeMin = std::min(std::min(lumaN, lumaW), std::min(lumaE, std::min(lumaS, lumaM)));
             float range = rangeMax - rangeMin;
+            decide(range, std::max(s.edgeThresholdMin, rangeMax * s.edgeThreshold));
             if (range < std::max(s.edgeThresholdMin, rangeMax * s.edgeThreshold)) continue;
             float lumaNW = r.luma(x - 1, y - 1), lumaNE = r.luma(x + 1, y - 1);
             float lumaSW = r.luma(x - 1, y + 1), lumaSE = r.luma(x + 1, y + 1);
@@ -136,12 +142,14 @@ eng::io::ImageF fxaaReference(const eng::io::ImageF& display, const FxaaSettings
                              2.0f * std::abs(-2.0f * lumaM + lumaW + lumaE) +
                              std::abs(-2.0f * lumaS + lumaSW + lumaSE);
             bool horzSpan = edgeHorz >= edgeVert;
+            decide(edgeHorz, edgeVert);
             int acrossX = horzSpan ? 0 : 1, acrossY = horzSpan ? 1 : 0;
             float alongX = horzSpan ? 1.0f : 0.0f, alongY = horzSpan ? 0.0f : 1.0f;
             // 4. side
             float luma1 = horzSpan ? lumaN : lumaW, luma2 = horzSpan ? lumaS : lumaE;
             float gradient1 = luma1 - lumaM, gradient2 = luma2 - lumaM;
             bool negativeSide = std::abs(gradient1) >= std::abs(gradient2);
+            decide(std::abs(gradient1), std::abs(gradient2));
             float gradientScaled = 0.25f * std::max(std::abs(gradient1), std::abs(gradient2));
             float lengthSign = negativeSide ? -1.0f : 1.0f;
             float lumaLocalAverage = 0.5f * ((negativeSide ? luma1 : luma2) + lumaM);
@@ -154,12 +162,16 @@ eng::io::ImageF fxaaReference(const eng::io::ImageF& display, const FxaaSettings
             float lumaEndP = r.lumaBilinear(px, py) - lumaLocalAverage;
             bool doneN = std::abs(lumaEndN) >= gradientScaled;
             bool doneP = std::abs(lumaEndP) >= gradientScaled;
+            decide(std::abs(lumaEndN), gradientScaled);
+            decide(std::abs(lumaEndP), gradientScaled);
             for (uint32_t i = 1; i < stepCount; ++i) {
                 if (!doneN) nx -= alongX * steps[i], ny -= alongY * steps[i];
                 if (!doneP) px += alongX * steps[i], py += alongY * steps[i];
                 if ((doneN && doneP) || i + 1 == stepCount) break;
                 if (!doneN) lumaEndN = r.lumaBilinear(nx, ny) - lumaLocalAverage;
                 if (!doneP) lumaEndP = r.lumaBilinear(px, py) - lumaLocalAverage;
+                if (!doneN) decide(std::abs(lumaEndN), gradientScaled);
+                if (!doneP) decide(std::abs(lumaEndP), gradientScaled);
                 doneN = std::abs(lumaEndN) >= gradientScaled;
                 doneP = std::abs(lumaEndP) >= gradientScaled;
             }
@@ -170,6 +182,8 @@ eng::io::ImageF fxaaReference(const eng::io::ImageF& display, const FxaaSettings
             bool centreBelow = lumaM - lumaLocalAverage < 0.0f;
             bool nearerN = dstN < dstP;
             bool goodSpan = ((nearerN ? lumaEndN : lumaEndP) < 0.0f) != centreBelow;
+            decide(lumaM, lumaLocalAverage);
+            decide(nearerN ? lumaEndN : lumaEndP, 0.0f);
             float pixelOffset = -std::min(dstN, dstP) / (dstN + dstP) + 0.5f;
             float offset = std::max(goodSpan ? pixelOffset : 0.0f, subpixBlend);
             int sx = negativeSide ? -acrossX : acrossX, sy = negativeSide ? -acrossY : acrossY;

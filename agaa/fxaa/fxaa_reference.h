@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <span>
 #include <string>
+#include <vector>
 
 namespace agaa {
 
@@ -31,7 +32,13 @@ void checkFxaaSettings(const FxaaSettings& settings);
 float fxaaLuma(const eng::io::ImageF& image, int x, int y);
 
 // FXAA of a tone-mapped image (linear [0,1] RGBA), alpha set to 1: the GPU pass's arithmetic in fp32.
-eng::io::ImageF fxaaReference(const eng::io::ImageF& display, const FxaaSettings& settings);
+// decisionMargins (optional, one per pixel): the smallest distance, in luma, between a value the
+// pass compared and what it was compared with (step 1's contrast threshold, the orientation, the
+// side, every end-of-edge test, the span's sign; step 1's alone where it leaves the pixel as is).
+// A pixel may depart from this twin by more than fp32 rounding only where its
+// margin is within rounding: a decision on its threshold (tests/gpu/test_peers_fxaa.cpp).
+eng::io::ImageF fxaaReference(const eng::io::ImageF& display, const FxaaSettings& settings,
+                              std::vector<float>* decisionMargins = nullptr);
 
 // Whether the pixel passes the local contrast test (step 1), i.e. FXAA may change it.
 bool fxaaIsEdgePixel(const eng::io::ImageF& display, int x, int y, const FxaaSettings& settings);

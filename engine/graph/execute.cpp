@@ -20,7 +20,23 @@ void labelColor(PassKind kind, float (&color)[4]) {
         color[i] = chosen[i];
 }
 
+class VulkanRecorder final : public CommandRecorder {
+  public:
+    void pipelineBarrier(VkCommandBuffer cmd, const VkDependencyInfo& dependency) override {
+        vkCmdPipelineBarrier2(cmd, &dependency);
+    }
+    void writeTimestamp(VkCommandBuffer cmd, VkPipelineStageFlags2 stage, VkQueryPool pool,
+                        uint32_t query) override {
+        vkCmdWriteTimestamp2(cmd, stage, pool, query);
+    }
+};
+
 } // namespace
+
+CommandRecorder& vulkanRecorder() {
+    static VulkanRecorder recorder;
+    return recorder;
+}
 
 const PhysicalTexture& Context::texture(Texture texture) const {
     const uint32_t resource = m_graph.checkHandle(texture.id, true, "pass '" + passName() + "'").resource;
@@ -76,7 +92,8 @@ void Graph::releaseTransients() {
     m_allocator = nullptr;
 }
 
-void Graph::recordBarriers(VkCommandBuffer cmd, const std::vector<Barrier>& barriers) const {
+void Graph::recordBarriers(CommandRecorder& recorder, VkCommandBuffer cmd,
+                           const std::vector<Barrier>& barriers) const {
     if (barriers.empty()) return;
     std::vector<VkImageMemoryBarrier2> images;
     std::vector<VkBufferMemoryBarrier2> buffers;
@@ -116,7 +133,7 @@ void Graph::recordBarriers(VkCommandBuffer cmd, const std::vector<Barrier>& barr
     dependency.pBufferMemoryBarriers = buffers.data();
     dependency.imageMemoryBarrierCount = static_cast<uint32_t>(images.size());
     dependency.pImageMemoryBarriers = images.data();
-    vkCmdPipelineBarrier2(cmd, &dependency);
+    recorder.pipelineBarrier(cmd, dependency);
 }
 
 void Graph::execute(const ExecuteInfo& info) {
@@ -132,6 +149,7 @@ void Graph::execute(const ExecuteInfo& info) {
         realiseTransients(*info.allocator);
     }
     const bool labels = info.beginLabel && info.endLabel;
+    CommandRecorder& recorder = info.recorder ? *info.recorder : vulkanRecorder();
 
     for (uint32_t i = 0; i < graph.order.size(); ++i) {
         const CompiledPass& compiledPass = graph.order[i];
@@ -142,16 +160,16 @@ void Graph::execute(const ExecuteInfo& info) {
             labelColor(pass.kind, label.color);
             info.beginLabel(info.cmd, &label);
         }
-        recordBarriers(info.cmd, compiledPass.barriers);
+        recordBarriers(recorder, info.cmd, compiledPass.barriers);
         // ALL_COMMANDS on both ends: the first stamp waits for everything before the pass, the
         // second for the pass itself, so per-pass times add up to the frame without overlap.
         if (info.queryPool != VK_NULL_HANDLE)
-            vkCmdWriteTimestamp2(info.cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, info.queryPool,
-                                 info.firstQuery + 2 * i);
+            recorder.writeTimestamp(info.cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, info.queryPool,
+                                    info.firstQuery + 2 * i);
         if (pass.callback) pass.callback->run(Context(*this, compiledPass.pass, info.cmd));
         if (info.queryPool != VK_NULL_HANDLE)
-            vkCmdWriteTimestamp2(info.cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, info.queryPool,
-                                 info.firstQuery + 2 * i + 1);
+            recorder.writeTimestamp(info.cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, info.queryPool,
+                                    info.firstQuery + 2 * i + 1);
         if (labels) info.endLabel(info.cmd);
     }
 
@@ -162,7 +180,7 @@ void Graph::execute(const ExecuteInfo& info) {
             labelColor(PassKind::Transfer, label.color);
             info.beginLabel(info.cmd, &label);
         }
-        recordBarriers(info.cmd, graph.finalBarriers);
+        recordBarriers(recorder, info.cmd, graph.finalBarriers);
         if (labels) info.endLabel(info.cmd);
     }
 }

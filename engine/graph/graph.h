@@ -5,6 +5,7 @@
 // the project that records barriers (Granite's single owner of synchronisation).
 
 #include "engine/graph/compiled.h"
+#include "engine/graph/recorder.h"
 #include "engine/graph/resources.h"
 #include "engine/graph/use.h"
 
@@ -99,6 +100,7 @@ class Graph {
         uint32_t firstQuery = 0;
         PFN_vkCmdBeginDebugUtilsLabelEXT beginLabel = nullptr;
         PFN_vkCmdEndDebugUtilsLabelEXT endLabel = nullptr;
+        CommandRecorder* recorder = nullptr; // barriers and timestamps; nullptr: vulkanRecorder()
     };
 
     Graph();
@@ -220,7 +222,8 @@ class Graph {
     void computeLifetimes(CompiledGraph& out) const;
     void computeBarriers(CompiledGraph& out) const;
     const Access* findAccess(uint32_t pass, uint32_t resource) const;
-    void recordBarriers(VkCommandBuffer cmd, const std::vector<Barrier>& barriers) const;
+    void recordBarriers(CommandRecorder& recorder, VkCommandBuffer cmd,
+                        const std::vector<Barrier>& barriers) const;
 
     std::vector<Pass> m_passes;
     std::vector<Resource> m_resources;

@@ -86,32 +86,54 @@ TEST(FxaaGpu, ChangesOnlyPixelsNearLumaEdges) {
     agaa::test::expectNoValidationErrors(*device);
 }
 
-// GPU pass vs CPU twin on the same no-AA image. The arithmetic is the same, in the same
-// order; the only latitude is fp32 contraction (FMA) in llvmpipe, so a value may differ in
-// its last bits and, rarely, a comparison that sits on its threshold may flip a decision.
-// Tolerance: max abs difference 1e-5 on at least 99.5% of pixels, none above 0.5.
+// GPU pass vs CPU twin on the same no-AA image. The arithmetic is the same, in the same order;
+// the only latitude is fp32 contraction (FMA) in llvmpipe, so a value may differ in its last bits
+// (the colour by at most kRounding), and a comparison whose two sides are within kDecisionRounding
+// may go the other way. Every pixel is therefore one of: bit-exact; within rounding; or departing
+// further where the twin reports a decision within rounding of its threshold (its decision
+// margin, fxaa_reference.h). A pixel that departs further with every decision clear of its
+// threshold is a real difference between pass and twin, and fails the test by name.
 TEST(FxaaGpu, MatchesTheCpuTwin) {
+    // Colour: values in [0, 1] through a handful of fp32 operations: a few ulps of 1 (1.2e-7).
+    constexpr double kRounding = 1e-5;
+    // Luma: sqrt of a weighted sum, a /12 low-pass and bilinear lerps before each comparison.
+    constexpr float kDecisionRounding = 1e-5f;
     auto device = agaa::test::makeValidatedDevice();
-    eng::scene::Scene scene = eng::scene::loadBuiltin("railings");
-    agaa::FrameRenderer renderer(*device, scene);
-    const uint32_t size = 128;
-    agaa::RenderResult noaa = render(renderer, "noaa", size);
-    agaa::RenderResult fxaa = render(renderer, "fxaa", size);
-    eng::io::ImageF cpu = agaa::fxaaReference(noaa.display, agaa::FxaaSettings{});
-    uint32_t off = 0, exact = 0;
-    double worst = 0.0;
-    for (size_t i = 0; i < size_t(size) * size; ++i) {
-        double d = 0.0;
-        for (int c = 0; c < 3; ++c)
-            d = std::max(d, double(std::abs(cpu.rgba[i * 4 + c] - fxaa.display.rgba[i * 4 + c])));
-        worst = std::max(worst, d);
-        off += d > 1e-5 ? 1 : 0;
-        exact += d == 0.0 ? 1 : 0;
+    uint32_t total = 0, exact = 0, rounding = 0, flipped = 0, unexplained = 0;
+    for (const char* name : {"railings", "foliage", "furball"}) {
+        eng::scene::Scene scene = eng::scene::loadBuiltin(name);
+        agaa::FrameRenderer renderer(*device, scene);
+        const uint32_t size = 128;
+        agaa::RenderResult noaa = render(renderer, "noaa", size);
+        agaa::RenderResult fxaa = render(renderer, "fxaa", size);
+        std::vector<float> margins;
+        eng::io::ImageF cpu = agaa::fxaaReference(noaa.display, agaa::FxaaSettings{}, &margins);
+        for (size_t i = 0; i < size_t(size) * size; ++i) {
+            double d = 0.0;
+            for (int c = 0; c < 3; ++c)
+                d = std::max(d, double(std::abs(cpu.rgba[i * 4 + c] - fxaa.display.rgba[i * 4 + c])));
+            ++total;
+            if (d == 0.0) {
+                ++exact;
+            } else if (d <= kRounding) {
+                ++rounding;
+            } else if (margins[i] <= kDecisionRounding) {
+                ++flipped;
+            } else {
+                ++unexplained;
+                ADD_FAILURE() << name << " pixel (" << i % size << ", " << i / size
+                              << "): GPU FXAA departs by " << d << " from its CPU twin with every decision "
+                              << margins[i] << " or more from its threshold";
+            }
+        }
     }
-    std::printf("fxaa GPU vs CPU: %u of %u pixels bit-exact, %u beyond 1e-5, worst %.3g\n", exact,
-                size * size, off, worst);
-    EXPECT_LE(off, size * size / 200) << "GPU FXAA departs from its CPU twin";
-    EXPECT_LE(worst, 0.5) << "a blend beyond half a pixel's colour step";
+    std::printf(
+        "fxaa GPU vs CPU: %u pixels: %u bit-exact, %u within rounding (<= %.0e), %u departing where a "
+        "decision sat within %.0e of its threshold, %u unexplained\n",
+        total, exact, rounding, kRounding, flipped, double(kDecisionRounding), unexplained);
+    EXPECT_EQ(unexplained, 0u);
+    // Decisions on their threshold are rare (a tie of two lumas or a luma on a threshold).
+    EXPECT_LE(flipped, total / 1000) << "more than 0.1 % of the pixels took a decision on its threshold";
     agaa::test::expectNoValidationErrors(*device);
 }
 

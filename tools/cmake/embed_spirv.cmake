@@ -28,6 +28,12 @@ function(agaa_embed_shaders)
   set(glsl_root ${PROJECT_SOURCE_DIR}/shaders/glsl)
   set(out_root ${CMAKE_BINARY_DIR}/generated)
   set(headers "")
+  # AGAA_TEST_PERTURB (top-level CMakeLists.txt): a deliberate shader error for the suite to catch.
+  set(perturb "")
+  if(NOT AGAA_TEST_PERTURB STREQUAL "none")
+    string(TOUPPER "${AGAA_TEST_PERTURB}" perturb)
+    set(perturb "-DAGAA_TEST_PERTURB_${perturb}")
+  endif()
   foreach(src IN LISTS ARG_SOURCES)
     get_filename_component(dir "${src}" DIRECTORY)
     get_filename_component(stem "${src}" NAME_WE)
@@ -40,7 +46,7 @@ function(agaa_embed_shaders)
     add_custom_command(
       OUTPUT ${raw} ${header}
       COMMAND ${CMAKE_COMMAND} -E make_directory ${out_root}/shaders/${dir}
-      COMMAND ${GLSLANG_VALIDATOR} -V --target-env vulkan1.3 -I${glsl_root} -g0
+      COMMAND ${GLSLANG_VALIDATOR} -V --target-env vulkan1.3 -I${glsl_root} -g0 ${perturb}
               --vn ${symbol}Words --depfile ${raw}.d -o ${raw} ${glsl_root}/${src}
       COMMAND ${CMAKE_COMMAND} -DRAW=${raw} -DOUT=${header} -DSYMBOL=${symbol}
               -P ${PROJECT_SOURCE_DIR}/tools/cmake/wrap_spirv.cmake

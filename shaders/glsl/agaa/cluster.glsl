@@ -77,6 +77,9 @@ void main() {
     }
     uint ids[kMaxSamples];
     uint count = clusterSamples(n, c, kDistance, agaa.clustering.y, px, py, pz, nx, ny, nz, model, valid, ids);
+#ifdef AGAA_TEST_PERTURB_METADATA
+    if (c > 1u) ids[0] ^= 1u; // tools/perturb-test.sh: metadata bit 0 (sample 0's aggregate id) flipped
+#endif
     const uint words = (kSamples * metadataBits(kAggregates) + 31u) / 32u;
     uint base = (pixel.y * size.x + pixel.x) * words;
     for (uint w = 0u; w < words; ++w) metadata[base + w] = packMetadataWord(w, n, c, ids);

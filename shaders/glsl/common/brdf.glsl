@@ -5,7 +5,11 @@
 // Schlick Fresnel, Lambert diffuse: the glTF metallic-roughness model. Shared by
 // every technique so that methods differ only in what they shade, not how.
 
+#ifdef AGAA_TEST_PERTURB_BRDF
+const float kPi = 3.14159265358979 * 1.01; // tools/perturb-test.sh: every BRDF 1 % darker
+#else
 const float kPi = 3.14159265358979;
+#endif
 
 struct SurfaceInputs {
     vec3 albedo; // base colour, linear

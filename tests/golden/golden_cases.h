@@ -1,0 +1,47 @@
+#pragma once
+// The stored reference images (tests/golden/images/): which scene, method and settings each one
+// holds, and where its files live. One list, read by the golden test and by the update script
+// (through the same test binary), so the two cannot disagree about what a golden is.
+
+#include "agaa/common/frame_renderer.h"
+
+#include <cstdint>
+#include <filesystem>
+#include <ostream>
+#include <string>
+#include <vector>
+
+namespace agaa::golden {
+
+enum class SceneSource {
+    Builtin, // eng::scene::loadBuiltin: the procedural scenes (sceneKinds())
+    Hard,    // eng::scene::loadBuiltin: the adversarial hard-* scenes (hardSceneKinds())
+    Gltf,    // a real asset under ../shared/scenes (AGAA_SHARED_SCENES_DIR)
+};
+
+struct GoldenScene {
+    std::string name; // test name and folder under images/
+    SceneSource source;
+    std::string asset;  // Gltf: path relative to the shared scenes folder
+    uint32_t size = 64; // square image, pixels
+};
+
+struct GoldenCase {
+    std::string method; // agaa/methods.h
+    uint32_t samples = 8;
+    uint32_t aggregates = 2;
+    // "images/<scene>/<method>-n<N>[-c<C>]" without extension (.exr: the metric, .png: for people).
+    std::string stem(const GoldenScene& scene) const;
+    RenderRequest request(uint32_t size) const;
+};
+
+// gtest prints the scene's name for a parameter.
+void PrintTo(const GoldenScene& scene, std::ostream* os);
+
+// Every scene that has goldens: built-in, hard, real.
+std::vector<GoldenScene> goldenScenes();
+// The cases of one scene: every method at n = 8 (c = 2) on every scene; on the built-in scenes
+// also n = 4 and n = 32 and c = 1 and 4 on both AGAA paths; on the hard scenes c = 1 and 4.
+std::vector<GoldenCase> goldenCases(const GoldenScene& scene);
+
+} // namespace agaa::golden

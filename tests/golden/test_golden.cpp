@@ -1,0 +1,137 @@
+// Stored reference images (issue 17): every method on every built-in, hard and real scene at the
+// settings users run (golden_cases.cpp), rendered on lavapipe with validation on and compared
+// with the golden metric (golden_compare.h). On a failure the rendered image (EXR and PNG) and an
+// error heatmap are written to AGAA_GOLDEN_FAILURE_DIR, next to CTest's log, and their paths
+// printed.
+//
+// AGAA_GOLDEN_WRITE=DIR (tools/update-goldens.sh): render every case into DIR instead of
+// comparing, and print for each whether it differs from the stored golden and by how much.
+
+#include "golden_cases.h"
+#include "golden_compare.h"
+
+#include "agaa/common/frame_renderer.h"
+#include "engine/io/exr.h"
+#include "engine/io/metrics.h"
+#include "engine/io/png.h"
+#include "engine/io/tone_map.h"
+#include "engine/scene/gltf_loader.h"
+#include "engine/scene/scene_error.h"
+#include "engine/scene/scenegen.h"
+#include "gpu_test_support.h"
+
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <string>
+
+namespace fs = std::filesystem;
+
+namespace {
+
+using agaa::golden::GoldenCase;
+using agaa::golden::GoldenScene;
+using agaa::golden::SceneSource;
+
+const fs::path kGoldenDir = AGAA_GOLDEN_DIR;
+const fs::path kFailureDir = AGAA_GOLDEN_FAILURE_DIR;
+const fs::path kSharedScenes = AGAA_SHARED_SCENES_DIR;
+
+eng::scene::Scene loadScene(const GoldenScene& s) {
+    if (s.source == SceneSource::Gltf) return eng::scene::loadGltf(kSharedScenes / s.asset);
+    return eng::scene::loadBuiltin(s.name);
+}
+
+void writeImages(const fs::path& stem, const eng::io::ImageF& display) {
+    fs::create_directories(stem.parent_path());
+    eng::io::writeExr(stem.string() + ".exr", display); // half floats: what the metric reads
+    eng::io::writePng(stem.string() + ".png", eng::io::quantizeToU8(eng::io::srgbEncoded(display)));
+}
+
+std::string describe(const agaa::golden::GoldenError& e) {
+    char line[160];
+    std::snprintf(line, sizeof line, "display RMSE %.3g, p%.0f %.3g, max %.3g, %zu pixels differ", e.rmse,
+                  agaa::golden::GoldenThresholds{}.percentile, e.percentileError, e.maxError,
+                  e.differingPixels);
+    return line;
+}
+
+class Golden : public ::testing::TestWithParam<GoldenScene> {};
+
+TEST_P(Golden, MatchesStoredImages) {
+    const GoldenScene& goldenScene = GetParam();
+    if (goldenScene.source == SceneSource::Gltf && !fs::exists(kSharedScenes / goldenScene.asset))
+        GTEST_SKIP() << (kSharedScenes / goldenScene.asset) << " is missing (AGAA_SHARED_SCENES_DIR)";
+    const char* writeDir = std::getenv("AGAA_GOLDEN_WRITE");
+    eng::scene::Scene scene;
+    try {
+        scene = loadScene(goldenScene);
+    } catch (const eng::scene::SceneError& e) {
+        // A real asset that needs a glTF extension the loader does not have yet (MixedLightingExample:
+        // KHR_texture_transform, issue 16): refused by name, as it should be; its goldens come with
+        // the extension (tools/update-goldens.sh). Any other load error fails.
+        if (std::string(e.what()).find("extensionsRequired") == std::string::npos) throw;
+        GTEST_SKIP() << "the loader refuses " << goldenScene.asset << ": " << e.what();
+    }
+    auto device = agaa::test::makeValidatedDevice();
+    agaa::FrameRenderer renderer(*device, scene);
+    for (const GoldenCase& c : agaa::golden::goldenCases(goldenScene)) {
+        const std::string stem = c.stem(goldenScene);
+        const auto start = std::chrono::steady_clock::now();
+        const agaa::RenderResult result = renderer.render(c.request(goldenScene.size));
+        const double ms =
+            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+        const fs::path golden = kGoldenDir / (stem + ".exr");
+        const bool haveGolden = fs::exists(golden);
+        if (writeDir) {
+            // Update mode: the new image goes to writeDir; the script decides what to copy.
+            writeImages(fs::path(writeDir) / stem, agaa::golden::roundedToHalf(result.display));
+            if (!haveGolden) {
+                std::printf("[ golden ] %s: new\n", stem.c_str());
+                continue;
+            }
+            const agaa::golden::GoldenError e =
+                agaa::golden::compareToGolden(result.display, eng::io::readExr(golden));
+            std::printf("[ golden ] %s: %s%s\n", stem.c_str(),
+                        e.differingPixels == 0 ? "unchanged"
+                                               : (e.passed() ? "changed (within threshold), " : "changed, "),
+                        e.differingPixels == 0 ? "" : describe(e).c_str());
+            continue;
+        }
+        if (!haveGolden) {
+            ADD_FAILURE() << golden << " is missing: run tools/update-goldens.sh";
+            continue;
+        }
+        const agaa::golden::GoldenError e =
+            agaa::golden::compareToGolden(result.display, eng::io::readExr(golden));
+        std::printf("[ golden ] %s: %s (%.0f ms) %s\n", stem.c_str(), describe(e).c_str(), ms,
+                    e.passed() ? "PASS" : "FAIL");
+        if (e.passed()) continue;
+        const fs::path out = kFailureDir / stem;
+        writeImages(fs::path(out.string() + ".actual"), result.display);
+        const eng::io::ImageF heat =
+            eng::io::errorHeatmap(eng::io::srgbEncoded(agaa::golden::roundedToHalf(result.display)),
+                                  eng::io::srgbEncoded(eng::io::readExr(golden)), 20.0f);
+        eng::io::writePng(out.string() + ".heatmap.png", eng::io::quantizeToU8(heat));
+        ADD_FAILURE() << stem << " differs from its golden: " << describe(e) << " (thresholds: RMSE "
+                      << agaa::golden::GoldenThresholds{}.rmse << ", p99 "
+                      << agaa::golden::GoldenThresholds{}.percentileError
+                      << ")\n  golden:  " << (kGoldenDir / (stem + ".png")).string()
+                      << "\n  actual:  " << out.string() << ".actual.png (.exr)\n  heatmap: " << out.string()
+                      << ".heatmap.png (error x20: 0.05 is white)";
+    }
+    agaa::test::expectNoValidationErrors(*device);
+}
+
+INSTANTIATE_TEST_SUITE_P(Every, Golden, ::testing::ValuesIn(agaa::golden::goldenScenes()),
+                         [](const auto& info) {
+                             std::string s = info.param.name;
+                             for (char& ch : s)
+                                 if (ch == '-') ch = '_';
+                             return s;
+                         });
+
+} // namespace
