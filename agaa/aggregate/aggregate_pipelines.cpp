@@ -299,6 +299,7 @@ VkPipeline AggregateAA::visibilityPipeline(AlphaPath alpha, bool doubleSided) {
     // generation pass inherits the coverage through its depth EQUAL test.
     d.specialization.values = {
         uint32_t(alpha), m_settings.breakdown & AggregateBreakdown::kVisibilityWithoutNormals ? 1u : 0u};
+    addMaterialSpecialization(d.specialization, m_features);
     d.alphaToCoverage = usesAlphaToCoverage(alpha);
     d.colorFormats = {VK_FORMAT_R8G8_UNORM};
     d.depthFormat = m_depthFormat;
@@ -339,6 +340,7 @@ VkPipeline AggregateAA::generationPipeline(bool doubleSided) {
     d.specialization.values.push_back(b & AggregateBreakdown::kGenerationEmpty            ? 2u
                                       : b & AggregateBreakdown::kGenerationWithoutAtomics ? 1u
                                                                                           : 0u);
+    addMaterialSpecialization(d.specialization, m_features);
     if (m_hasEmissive) d.colorFormats = {VK_FORMAT_B10G11R11_UFLOAT_PACK32};
     d.depthFormat = m_depthFormat;
     d.samples = VK_SAMPLE_COUNT_4_BIT;

@@ -60,6 +60,10 @@ std::vector<VariantChoice> effectVariants(const eng::scene::SceneFeatures& f, co
     v.push_back({"normal-maps", f.hasNormalMaps() ? "fetch + Toksvig roughness" : "off",
                  f.hasNormalMaps() ? forced + count(f.normalMappedMaterials, "normal-mapped materials")
                                    : "no normal-mapped materials"});
+    v.push_back({"texture-transform", f.hasTextureTransforms() ? "KHR_texture_transform" : "off",
+                 f.hasTextureTransforms()
+                     ? count(f.transformedMaterials, "materials with transformed textures")
+                     : "no transformed textures"});
     v.push_back({"lighting", scene.lightingMode, scene.lightingCause});
     v.push_back({"environment",
                  f.hasEnvironment() ? "SH9 irradiance + " + std::to_string(shared::kEnvironmentLevels) +

@@ -57,6 +57,12 @@ inline constexpr uint32_t kSpecShadowTaps = 5;
 inline constexpr uint32_t kSpecShadowFootprint = 6; // AGAA lighting only
 // common/environment.glsl, apart from the passes' own ids (which run up to 10).
 inline constexpr uint32_t kSpecEnvironment = 16;
+// common/material.glsl: KHR_texture_transform on any used texture slot (issue 16).
+inline constexpr uint32_t kSpecTextureTransforms = 18;
+// Every raster pass that evaluates materials: id 18 from the scene's features.
+inline void addMaterialSpecialization(eng::vk::Specialization& s, const eng::scene::SceneFeatures& f) {
+    s.byId.push_back({kSpecTextureTransforms, f.hasTextureTransforms() ? 1u : 0u});
+}
 
 // Every lighting pass: the environment's specialisation (id 16) after `values` (ids 0..n-1), and
 // its bindings (15: pre-filtered levels, 16: constants, 17: the split sum's BRDF table), pushed from the

@@ -60,6 +60,7 @@ VkPipeline SampleGBufferPass::pipeline(AlphaPath alpha, bool doubleSided) {
     d.specialization.values.push_back(m_options.curvatureRoughness ? 1u : 0u);                   // id 8
     d.specialization.values.push_back(std::bit_cast<uint32_t>(m_options.curvatureMaxFootprint)); // id 9
     d.specialization.values.push_back(std::bit_cast<uint32_t>(m_options.curvatureBoost));        // id 10
+    addMaterialSpecialization(d.specialization, m_features);
     d.sampleShading = sampleRate; // minSampleShading 1: one invocation per sample
     d.alphaToCoverage = usesAlphaToCoverage(alpha);
     d.colorFormats = {kNormalFormat, kAlbedoMetalFormat, kEmissiveRoughnessFormat};

@@ -102,6 +102,7 @@ ShadowMapPass::ShadowMapPass(vk::Device& device, const eng::frame::GpuScene& sce
         d.depthFormat = kFormat;
         d.cullMode = VK_CULL_MODE_NONE;      // both faces cast: thin and open meshes do not leak light
         d.depthCompare = VK_COMPARE_OP_LESS; // standard depth: 0 nearest the light
+        addMaterialSpecialization(d.specialization, features);
         m_pipelines[masked] =
             vk::createGraphicsPipeline(device, d, m_name + ".shadow" + (masked ? ".masked" : ".opaque"));
     }

@@ -42,6 +42,11 @@ SceneFeatures deriveSceneFeatures(const Scene& scene) {
         const glm::vec3 e = mat.emissiveFactor * mat.emissiveStrength;
         if (std::max({e.x, e.y, e.z}) > 0.0f) ++f.emissiveMaterials;
         if (mat.normalTexture >= 0) ++f.normalMappedMaterials;
+        for (const TextureTransform& t : mat.textureTransforms)
+            if (t.offset != glm::vec2(0.0f) || t.rotation != 0.0f || t.scale != glm::vec2(1.0f)) {
+                ++f.transformedMaterials;
+                break;
+            }
         if (mat.metallicFactor >= kGlossyMetallic && mat.roughnessFactor <= kGlossyRoughness)
             ++f.glossyMetalMaterials;
     }

@@ -29,6 +29,7 @@ struct SceneFeatures {
     uint32_t blendedMaterials = 0;      // AlphaMode::Blend: alpha-to-coverage (no sorted transparency)
     uint32_t emissiveMaterials = 0;     // emissiveFactor * strength > 0
     uint32_t normalMappedMaterials = 0; // normalTexture >= 0
+    uint32_t transformedMaterials = 0;  // a texture slot with a KHR_texture_transform other than identity
     // Glossy metals (metallicFactor >= kGlossyMetallic, roughnessFactor <= kGlossyRoughness): the
     // thin bright highlights an isotropic normal distribution smears (AGAA picks SGGX for them).
     uint32_t glossyMetalMaterials = 0;
@@ -48,6 +49,7 @@ struct SceneFeatures {
     bool hasNormalMaps() const { return normalMappedMaterials > 0; }
     bool hasGlossyMetals() const { return glossyMetalMaterials > 0; }
     bool hasEnvironment() const { return environment; }
+    bool hasTextureTransforms() const { return transformedMaterials > 0; }
     // Tile light culling only prunes point and spot lights; directional lights touch every tile.
     bool needsLightCulling() const { return forced || pointLights + spotLights > 0; }
 };

@@ -15,6 +15,7 @@
 #include "engine/io/metrics.h"
 #include "engine/io/png.h"
 #include "engine/io/tone_map.h"
+#include "engine/scene/default_lighting.h"
 #include "engine/scene/gltf_loader.h"
 #include "engine/scene/scene_error.h"
 #include "engine/scene/scenegen.h"
@@ -40,8 +41,14 @@ const fs::path kGoldenDir = AGAA_GOLDEN_DIR;
 const fs::path kFailureDir = AGAA_GOLDEN_FAILURE_DIR;
 const fs::path kSharedScenes = AGAA_SHARED_SCENES_DIR;
 
+// A real asset renders as a user gets it without flags: lighting auto (the default sun and sky,
+// or a fill sky next to its own lights; engine/scene/default_lighting.h), exposure metered.
 eng::scene::Scene loadScene(const GoldenScene& s) {
-    if (s.source == SceneSource::Gltf) return eng::scene::loadGltf(kSharedScenes / s.asset);
+    if (s.source == SceneSource::Gltf) {
+        eng::scene::Scene scene = eng::scene::loadGltf(kSharedScenes / s.asset);
+        eng::scene::applyLighting(scene, eng::scene::LightingMode::Automatic);
+        return scene;
+    }
     return eng::scene::loadBuiltin(s.name);
 }
 
@@ -66,22 +73,15 @@ TEST_P(Golden, MatchesStoredImages) {
     if (goldenScene.source == SceneSource::Gltf && !fs::exists(kSharedScenes / goldenScene.asset))
         GTEST_SKIP() << (kSharedScenes / goldenScene.asset) << " is missing (AGAA_SHARED_SCENES_DIR)";
     const char* writeDir = std::getenv("AGAA_GOLDEN_WRITE");
-    eng::scene::Scene scene;
-    try {
-        scene = loadScene(goldenScene);
-    } catch (const eng::scene::SceneError& e) {
-        // A real asset that needs a glTF extension the loader does not have yet (MixedLightingExample:
-        // KHR_texture_transform, issue 16): refused by name, as it should be; its goldens come with
-        // the extension (tools/update-goldens.sh). Any other load error fails.
-        if (std::string(e.what()).find("extensionsRequired") == std::string::npos) throw;
-        GTEST_SKIP() << "the loader refuses " << goldenScene.asset << ": " << e.what();
-    }
+    const eng::scene::Scene scene = loadScene(goldenScene);
     auto device = agaa::test::makeValidatedDevice();
     agaa::FrameRenderer renderer(*device, scene);
     for (const GoldenCase& c : agaa::golden::goldenCases(goldenScene)) {
         const std::string stem = c.stem(goldenScene);
         const auto start = std::chrono::steady_clock::now();
-        const agaa::RenderResult result = renderer.render(c.request(goldenScene.size));
+        agaa::RenderRequest request = c.request(goldenScene.size);
+        request.autoExposure = !scene.exposure.has_value();
+        const agaa::RenderResult result = renderer.render(request);
         const double ms =
             std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
         const fs::path golden = kGoldenDir / (stem + ".exr");

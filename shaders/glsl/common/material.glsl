@@ -9,6 +9,8 @@
 // fetch and the emissive fetch off for scenes without normal-mapped or emissive materials.
 layout(constant_id = 3) const uint kNormalMaps = 1u;
 layout(constant_id = 4) const uint kEmissiveMaterials = 1u;
+// KHR_texture_transform in the scene (agaa/common/effects.h kSpecTextureTransforms).
+layout(constant_id = 18) const uint kTextureTransforms = 1u;
 
 // Toksvig (2005) from a normal-map texel's pre-filtered length |Na| (engine/frame/gpu_scene.cpp
 // stores it in alpha): with the GGX alpha a = r^2 and its Blinn-Phong exponent s = 2/a^2 - 2,
@@ -39,6 +41,10 @@ vec4 sampleTexture(int index, vec2 uv, vec4 fallback) {
 // KHR_texture_transform: slot 0 base colour, 1 metal-roughness, 2 normal, 3 emissive. Affine in uv,
 // so the implicit derivatives (and the MIP level) follow the transformed coordinates.
 vec2 slotUv(GpuMaterial m, uint slot, vec2 uv) {
+    // Off for scenes without a transformed texture (specialisation id 18): the fetch then reads the
+    // interpolated coordinates themselves, whose derivatives llvmpipe takes differently from a
+    // computed value's (even one multiplied by 1), which moves alpha-tested edges.
+    if (kTextureTransforms == 0u) return uv;
     vec4 M = m.uvMatrix[slot];
     vec4 o = m.uvOffset[slot / 2u];
     return mat2(M.xy, M.zw) * uv + ((slot & 1u) == 0u ? o.xy : o.zw);
