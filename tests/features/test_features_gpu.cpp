@@ -251,6 +251,52 @@ TEST(FeaturesGpu, MaskedMaterialsUseAlphaToCoverageWithMsaaAndDiscardAtOneSample
     agaa::test::expectNoValidationErrors(*device);
 }
 
+// Issue 16: KHR_texture_transform on the GPU. A quad textured red on the left half of its
+// texture and green on the right: with offset (0.5, 0) the quad's left half shows green and its
+// right half red (the sampler repeats); with scale (1, 1) and rotation pi about the origin,
+// uv' = -uv, the halves swap too. The variant is reported only when a material uses a transform.
+TEST(FeaturesGpu, TextureTransformMovesTheTextureOnTheGpu) {
+    auto device = agaa::test::makeValidatedDevice();
+    for (int c = 0; c < 3; ++c) {
+        Scene scene = agaa::test::emptyScene("test:texture-transform");
+        eng::scene::Material m;
+        m.baseColorFactor = {1, 1, 1, 1};
+        m.metallicFactor = 0.0f;
+        m.doubleSided = true;
+        m.baseColorTexture = 0;
+        if (c == 1) m.textureTransforms[0].offset = {0.5f, 0.0f};
+        if (c == 2) m.textureTransforms[0].rotation = 3.14159265f;
+        scene.materials.push_back(m);
+        eng::scene::Texture t{"halves", 16, 16, true, {}};
+        for (uint32_t y = 0; y < 16; ++y)
+            for (uint32_t x = 0; x < 16; ++x)
+                for (uint8_t v :
+                     {uint8_t(x < 8 ? 255 : 0), uint8_t(x < 8 ? 0 : 255), uint8_t(0), uint8_t(255)})
+                    t.rgba8.push_back(v);
+        scene.textures.push_back(t);
+        agaa::test::addRectangle(scene, {-2, -2}, {2, 2}, -6.0f, 1);
+        const size_t quad = scene.vertices.size() - 4;
+        const glm::vec2 uvs[4] = {{0, 1}, {1, 1}, {1, 0}, {0, 0}};
+        for (int i = 0; i < 4; ++i)
+            scene.vertices[quad + i].uv = uvs[i];
+        scene.bounds = {{-2, -2, -6}, {2, 2, -6}};
+        agaa::FrameRenderer renderer(*device, scene);
+        const glm::ivec2 left = pixelOf({-1.0f, 0.0f, -6.0f}, 64), right = pixelOf({1.0f, 0.0f, -6.0f}, 64);
+        for (const char* method : kMethods) {
+            const agaa::RenderResult r = render(renderer, method, method == std::string("noaa") ? 1 : 8, 64);
+            EXPECT_EQ(variantOf(r, "texture-transform"), c == 0 ? "off" : "KHR_texture_transform") << method;
+            auto redOverGreen = [&](glm::ivec2 p) {
+                const float* px = &r.hdr.rgba[(size_t(p.y) * 64 + p.x) * 4];
+                return px[0] > 4.0f * px[1];
+            };
+            const bool swapped = c != 0;
+            EXPECT_EQ(redOverGreen(left), !swapped) << method << " case " << c << ": the quad's left half";
+            EXPECT_EQ(redOverGreen(right), swapped) << method << " case " << c << ": the quad's right half";
+        }
+    }
+    agaa::test::expectNoValidationErrors(*device);
+}
+
 // Issue 16: alphaMode BLEND as translucency by coverage (paper section 3.6). A white quad of
 // alpha 0.5 in front of a dark wall: with MSAA every pixel under it resolves to about half the
 // quad and half the wall (alpha-to-coverage of the alpha: 2 of each 4x layer's samples); at one

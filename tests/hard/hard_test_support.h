@@ -25,7 +25,11 @@ inline constexpr double kMinGgxAlpha = 1.0e-3, kMaxGgxAlpha = 0.9, kMinLightDist
 //    lobes: the mean of unit-or-shorter vectors is no longer than the longest);
 //  - E <= colour * intensity for a directional light and colour * intensity / max(d^2,
 //    kMinLightDistance2) for a point or spot light, d the distance from the light to the
-//    scene's bounding box (0 when inside): the range window and the spot cone are <= 1.
+//    scene's bounding box (0 when inside): the range window and the spot cone are <= 1;
+//  - an environment (issue 16) adds at most its brightest radiance L_env twice: diffuse
+//    (albedo / pi) E with E <= pi L_env, and specular <= L_env times a directional albedo <= 1;
+//    10 % headroom covers SH9's ringing (measured <= 3 % of the peak irradiance); the sky is
+//    then at most L_env.
 // 1 % headroom covers AGAA's fixed-point quantisation of the Toksvig length.
 inline double hdrBound(const eng::scene::Scene& scene, const eng::frame::ViewSettings& view) {
     double emissive = 0.0, alpha = kMaxGgxAlpha;
@@ -48,8 +52,13 @@ inline double hdrBound(const eng::scene::Scene& scene, const eng::frame::ViewSet
         const double d2 = double(glm::dot(q - l.position, q - l.position));
         irradiance += c / std::max(d2, kMinLightDistance2);
     }
-    const double event = std::min(kMaxRadiance, double(view.exposure) * (emissive + brdf * irradiance));
-    const double sky = view.exposure * std::max({view.skyRadiance.x, view.skyRadiance.y, view.skyRadiance.z});
+    double environment = 0.0;
+    for (const glm::vec3& t : scene.environment.radiance)
+        environment = std::max({environment, double(t.x), double(t.y), double(t.z)});
+    const double event =
+        std::min(kMaxRadiance, double(view.exposure) * (emissive + brdf * irradiance + 2.2 * environment));
+    const double sky = view.exposure * std::max({double(view.skyRadiance.x), double(view.skyRadiance.y),
+                                                 double(view.skyRadiance.z), environment});
     return std::max(event * 1.01, sky * (1.0 + 1e-6));
 }
 

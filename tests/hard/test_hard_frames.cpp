@@ -7,6 +7,8 @@
 #include "agaa/common/frame_renderer.h"
 #include "engine/frame/readback.h"
 #include "engine/scene/adversarial_scenes.h"
+#include "engine/scene/default_lighting.h"
+#include "engine/scene/gltf_loader.h"
 #include "engine/scene/scenegen.h"
 #include "gpu_test_support.h"
 #include "hard_test_support.h"
@@ -19,6 +21,7 @@
 #include <bit>
 #include <cmath>
 #include <cstring>
+#include <filesystem>
 #include <memory>
 
 namespace {
@@ -245,6 +248,35 @@ INSTANTIATE_TEST_SUITE_P(Hard, HardScene, ::testing::ValuesIn(eng::scene::hardSc
                                  if (ch == '-') ch = '_';
                              return s;
                          });
+
+// Issue 16: the shared real scenes (../shared/scenes, used in place) in the same loop, as users get
+// them (lighting auto, exposure metered): every method finite, within the scene's bound (now with
+// its environment), deterministic.
+TEST(HardRealScenes, EveryMethodFiniteBoundedAndDeterministic) {
+    const std::filesystem::path dir = AGAA_SHARED_SCENES_DIR;
+    const char* files[] = {"dutch_ship_medium/dutch_ship_medium_1k.gltf",
+                           "MixedLightingExample/MixedLightingExample.gltf", "Cubes/Cubes.glb"};
+    if (!std::filesystem::exists(dir / files[0]))
+        GTEST_SKIP() << dir << " is missing (AGAA_SHARED_SCENES_DIR)";
+    auto device = agaa::test::makeValidatedDevice();
+    for (const char* file : files) {
+        eng::scene::Scene scene = eng::scene::loadGltf(dir / file);
+        eng::scene::applyLighting(scene, eng::scene::LightingMode::Automatic);
+        agaa::FrameRenderer renderer(*device, scene);
+        for (const agaa::MethodInfo& m : agaa::knownMethods()) {
+            const std::string label = std::string(file) + " / " + m.name;
+            agaa::RenderRequest r = request(m.name, kSamples, kAggregates, 32, 32);
+            r.autoExposure = true;
+            const agaa::RenderResult a = renderer.render(r), b = renderer.render(r);
+            eng::frame::ViewSettings exposed = r.view;
+            exposed.exposure = a.exposure;
+            checkFrame(label, a, hdrBound(scene, exposed), maxEvents(m, kSamples, kAggregates));
+            EXPECT_EQ(a.hdr.rgba, b.hdr.rgba) << label << ": two runs differ (HDR)";
+            EXPECT_EQ(a.display.rgba, b.display.rgba) << label << ": two runs differ (display)";
+        }
+    }
+    agaa::test::expectNoValidationErrors(*device);
+}
 
 // 1x1 and 17x13 (not multiples of the 16x16 lighting tile): partial tiles and a one-pixel frame.
 TEST(HardSizes, OddSizesEveryMethod) {
