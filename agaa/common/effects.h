@@ -59,9 +59,12 @@ inline constexpr uint32_t kSpecShadowFootprint = 6; // AGAA lighting only
 inline constexpr uint32_t kSpecEnvironment = 16;
 // common/material.glsl: KHR_texture_transform on any used texture slot (issue 16).
 inline constexpr uint32_t kSpecTextureTransforms = 18;
-// Every raster pass that evaluates materials: id 18 from the scene's features.
+// common/material.glsl: vertex colours (COLOR_0) in the scene.
+inline constexpr uint32_t kSpecVertexColors = 19;
+// Every raster pass that evaluates materials: ids 18 and 19 from the scene's features.
 inline void addMaterialSpecialization(eng::vk::Specialization& s, const eng::scene::SceneFeatures& f) {
     s.byId.push_back({kSpecTextureTransforms, f.hasTextureTransforms() ? 1u : 0u});
+    s.byId.push_back({kSpecVertexColors, f.vertexColors ? 1u : 0u});
 }
 
 // Every lighting pass: the environment's specialisation (id 16) after `values` (ids 0..n-1), and

@@ -95,6 +95,7 @@ std::vector<shared::GpuMaterial> makeGpuMaterials(const scene::Scene& scene) {
             g.uvMatrix[slot] = {c * t.scale.x, s * t.scale.x, -s * t.scale.y, c * t.scale.y};
             g.uvOffset[slot / 2][(slot % 2) * 2] = t.offset.x;
             g.uvOffset[slot / 2][(slot % 2) * 2 + 1] = t.offset.y;
+            g.texCoords[slot] = int32_t(t.texCoord);
         }
         out.push_back(g);
     }

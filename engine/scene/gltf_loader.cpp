@@ -382,6 +382,50 @@ class GltfConverter {
                 warn(uvs.field() + ": " + std::to_string(bad) + " TEXCOORD_0 values not finite; set to 0");
             }
         }
+        if (const int uv1Index = attribute("TEXCOORD_1"); uv1Index >= 0) {
+            AccessorExpect e;
+            e.type = TINYGLTF_TYPE_VEC2;
+            e.allowNormalizedInts = true;
+            e.allowPlainInts = true;
+            const AccessorReader uvs(m_model, m_source, uv1Index, e, ctx + ".attributes.TEXCOORD_1");
+            checkCount(uvs, "TEXCOORD_1");
+            size_t bad = 0;
+            for (size_t i = 0; i < count; ++i) {
+                const glm::vec2 uv = uvs.vec2(i);
+                if (std::isfinite(uv.x) && std::isfinite(uv.y))
+                    vertices[i].uv1 = uv;
+                else
+                    ++bad;
+            }
+            if (bad > 0)
+                warn(uvs.field() + ": " + std::to_string(bad) + " TEXCOORD_1 values not finite; set to 0");
+        }
+        // COLOR_0 (glTF 2.0 3.7.2.1): VEC3 or VEC4, float or normalized unsigned byte/short, linear,
+        // multiplying the base colour.
+        if (const int colorIndex = attribute("COLOR_0"); colorIndex >= 0) {
+            AccessorExpect e;
+            e.type = m_model.accessors[size_t(colorIndex)].type == TINYGLTF_TYPE_VEC3 ? TINYGLTF_TYPE_VEC3
+                                                                                      : TINYGLTF_TYPE_VEC4;
+            e.allowNormalizedInts = true;
+            const AccessorReader colors(m_model, m_source, colorIndex, e, ctx + ".attributes.COLOR_0");
+            checkCount(colors, "COLOR_0");
+            size_t bad = 0;
+            for (size_t i = 0; i < count; ++i) {
+                glm::vec4 c = e.type == TINYGLTF_TYPE_VEC3 ? glm::vec4(colors.vec3(i), 1.0f) : colors.vec4(i);
+                bool ok = true;
+                for (int k = 0; k < 4; ++k)
+                    ok = ok && std::isfinite(c[k]) && c[k] >= 0.0f && c[k] <= 1.0f;
+                if (!ok) {
+                    ++bad;
+                    for (int k = 0; k < 4; ++k)
+                        c[k] = std::isfinite(c[k]) ? std::clamp(c[k], 0.0f, 1.0f) : 1.0f;
+                }
+                vertices[i].color = c;
+            }
+            if (bad > 0)
+                warn(colors.field() + ": " + std::to_string(bad) +
+                     " COLOR_0 values outside [0, 1] or not finite; clamped (non-finite: 1)");
+        }
 
         std::vector<uint32_t> indices = readIndices(m_model, m_source, prim, ctx, count, posIndex);
         if (indices.size() % 3 != 0) {

@@ -124,8 +124,8 @@ class MaterialConverter {
         return out;
     }
 
-    // KHR_texture_transform on a textureInfo; a texCoord other than 0 (the info's or the
-    // extension's override) names a second UV set, which the vertex format does not carry.
+    // KHR_texture_transform on a textureInfo, and the UV set it reads (the info's texCoord or the
+    // extension's override): TEXCOORD_0 or TEXCOORD_1.
     TextureTransform textureTransform(const tinygltf::ExtensionMap& extensions, int texCoord,
                                       const std::string& field) {
         TextureTransform t;
@@ -155,9 +155,10 @@ class MaterialConverter {
             }
             if (e.Has("texCoord") && e.Get("texCoord").IsInt()) set = e.Get("texCoord").GetNumberAsInt();
         }
-        if (set > 0)
+        if (set == 1) t.texCoord = 1;
+        if (set > 1 || set < 0)
             warn(field + ": uses TEXCOORD_" + std::to_string(set) +
-                 ", a second UV set the renderer does not carry; TEXCOORD_0 is used instead");
+                 "; the renderer carries TEXCOORD_0 and TEXCOORD_1, TEXCOORD_0 is used instead");
         return t;
     }
 

@@ -15,14 +15,16 @@
 
 namespace eng::scene {
 
-// 48 bytes, matches the vertex input layout of every raster pass.
+// 72 bytes, matches the vertex input layout of every raster pass (engine/vk/pipeline.cpp).
 struct Vertex {
     glm::vec3 position{0.0f};                  // world space
     glm::vec3 normal{0.0f, 0.0f, 1.0f};        // world space, unit length
     glm::vec4 tangent{1.0f, 0.0f, 0.0f, 1.0f}; // world space xyz, w = bitangent sign
-    glm::vec2 uv{0.0f};
+    glm::vec2 uv{0.0f};                        // TEXCOORD_0
+    glm::vec2 uv1{0.0f};                       // TEXCOORD_1 (0 without)
+    glm::vec4 color{1.0f};                     // COLOR_0, linear RGBA (white without)
 };
-static_assert(sizeof(Vertex) == 48);
+static_assert(sizeof(Vertex) == 72);
 
 // Decoded texture, always RGBA8. srgb says how the renderer must interpret it
 // (base colour and emissive are sRGB; metal-roughness and normal maps are linear).
@@ -42,6 +44,7 @@ struct TextureTransform {
     glm::vec2 offset{0.0f};
     float rotation = 0.0f;
     glm::vec2 scale{1.0f};
+    uint32_t texCoord = 0; // the UV set the slot reads: TEXCOORD_0 or TEXCOORD_1
 };
 
 // glTF metallic-roughness material. Texture indices are into Scene::textures, -1 = none.

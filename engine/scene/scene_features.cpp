@@ -23,6 +23,11 @@ SceneFeatures deriveSceneFeatures(const Scene& scene) {
     SceneFeatures f;
     countLights(scene, f);
     f.environment = !scene.environment.empty();
+    for (const Vertex& v : scene.vertices)
+        if (v.color != glm::vec4(1.0f)) {
+            f.vertexColors = true;
+            break;
+        }
     for (uint32_t i = 0; i < scene.lights.size(); ++i) {
         const Light& light = scene.lights[i];
         if (!light.castsShadows) continue;
@@ -43,7 +48,8 @@ SceneFeatures deriveSceneFeatures(const Scene& scene) {
         if (std::max({e.x, e.y, e.z}) > 0.0f) ++f.emissiveMaterials;
         if (mat.normalTexture >= 0) ++f.normalMappedMaterials;
         for (const TextureTransform& t : mat.textureTransforms)
-            if (t.offset != glm::vec2(0.0f) || t.rotation != 0.0f || t.scale != glm::vec2(1.0f)) {
+            if (t.offset != glm::vec2(0.0f) || t.rotation != 0.0f || t.scale != glm::vec2(1.0f) ||
+                t.texCoord != 0) {
                 ++f.transformedMaterials;
                 break;
             }

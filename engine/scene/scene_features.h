@@ -29,7 +29,9 @@ struct SceneFeatures {
     uint32_t blendedMaterials = 0;      // AlphaMode::Blend: alpha-to-coverage (no sorted transparency)
     uint32_t emissiveMaterials = 0;     // emissiveFactor * strength > 0
     uint32_t normalMappedMaterials = 0; // normalTexture >= 0
-    uint32_t transformedMaterials = 0;  // a texture slot with a KHR_texture_transform other than identity
+    // A texture slot with a KHR_texture_transform other than identity, or reading TEXCOORD_1.
+    uint32_t transformedMaterials = 0;
+    bool vertexColors = false; // a vertex colour (COLOR_0) other than white
     // Glossy metals (metallicFactor >= kGlossyMetallic, roughnessFactor <= kGlossyRoughness): the
     // thin bright highlights an isotropic normal distribution smears (AGAA picks SGGX for them).
     uint32_t glossyMetalMaterials = 0;

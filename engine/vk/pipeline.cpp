@@ -121,19 +121,18 @@ VkPipeline createGraphicsPipeline(const Device& device, const GraphicsPipelineDe
     if (!d.fragment.empty()) addStage(VK_SHADER_STAGE_FRAGMENT_BIT, d.fragment, ".frag");
 
     // eng::scene::Vertex: position vec3, normal vec3, tangent vec4, uv vec2 (48 bytes).
-    VkVertexInputBindingDescription binding{0, 48, VK_VERTEX_INPUT_RATE_VERTEX};
+    VkVertexInputBindingDescription binding{0, 72, VK_VERTEX_INPUT_RATE_VERTEX}; // sizeof(eng::scene::Vertex)
     VkVertexInputAttributeDescription attributes[] = {
-        {0, 0, VK_FORMAT_R32G32B32_SFLOAT, 0},
-        {1, 0, VK_FORMAT_R32G32B32_SFLOAT, 12},
-        {2, 0, VK_FORMAT_R32G32B32A32_SFLOAT, 24},
-        {3, 0, VK_FORMAT_R32G32_SFLOAT, 40},
+        {0, 0, VK_FORMAT_R32G32B32_SFLOAT, 0},     {1, 0, VK_FORMAT_R32G32B32_SFLOAT, 12},
+        {2, 0, VK_FORMAT_R32G32B32A32_SFLOAT, 24}, {3, 0, VK_FORMAT_R32G32_SFLOAT, 40},
+        {4, 0, VK_FORMAT_R32G32_SFLOAT, 48},       {5, 0, VK_FORMAT_R32G32B32A32_SFLOAT, 56},
     };
     VkPipelineVertexInputStateCreateInfo vertexInput{
         VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO};
     if (d.sceneVertexInput) {
         vertexInput.vertexBindingDescriptionCount = 1;
         vertexInput.pVertexBindingDescriptions = &binding;
-        vertexInput.vertexAttributeDescriptionCount = 4;
+        vertexInput.vertexAttributeDescriptionCount = 6;
         vertexInput.pVertexAttributeDescriptions = attributes;
     }
     VkPipelineInputAssemblyStateCreateInfo assembly{

@@ -15,6 +15,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <map>
 
 namespace {
 
@@ -254,10 +255,13 @@ TEST(FeaturesGpu, MaskedMaterialsUseAlphaToCoverageWithMsaaAndDiscardAtOneSample
 // Issue 16: KHR_texture_transform on the GPU. A quad textured red on the left half of its
 // texture and green on the right: with offset (0.5, 0) the quad's left half shows green and its
 // right half red (the sampler repeats); with scale (1, 1) and rotation pi about the origin,
-// uv' = -uv, the halves swap too. The variant is reported only when a material uses a transform.
+// uv' = -uv, the halves swap too; reading TEXCOORD_1 that mirrors u swaps them as well. The
+// variant is reported only when a material uses a transform or the second set. Vertex colours
+// (COLOR_0) multiply the base colour: a blue-tinted quad loses its red.
 TEST(FeaturesGpu, TextureTransformMovesTheTextureOnTheGpu) {
     auto device = agaa::test::makeValidatedDevice();
-    for (int c = 0; c < 3; ++c) {
+    std::map<std::string, float> untintedRed; // case 0's red at the quad's left half, per method
+    for (int c = 0; c < 5; ++c) {
         Scene scene = agaa::test::emptyScene("test:texture-transform");
         eng::scene::Material m;
         m.baseColorFactor = {1, 1, 1, 1};
@@ -266,6 +270,7 @@ TEST(FeaturesGpu, TextureTransformMovesTheTextureOnTheGpu) {
         m.baseColorTexture = 0;
         if (c == 1) m.textureTransforms[0].offset = {0.5f, 0.0f};
         if (c == 2) m.textureTransforms[0].rotation = 3.14159265f;
+        if (c == 3) m.textureTransforms[0].texCoord = 1;
         scene.materials.push_back(m);
         eng::scene::Texture t{"halves", 16, 16, true, {}};
         for (uint32_t y = 0; y < 16; ++y)
@@ -277,19 +282,31 @@ TEST(FeaturesGpu, TextureTransformMovesTheTextureOnTheGpu) {
         agaa::test::addRectangle(scene, {-2, -2}, {2, 2}, -6.0f, 1);
         const size_t quad = scene.vertices.size() - 4;
         const glm::vec2 uvs[4] = {{0, 1}, {1, 1}, {1, 0}, {0, 0}};
-        for (int i = 0; i < 4; ++i)
+        for (int i = 0; i < 4; ++i) {
             scene.vertices[quad + i].uv = uvs[i];
+            scene.vertices[quad + i].uv1 = {1.0f - uvs[i].x, uvs[i].y};
+            if (c == 4) scene.vertices[quad + i].color = {0.0f, 1.0f, 1.0f, 1.0f};
+        }
         scene.bounds = {{-2, -2, -6}, {2, 2, -6}};
         agaa::FrameRenderer renderer(*device, scene);
         const glm::ivec2 left = pixelOf({-1.0f, 0.0f, -6.0f}, 64), right = pixelOf({1.0f, 0.0f, -6.0f}, 64);
         for (const char* method : kMethods) {
             const agaa::RenderResult r = render(renderer, method, method == std::string("noaa") ? 1 : 8, 64);
-            EXPECT_EQ(variantOf(r, "texture-transform"), c == 0 ? "off" : "KHR_texture_transform") << method;
+            EXPECT_EQ(variantOf(r, "texture-transform"), c == 0 || c == 4 ? "off" : "KHR_texture_transform")
+                << method;
+            const float red = r.hdr.rgba[(size_t(left.y) * 64 + left.x) * 4];
+            if (c == 0) untintedRed[method] = red;
+            if (c == 4) {
+                // What is left is the white specular (F0 = 0.04), a few % of the diffuse red.
+                EXPECT_LT(red, 0.1f * untintedRed[method])
+                    << method << ": COLOR_0 = (0, 1, 1) removes the red";
+                continue;
+            }
             auto redOverGreen = [&](glm::ivec2 p) {
                 const float* px = &r.hdr.rgba[(size_t(p.y) * 64 + p.x) * 4];
                 return px[0] > 4.0f * px[1];
             };
-            const bool swapped = c != 0;
+            const bool swapped = c != 0 && c != 4;
             EXPECT_EQ(redOverGreen(left), !swapped) << method << " case " << c << ": the quad's left half";
             EXPECT_EQ(redOverGreen(right), swapped) << method << " case " << c << ": the quad's right half";
         }

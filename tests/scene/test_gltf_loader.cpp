@@ -126,6 +126,7 @@ TEST(GltfLoader, TextureTransformReachesTheMaterialAndTheGpuTable) {
     mat.pbrMetallicRoughness.baseColorTexture.extensions["KHR_texture_transform"] =
         tinygltf::Value(transform);
     mat.normalTexture.texCoord = 1;
+    mat.emissiveTexture.texCoord = 2;
     m.model.materials.push_back(mat);
     m.model.meshes[0].primitives[0].material = 0;
     const Scene s = loadGltfModel(m.model, "transform.gltf");
@@ -135,10 +136,11 @@ TEST(GltfLoader, TextureTransformReachesTheMaterialAndTheGpuTable) {
     EXPECT_EQ(t.scale, glm::vec2(2.0f, 3.0f));
     EXPECT_FLOAT_EQ(t.rotation, 1.5707963f);
     EXPECT_EQ(s.materials[0].textureTransforms[1].scale, glm::vec2(1.0f)) << "slots without it: identity";
+    EXPECT_EQ(s.materials[0].textureTransforms[2].texCoord, 1u) << "the normal map reads TEXCOORD_1";
     bool warned = false;
     for (const std::string& w : s.stats.warnings)
-        warned = warned || w.find("normalTexture: uses TEXCOORD_1") != std::string::npos;
-    EXPECT_TRUE(warned) << "a second UV set is reported, naming the slot";
+        warned = warned || w.find("emissiveTexture: uses TEXCOORD_2") != std::string::npos;
+    EXPECT_TRUE(warned) << "a third UV set is reported, naming the slot";
     // The GPU table: (1, 0) -> M (1, 0) + offset with M = R(90 deg) S(2, 3): (0, 2) + (-0.5, 0.25).
     const std::vector<shared::GpuMaterial> gpu = eng::frame::makeGpuMaterials(s);
     const glm::vec4 M = gpu[0].uvMatrix[0];
@@ -146,6 +148,32 @@ TEST(GltfLoader, TextureTransformReachesTheMaterialAndTheGpuTable) {
                          glm::vec2(gpu[0].uvOffset[0].x, gpu[0].uvOffset[0].y);
     EXPECT_NEAR(uv.x, -0.5f, 1e-6f);
     EXPECT_NEAR(uv.y, 2.25f, 1e-6f);
+    EXPECT_EQ(gpu[0].texCoords[2], 1);
+    EXPECT_EQ(gpu[0].texCoords[0], 0);
+}
+
+// COLOR_0 (VEC3 and VEC4) and TEXCOORD_1 reach the vertices; out-of-range colours are clamped
+// with a warning naming the accessor.
+TEST(GltfLoader, VertexColoursAndTheSecondUvSetAreRead) {
+    for (int type : {TINYGLTF_TYPE_VEC3, TINYGLTF_TYPE_VEC4}) {
+        TestModel m;
+        const int pos = m.addVec3Accessor({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}});
+        const int uv1 = m.addFloatAccessor({0.25f, 0.5f, 1, 0, 0, 1}, TINYGLTF_TYPE_VEC2);
+        const std::vector<float> colours3 = {1, 0, 0, 0, 1, 0, 0, 0, 2};
+        const std::vector<float> colours4 = {1, 0, 0, 0.5f, 0, 1, 0, 1, 0, 0, 2, 1};
+        const int col = m.addFloatAccessor(type == TINYGLTF_TYPE_VEC3 ? colours3 : colours4, type);
+        m.addMeshNode({{"POSITION", pos}, {"TEXCOORD_1", uv1}, {"COLOR_0", col}},
+                      m.addIndexAccessor({0, 1, 2}));
+        const Scene s = loadGltfModel(m.model, "colours.gltf");
+        ASSERT_EQ(s.vertices.size(), 3u);
+        EXPECT_EQ(s.vertices[0].uv1, glm::vec2(0.25f, 0.5f));
+        EXPECT_EQ(s.vertices[0].color, glm::vec4(1, 0, 0, type == TINYGLTF_TYPE_VEC3 ? 1.0f : 0.5f));
+        EXPECT_EQ(s.vertices[2].color.b, 1.0f) << "2 is clamped to 1";
+        bool warned = false;
+        for (const std::string& w : s.stats.warnings)
+            warned = warned || w.find("COLOR_0 values outside [0, 1]") != std::string::npos;
+        EXPECT_TRUE(warned);
+    }
 }
 
 // Sparse accessors (glTF 2.0 3.6.2.3): listed elements are replaced, the rest read from the

@@ -82,8 +82,9 @@ layout(constant_id = 7) const uint kBreakdownPart = 0u;
 
 layout(location = 0) in vec3 inNormal;
 layout(location = 1) in vec4 inTangent;
-layout(location = 2) in vec2 inUv;
+layout(location = 2) in vec4 inUvs; // xy TEXCOORD_0, zw TEXCOORD_1
 layout(location = 3) flat in uint inLayer;
+layout(location = 5) in vec4 inColor;
 #if AGAA_EMISSIVE
 // Emissive stays per sample (seed 004: no HDR fireflies): an MSAA target, resolved per sample.
 layout(location = 0) out vec4 outEmissive;
@@ -120,7 +121,7 @@ void addToAggregate(uint slot, uint k, uint ndf, AgQuantized f) {
 void main() {
     if (kBreakdownPart == 2u) return;
     GpuMaterial gm = materials[pc.material];
-    MaterialSample m = evaluateMaterial(gm, inUv, inNormal, inTangent, gl_FrontFacing);
+    MaterialSample m = evaluateMaterial(gm, inUvs, inColor, inNormal, inTangent, gl_FrontFacing);
 #if AGAA_EMISSIVE
     outEmissive = vec4(min(m.emissive, vec3(kMaxRadiance)), 1.0);
 #endif

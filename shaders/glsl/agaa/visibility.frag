@@ -24,9 +24,10 @@ layout(push_constant) uniform Push { uint material; } pc;
 
 layout(location = 0) in vec3 inNormal;
 layout(location = 1) in vec4 inTangent;
-layout(location = 2) in vec2 inUv;
+layout(location = 2) in vec4 inUvs; // xy TEXCOORD_0, zw TEXCOORD_1
 layout(location = 3) flat in uint inLayer;
 layout(location = 4) in vec3 inViewPosition;
+layout(location = 5) in vec4 inColor;
 
 layout(location = 0) out vec4 outNormal; // xy encoded normal; w coverage alpha (alpha-to-coverage)
 
@@ -37,7 +38,7 @@ void main() {
     float coverage = 1.0;
     if (kAlphaPath != 0u) {
         GpuMaterial m = materials[pc.material];
-        coverage = maskedCoverage(kAlphaPath, materialAlpha(m, inUv), m.emissive.w);
+        coverage = maskedCoverage(kAlphaPath, materialAlpha(m, inUvs, inColor), m.emissive.w);
     }
     outNormal = vec4(kSkipNormal != 0u ? vec2(0.0) : vec2(encodeHemisphereNormal(N, V)) / 255.0, 0.0, coverage);
 }

@@ -9,8 +9,11 @@
 // fetch and the emissive fetch off for scenes without normal-mapped or emissive materials.
 layout(constant_id = 3) const uint kNormalMaps = 1u;
 layout(constant_id = 4) const uint kEmissiveMaterials = 1u;
-// KHR_texture_transform in the scene (agaa/common/effects.h kSpecTextureTransforms).
+// KHR_texture_transform or a second UV set in the scene (agaa/common/effects.h kSpecTextureTransforms).
 layout(constant_id = 18) const uint kTextureTransforms = 1u;
+// Vertex colours in the scene (kSpecVertexColors): without them the interpolated 1 (which
+// barycentric rounding can leave a ulp off) is not multiplied in.
+layout(constant_id = 19) const uint kVertexColors = 1u;
 
 // Toksvig (2005) from a normal-map texel's pre-filtered length |Na| (engine/frame/gpu_scene.cpp
 // stores it in alpha): with the GGX alpha a = r^2 and its Blinn-Phong exponent s = 2/a^2 - 2,
@@ -40,23 +43,26 @@ vec4 sampleTexture(int index, vec2 uv, vec4 fallback) {
 
 // KHR_texture_transform: slot 0 base colour, 1 metal-roughness, 2 normal, 3 emissive. Affine in uv,
 // so the implicit derivatives (and the MIP level) follow the transformed coordinates.
-vec2 slotUv(GpuMaterial m, uint slot, vec2 uv) {
-    // Off for scenes without a transformed texture (specialisation id 18): the fetch then reads the
-    // interpolated coordinates themselves, whose derivatives llvmpipe takes differently from a
-    // computed value's (even one multiplied by 1), which moves alpha-tested edges.
-    if (kTextureTransforms == 0u) return uv;
+vec2 slotUv(GpuMaterial m, uint slot, vec4 uvs) {
+    // Off for scenes without a transformed texture or a second UV set (specialisation id 18): the
+    // fetch then reads the interpolated coordinates themselves, whose derivatives llvmpipe takes
+    // differently from a computed value's (even one multiplied by 1), which moves alpha-tested edges.
+    if (kTextureTransforms == 0u) return uvs.xy;
+    vec2 uv = m.texCoords[slot] == 1 ? uvs.zw : uvs.xy;
     vec4 M = m.uvMatrix[slot];
     vec4 o = m.uvOffset[slot / 2u];
     return mat2(M.xy, M.zw) * uv + ((slot & 1u) == 0u ? o.xy : o.zw);
 }
 
-float materialAlpha(GpuMaterial m, vec2 uv) {
-    return m.baseColorFactor.a * sampleTexture(m.textures.x, slotUv(m, 0u, uv), vec4(1.0)).a;
+// uvs: TEXCOORD_0 in xy, TEXCOORD_1 in zw; color: the vertex colour COLOR_0 (1 without), which
+// multiplies the base colour and its alpha (glTF 2.0 3.9.2).
+float materialAlpha(GpuMaterial m, vec4 uvs, vec4 color) {
+    return m.baseColorFactor.a * (kVertexColors != 0u ? color.a : 1.0) * sampleTexture(m.textures.x, slotUv(m, 0u, uvs), vec4(1.0)).a;
 }
 
-MaterialSample evaluateMaterial(GpuMaterial m, vec2 uv, vec3 geometricNormal, vec4 tangent, bool frontFacing) {
+MaterialSample evaluateMaterial(GpuMaterial m, vec4 uv, vec4 color, vec3 geometricNormal, vec4 tangent, bool frontFacing) {
     MaterialSample s;
-    vec4 base = m.baseColorFactor * sampleTexture(m.textures.x, slotUv(m, 0u, uv), vec4(1.0));
+    vec4 base = m.baseColorFactor * (kVertexColors != 0u ? color : vec4(1.0)) * sampleTexture(m.textures.x, slotUv(m, 0u, uv), vec4(1.0));
     s.albedo = base.rgb;
     s.alpha = base.a;
     vec4 mr = sampleTexture(m.textures.y, slotUv(m, 1u, uv), vec4(1.0)); // glTF: G roughness, B metallic

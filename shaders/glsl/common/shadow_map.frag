@@ -10,9 +10,10 @@ layout(push_constant) uniform Push { uint material; } pc;
 
 #include "common/material.glsl"
 
-layout(location = 0) in vec2 inUv;
+layout(location = 0) in vec4 inUvs;
+layout(location = 1) in vec4 inColor;
 
 void main() {
     GpuMaterial m = materials[pc.material];
-    if (materialAlpha(m, inUv) < m.emissive.w) discard;
+    if (materialAlpha(m, inUvs, inColor) < m.emissive.w) discard;
 }

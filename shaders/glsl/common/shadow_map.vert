@@ -13,11 +13,15 @@ layout(location = 0) in vec3 inPosition;
 layout(location = 1) in vec3 inNormal;
 layout(location = 2) in vec4 inTangent;
 layout(location = 3) in vec2 inUv;
-layout(location = 0) out vec2 outUv;
+layout(location = 4) in vec2 inUv1;
+layout(location = 5) in vec4 inColor;
+layout(location = 0) out vec4 outUvs; // xy TEXCOORD_0, zw TEXCOORD_1
+layout(location = 1) out vec4 outColor;
 
 void main() {
     uint layer = uint(gl_InstanceIndex);
     gl_Position = shadow.worldToShadow[layer] * vec4(inPosition, 1.0);
     gl_Layer = int(layer);
-    outUv = inUv;
+    outUvs = vec4(inUv, inUv1);
+    outColor = inColor;
 }

@@ -38,7 +38,8 @@ layout(push_constant) uniform Push { uint material; } pc;
 #endif
 layout(location = 0) INTERPOLATION in vec3 inNormal;
 layout(location = 1) INTERPOLATION in vec4 inTangent;
-layout(location = 2) INTERPOLATION in vec2 inUv;
+layout(location = 2) INTERPOLATION in vec4 inUvs; // xy TEXCOORD_0, zw TEXCOORD_1
+layout(location = 3) INTERPOLATION in vec4 inColor;
 
 layout(location = 0) out vec4 outNormal; // xy octahedral; w coverage alpha (alpha-to-coverage reads it)
 layout(location = 1) out vec4 outAlbedoMetal;
@@ -52,8 +53,8 @@ void main() {
     vec3 dNdy = kCurvatureRoughness != 0u ? dFdy(geometric) : vec3(0.0);
     GpuMaterial m = materials[pc.material];
     float coverage = 1.0;
-    if (kAlphaPath != 0u) coverage = maskedCoverage(kAlphaPath, materialAlpha(m, inUv), m.emissive.w);
-    MaterialSample s = evaluateMaterial(m, inUv, inNormal, inTangent, gl_FrontFacing);
+    if (kAlphaPath != 0u) coverage = maskedCoverage(kAlphaPath, materialAlpha(m, inUvs, inColor), m.emissive.w);
+    MaterialSample s = evaluateMaterial(m, inUvs, inColor, inNormal, inTangent, gl_FrontFacing);
     if (kCurvatureRoughness != 0u)
         s.roughness = curvatureRoughness(s.roughness, dNdx, dNdy, kCurvatureMaxFootprint, kCurvatureBoost);
     outNormal = vec4(encodeOctahedral(s.normal), 0.0, coverage);

@@ -54,6 +54,7 @@ struct GpuMaterial {
     // and of slots 2, 3 in uvOffset[1].
     vec4 uvMatrix[4];
     vec4 uvOffset[2];
+    ivec4 texCoords; // per slot: the UV set it reads, 0 (TEXCOORD_0) or 1 (TEXCOORD_1)
 };
 
 SHARED_END

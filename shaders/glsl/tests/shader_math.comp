@@ -158,7 +158,7 @@ void main() {
         m.emissive = k.b;
         m.params = k.c;
         m.textures = ivec4(-1, -1, int(k.op.y), -1);
-        MaterialSample s = evaluateMaterial(m, vec2(0.5), k.d.xyz, k.e, k.op.z != 0u);
+        MaterialSample s = evaluateMaterial(m, vec4(0.5, 0.5, 0.0, 0.0), vec4(1.0), k.d.xyz, k.e, k.op.z != 0u);
         r0 = vec4(s.normal, s.roughness);
         r1 = vec4(s.albedo, s.metallic);
     } else if (op == kOpDepth) {
