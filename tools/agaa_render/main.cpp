@@ -6,6 +6,7 @@
 
 #include "agaa/common/frame_renderer.h"
 #include "agaa/methods.h"
+#include "engine/frame/exposure.h"
 #include "engine/frame/sample_pattern.h"
 #include "engine/io/exr.h"
 #include "engine/io/io_error.h"
@@ -56,7 +57,8 @@ struct Options {
 
 const char* kUsage =
     "usage: agaa-render [--scene FILE | --builtin NAME] [--method NAME] [--samples N] [--aggregates C]\n"
-    "                   [--width W] [--height H] [--camera I] [--exposure auto|E] [--out PREFIX] [--debug "
+    "                   [--width W] [--height H] [--camera I] [--exposure auto|E] [--ev100 V] [--out PREFIX] "
+    "[--debug "
     "VIEW]\n"
     "                   [--lights auto|scene|fill|default|both] [--environment FILE.exr]\n"
     "                   [--stats FILE.json] [--graph FILE.dot] [--frames K] [--warmup K]\n"
@@ -80,6 +82,8 @@ const char* kUsage =
     "  --exposure auto|E  linear exposure E (1e-6..1e6), or auto: metered from the log-average luminance\n"
     "                    of a no-AA frame's covered pixels (EV100 = log2(L S / K), S = 100, K = 12.5);\n"
     "                    default: the scene's own (built-in scenes: 1), else auto\n"
+    "  --ev100 V         a physical camera's exposure value at ISO 100, -20..30 (sunny 16: 15):\n"
+    "                    exposure = 1 / (1.2 * 2^V)\n"
     "  --lights auto|scene|fill|default|both  scene: the file's lights only; fill: them and a sky at\n"
     "                    1/4 of their illuminance; default: a 100 klux sun with shadows and a procedural\n"
     "                    sky instead; both: all of them; auto (default): fill when the scene has lights,\n"
@@ -251,6 +255,10 @@ Options parse(int argc, char** argv) {
         else if (a == "--exposure") {
             o.exposure = value();
             if (*o.exposure != "auto") r.view.exposure = parseFloat(a, *o.exposure, 1e-6f, 1e6f);
+        } else if (a == "--ev100") {
+            // A physical camera's exposure value at ISO 100 (engine/frame/exposure.h).
+            o.exposure = "ev100";
+            r.view.exposure = eng::frame::exposureFromEv100(parseFloat(a, value(), -20.0f, 30.0f));
         } else if (a == "--lights") {
             o.lights = value();
             eng::scene::parseLightingMode(o.lights); // refuses anything else, naming the values
