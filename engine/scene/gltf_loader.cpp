@@ -329,7 +329,6 @@ class GltfConverter {
 
         const int normalIndex = attribute("NORMAL");
         const int tangentIndex = attribute("TANGENT");
-        const int uvIndex = attribute("TEXCOORD_0");
         auto checkCount = [&](const AccessorReader& r, const char* name) {
             if (r.count() != count) {
                 throw SceneError(m_source + ": " + r.field() + ".count: " + name + " has " +
@@ -362,44 +361,29 @@ class GltfConverter {
                     glm::vec4(linear * glm::vec3(t), (t.w < 0.0f ? -1.0f : 1.0f) * handedness);
             }
         }
-        if (uvIndex >= 0) {
+        // TEXCOORD_0 and TEXCOORD_1: float, normalized or plain integers; a non-finite value is 0.
+        auto readUvSet = [&](const char* name, glm::vec2 Vertex::*member) {
+            const int index = attribute(name);
+            if (index < 0) return;
             AccessorExpect e;
             e.type = TINYGLTF_TYPE_VEC2;
             e.allowNormalizedInts = true;
             e.allowPlainInts = true;
-            const AccessorReader uvs(m_model, m_source, uvIndex, e, ctx + ".attributes.TEXCOORD_0");
-            checkCount(uvs, "TEXCOORD_0");
-            size_t bad = 0;
-            for (size_t i = 0; i < count; ++i) {
-                const glm::vec2 uv = uvs.vec2(i);
-                if (!std::isfinite(uv.x) || !std::isfinite(uv.y)) {
-                    ++bad;
-                    continue;
-                }
-                vertices[i].uv = uv;
-            }
-            if (bad > 0) {
-                warn(uvs.field() + ": " + std::to_string(bad) + " TEXCOORD_0 values not finite; set to 0");
-            }
-        }
-        if (const int uv1Index = attribute("TEXCOORD_1"); uv1Index >= 0) {
-            AccessorExpect e;
-            e.type = TINYGLTF_TYPE_VEC2;
-            e.allowNormalizedInts = true;
-            e.allowPlainInts = true;
-            const AccessorReader uvs(m_model, m_source, uv1Index, e, ctx + ".attributes.TEXCOORD_1");
-            checkCount(uvs, "TEXCOORD_1");
+            const AccessorReader uvs(m_model, m_source, index, e, ctx + ".attributes." + name);
+            checkCount(uvs, name);
             size_t bad = 0;
             for (size_t i = 0; i < count; ++i) {
                 const glm::vec2 uv = uvs.vec2(i);
                 if (std::isfinite(uv.x) && std::isfinite(uv.y))
-                    vertices[i].uv1 = uv;
+                    vertices[i].*member = uv;
                 else
                     ++bad;
             }
             if (bad > 0)
-                warn(uvs.field() + ": " + std::to_string(bad) + " TEXCOORD_1 values not finite; set to 0");
-        }
+                warn(uvs.field() + ": " + std::to_string(bad) + " " + name + " values not finite; set to 0");
+        };
+        readUvSet("TEXCOORD_0", &Vertex::uv);
+        readUvSet("TEXCOORD_1", &Vertex::uv1);
         // COLOR_0 (glTF 2.0 3.7.2.1): VEC3 or VEC4, float or normalized unsigned byte/short, linear,
         // multiplying the base colour.
         if (const int colorIndex = attribute("COLOR_0"); colorIndex >= 0) {
@@ -457,7 +441,7 @@ class GltfConverter {
                  " zero-length or non-finite normals replaced by the face normal");
         }
         if (tangentIndex < 0) {
-            generateTangents(vertices, indices, uvIndex >= 0);
+            generateTangents(vertices, indices, attribute("TEXCOORD_0") >= 0);
         } else if (const uint32_t repaired = repairTangents(vertices); repaired > 0) {
             warn(ctx + ".attributes.TANGENT: " + std::to_string(repaired) + " unusable tangents replaced");
         }
