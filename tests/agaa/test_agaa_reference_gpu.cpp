@@ -225,4 +225,222 @@ TEST(AgaaClusteringReferenceGpu, GpuMetadataMatchesAlgorithm1InDouble) {
     agaa::test::expectNoValidationErrors(*device);
 }
 
+// ---- The AG-buffer (shared/agaa.h's documented layout and scales) in double ---------------------
+// Each field sums, over the samples routed to the aggregate, round(u scale) with u in [0, 1]: the
+// Toksvig vector's components offset-binary (x + 1) / 2, the SGGX matrix's diagonal as it is and
+// its off-diagonal + 1/2, albedo, metallic and the material's GGX alpha as they are.
+struct Field {
+    uint32_t word, shift, bits;
+    double scale;
+};
+
+struct Layout {
+    bool sggx;
+    Field normal[6]; // Toksvig x, y, z; or SGGX xx, yy, zz, xy, xz, yz
+    Field albedo[3], metallic, alpha, count;
+    uint32_t normalFields;
+};
+
+// The per-sample scales of shared/agaa.h: Toksvig x min(floor((2^26 - 1) / n), 2^23 - 1), y and z
+// min(floor((2^32 - 1) / n), 2^23 - 1), 16-bit albedo and metallic fields at 2^11 - 1; SGGX 16-bit
+// fields at floor((2^16 - 1) / n), metallic 10 bits at floor((2^10 - 1) / n); alpha 2^26 - 1.
+Layout layout(bool sggx, uint32_t n) {
+    Layout l{};
+    l.sggx = sggx;
+    l.alpha = {5, 0, 32, double((1u << 26) - 1)};
+    if (sggx) {
+        const double s16 = std::floor(65535.0 / n);
+        const Field f[6] = {{0, 0, 16, s16},  {0, 16, 16, s16}, {1, 0, 16, s16},
+                            {1, 16, 16, s16}, {2, 0, 16, s16},  {2, 16, 16, s16}};
+        std::copy(f, f + 6, l.normal);
+        l.normalFields = 6;
+        l.albedo[0] = {3, 0, 16, s16};
+        l.albedo[1] = {3, 16, 16, s16};
+        l.albedo[2] = {4, 0, 16, s16};
+        l.metallic = {4, 16, 10, std::floor(1023.0 / n)};
+        l.count = {4, 26, 6, 1.0};
+    } else {
+        const double sx = std::min(std::floor(67108863.0 / n), 8388607.0);
+        const double syz = std::min(std::floor(4294967295.0 / n), 8388607.0);
+        l.normal[0] = {0, 0, 26, sx};
+        l.normal[1] = {1, 0, 32, syz};
+        l.normal[2] = {2, 0, 32, syz};
+        l.normalFields = 3;
+        l.albedo[0] = {3, 0, 16, 2047.0};
+        l.albedo[1] = {3, 16, 16, 2047.0};
+        l.albedo[2] = {4, 0, 16, 2047.0};
+        l.metallic = {4, 16, 16, 2047.0};
+        l.count = {0, 26, 6, 1.0};
+    }
+    return l;
+}
+
+uint32_t fieldValue(const uint32_t* words, const Field& f) {
+    const uint32_t v = words[f.word] >> f.shift;
+    return f.bits == 32 ? v : v & ((1u << f.bits) - 1u);
+}
+
+// A sample's values u in [0, 1] per field (layout order: normal fields, albedo, metallic, alpha),
+// from the material inputs the fragment evaluated. DESIGN 4.3 "roughness injected as extra
+// variance": the Toksvig vector is N L with L the length whose Toksvig factor turns the sharpest
+// exponent s_max into the material's, f(L) s_max = s, f(L) = L / (L + s_max (1 - L)), s = 2/alpha^2
+// - 2 with alpha = roughness^2 in the BRDF's range; SGGX (shared/sggx.h's definition, Heitz et al.
+// 2015): the GGX lobe as S = (1 - alpha^2) N N^T + alpha^2 I.
+std::vector<double> sampleValues(bool sggx, const double N[3], double roughness, const double albedo[3],
+                                 double metallic, const shared::AgaaConstants& k) {
+    const double alpha = std::clamp(roughness * roughness, double(k.toksvig.y), double(k.toksvig.z));
+    std::vector<double> u;
+    if (sggx) {
+        const double a2 = alpha * alpha;
+        for (int i = 0; i < 3; ++i)
+            u.push_back((1.0 - a2) * N[i] * N[i] + a2);
+        u.push_back((1.0 - a2) * N[0] * N[1] + 0.5);
+        u.push_back((1.0 - a2) * N[0] * N[2] + 0.5);
+        u.push_back((1.0 - a2) * N[1] * N[2] + 0.5);
+    } else {
+        const double smax = k.toksvig.x, s = std::clamp(2.0 / (alpha * alpha) - 2.0, 0.0, smax);
+        const double L = s * smax / (smax - s + s * smax);
+        for (int i = 0; i < 3; ++i)
+            u.push_back(N[i] * L * 0.5 + 0.5);
+    }
+    for (int i = 0; i < 3; ++i)
+        u.push_back(albedo[i]);
+    u.push_back(metallic);
+    u.push_back(alpha);
+    for (double& v : u)
+        v = std::clamp(v, 0.0, 1.0);
+    return u;
+}
+
+// Issue 17: the accumulate path's AG-buffer against sums in double of each fragment's material
+// inputs, routed by the independently decoded metadata. The inputs are what the fragment's material
+// evaluation produced (recorded as float bits), so this checks the routing, the Toksvig and SGGX
+// formulas, the fixed-point encoding and the sums; the material evaluation itself is compared with
+// the per-sample G-buffer elsewhere (test_agaa_samples_gpu). Tolerance per field and sample, in the
+// field's unit domain: (1/2 + ulp_fp32(scale)/2) / scale + 8 * 2^-24 * u, i.e. round to nearest,
+// fp32's rounding of u * scale (half a unit below 2^24, 4 units for the alpha field's 2^26 - 1),
+// and 8 fp32 roundings of u in the shader's arithmetic. The sample counts must match exactly.
+TEST(AgaaAccumulationReferenceGpu, AgBufferMatchesDoubleSumsOfTheMaterialInputs) {
+    auto device = agaa::test::makeValidatedDevice();
+    struct Case {
+        const char* scene;
+        uint32_t n, c;
+        const char* ndf;
+    };
+    constexpr uint32_t kQuantized = 11, kRecordWords = 3 + kQuantized + 8; // generation.glsl AGAA_RECORD
+    const Case cases[] = {{"furball", 8, 2, "toksvig"}, {"foliage", 32, 4, "toksvig"},
+                          {"spikes", 16, 2, "toksvig"}, {"railings", 16, 3, "sggx"},
+                          {"metal", 8, 2, "sggx"},      {"furball", 32, 4, "sggx"}};
+    const uint32_t size = 64, window = 16, capacity = 400000;
+    for (const Case& k : cases) {
+        eng::scene::Scene scene = eng::scene::loadBuiltin(k.scene);
+        agaa::FrameRenderer renderer(*device, scene);
+        const uint32_t words = wordsPerPixel(k.n, k.c);
+        vk::Buffer records =
+            vk::createBuffer(*device, 8 + VkDeviceSize(capacity) * kRecordWords * 4,
+                             VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                             vk::MemoryUse::Readback, "test.records");
+        static_cast<uint32_t*>(records.mapped)[1] = capacity;
+        vk::Buffer ag =
+            vk::createBuffer(*device, VkDeviceSize(size) * size * k.c * 6 * 4,
+                             VK_BUFFER_USAGE_TRANSFER_DST_BIT, vk::MemoryUse::Readback, "test.ag");
+        vk::Buffer metadata =
+            vk::createBuffer(*device, std::max<VkDeviceSize>(4, VkDeviceSize(size) * size * words * 4),
+                             VK_BUFFER_USAGE_TRANSFER_DST_BIT, vk::MemoryUse::Readback, "test.meta");
+        agaa::RenderRequest r = agaa::test::request("agaa-accumulate", k.n, k.c, size);
+        r.settings.ndf = k.ndf;
+        auto& technique = dynamic_cast<agaa::AggregateAA&>(renderer.technique(r));
+        technique.setFragmentRecordTarget(&records);
+        r.extraPasses = [&](eng::rg::Graph& graph, agaa::Technique& tech, const agaa::FrameInputs&) {
+            auto& aggregate = dynamic_cast<agaa::AggregateAA&>(tech);
+            eng::frame::addBufferReadbackPass(graph, aggregate.resources().agBuffer, ag, "test.ag");
+            eng::frame::addBufferReadbackPass(graph, aggregate.resources().metadata, metadata,
+                                              "test.metadata");
+        };
+        renderer.render(r);
+        const shared::AgaaConstants constants = technique.constants();
+        const bool sggx = std::string(k.ndf) == "sggx";
+        ASSERT_EQ(constants.options.w, sggx ? 1u : 0u) << "the requested normal distribution ran";
+        const Layout lay = layout(sggx, k.n);
+        const uint32_t fields = lay.normalFields + 5;
+        const auto* rec = static_cast<const uint32_t*>(records.mapped);
+        const uint32_t fragments = rec[0];
+        ASSERT_LE(fragments, capacity) << "record buffer too small";
+        ASSERT_GT(fragments, window * window / 2) << k.scene << ": the window must contain fragments";
+        const auto* meta = static_cast<const uint32_t*>(metadata.mapped);
+        // Per aggregate: the sample count, each field's sum of u and of its error bound.
+        const size_t slots = size_t(size) * size * k.c;
+        std::vector<uint32_t> count(slots, 0);
+        std::vector<double> sum(slots * fields, 0.0), bound(slots * fields, 0.0);
+        for (uint32_t i = 0; i < fragments; ++i) {
+            const uint32_t* f = rec + 2 + size_t(i) * kRecordWords;
+            float in[8];
+            std::memcpy(in, f + 3 + kQuantized, sizeof(in));
+            const double N[3] = {in[0], in[1], in[2]}, albedo[3] = {in[4], in[5], in[6]};
+            const std::vector<double> u = sampleValues(sggx, N, in[3], albedo, in[7], constants);
+            const uint32_t pixel = f[0], layer = f[1], mask = f[2];
+            for (uint32_t hw = 0; hw < 4; ++hw) {
+                if (!(mask & (1u << hw))) continue;
+                const uint32_t a = decodeId(meta + size_t(pixel) * words, layer * 4 + hw, k.c);
+                ASSERT_LT(a, k.c);
+                const size_t slot = size_t(pixel) * k.c + a;
+                ++count[slot];
+                for (uint32_t j = 0; j < fields; ++j) {
+                    const Field& fd = j < lay.normalFields        ? lay.normal[j]
+                                      : j < lay.normalFields + 3  ? lay.albedo[j - lay.normalFields]
+                                      : j == lay.normalFields + 3 ? lay.metallic
+                                                                  : lay.alpha;
+                    sum[slot * fields + j] += u[j];
+                    // Per sample: round to nearest (1/2 unit), fp32's rounding of u scale (half an
+                    // ulp of the scale), and 8 fp32 roundings of u in the shader's arithmetic on the
+                    // recorded inputs (relative 2^-24 each).
+                    const double ulp = std::ldexp(1.0, std::ilogb(fd.scale) - 23);
+                    bound[slot * fields + j] += (0.5 + 0.5 * ulp) / fd.scale + 8.0 * 0x1p-24 * u[j];
+                }
+            }
+        }
+        const auto* gpu = static_cast<const uint32_t*>(ag.mapped);
+        uint32_t compared = 0, countMismatches = 0, outside = 0;
+        double worstUnits = 0.0, worstRatio = 0.0;
+        const uint32_t origin = size / 2 - window / 2;
+        for (uint32_t y = origin; y < origin + window; ++y)
+            for (uint32_t x = origin; x < origin + window; ++x)
+                for (uint32_t a = 0; a < k.c; ++a) {
+                    const size_t slot = (size_t(y) * size + x) * k.c + a;
+                    const uint32_t* w = gpu + slot * 6;
+                    countMismatches += fieldValue(w, lay.count) != count[slot];
+                    for (uint32_t j = 0; j < fields; ++j) {
+                        const Field& fd = j < lay.normalFields        ? lay.normal[j]
+                                          : j < lay.normalFields + 3  ? lay.albedo[j - lay.normalFields]
+                                          : j == lay.normalFields + 3 ? lay.metallic
+                                                                      : lay.alpha;
+                        const double dequantised = fieldValue(w, fd) / fd.scale;
+                        const double err = std::abs(dequantised - sum[slot * fields + j]);
+                        const double b = bound[slot * fields + j];
+                        ++compared;
+                        outside += err > b;
+                        if (count[slot]) worstUnits = std::max(worstUnits, err * fd.scale / count[slot]);
+                        if (b > 0.0) worstRatio = std::max(worstRatio, err / b);
+                        if (err > b && outside <= 5)
+                            ADD_FAILURE() << k.scene << " " << k.ndf << " pixel (" << x << ", " << y
+                                          << ") aggregate " << a << " field " << j << ": GPU " << dequantised
+                                          << ", double " << sum[slot * fields + j] << " (bound " << b << ")";
+                    }
+                }
+        std::printf("[ measured ] %-8s n=%2u c=%u %-7s: %u fragments, %u fields compared, worst error per "
+                    "sample %.3f "
+                    "units of the field's scale (%.3f of the bound), %u outside, %u count mismatches\n",
+                    k.scene, k.n, k.c, k.ndf, fragments, compared, worstUnits, worstRatio, outside,
+                    countMismatches);
+        EXPECT_EQ(outside, 0u) << k.scene << ": AG-buffer fields outside the fixed-point bound";
+        EXPECT_EQ(countMismatches, 0u) << k.scene << ": sample counts differ from the metadata's routing";
+        vkDeviceWaitIdle(device->device());
+        technique.setFragmentRecordTarget(nullptr);
+        vk::destroyBuffer(*device, records);
+        vk::destroyBuffer(*device, ag);
+        vk::destroyBuffer(*device, metadata);
+    }
+    agaa::test::expectNoValidationErrors(*device);
+}
+
 } // namespace
