@@ -1,4 +1,4 @@
-// AGAA's per-aggregate lighting (shaders/glsl/agaa/lighting.glsl, samples path, Toksvig) against a
+// AGAA's per-aggregate lighting (shaders/glsl/agaa/lighting.glsl; samples path, Toksvig and SGGX) against a
 // double-precision CPU shading of the same aggregates (issue 17). The lighting pass's export
 // (AggregateAA::setAggregateExportTarget) hands back what its step 1 built: each aggregate's mean
 // Toksvig vector, albedo and metallic, and each sample's view position and aggregate. From those
@@ -10,10 +10,12 @@
 // KHR_lights_punctual lights with the smooth range window (1 - (d/r)^4)^2 / d^2 of Karis 2013,
 // which the glTF sample renderers use), and resolves the pixel's linear radiance: sky fraction
 // times sky plus each aggregate's sample fraction times its radiance, times exposure.
-// A second test does the same for the accumulate path from the AG-buffer itself (no export): see
-// AccumulatePathShadingMatchesADoublePrecisionCpuShading. Both force Toksvig: the SGGX lobe
-// (eigen-decomposition, projected anisotropic GGX, dequantisation correction) has no independent
-// reference yet. The built-in scenes have no environment light (Scene::environment empty).
+// SGGX aggregates (samples path) likewise from the exported mean matrix: a converged double Jacobi
+// decomposition and anisotropic GGX (shadeSggx). A second test does the Toksvig shading for the
+// accumulate path from the AG-buffer itself (no export): AccumulatePathShadingMatchesADouble-
+// PrecisionCpuShading. Not covered: the accumulate path's SGGX (its dequantisation correction,
+// shared/sggx.h sggxDequantizedAlpha, is a heuristic with no formula in DESIGN to write a
+// reference from). The built-in scenes have no environment light (Scene::environment empty).
 
 #include "agaa/aggregate/aggregate.h"
 #include "agaa/common/frame_renderer.h"
@@ -130,6 +132,88 @@ dvec3 shadeToksvig(const dvec3& mean, const dvec3& base, double metallic, const 
     return radiance;
 }
 
+// Eigen-decomposition of a symmetric 3x3 matrix by cyclic Jacobi rotations in double, run to
+// convergence (off-diagonal below 1e-15 of the trace): eigenvalues and unit eigenvectors (columns).
+void symmetricEigen(double A[3][3], double Q[3][3]) {
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j)
+            Q[i][j] = i == j ? 1.0 : 0.0;
+    const double scale = std::abs(A[0][0]) + std::abs(A[1][1]) + std::abs(A[2][2]) + 1e-300;
+    for (int sweep = 0; sweep < 50; ++sweep) {
+        const double off = std::abs(A[0][1]) + std::abs(A[0][2]) + std::abs(A[1][2]);
+        if (off <= 1e-15 * scale) break;
+        for (int p = 0; p < 2; ++p)
+            for (int q = p + 1; q < 3; ++q) {
+                if (A[p][q] == 0.0) continue;
+                const double theta = (A[q][q] - A[p][p]) / (2.0 * A[p][q]);
+                const double t =
+                    (theta >= 0.0 ? 1.0 : -1.0) / (std::abs(theta) + std::sqrt(theta * theta + 1.0));
+                const double c = 1.0 / std::sqrt(t * t + 1.0), sn = t * c;
+                for (int k = 0; k < 3; ++k) { // A <- A J
+                    const double akp = A[k][p], akq = A[k][q];
+                    A[k][p] = c * akp - sn * akq;
+                    A[k][q] = sn * akp + c * akq;
+                }
+                for (int k = 0; k < 3; ++k) { // A <- J^T A
+                    const double apk = A[p][k], aqk = A[q][k];
+                    A[p][k] = c * apk - sn * aqk;
+                    A[q][k] = sn * apk + c * aqk;
+                }
+                for (int k = 0; k < 3; ++k) { // Q <- Q J
+                    const double qkp = Q[k][p], qkq = Q[k][q];
+                    Q[k][p] = c * qkp - sn * qkq;
+                    Q[k][q] = sn * qkp + c * qkq;
+                }
+            }
+    }
+}
+
+// One SGGX aggregate (Heitz et al. 2015) lit by every light: the mean matrix S read back as an
+// anisotropic GGX surface (shared/sggx.h's stated reading: the normal is the eigenvector of the
+// largest eigenvalue, on the viewer's side; alphas sqrt(lambda / lambda_n) along the other two,
+// the tangent the larger), shaded with anisotropic GGX (Burley 2012: D = 1 / (pi ax ay ((t.h/ax)^2
+// + (b.h/ay)^2 + (n.h)^2)^2); Heitz 2014's height-correlated visibility 0.5 / (n.l |(ax t.v, ay b.v,
+// n.v)| + n.v |(ax t.l, ay b.l, n.l)|)). eigenError: every eigenvalue moved by it (the
+// reference's sensitivity to the fp32 decomposition).
+dvec3 shadeSggx(const double S[6], const dvec3& base, double metallic, const dvec3& P,
+                const std::vector<ViewLight>& lights, double eigenError = 0.0) {
+    double A[3][3] = {{S[0], S[3], S[4]}, {S[3], S[1], S[5]}, {S[4], S[5], S[2]}}, Q[3][3];
+    symmetricEigen(A, Q);
+    const dvec3 V = glm::normalize(-P);
+    int order[3] = {0, 1, 2};
+    std::sort(order, order + 3, [&](int a, int b) { return A[a][a] > A[b][b]; });
+    auto column = [&](int i) { return dvec3(Q[0][i], Q[1][i], Q[2][i]); };
+    dvec3 N = column(order[0]), T = column(order[1]);
+    if (glm::dot(N, V) < 0.0) N = -N;
+    const dvec3 B = glm::cross(N, T);
+    const double ln = std::max(A[order[0]][order[0]] - eigenError, 1e-12);
+    const double ax =
+        std::clamp(std::sqrt(std::max(A[order[1]][order[1]] + eigenError, 0.0) / ln), kAlphaMin, kAlphaMax);
+    const double ay =
+        std::clamp(std::sqrt(std::max(A[order[2]][order[2]] + eigenError, 0.0) / ln), kAlphaMin, kAlphaMax);
+    dvec3 radiance(0.0);
+    for (const ViewLight& light : lights) {
+        dvec3 L, E;
+        if (!incidence(light, P, L, E)) continue;
+        const double NoL = glm::dot(N, L);
+        if (NoL <= 0.0) continue;
+        const double NoV = std::max(glm::dot(N, V), 1e-4), NoLc = std::max(NoL, 1e-4);
+        const dvec3 H = glm::normalize(V + L);
+        const double NoH = std::clamp(glm::dot(N, H), 0.0, 1.0), VoH = std::clamp(glm::dot(V, H), 0.0, 1.0);
+        const double th = glm::dot(T, H) / ax, bh = glm::dot(B, H) / ay;
+        const double q = th * th + bh * bh + NoH * NoH;
+        const double D = 1.0 / (kPi * ax * ay * q * q);
+        const double gv = NoLc * glm::length(dvec3(ax * glm::dot(T, V), ay * glm::dot(B, V), NoV));
+        const double gl = NoV * glm::length(dvec3(ax * glm::dot(T, L), ay * glm::dot(B, L), NoLc));
+        const double Vis = 0.5 / (gv + gl);
+        const dvec3 f0 = glm::mix(dvec3(0.04), base, metallic);
+        const dvec3 F = f0 + (dvec3(1.0) - f0) * std::pow(1.0 - VoH, 5.0);
+        const dvec3 diffuse = (dvec3(1.0) - F) * (1.0 - metallic) * base / kPi;
+        radiance += (diffuse + F * (D * Vis)) * NoL * E;
+    }
+    return radiance;
+}
+
 std::vector<float> renderExport(vk::Device& device, agaa::FrameRenderer& renderer,
                                 const agaa::RenderRequest& r, agaa::RenderResult& result,
                                 shared::AgaaConstants& constants) {
@@ -155,8 +239,11 @@ TEST(AgaaLightingReference, AggregateShadingMatchesADoublePrecisionCpuShading) {
     struct Case {
         const char* scene;
         uint32_t n, c;
+        const char* ndf = "toksvig";
     };
-    const Case cases[] = {{"furball", 8, 2}, {"railings", 4, 4}, {"foliage", 16, 2}, {"metal", 8, 3}};
+    const Case cases[] = {{"furball", 8, 2},         {"railings", 4, 4},       {"foliage", 16, 2},
+                          {"metal", 8, 3},           {"metal", 8, 2, "sggx"},  {"railings", 16, 3, "sggx"},
+                          {"furball", 8, 4, "sggx"}, {"spikes", 32, 2, "sggx"}};
     const uint32_t size = 64, pixels = size * size;
     for (const Case& k : cases) {
         eng::scene::Scene scene = eng::scene::loadBuiltin(k.scene);
@@ -164,7 +251,8 @@ TEST(AgaaLightingReference, AggregateShadingMatchesADoublePrecisionCpuShading) {
             l.castsShadows = false; // the export variant has no shadow maps
         agaa::FrameRenderer renderer(*device, scene);
         agaa::RenderRequest r = agaa::test::request("agaa-samples", k.n, k.c, size);
-        r.settings.ndf = "toksvig";
+        r.settings.ndf = k.ndf;
+        const bool sggx = std::string(k.ndf) == "sggx";
         agaa::RenderResult result;
         shared::AgaaConstants constants{};
         const std::vector<float> e = renderExport(*device, renderer, r, result, constants);
@@ -172,7 +260,7 @@ TEST(AgaaLightingReference, AggregateShadingMatchesADoublePrecisionCpuShading) {
         const std::vector<ViewLight> lights = viewLights(scene, scene.cameras[0].view);
         const dvec3 sky = dvec3(r.view.skyRadiance) * double(r.view.exposure);
         std::vector<double> errors;
-        double worst = 0.0;
+        double worst = 0.0, rawWorst = 0.0;
         uint32_t worstPixel = 0, lit = 0;
         for (uint32_t p = 0; p < pixels; ++p) {
             dvec3 positionSum[4] = {};
@@ -188,20 +276,33 @@ TEST(AgaaLightingReference, AggregateShadingMatchesADoublePrecisionCpuShading) {
                 positionSum[a] += dvec3(rec[8], rec[9], rec[10]);
                 ++count[a];
             }
-            dvec3 hdr = sky * (double(skySamples) / k.n);
+            dvec3 hdr = sky * (double(skySamples) / k.n), allowance(0.0);
             for (uint32_t a = 0; a < k.c; ++a) {
                 if (count[a] == 0) continue;
                 const float* rec = &e[(size_t(pixels) * k.n + size_t(p) * k.c + a) * kRecordFloats];
-                const dvec3 mean(rec[0], rec[1], rec[2]);
                 const dvec3 base(rec[6], rec[7], rec[8]);
                 const double metallic = rec[9];
                 const dvec3 P = positionSum[a] / double(count[a]);
-                const dvec3 radiance = shadeToksvig(mean, base, metallic, P, lights, smax);
+                const double weight = double(r.view.exposure) * double(count[a]) / k.n;
+                dvec3 radiance;
+                if (sggx) {
+                    const double S[6] = {rec[0], rec[1], rec[2], rec[3], rec[4], rec[5]};
+                    radiance = shadeSggx(S, base, metallic, P, lights);
+                    // fp32 Jacobi sweeps: eigenvalues within a few ulps of the trace (>= 1 - quantisation).
+                    for (double eps : {-4.0 * 0x1p-24, 4.0 * 0x1p-24})
+                        allowance = glm::max(
+                            allowance,
+                            glm::abs(shadeSggx(S, base, metallic, P, lights, eps) - radiance) * weight);
+                } else {
+                    radiance = shadeToksvig(dvec3(rec[0], rec[1], rec[2]), base, metallic, P, lights, smax);
+                }
                 hdr += glm::min(radiance * double(r.view.exposure), dvec3(6.0e4)) * (double(count[a]) / k.n);
             }
             for (int ch = 0; ch < 3; ++ch) {
                 const double gpu = result.hdr.rgba[size_t(p) * 4 + ch];
-                const double err = std::abs(gpu - hdr[ch]) / std::max(hdr[ch], 1e-3);
+                rawWorst = std::max(rawWorst, std::abs(gpu - hdr[ch]) / std::max(hdr[ch], 1e-3));
+                const double err =
+                    std::max(std::abs(gpu - hdr[ch]) - allowance[ch], 0.0) / std::max(hdr[ch], 1e-3);
                 errors.push_back(err);
                 if (err > worst) {
                     worst = err;
@@ -213,17 +314,21 @@ TEST(AgaaLightingReference, AggregateShadingMatchesADoublePrecisionCpuShading) {
         std::sort(errors.begin(), errors.end());
         const double p99 = errors[errors.size() * 99 / 100], p999 = errors[errors.size() * 999 / 1000];
         std::printf(
-            "[ measured ] %s n=%u c=%u: %u lit pixels; relative error of the linear radiance: median %.2e, "
-            "p99 %.2e, p99.9 %.2e, max %.2e (pixel %u, %u)\n",
-            k.scene, k.n, k.c, lit, errors[errors.size() / 2], p99, p999, worst, worstPixel % size,
-            worstPixel / size);
+            "[ measured ] %s n=%u c=%u %s: %u lit pixels; relative error of the linear radiance: median "
+            "%.2e, "
+            "p99 %.2e, p99.9 %.2e, max %.2e (pixel %u, %u); without the SGGX eigenvalue allowance max %.2e\n",
+            k.scene, k.n, k.c, k.ndf, lit, errors[errors.size() / 2], p99, p999, worst, worstPixel % size,
+            worstPixel / size, rawWorst);
         EXPECT_GT(lit, pixels / 4) << k.scene << ": the comparison needs lit pixels";
         // fp32 against double over 17 lights: a few ulps (1e-7) typically; glossy metals amplify
         // the rounding of N.H through GGX's narrow peak (measured: p99 2.5e-5, max 2.6e-4 on
         // metal; p99 <= 2.8e-6, max <= 2.6e-5 elsewhere). Bounds: 4x the worst measured. A 1 %
         // change of the BRDF or a different range window fails them by two orders of magnitude.
-        EXPECT_LE(p99, 1e-4) << k.scene;
-        EXPECT_LE(worst, 1e-3) << k.scene;
+        // SGGX (measured): p99 <= 7.8e-6, max 2.1e-4 beyond an allowance for the fp32 Jacobi
+        // sweeps (every eigenvalue moved by 4 ulps of the trace; spikes' near-mirror lobes, max 1.7e-2
+        // without it); a 1 % change of the lobe's alphas fails p99 by 50x or more.
+        EXPECT_LE(p99, 1e-4) << k.scene << " " << k.ndf;
+        EXPECT_LE(worst, 1e-3) << k.scene << " " << k.ndf;
     }
     agaa::test::expectNoValidationErrors(*device);
 }
