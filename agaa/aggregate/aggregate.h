@@ -55,7 +55,9 @@ class AggregateAA final : public Technique {
     VkFormat depthFormat() const { return m_depthFormat; }
 
     // Test support: the generation pass records the fragments of the central 16x16 pixels
-    // (12 words each after an 8-byte header {count, capacity}) into `host`, which must be a
+    // (22 words each after an 8-byte header {count, capacity}: pixel, layer, mask, the 11 quantised
+    // fields, then the material inputs as float bits: normal xyz, roughness, albedo rgb, metallic;
+    // shaders/glsl/agaa/generation.glsl AGAA_RECORD) into `host`, which must be a
     // Readback buffer whose second word the caller sets to the record capacity. Set before
     // the first addPasses() (it selects the generation pipeline variant); nullptr turns it off.
     void setFragmentRecordTarget(const eng::vk::Buffer* host) { m_recordTarget = host; }

@@ -138,8 +138,8 @@ TEST(AgaaGpu, AccumulationMatchesACpuReplayOfTheSameFragments) {
         const char* scene;
         uint32_t n, c;
     };
-    // pixel, layer, mask and the quantised fields (generation.glsl kRecordWords)
-    constexpr uint32_t kRecordWords = 3 + shared::kQuantizedFields;
+    // pixel, layer, mask, the quantised fields, the 8 material inputs (generation.glsl kRecordWords)
+    constexpr uint32_t kRecordWords = 3 + shared::kQuantizedFields + 8;
     // furball and foliage accumulate Toksvig vectors, railings (glossy metal paint) SGGX matrices.
     for (const Case& k : {Case{"furball", 8, 2}, Case{"railings", 16, 3}, Case{"foliage", 32, 4}}) {
         eng::scene::Scene scene = eng::scene::loadBuiltin(k.scene);

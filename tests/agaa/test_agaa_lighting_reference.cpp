@@ -1,4 +1,4 @@
-// AGAA's per-aggregate lighting (shaders/glsl/agaa/lighting.glsl, samples path, Toksvig) against a
+// AGAA's per-aggregate lighting (shaders/glsl/agaa/lighting.glsl; samples path, Toksvig and SGGX) against a
 // double-precision CPU shading of the same aggregates (issue 17). The lighting pass's export
 // (AggregateAA::setAggregateExportTarget) hands back what its step 1 built: each aggregate's mean
 // Toksvig vector, albedo and metallic, and each sample's view position and aggregate. From those
@@ -10,10 +10,18 @@
 // KHR_lights_punctual lights with the smooth range window (1 - (d/r)^4)^2 / d^2 of Karis 2013,
 // which the glTF sample renderers use), and resolves the pixel's linear radiance: sky fraction
 // times sky plus each aggregate's sample fraction times its radiance, times exposure.
+// SGGX aggregates (samples path) likewise from the exported mean matrix: a converged double Jacobi
+// decomposition and anisotropic GGX (shadeSggx). A second test does the Toksvig shading for the
+// accumulate path from the AG-buffer itself (no export): AccumulatePathShadingMatchesADouble-
+// PrecisionCpuShading. Not covered: the accumulate path's SGGX (its dequantisation correction,
+// shared/sggx.h sggxDequantizedAlpha, is a heuristic with no formula in DESIGN to write a
+// reference from). The built-in scenes have no environment light (Scene::environment empty).
 
 #include "agaa/aggregate/aggregate.h"
 #include "agaa/common/frame_renderer.h"
+#include "agaa_layout_reference.h"
 #include "agaa_test_support.h"
+#include "engine/frame/readback.h"
 #include "engine/scene/scenegen.h"
 #include "gpu_test_support.h"
 
@@ -105,6 +113,107 @@ dvec3 brdfTimesCosine(const dvec3& N, const dvec3& V, const dvec3& L, double alp
     return (diffuse + F * (D * Vis)) * NoL;
 }
 
+// One aggregate lit by every light: the Toksvig normal and filtered alpha from its mean Toksvig
+// vector (DESIGN 4.4), the glTF BRDF at its mean position P (view space).
+// lengthScale: |N| scaled by it (the reference's sensitivity to the float rounding of |N|).
+dvec3 shadeToksvig(const dvec3& mean, const dvec3& base, double metallic, const dvec3& P,
+                   const std::vector<ViewLight>& lights, double smax, double lengthScale = 1.0) {
+    const dvec3 V = glm::normalize(-P);
+    const double len = glm::length(mean) * lengthScale;
+    const dvec3 N = len > 1e-6 ? mean / len : V;
+    const double l = std::clamp(len, 0.0, 1.0);
+    const double f = l / (l + smax * (1.0 - l));
+    const double alpha = std::clamp(std::sqrt(2.0 / (f * smax + 2.0)), kAlphaMin, kAlphaMax);
+    dvec3 radiance(0.0);
+    for (const ViewLight& light : lights) {
+        dvec3 L, E;
+        if (incidence(light, P, L, E)) radiance += brdfTimesCosine(N, V, L, alpha, base, metallic) * E;
+    }
+    return radiance;
+}
+
+// Eigen-decomposition of a symmetric 3x3 matrix by cyclic Jacobi rotations in double, run to
+// convergence (off-diagonal below 1e-15 of the trace): eigenvalues and unit eigenvectors (columns).
+void symmetricEigen(double A[3][3], double Q[3][3]) {
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j)
+            Q[i][j] = i == j ? 1.0 : 0.0;
+    const double scale = std::abs(A[0][0]) + std::abs(A[1][1]) + std::abs(A[2][2]) + 1e-300;
+    for (int sweep = 0; sweep < 50; ++sweep) {
+        const double off = std::abs(A[0][1]) + std::abs(A[0][2]) + std::abs(A[1][2]);
+        if (off <= 1e-15 * scale) break;
+        for (int p = 0; p < 2; ++p)
+            for (int q = p + 1; q < 3; ++q) {
+                if (A[p][q] == 0.0) continue;
+                const double theta = (A[q][q] - A[p][p]) / (2.0 * A[p][q]);
+                const double t =
+                    (theta >= 0.0 ? 1.0 : -1.0) / (std::abs(theta) + std::sqrt(theta * theta + 1.0));
+                const double c = 1.0 / std::sqrt(t * t + 1.0), sn = t * c;
+                for (int k = 0; k < 3; ++k) { // A <- A J
+                    const double akp = A[k][p], akq = A[k][q];
+                    A[k][p] = c * akp - sn * akq;
+                    A[k][q] = sn * akp + c * akq;
+                }
+                for (int k = 0; k < 3; ++k) { // A <- J^T A
+                    const double apk = A[p][k], aqk = A[q][k];
+                    A[p][k] = c * apk - sn * aqk;
+                    A[q][k] = sn * apk + c * aqk;
+                }
+                for (int k = 0; k < 3; ++k) { // Q <- Q J
+                    const double qkp = Q[k][p], qkq = Q[k][q];
+                    Q[k][p] = c * qkp - sn * qkq;
+                    Q[k][q] = sn * qkp + c * qkq;
+                }
+            }
+    }
+}
+
+// One SGGX aggregate (Heitz et al. 2015) lit by every light: the mean matrix S read back as an
+// anisotropic GGX surface (shared/sggx.h's stated reading: the normal is the eigenvector of the
+// largest eigenvalue, on the viewer's side; alphas sqrt(lambda / lambda_n) along the other two,
+// the tangent the larger), shaded with anisotropic GGX (Burley 2012: D = 1 / (pi ax ay ((t.h/ax)^2
+// + (b.h/ay)^2 + (n.h)^2)^2); Heitz 2014's height-correlated visibility 0.5 / (n.l |(ax t.v, ay b.v,
+// n.v)| + n.v |(ax t.l, ay b.l, n.l)|)). eigenError: every eigenvalue moved by it (the
+// reference's sensitivity to the fp32 decomposition).
+dvec3 shadeSggx(const double S[6], const dvec3& base, double metallic, const dvec3& P,
+                const std::vector<ViewLight>& lights, double eigenError = 0.0) {
+    double A[3][3] = {{S[0], S[3], S[4]}, {S[3], S[1], S[5]}, {S[4], S[5], S[2]}}, Q[3][3];
+    symmetricEigen(A, Q);
+    const dvec3 V = glm::normalize(-P);
+    int order[3] = {0, 1, 2};
+    std::sort(order, order + 3, [&](int a, int b) { return A[a][a] > A[b][b]; });
+    auto column = [&](int i) { return dvec3(Q[0][i], Q[1][i], Q[2][i]); };
+    dvec3 N = column(order[0]), T = column(order[1]);
+    if (glm::dot(N, V) < 0.0) N = -N;
+    const dvec3 B = glm::cross(N, T);
+    const double ln = std::max(A[order[0]][order[0]] - eigenError, 1e-12);
+    const double ax =
+        std::clamp(std::sqrt(std::max(A[order[1]][order[1]] + eigenError, 0.0) / ln), kAlphaMin, kAlphaMax);
+    const double ay =
+        std::clamp(std::sqrt(std::max(A[order[2]][order[2]] + eigenError, 0.0) / ln), kAlphaMin, kAlphaMax);
+    dvec3 radiance(0.0);
+    for (const ViewLight& light : lights) {
+        dvec3 L, E;
+        if (!incidence(light, P, L, E)) continue;
+        const double NoL = glm::dot(N, L);
+        if (NoL <= 0.0) continue;
+        const double NoV = std::max(glm::dot(N, V), 1e-4), NoLc = std::max(NoL, 1e-4);
+        const dvec3 H = glm::normalize(V + L);
+        const double NoH = std::clamp(glm::dot(N, H), 0.0, 1.0), VoH = std::clamp(glm::dot(V, H), 0.0, 1.0);
+        const double th = glm::dot(T, H) / ax, bh = glm::dot(B, H) / ay;
+        const double q = th * th + bh * bh + NoH * NoH;
+        const double D = 1.0 / (kPi * ax * ay * q * q);
+        const double gv = NoLc * glm::length(dvec3(ax * glm::dot(T, V), ay * glm::dot(B, V), NoV));
+        const double gl = NoV * glm::length(dvec3(ax * glm::dot(T, L), ay * glm::dot(B, L), NoLc));
+        const double Vis = 0.5 / (gv + gl);
+        const dvec3 f0 = glm::mix(dvec3(0.04), base, metallic);
+        const dvec3 F = f0 + (dvec3(1.0) - f0) * std::pow(1.0 - VoH, 5.0);
+        const dvec3 diffuse = (dvec3(1.0) - F) * (1.0 - metallic) * base / kPi;
+        radiance += (diffuse + F * (D * Vis)) * NoL * E;
+    }
+    return radiance;
+}
+
 std::vector<float> renderExport(vk::Device& device, agaa::FrameRenderer& renderer,
                                 const agaa::RenderRequest& r, agaa::RenderResult& result,
                                 shared::AgaaConstants& constants) {
@@ -130,8 +239,11 @@ TEST(AgaaLightingReference, AggregateShadingMatchesADoublePrecisionCpuShading) {
     struct Case {
         const char* scene;
         uint32_t n, c;
+        const char* ndf = "toksvig";
     };
-    const Case cases[] = {{"furball", 8, 2}, {"railings", 4, 4}, {"foliage", 16, 2}, {"metal", 8, 3}};
+    const Case cases[] = {{"furball", 8, 2},         {"railings", 4, 4},       {"foliage", 16, 2},
+                          {"metal", 8, 3},           {"metal", 8, 2, "sggx"},  {"railings", 16, 3, "sggx"},
+                          {"furball", 8, 4, "sggx"}, {"spikes", 32, 2, "sggx"}};
     const uint32_t size = 64, pixels = size * size;
     for (const Case& k : cases) {
         eng::scene::Scene scene = eng::scene::loadBuiltin(k.scene);
@@ -139,7 +251,8 @@ TEST(AgaaLightingReference, AggregateShadingMatchesADoublePrecisionCpuShading) {
             l.castsShadows = false; // the export variant has no shadow maps
         agaa::FrameRenderer renderer(*device, scene);
         agaa::RenderRequest r = agaa::test::request("agaa-samples", k.n, k.c, size);
-        r.settings.ndf = "toksvig";
+        r.settings.ndf = k.ndf;
+        const bool sggx = std::string(k.ndf) == "sggx";
         agaa::RenderResult result;
         shared::AgaaConstants constants{};
         const std::vector<float> e = renderExport(*device, renderer, r, result, constants);
@@ -147,7 +260,7 @@ TEST(AgaaLightingReference, AggregateShadingMatchesADoublePrecisionCpuShading) {
         const std::vector<ViewLight> lights = viewLights(scene, scene.cameras[0].view);
         const dvec3 sky = dvec3(r.view.skyRadiance) * double(r.view.exposure);
         std::vector<double> errors;
-        double worst = 0.0;
+        double worst = 0.0, rawWorst = 0.0;
         uint32_t worstPixel = 0, lit = 0;
         for (uint32_t p = 0; p < pixels; ++p) {
             dvec3 positionSum[4] = {};
@@ -163,31 +276,33 @@ TEST(AgaaLightingReference, AggregateShadingMatchesADoublePrecisionCpuShading) {
                 positionSum[a] += dvec3(rec[8], rec[9], rec[10]);
                 ++count[a];
             }
-            dvec3 hdr = sky * (double(skySamples) / k.n);
+            dvec3 hdr = sky * (double(skySamples) / k.n), allowance(0.0);
             for (uint32_t a = 0; a < k.c; ++a) {
                 if (count[a] == 0) continue;
                 const float* rec = &e[(size_t(pixels) * k.n + size_t(p) * k.c + a) * kRecordFloats];
-                const dvec3 mean(rec[0], rec[1], rec[2]);
                 const dvec3 base(rec[6], rec[7], rec[8]);
                 const double metallic = rec[9];
                 const dvec3 P = positionSum[a] / double(count[a]);
-                const dvec3 V = glm::normalize(-P);
-                const double len = glm::length(mean);
-                const dvec3 N = len > 1e-6 ? mean / len : V;
-                const double l = std::clamp(len, 0.0, 1.0);
-                const double f = l / (l + smax * (1.0 - l));
-                const double alpha = std::clamp(std::sqrt(2.0 / (f * smax + 2.0)), kAlphaMin, kAlphaMax);
-                dvec3 radiance(0.0);
-                for (const ViewLight& light : lights) {
-                    dvec3 L, E;
-                    if (incidence(light, P, L, E))
-                        radiance += brdfTimesCosine(N, V, L, alpha, base, metallic) * E;
+                const double weight = double(r.view.exposure) * double(count[a]) / k.n;
+                dvec3 radiance;
+                if (sggx) {
+                    const double S[6] = {rec[0], rec[1], rec[2], rec[3], rec[4], rec[5]};
+                    radiance = shadeSggx(S, base, metallic, P, lights);
+                    // fp32 Jacobi sweeps: eigenvalues within a few ulps of the trace (>= 1 - quantisation).
+                    for (double eps : {-4.0 * 0x1p-24, 4.0 * 0x1p-24})
+                        allowance = glm::max(
+                            allowance,
+                            glm::abs(shadeSggx(S, base, metallic, P, lights, eps) - radiance) * weight);
+                } else {
+                    radiance = shadeToksvig(dvec3(rec[0], rec[1], rec[2]), base, metallic, P, lights, smax);
                 }
                 hdr += glm::min(radiance * double(r.view.exposure), dvec3(6.0e4)) * (double(count[a]) / k.n);
             }
             for (int ch = 0; ch < 3; ++ch) {
                 const double gpu = result.hdr.rgba[size_t(p) * 4 + ch];
-                const double err = std::abs(gpu - hdr[ch]) / std::max(hdr[ch], 1e-3);
+                rawWorst = std::max(rawWorst, std::abs(gpu - hdr[ch]) / std::max(hdr[ch], 1e-3));
+                const double err =
+                    std::max(std::abs(gpu - hdr[ch]) - allowance[ch], 0.0) / std::max(hdr[ch], 1e-3);
                 errors.push_back(err);
                 if (err > worst) {
                     worst = err;
@@ -199,17 +314,168 @@ TEST(AgaaLightingReference, AggregateShadingMatchesADoublePrecisionCpuShading) {
         std::sort(errors.begin(), errors.end());
         const double p99 = errors[errors.size() * 99 / 100], p999 = errors[errors.size() * 999 / 1000];
         std::printf(
-            "[ measured ] %s n=%u c=%u: %u lit pixels; relative error of the linear radiance: median %.2e, "
-            "p99 %.2e, p99.9 %.2e, max %.2e (pixel %u, %u)\n",
-            k.scene, k.n, k.c, lit, errors[errors.size() / 2], p99, p999, worst, worstPixel % size,
-            worstPixel / size);
+            "[ measured ] %s n=%u c=%u %s: %u lit pixels; relative error of the linear radiance: median "
+            "%.2e, "
+            "p99 %.2e, p99.9 %.2e, max %.2e (pixel %u, %u); without the SGGX eigenvalue allowance max %.2e\n",
+            k.scene, k.n, k.c, k.ndf, lit, errors[errors.size() / 2], p99, p999, worst, worstPixel % size,
+            worstPixel / size, rawWorst);
         EXPECT_GT(lit, pixels / 4) << k.scene << ": the comparison needs lit pixels";
         // fp32 against double over 17 lights: a few ulps (1e-7) typically; glossy metals amplify
         // the rounding of N.H through GGX's narrow peak (measured: p99 2.5e-5, max 2.6e-4 on
         // metal; p99 <= 2.8e-6, max <= 2.6e-5 elsewhere). Bounds: 4x the worst measured. A 1 %
         // change of the BRDF or a different range window fails them by two orders of magnitude.
+        // SGGX (measured): p99 <= 7.8e-6, max 2.1e-4 beyond an allowance for the fp32 Jacobi
+        // sweeps (every eigenvalue moved by 4 ulps of the trace; spikes' near-mirror lobes, max 1.7e-2
+        // without it); a 1 % change of the lobe's alphas fails p99 by 50x or more.
+        EXPECT_LE(p99, 1e-4) << k.scene << " " << k.ndf;
+        EXPECT_LE(worst, 1e-3) << k.scene << " " << k.ndf;
+    }
+    agaa::test::expectNoValidationErrors(*device);
+}
+
+// The accumulate path (Toksvig), with no export and no production hook beyond the readbacks: the
+// CPU reads back what the lighting pass reads (the visibility depth per sample, the metadata, the
+// aggregate counts, the AG-buffer words), decodes them with the layouts of agaa_layout_reference.h,
+// rebuilds each aggregate's mean position in double from the depths and the sample pattern, and its
+// means from the AG-buffer: the fixed-point sums divided by count and scale, rounded to float once
+// as the fp32 shader necessarily reads them (near mirrors the Toksvig length's rounding decides the
+// filtered alpha: 1 - |N| ~ 1e-6 against float's 6e-8), everything after that in double. An
+// aggregate the metadata assigns samples to but no fragment reached (count 0) resolves black.
+TEST(AgaaLightingReference, AccumulatePathShadingMatchesADoublePrecisionCpuShading) {
+    using namespace agaa::test::layout;
+    auto device = agaa::test::makeValidatedDevice();
+    struct Case {
+        const char* scene;
+        uint32_t n, c;
+    };
+    const Case cases[] = {
+        {"furball", 8, 2}, {"railings", 4, 4}, {"foliage", 16, 2}, {"metal", 8, 3}, {"spikes", 32, 4}};
+    const uint32_t size = 64, pixels = size * size;
+    for (const Case& k : cases) {
+        eng::scene::Scene scene = eng::scene::loadBuiltin(k.scene);
+        ASSERT_TRUE(scene.environment.empty()) << "the reference lights punctual lights only";
+        for (eng::scene::Light& l : scene.lights)
+            l.castsShadows = false; // the reference has no shadow maps
+        agaa::FrameRenderer renderer(*device, scene);
+        agaa::RenderRequest r = agaa::test::request("agaa-accumulate", k.n, k.c, size);
+        r.settings.ndf = "toksvig";
+        const uint32_t words = wordsPerPixel(k.n, k.c);
+        vk::Buffer samples =
+            vk::createBuffer(*device, VkDeviceSize(pixels) * k.n * 8, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+                             vk::MemoryUse::Readback, "test.samples");
+        vk::Buffer metadata =
+            vk::createBuffer(*device, std::max<VkDeviceSize>(4, VkDeviceSize(pixels) * words * 4),
+                             VK_BUFFER_USAGE_TRANSFER_DST_BIT, vk::MemoryUse::Readback, "test.meta");
+        vk::Buffer counts =
+            eng::frame::createReadbackBuffer(*device, size, size, VK_FORMAT_R8_UINT, "test.counts");
+        vk::Buffer ag =
+            vk::createBuffer(*device, VkDeviceSize(pixels) * k.c * 6 * 4, VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                             vk::MemoryUse::Readback, "test.ag");
+        shared::FrameConstants frame{};
+        shared::AgaaConstants constants{};
+        r.extraPasses = [&](eng::rg::Graph& graph, agaa::Technique& tech, const agaa::FrameInputs& in) {
+            auto& aggregate = dynamic_cast<agaa::AggregateAA&>(tech);
+            aggregate.addSampleReadback(graph, in, samples);
+            eng::frame::addBufferReadbackPass(graph, aggregate.resources().metadata, metadata,
+                                              "test.metadata");
+            eng::frame::addReadbackPass(graph, aggregate.resources().aggregateCount, counts, "test.counts");
+            eng::frame::addBufferReadbackPass(graph, aggregate.resources().agBuffer, ag, "test.ag");
+            frame = *in.constants;
+            constants = aggregate.constants();
+        };
+        const agaa::RenderResult result = renderer.render(r);
+        ASSERT_EQ(constants.options.w, 0u) << "Toksvig ran";
+        ASSERT_EQ(constants.options.y, 0u) << "the aggregate's position is the mean of its samples'";
+        const Layout lay = agBufferLayout(false, k.n);
+        const double smax = constants.toksvig.x;
+        const std::vector<ViewLight> lights = viewLights(scene, scene.cameras[0].view);
+        const dvec3 sky = dvec3(r.view.skyRadiance) * double(r.view.exposure);
+        const double znear = frame.depthParams.x, zfar = frame.depthParams.y;
+        const auto* raw = static_cast<const uint32_t*>(samples.mapped);
+        const auto* meta = static_cast<const uint32_t*>(metadata.mapped);
+        const auto* aggregates = static_cast<const uint8_t*>(counts.mapped);
+        const auto* agWords = static_cast<const uint32_t*>(ag.mapped);
+        std::vector<double> errors;
+        double worst = 0.0;
+        double rawWorst = 0.0;
+        uint32_t worstPixel = 0, lit = 0, unreached = 0;
+        for (uint32_t p = 0; p < pixels; ++p) {
+            dvec3 positionSum[4] = {};
+            uint32_t count[4] = {}, skySamples = 0;
+            for (uint32_t s = 0; s < k.n; ++s) {
+                float d;
+                std::memcpy(&d, &raw[(size_t(p) * k.n + s) * 2], 4);
+                if (d <= 0.0f) { // reversed Z: the cleared far plane is sky
+                    ++skySamples;
+                    continue;
+                }
+                const double t = znear * zfar / (double(d) * (zfar - znear) + znear);
+                const double ndcX = (p % size + double(frame.samplePositions[s].x)) * (2.0 / size) - 1.0;
+                const double ndcY = (p / size + double(frame.samplePositions[s].y)) * (2.0 / size) - 1.0;
+                const uint32_t a = decodeId(meta + size_t(p) * words, s, k.c);
+                ASSERT_LT(a, k.c);
+                positionSum[a] += dvec3(ndcX * t / frame.projParams.x, ndcY * t / frame.projParams.y, -t);
+                ++count[a];
+            }
+            dvec3 hdr = sky * (double(skySamples) / k.n), sensitivity(0.0);
+            for (uint32_t a = 0; a < k.c; ++a) {
+                if (count[a] == 0) continue;
+                const uint32_t* w = agWords + (size_t(p) * k.c + a) * 6;
+                const uint32_t received = fieldValue(w, lay.count);
+                if (a >= aggregates[p] || received == 0) {
+                    ++unreached; // no fragment reached it: its samples resolve black
+                    continue;
+                }
+                auto mean = [&](const Field& f) {
+                    return float(fieldValue(w, f)) / (float(received) * float(f.scale));
+                };
+                const dvec3 toksvig(2.0 * mean(lay.normal[0]) - 1.0, 2.0 * mean(lay.normal[1]) - 1.0,
+                                    2.0 * mean(lay.normal[2]) - 1.0);
+                const dvec3 base(mean(lay.albedo[0]), mean(lay.albedo[1]), mean(lay.albedo[2]));
+                const dvec3 P = positionSum[a] / double(count[a]);
+                const double metallic = mean(lay.metallic);
+                const dvec3 radiance = shadeToksvig(toksvig, base, metallic, P, lights, smax);
+                const double weight = double(r.view.exposure) * double(count[a]) / k.n;
+                hdr += glm::min(radiance * double(r.view.exposure), dvec3(6.0e4)) * (double(count[a]) / k.n);
+                // |N| within 2 fp32 ulps either way: what the shader's float length() may return.
+                for (double scale : {1.0 - 0x1p-23, 1.0 + 0x1p-23})
+                    sensitivity = glm::max(
+                        sensitivity,
+                        glm::abs(shadeToksvig(toksvig, base, metallic, P, lights, smax, scale) - radiance) *
+                            weight);
+            }
+            for (int ch = 0; ch < 3; ++ch) {
+                const double gpu = result.hdr.rgba[size_t(p) * 4 + ch];
+                const double raw = std::abs(gpu - hdr[ch]) / std::max(hdr[ch], 1e-3);
+                rawWorst = std::max(rawWorst, raw);
+                const double err =
+                    std::max(std::abs(gpu - hdr[ch]) - sensitivity[ch], 0.0) / std::max(hdr[ch], 1e-3);
+                errors.push_back(err);
+                if (err > worst) {
+                    worst = err;
+                    worstPixel = p;
+                }
+            }
+            lit += hdr != sky ? 1 : 0;
+        }
+        std::sort(errors.begin(), errors.end());
+        const double p99 = errors[errors.size() * 99 / 100], p999 = errors[errors.size() * 999 / 1000];
+        std::printf(
+            "[ measured ] accumulate %s n=%u c=%u: %u lit pixels, %u unreached aggregates; relative error of "
+            "the linear radiance beyond the |N| rounding: median %.2e, p99 %.2e, p99.9 %.2e, max %.2e (pixel "
+            "%u, %u); without that allowance max %.2e\n",
+            k.scene, k.n, k.c, lit, unreached, errors[errors.size() / 2], p99, p999, worst, worstPixel % size,
+            worstPixel / size, rawWorst);
+        EXPECT_GT(lit, pixels / 4) << k.scene << ": the comparison needs lit pixels";
+        // The samples path's bounds (above). Near mirrors the shader's fp32 |N| decides the filtered
+        // alpha (spikes n=32: 5.8e-3 without the allowance of 2 ulps of |N|); beyond it, measured:
+        // p99 <= 1.9e-6, max 2.8e-4 (metal, spikes).
         EXPECT_LE(p99, 1e-4) << k.scene;
         EXPECT_LE(worst, 1e-3) << k.scene;
+        vk::destroyBuffer(*device, samples);
+        vk::destroyBuffer(*device, metadata);
+        vk::destroyBuffer(*device, counts);
+        vk::destroyBuffer(*device, ag);
     }
     agaa::test::expectNoValidationErrors(*device);
 }

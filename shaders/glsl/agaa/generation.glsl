@@ -61,11 +61,13 @@ layout(set = 0, binding = 6, std430) buffer AgBuffer64 { uint64_t agBuffer64[]; 
 #endif
 layout(set = 1, binding = 0) uniform sampler2D textures[kMaxSceneTextures];
 #if AGAA_RECORD
-// Test support (tests/agaa/test_agaa_gpu.cpp): every fragment of the pixels in the central
-// kRecordWindow^2 block of the frame appends what it accumulates, so the CPU can re-accumulate the same
-// fragments and compare with the AG-buffer.
+// Test support (tests/agaa/test_agaa_gpu.cpp, test_agaa_reference_gpu.cpp): every fragment of the
+// pixels in the central kRecordWindow^2 block of the frame appends what it accumulates, so the CPU
+// can re-accumulate the same fragments and compare with the AG-buffer: the quantised fields (the
+// replay), then the material inputs before quantisation (the double-precision reference).
 const uint kRecordWindow = 16u;
-const uint kRecordWords = 3u + kQuantizedFields; // pixel, layer, mask, the quantised fields
+// pixel, layer, mask, the quantised fields, then as float bits: normal xyz, roughness, albedo rgb, metallic
+const uint kRecordWords = 3u + kQuantizedFields + 8u;
 layout(set = 0, binding = 5, std430) buffer FragmentRecords { uint recordCount; uint recordCapacity; uint records[]; };
 #endif
 layout(push_constant) uniform Push { uint material; } pc;
@@ -179,6 +181,15 @@ void main() {
             records[r + 1u] = inLayer;
             records[r + 2u] = mask;
             for (uint j = 0u; j < kQuantizedFields; ++j) records[r + 3u + j] = f.q[j];
+            uint inputs = r + 3u + kQuantizedFields;
+            records[inputs + 0u] = floatBitsToUint(m.normal.x);
+            records[inputs + 1u] = floatBitsToUint(m.normal.y);
+            records[inputs + 2u] = floatBitsToUint(m.normal.z);
+            records[inputs + 3u] = floatBitsToUint(m.roughness);
+            records[inputs + 4u] = floatBitsToUint(m.albedo.r);
+            records[inputs + 5u] = floatBitsToUint(m.albedo.g);
+            records[inputs + 6u] = floatBitsToUint(m.albedo.b);
+            records[inputs + 7u] = floatBitsToUint(m.metallic);
         }
     }
 #endif

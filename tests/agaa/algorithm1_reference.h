@@ -1,0 +1,234 @@
+#pragma once
+// Algorithm 1 (seeds/000 section 3.3.2, DESIGN section 4.2) in double precision with rounding
+// bounds, for comparing a float implementation (the GPU kernel) that may break near-ties
+// differently. Shares no code with shaders/glsl/shared/clustering.h.
+//
+// Every distance carries an absolute bound on how far the float implementation's value of it
+// can be from the double one (from bounds on its inputs' errors). A decision whose outcome could
+// flip within those bounds branches: the reference explores every outcome (up to kMaxBranches) and
+// the float result must equal one of them. A pixel whose branches give different metadata is a
+// "tie"; one with a single possible outcome must match it exactly.
+//
+// Reading of the paper (as tests/agaa/test_clustering_reference.cpp): the average normal of step
+// 1(b) is the plain mean of the unit normals; Equation 1 is already squared, so step 1(e) sums it;
+// a seed is created only from a sample farther than t from every seed; 2(a) each sample joins
+// its nearest seed.
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+namespace agaa::test::algorithm1 {
+
+struct Sample {
+    double p[3];                // view-space position divided by k
+    double n[3];                // unit normal
+    bool valid;                 // not sky
+    double positionError = 0.0; // bound on |p_float - p| per coordinate
+    double normalError = 0.0;   // bound on |n_float - n| per coordinate
+};
+
+struct Distance {
+    double value, bound;
+};
+
+// Equation 1 and a bound on the float evaluation's error: the position term's error from the
+// inputs' (2 |dp| e per coordinate), the normal term's (2 |1 - cos| 3 e), and 8 float roundings of
+// the terms (relative 2^-24 each).
+inline Distance equation1(const double* pa, const double* na, double ea, double ena, const double* pb,
+                          const double* nb, double eb, double enb) {
+    double d2 = 0.0, cosine = 0.0, dpSum = 0.0;
+    for (int i = 0; i < 3; ++i) {
+        const double dp = pa[i] - pb[i];
+        d2 += dp * dp;
+        dpSum += std::abs(dp);
+        cosine += na[i] * nb[i];
+    }
+    const double o = 1.0 - cosine;
+    const double value = d2 + o * o;
+    const double bound = 2.0 * dpSum * (ea + eb) + 2.0 * std::abs(o) * 3.0 * (ena + enb) +
+                         (ea + eb) * (ea + eb) * 3.0 + 8.0 * 0x1p-24 * (d2 + o * o + 1e-30) +
+                         8.0 * 0x1p-24 * std::abs(o);
+    return {value, bound};
+}
+
+struct Outcome {
+    uint32_t count = 0;
+    // allowed[s]: bit j set when sample s may join aggregate j (nearest within the bounds)
+    std::vector<uint32_t> allowed;
+};
+
+struct Result {
+    std::vector<Outcome> outcomes; // every outcome the float version may produce
+    bool truncated = false;        // more than kMaxBranches: not every outcome listed
+    bool exactTie = false;         // some decision was an exact tie in double
+    // Whether the float version may produce different metadata (different seeds that lead to the
+    // same metadata are no tie).
+    bool branched() const {
+        if (truncated) return true;
+        for (const Outcome& o : outcomes) {
+            if (o.count != outcomes[0].count || o.allowed != outcomes[0].allowed) return true;
+            for (uint32_t a : o.allowed)
+                if (a & (a - 1)) return true;
+        }
+        return false;
+    }
+    // Whether the float version's count and ids are one of the outcomes (sky samples not compared).
+    bool admits(uint32_t count, const uint32_t* ids, const std::vector<Sample>& s) const {
+        for (const Outcome& o : outcomes) {
+            if (o.count != count) continue;
+            bool same = true;
+            for (size_t i = 0; i < s.size() && same; ++i)
+                same = !s[i].valid || (ids[i] < 32 && (o.allowed[i] >> ids[i]) & 1u);
+            if (same) return true;
+        }
+        return false;
+    }
+};
+
+constexpr size_t kMaxBranches = 256;
+
+namespace detail {
+
+struct Context {
+    const std::vector<Sample>* s;
+    uint32_t c;
+    double t;
+    Result* result;
+};
+
+inline Distance between(const Sample& a, const Sample& b) {
+    return equation1(a.p, a.n, a.positionError, a.normalError, b.p, b.n, b.positionError, b.normalError);
+}
+
+// 2(a): each valid sample's possible nearest seeds.
+inline void assign(const Context& ctx, const std::vector<int>& seeds) {
+    const std::vector<Sample>& s = *ctx.s;
+    Outcome o;
+    o.count = uint32_t(seeds.size());
+    o.allowed.assign(s.size(), 0u);
+    for (size_t i = 0; i < s.size(); ++i) {
+        if (!s[i].valid) continue;
+        std::vector<Distance> d;
+        double lowestUpper = INFINITY, lowest = INFINITY;
+        for (int j : seeds) {
+            d.push_back(between(s[i], s[j]));
+            lowestUpper = std::min(lowestUpper, d.back().value + d.back().bound);
+            lowest = std::min(lowest, d.back().value);
+        }
+        uint32_t exactlyLowest = 0;
+        for (size_t j = 0; j < d.size(); ++j) {
+            if (d[j].value - d[j].bound <= lowestUpper) o.allowed[i] |= 1u << j;
+            exactlyLowest += d[j].value == lowest;
+        }
+        ctx.result->exactTie |= exactlyLowest > 1;
+    }
+    if (ctx.result->outcomes.size() >= kMaxBranches) {
+        ctx.result->truncated = true;
+        return;
+    }
+    ctx.result->outcomes.push_back(std::move(o));
+}
+
+// 1(d), 1(e): the next seed, branching over every candidate that may win in float, and over
+// stopping when no candidate is certainly farther than t from every seed.
+inline void nextSeed(const Context& ctx, std::vector<int>& seeds) {
+    const std::vector<Sample>& s = *ctx.s;
+    if (seeds.size() >= ctx.c) return assign(ctx, seeds);
+    struct Candidate {
+        int index;
+        Distance score;
+        bool certain;
+    };
+    std::vector<Candidate> candidates;
+    double certainLower = -INFINITY, certainBest = -INFINITY;
+    uint32_t atCertainBest = 0;
+    for (int i = 0; i < int(s.size()); ++i) {
+        if (!s[i].valid) continue;
+        Distance nearest{INFINITY, 0.0}, sum{0.0, 0.0};
+        for (int j : seeds) {
+            const Distance d = between(s[i], s[j]);
+            if (d.value < nearest.value) nearest = d;
+            sum.value += d.value;
+            sum.bound += d.bound;
+        }
+        if (nearest.value + nearest.bound <= ctx.t) continue; // certainly within t of a seed
+        const bool certain = nearest.value - nearest.bound > ctx.t;
+        const Distance score = seeds.size() == 1 ? nearest : sum;
+        candidates.push_back({i, score, certain});
+        if (certain) {
+            certainLower = std::max(certainLower, score.value - score.bound);
+            if (score.value > certainBest) {
+                certainBest = score.value;
+                atCertainBest = 0;
+            }
+            atCertainBest += score.value == certainBest;
+        }
+    }
+    ctx.result->exactTie |= atCertainBest > 1;
+    const bool mayStop = certainLower == -INFINITY; // no candidate is certainly eligible
+    if (mayStop) assign(ctx, seeds);
+    for (const Candidate& k : candidates) {
+        if (ctx.result->truncated) return;
+        if (k.score.value + k.score.bound < certainLower) continue; // certainly beaten
+        seeds.push_back(k.index);
+        nextSeed(ctx, seeds);
+        seeds.pop_back();
+    }
+}
+
+} // namespace detail
+
+// Algorithm 1 on one pixel's samples, c aggregates at most, seed threshold t.
+inline Result cluster(const std::vector<Sample>& s, uint32_t c, double t) {
+    Result result;
+    detail::Context ctx{&s, c, t, &result};
+    // 1(b) mean position and normal of the valid samples; the float sums' errors: one rounding of
+    // the running sum per sample (relative 2^-24 of the largest magnitude) on top of the inputs'.
+    double mp[3] = {0, 0, 0}, mn[3] = {0, 0, 0}, scaleP = 0.0, errP = 0.0, errN = 0.0;
+    int visible = 0;
+    for (const Sample& x : s) {
+        if (!x.valid) continue;
+        ++visible;
+        for (int i = 0; i < 3; ++i) {
+            mp[i] += x.p[i];
+            mn[i] += x.n[i];
+            scaleP = std::max(scaleP, std::abs(x.p[i]));
+        }
+        errP = std::max(errP, x.positionError);
+        errN = std::max(errN, x.normalError);
+    }
+    if (visible == 0) {
+        result.outcomes.push_back({0, std::vector<uint32_t>(s.size(), 1u)});
+        return result;
+    }
+    for (int i = 0; i < 3; ++i) {
+        mp[i] /= visible;
+        mn[i] /= visible;
+    }
+    const double meanErrP = errP + double(visible + 1) * 0x1p-24 * scaleP;
+    const double meanErrN = errN + double(visible + 1) * 0x1p-24;
+    // 1(c) the first seed: farthest from the mean (every candidate within the bounds of the best).
+    std::vector<Distance> d(s.size(), Distance{-1.0, 0.0});
+    double lower = -INFINITY, best = -INFINITY;
+    for (size_t i = 0; i < s.size(); ++i) {
+        if (!s[i].valid) continue;
+        d[i] = equation1(s[i].p, s[i].n, s[i].positionError, s[i].normalError, mp, mn, meanErrP, meanErrN);
+        lower = std::max(lower, d[i].value - d[i].bound);
+        best = std::max(best, d[i].value);
+    }
+    uint32_t atBest = 0;
+    for (size_t i = 0; i < s.size(); ++i)
+        atBest += s[i].valid && d[i].value == best;
+    result.exactTie |= atBest > 1;
+    std::vector<int> seeds;
+    for (size_t i = 0; i < s.size() && !result.truncated; ++i) {
+        if (!s[i].valid || d[i].value + d[i].bound < lower) continue;
+        seeds = {int(i)};
+        detail::nextSeed(ctx, seeds);
+    }
+    return result;
+}
+
+} // namespace agaa::test::algorithm1
