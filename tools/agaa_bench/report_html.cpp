@@ -1,6 +1,7 @@
 #include "report_html.h"
 
 #include "claims.h"
+#include "light_axis.h"
 #include "report_crops.h"
 #include "report_script.h"
 
@@ -288,6 +289,39 @@ std::string claimsTable(const std::vector<JobResult>& results) {
     return h.str();
 }
 
+// The light-count axis: frame ms and the ratio to Simple/Complex per K, and where it crosses 1.
+std::string lightAxisSection(const std::vector<LightAxisTable>& tables) {
+    std::ostringstream h;
+    h << "<section id=\"lights\"><h2>Light count: where each method crosses Simple/Complex</h2>\n"
+         "<p class=\"small\">Each scene with K generated point lights added (agaa-render --extra-lights: a "
+         "Halton sequence in the bounds grown by a tenth of their diagonal, each light giving its "
+         "neighbourhood the key light's illuminance). Cells: median frame GPU ms, and in brackets the ratio "
+         "to Simple/Complex at the same n and K (below 1: faster). The crossing is the first measured K on "
+         "the other side of 1, with the ratio interpolated linearly in K between the two measured "
+         "counts.</p>\n";
+    for (const LightAxisTable& t : tables) {
+        h << "<h3>" << esc(t.scene) << "</h3>\n<table class=\"lights\" data-scene=\"" << esc(t.scene)
+          << "\"><tr><th>method</th><th>n</th><th>c</th>";
+        for (uint32_t k : t.lightCounts)
+            h << "<th>K = " << k << "</th>";
+        h << "<th>against Simple/Complex</th></tr>\n";
+        for (const LightAxisRow& r : t.rows) {
+            h << "<tr><td>" << esc(r.method) << "</td><td class=\"num\">"
+              << (r.usesSamples ? std::to_string(r.samples) : "&ndash;") << "</td><td class=\"num\">"
+              << (r.usesAggregates ? std::to_string(r.aggregates) : "&ndash;") << "</td>";
+            for (size_t i = 0; i < t.lightCounts.size(); ++i) {
+                h << "<td class=\"num\">" << (r.frameMs[i] ? num(*r.frameMs[i], 2) : "&ndash;");
+                if (r.ratioToPeer[i]) h << " (" << num(*r.ratioToPeer[i], 2) << ")";
+                h << "</td>";
+            }
+            h << "<td" << (r.crossesAt ? " class=\"cross\"" : "") << ">" << esc(r.verdict) << "</td></tr>\n";
+        }
+        h << "</table>\n";
+    }
+    h << "</section>\n";
+    return h.str();
+}
+
 } // namespace
 
 fs::path findChartJs() {
@@ -335,7 +369,9 @@ void writeReport(const fs::path& outDir, const std::vector<JobResult>& results, 
     h << "<nav>Scenes:";
     for (const std::string& s : scenes)
         h << " <a href=\"#scene-" << esc(s) << "\">" << esc(s) << "</a>";
-    h << " | <a href=\"#claims\">claims</a> | <a href=\"#jobs\">every job</a> | <a href=\"#how\">method</a> "
+    h << " | <a href=\"#claims\">claims</a>"
+      << (lightAxisTables(results).empty() ? "" : " | <a href=\"#lights\">light count</a>")
+      << " | <a href=\"#jobs\">every job</a> | <a href=\"#how\">method</a> "
          "| "
          "<a href=\"results.json\">results.json</a> <a href=\"results.csv\">results.csv</a></nav>\n";
 
@@ -346,6 +382,8 @@ void writeReport(const fs::path& outDir, const std::vector<JobResult>& results, 
          "scenes. Shading pass = the pass named &ldquo;&lt;method&gt;.lighting&rdquo; (shadow-map "
          "passes are not shading).</p>\n"
       << claimsTable(results) << "</section>\n";
+    const std::vector<LightAxisTable> lightTables = lightAxisTables(results);
+    if (!lightTables.empty()) h << lightAxisSection(lightTables);
 
     for (size_t i = 0; i < scenes.size(); ++i) {
         const std::string& scene = scenes[i];
