@@ -58,6 +58,7 @@ struct Options {
 
 const char* kUsage =
     "usage: agaa-render [--scene FILE | --builtin NAME] [--method NAME] [--samples N] [--aggregates C]\n"
+    "                   [--surfaces S]\n"
     "                   [--width W] [--height H] [--camera I] [--exposure auto|E] [--out PREFIX] [--debug "
     "VIEW]\n"
     "                   [--lights auto|scene|fill|default|both] [--extra-lights K] [--environment FILE.exr]\n"
@@ -77,6 +78,7 @@ const char* kUsage =
     "  --method NAME     anti-aliasing method (default: reference)\n"
     "  --samples N       visibility samples per pixel: 1, 4 native; 8, 16, 32 emulated (default 8)\n"
     "  --aggregates C    AGAA aggregates per pixel, 1..4 (default 2)\n"
+    "  --surfaces S      SBAA surfaces kept per pixel, 1..6 (default 4)\n"
     "  --width/--height  image size in pixels, 1..8192 (default 256x256)\n"
     "  --camera I        scene camera index (default 0)\n"
     "  --exposure auto|E  linear exposure E (1e-6..1e6), or auto: metered from the log-average luminance\n"
@@ -194,6 +196,8 @@ Options parse(int argc, char** argv) {
                                   eng::frame::supportedSampleCounts() + ")");
         } else if (a == "--aggregates")
             r.settings.aggregates = parseUint(a, value(), 1, 4);
+        else if (a == "--surfaces")
+            r.settings.surfaces = parseUint(a, value(), 1, 6);
         else if (a == "--debug")
             r.settings.debug = value();
         else if (a == "--characteristic-length")
@@ -333,6 +337,10 @@ nlohmann::json statsJson(const Options& o, const agaa::RenderResult& r, const en
     j["height"] = o.request.view.height;
     j["device"] = device.caps().deviceName;
     j["extra_lights"] = o.extraLights;
+    if (o.request.method == "sbaa") j["surfaces"] = o.request.settings.surfaces;
+    if (r.lostCoverageFraction)
+        j["lost_coverage"] = {{"fraction_of_samples", *r.lostCoverageFraction},
+                              {"pixels", r.pixelsWithLostCoverage}};
     j["frames_timed"] = o.frames;
     j["frames_warmup"] = o.warmup;
     j["passes"] = nlohmann::json::array();
