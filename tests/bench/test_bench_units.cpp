@@ -288,8 +288,42 @@ TEST(LightAxis, CrossingIsTheFirstKOnTheOtherSideWithTheInterpolatedEqualPoint) 
     EXPECT_TRUE(ref.fasterAtFirst);
     EXPECT_FALSE(ref.crossesAt);
     EXPECT_EQ(ref.verdict, "faster than Simple/Complex at every measured K");
+    EXPECT_TRUE(agaa.beyondSpread[2]) << "one timed frame each: the quartiles are the values";
+    // The shading-pass tables read the "<method>.lighting" pass (0.5, 0.75 ms in every job here).
+    const std::vector<LightAxisTable> shading = lightAxisTables(results, LightAxisMeasure::ShadingPass);
+    ASSERT_EQ(shading.size(), 1u);
+    ASSERT_TRUE(shading[0].rows[1].frameMs[0]);
+    EXPECT_DOUBLE_EQ(*shading[0].rows[1].frameMs[0], 0.625);
+    EXPECT_DOUBLE_EQ(*shading[0].rows[1].ratioToPeer[0], 1.0);
+    EXPECT_FALSE(shading[0].rows[1].crossesAt);
     const LightAxisRow& noaa = t.rows[3];
     EXPECT_FALSE(noaa.frameMs[2]) << "noaa was not run at K = 16";
     EXPECT_FALSE(noaa.ratioToPeer[0]) << "no Simple/Complex at n = 1";
     EXPECT_EQ(noaa.verdict, "no Simple/Complex at this n");
+}
+
+TEST(LightAxis, AnOrderWithinTheTimingSpreadIsNotACrossing) {
+    auto timed = [](const std::string& scene, const std::string& method, std::vector<double> ms) {
+        JobResult r = sampleResult(scene, method, 8, method == "agaa" ? 2 : 0);
+        r.frameMs = makeSpread(std::move(ms));
+        return r;
+    };
+    // AGAA faster at K = 0 and 64 beyond the spread; at K = 4 its median is slower but the
+    // quartiles overlap (noise), which must not count as a crossing.
+    std::vector<JobResult> results = {
+        timed("plane", "simple-complex", {10, 10, 10}),     timed("plane", "agaa", {5, 5, 5}),
+        timed("plane+l4", "simple-complex", {9, 10, 12}),   timed("plane+l4", "agaa", {8, 11, 13}),
+        timed("plane+l64", "simple-complex", {20, 20, 20}), timed("plane+l64", "agaa", {9, 9, 9})};
+    const std::vector<LightAxisTable> tables = lightAxisTables(results);
+    ASSERT_EQ(tables.size(), 1u);
+    const LightAxisRow& agaa = tables[0].rows[1];
+    ASSERT_EQ(agaa.method, "agaa");
+    EXPECT_GT(*agaa.ratioToPeer[1], 1.0) << "the median is slower at K = 4";
+    EXPECT_FALSE(agaa.beyondSpread[1]) << "but the quartiles overlap";
+    EXPECT_FALSE(agaa.crossesAt);
+    ASSERT_TRUE(agaa.withinSpreadAt);
+    EXPECT_EQ(*agaa.withinSpreadAt, 4u);
+    EXPECT_EQ(agaa.verdict,
+              "faster than Simple/Complex at every measured K beyond the timing spread (slower at "
+              "K = 4, within the quartiles)");
 }

@@ -270,6 +270,49 @@ TEST(SbaaGpu, LostCoverageStatsShadingEventsAndReruns) {
     agaa::test::expectNoValidationErrors(*device);
 }
 
+// MERGE mode: a tilted plane tessellated into triangles about 2 px across. With merge every pixel
+// is one surface (its triangles lie on one plane: same normal, depths within the plane's slope),
+// so S = 1 loses nothing; without merge each triangle is a surface and pixels on the triangle edges
+// lose the coverage of all but one.
+TEST(SbaaGpu, MergeKeepsATessellatedPlaneOneSurface) {
+    auto device = agaa::test::makeValidatedDevice();
+    eng::scene::Scene scene = agaa::test::emptyScene("sbaa-tessellated-plane");
+    const int cells = 24;
+    for (int j = 0; j <= cells; ++j)
+        for (int i = 0; i <= cells; ++i) {
+            eng::scene::Vertex v;
+            const float x = -1.2f + 2.4f * float(i) / cells, y = -1.2f + 2.4f * float(j) / cells;
+            v.position = {x, y, -2.0f - 0.6f * x}; // tilted: the depth changes along x
+            v.normal = glm::normalize(glm::vec3(0.6f, 0.0f, 1.0f));
+            scene.vertices.push_back(v);
+        }
+    for (int j = 0; j < cells; ++j)
+        for (int i = 0; i < cells; ++i) {
+            const uint32_t a = uint32_t(j * (cells + 1) + i), b = a + 1, c = a + cells + 1, d = c + 1;
+            for (uint32_t k : {a, b, d, a, d, c})
+                scene.indices.push_back(k);
+        }
+    scene.draws.push_back({0, uint32_t(scene.indices.size()), 0});
+    const uint32_t w = 32, h = 32;
+    uint32_t lostWith = 0, lostWithout = 0, pixelsWithout = 0;
+    for (bool merge : {true, false}) {
+        agaa::SbaaSettings settings;
+        settings.samples = 8;
+        settings.surfaces = 1;
+        settings.merge.merge = merge;
+        const SbaaFrame f = renderSbaa(*device, scene, settings, w, h);
+        for (uint32_t l : f.lost) {
+            (merge ? lostWith : lostWithout) += l;
+            if (!merge) pixelsWithout += l > 0 ? 1 : 0;
+        }
+    }
+    std::printf("[ measured ] tessellated plane, S=1: lost samples %u with merge, %u in %u pixels without\n",
+                lostWith, lostWithout, pixelsWithout);
+    EXPECT_EQ(lostWith, 0u) << "one plane is one surface under MERGE";
+    EXPECT_GT(pixelsWithout, 50u) << "without MERGE the triangle edges split pixels into surfaces";
+    agaa::test::expectNoValidationErrors(*device);
+}
+
 TEST(SbaaGpu, RefusesSettingsOutOfRange) {
     auto device = agaa::test::makeValidatedDevice();
     const eng::scene::Scene scene = eng::scene::loadBuiltin("plane");

@@ -29,6 +29,10 @@ void findCrossing(LightAxisRow& row, const std::vector<uint32_t>& counts) {
             continue;
         }
         if ((*r < 1.0) == row.fasterAtFirst) continue;
+        if (!row.beyondSpread[i]) {
+            if (!row.withinSpreadAt) row.withinSpreadAt = counts[i];
+            continue;
+        }
         row.crossesAt = counts[i];
         // The measured K before this one with a ratio: interpolate the ratio linearly in K.
         for (size_t j = i; j-- > *first;) {
@@ -49,15 +53,26 @@ void findCrossing(LightAxisRow& row, const std::vector<uint32_t>& counts) {
     const std::string other = row.fasterAtFirst ? "slower" : "faster";
     if (!row.crossesAt) {
         row.verdict = side + " than Simple/Complex at every measured K";
+        if (row.withinSpreadAt)
+            row.verdict += " beyond the timing spread (" + other +
+                           " at K = " + std::to_string(*row.withinSpreadAt) + ", within the quartiles)";
         return;
     }
     row.verdict = other + " than Simple/Complex from K = " + std::to_string(*row.crossesAt);
     if (row.crossingEstimate) row.verdict += " (equal at K ~ " + kText(*row.crossingEstimate) + ")";
 }
 
+// The measured spread of a job: its frame, or its "<...>.lighting" pass.
+std::optional<Spread> measured(const JobResult& r, LightAxisMeasure measure) {
+    if (measure == LightAxisMeasure::Frame) return r.frameMs;
+    for (const PassTime& p : r.passes)
+        if (p.name.size() > 9 && p.name.compare(p.name.size() - 9, 9, ".lighting") == 0) return p.ms;
+    return std::nullopt;
+}
+
 } // namespace
 
-std::vector<LightAxisTable> lightAxisTables(const std::vector<JobResult>& results) {
+std::vector<LightAxisTable> lightAxisTables(const std::vector<JobResult>& results, LightAxisMeasure measure) {
     std::vector<std::string> scenes;
     std::map<std::string, std::vector<uint32_t>> counts;
     for (const JobResult& r : results) {
@@ -78,7 +93,7 @@ std::vector<LightAxisTable> lightAxisTables(const std::vector<JobResult>& result
         };
         using Key = std::tuple<std::string, uint32_t, uint32_t>;
         std::map<Key, size_t> rowOf;
-        std::map<std::pair<uint32_t, uint32_t>, double> peer; // (n, K) -> Simple/Complex frame ms
+        std::map<std::pair<uint32_t, uint32_t>, Spread> peer; // (n, K) -> Simple/Complex frame ms
         for (const JobResult& r : results) {
             const SceneVariant v = parseSceneVariant(r.job.scene);
             if (v.base != scene) continue;
@@ -93,17 +108,24 @@ std::vector<LightAxisTable> lightAxisTables(const std::vector<JobResult>& result
                 row.usesAggregates = r.job.usesAggregates;
                 row.frameMs.resize(t.lightCounts.size());
                 row.ratioToPeer.resize(t.lightCounts.size());
+                row.beyondSpread.resize(t.lightCounts.size(), false);
+                row.spreads.resize(t.lightCounts.size());
                 t.rows.push_back(row);
             }
-            t.rows[it->second].frameMs[column(v.extraLights)] = r.frameMs.median;
-            if (r.job.method == kSimpleComplex) peer[{r.job.samples, v.extraLights}] = r.frameMs.median;
+            const std::optional<Spread> m = measured(r, measure);
+            if (!m) continue;
+            t.rows[it->second].frameMs[column(v.extraLights)] = m->median;
+            t.rows[it->second].spreads[column(v.extraLights)] = *m;
+            if (r.job.method == kSimpleComplex) peer[{r.job.samples, v.extraLights}] = *m;
         }
         for (LightAxisRow& row : t.rows) {
             if (row.method != kSimpleComplex && row.usesSamples)
                 for (size_t i = 0; i < t.lightCounts.size(); ++i) {
                     const auto p = peer.find({row.samples, t.lightCounts[i]});
-                    if (row.frameMs[i] && p != peer.end() && p->second > 0.0)
-                        row.ratioToPeer[i] = *row.frameMs[i] / p->second;
+                    if (!row.frameMs[i] || p == peer.end() || p->second.median <= 0.0) continue;
+                    row.ratioToPeer[i] = *row.frameMs[i] / p->second.median;
+                    const Spread& a = row.spreads[i];
+                    row.beyondSpread[i] = a.q3 < p->second.q1 || p->second.q3 < a.q1;
                 }
             findCrossing(row, t.lightCounts);
         }

@@ -19,13 +19,19 @@ struct LightAxisRow {
     bool usesSamples = false, usesAggregates = false;
     std::vector<std::optional<double>> frameMs;     // per light count; nullopt: not in the run
     std::vector<std::optional<double>> ratioToPeer; // frame ms / Simple/Complex's at the same n and K
-    // The first measured K at which the ratio lands on the other side of 1 than at the smallest K,
-    // and a linear interpolation of the ratio between that K and the one before (the estimated K
-    // where the times are equal). Absent: no crossing within the measured counts.
+    // Per light count: the two jobs' interquartile ranges of frame time do not overlap, so which is
+    // faster is beyond this run's timing spread (the machines are shared and noisy).
+    std::vector<bool> beyondSpread;
+    std::vector<Spread> spreads; // the job's frame-time spread per light count
+    // The first measured K at which the ratio lands on the other side of 1 than at the smallest K
+    // beyond the timing spread, and a linear interpolation of the ratio between that K and the one
+    // before (the estimated K where the times are equal). Absent: no such crossing.
     std::optional<uint32_t> crossesAt;
     std::optional<double> crossingEstimate;
     bool fasterAtFirst = false; // ratio < 1 at the smallest measured K
-    std::string verdict;        // e.g. "slower than Simple/Complex from K = 16 (equal at K ~ 9.3)"
+    // The first K on the other side of 1 within the spread (the quartiles overlap): not a crossing.
+    std::optional<uint32_t> withinSpreadAt;
+    std::string verdict; // e.g. "slower than Simple/Complex from K = 16 (equal at K ~ 9.3)"
 };
 
 struct LightAxisTable {
@@ -34,8 +40,13 @@ struct LightAxisTable {
     std::vector<LightAxisRow> rows;    // the order of the results
 };
 
+// What a table compares: the whole frame, or the shading pass (the pass named
+// "<method>.lighting", where the light count acts).
+enum class LightAxisMeasure { Frame, ShadingPass };
+
 // One table per base scene that was measured at two or more light counts; empty when the run
-// had no light-count axis.
-std::vector<LightAxisTable> lightAxisTables(const std::vector<JobResult>& results);
+// had no light-count axis. A job without the measured pass has no cell.
+std::vector<LightAxisTable> lightAxisTables(const std::vector<JobResult>& results,
+                                            LightAxisMeasure measure = LightAxisMeasure::Frame);
 
 } // namespace agaa::bench

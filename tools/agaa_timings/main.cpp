@@ -9,9 +9,10 @@
 //                [--sample-rate-shading on|off] [--extra-lights K[,K...]]
 // --extra-lights: each scene once per K, with K generated point lights added
 // (engine/scene/extra_lights.h); results of K > 0 are keyed "<scene>+l<K>".
-// A job is METHOD[:N[:C]][:KEY=VALUE...]; AGAA's keys are its settings (lighting, routing,
-// atomics, reduce, distance, ndf, generation, curvature), e.g. agaa:8:2:lighting=registers:routing=fragment.
-// Every method whose name starts with "agaa" (agaa, agaa-accumulate, agaa-samples) is an AGAA job.
+// A job is METHOD[:N[:C]][:KEY=VALUE...] (sbaa:N:S: S surfaces); AGAA's keys are its settings (lighting,
+// routing, atomics, reduce, distance, ndf, generation, curvature), e.g.
+// agaa:8:2:lighting=registers:routing=fragment. Every method whose name starts with "agaa" (agaa,
+// agaa-accumulate, agaa-samples) is an AGAA job.
 // --sample-rate-shading applies to every job that fills a per-sample G-buffer.
 // For every AGAA job it prints, next to the shading/frame ratios against each peer at the same n:
 //   - lighting ms per shading event against no-AA's (needs a noaa job): what one aggregate's
@@ -48,10 +49,12 @@ namespace {
 struct Job {
     std::string method;
     uint32_t samples = 8, aggregates = 2;
+    uint32_t surfaces = 4;                                    // sbaa:N:S
     std::vector<std::pair<std::string, std::string>> options; // AGAA KEY=VALUE settings
     bool isAgaa() const { return method.rfind("agaa", 0) == 0; }
     std::string label() const {
         std::string l = method + " n=" + std::to_string(samples);
+        if (method == "sbaa") return l + " S=" + std::to_string(surfaces);
         if (!isAgaa()) return l;
         l += " c=" + std::to_string(aggregates);
         for (const auto& [k, v] : options)
@@ -112,8 +115,12 @@ Job parseJob(const std::string& text) {
     size_t i = 1;
     if (i < parts.size() && parts[i].find('=') == std::string::npos)
         j.samples = number("--jobs samples", parts[i++], 1, 32);
-    if (i < parts.size() && parts[i].find('=') == std::string::npos)
-        j.aggregates = number("--jobs aggregates", parts[i++], 1, 4);
+    if (i < parts.size() && parts[i].find('=') == std::string::npos) {
+        if (j.method == "sbaa")
+            j.surfaces = number("--jobs surfaces", parts[i++], 1, 6); // sbaa:N:S
+        else
+            j.aggregates = number("--jobs aggregates", parts[i++], 1, 4);
+    }
     agaa::MethodSettings probe;
     for (; i < parts.size(); ++i) {
         size_t eq = parts[i].find('=');
@@ -238,6 +245,7 @@ int main(int argc, char** argv) {
                     r.method = job.method;
                     r.settings.samples = job.samples;
                     r.settings.aggregates = job.aggregates;
+                    r.settings.surfaces = job.surfaces;
                     for (const auto& [k, v] : job.options)
                         setAgaaOption(r.settings, k, v);
                     r.settings.sampleRateShading = sampleRateShading;
@@ -267,6 +275,12 @@ int main(int argc, char** argv) {
                                                         {"events_per_pixel", res.shadingEventsMean},
                                                         {"passes", passes},
                                                         {"variants", variants}};
+                    if (res.lostCoverageFraction) {
+                        std::printf("      lost coverage: %.4f of the samples, %llu pixels\n",
+                                    *res.lostCoverageFraction,
+                                    static_cast<unsigned long long>(res.pixelsWithLostCoverage));
+                        out["scenes"][name][job.label()]["lost_coverage"] = *res.lostCoverageFraction;
+                    }
                     if (breakdown && job.isAgaa()) {
                         namespace parts = agaa::AggregateBreakdown;
                         auto without = [&](uint32_t bits) {
