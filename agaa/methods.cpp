@@ -3,6 +3,7 @@
 #include "agaa/aggregate/aggregate.h"
 #include "agaa/fxaa/fxaa.h"
 #include "agaa/reference/reference.h"
+#include "agaa/sbaa/sbaa.h"
 #include "agaa/simple_complex/simple_complex.h"
 
 #include <stdexcept>
@@ -26,6 +27,10 @@ const std::vector<MethodInfo>& knownMethods() {
          false,
          {"complex"}},
         {"fxaa", "FXAA 3.11 quality (Lottes 2009), preset 39, on the no-AA image", false, false},
+        {"sbaa",
+         "surface based anti-aliasing (Salvi and Vidimce 2012): the S most covered surfaces per pixel "
+         "(--surfaces, default 4; similar planes merged) lit once each; the rest's coverage is lost",
+         true, false},
         {"agaa",
          "aggregate G-buffer anti-aliasing: n visibility samples, c aggregates lit once each "
          "(--agaa-generation picks the path; auto by default)",
@@ -97,6 +102,14 @@ std::unique_ptr<Technique> createTechnique(const std::string& method, eng::vk::D
         return std::make_unique<SimpleComplex>(device, scene, s, method);
     }
     if (method == "fxaa") return std::make_unique<Fxaa>(device, scene, FxaaSettings{});
+    if (method == "sbaa") {
+        SbaaSettings s;
+        s.samples = settings.samples;
+        s.surfaces = settings.surfaces;
+        s.effects = settings.effects;
+        s.sampleRateShading = settings.sampleRateShading;
+        return std::make_unique<Sbaa>(device, scene, s);
+    }
     if (method == "agaa" || method == "agaa-accumulate" || method == "agaa-samples") {
         AggregateSettings s;
         s.samples = settings.samples;

@@ -62,15 +62,15 @@ FrameRenderer::~FrameRenderer() {
 Technique& FrameRenderer::technique(const RenderRequest& r) {
     std::string key =
         r.method + "/" + std::to_string(r.settings.samples) + "/" + std::to_string(r.settings.aggregates) +
-        "/" + r.settings.debug + "/" + std::to_string(r.settings.characteristicLength) + "/" +
-        std::to_string(r.settings.seedThreshold) + (r.settings.pixelCentrePosition ? "/centre" : "") + "/" +
-        r.settings.ndf + "/" + r.settings.agaaLighting + "/" + r.settings.agaaRouting + "/" +
-        r.settings.agaaAtomics + "/" + r.settings.agaaSubgroupReduce + "/" + r.settings.agaaDistance + "/" +
-        r.settings.agaaGeneration + (r.settings.sampleRateShading ? "/srs" : "") +
-        (r.settings.curvatureRoughness ? "/curvature" : "") + "/breakdown" +
-        std::to_string(r.settings.agaaBreakdown) + "/effects" + (r.settings.effects.forceAll ? "-all" : "") +
-        "/" + std::to_string(r.settings.effects.shadowMapSize) + "/" +
-        std::to_string(r.settings.effects.shadowTaps) + "/" +
+        "/s" + std::to_string(r.settings.surfaces) + "/" + r.settings.debug + "/" +
+        std::to_string(r.settings.characteristicLength) + "/" + std::to_string(r.settings.seedThreshold) +
+        (r.settings.pixelCentrePosition ? "/centre" : "") + "/" + r.settings.ndf + "/" +
+        r.settings.agaaLighting + "/" + r.settings.agaaRouting + "/" + r.settings.agaaAtomics + "/" +
+        r.settings.agaaSubgroupReduce + "/" + r.settings.agaaDistance + "/" + r.settings.agaaGeneration +
+        (r.settings.sampleRateShading ? "/srs" : "") + (r.settings.curvatureRoughness ? "/curvature" : "") +
+        "/breakdown" + std::to_string(r.settings.agaaBreakdown) + "/effects" +
+        (r.settings.effects.forceAll ? "-all" : "") + "/" + std::to_string(r.settings.effects.shadowMapSize) +
+        "/" + std::to_string(r.settings.effects.shadowTaps) + "/" +
         std::to_string(uint32_t(r.settings.effects.shadowFootprint));
     auto it = m_techniques.find(key);
     if (it == m_techniques.end())
@@ -135,14 +135,15 @@ RenderResult FrameRenderer::render(const RenderRequest& original) {
     // Owned for this call only; released on every path out (a graph error throws mid-way).
     struct HostBuffers {
         vk::Device& device;
-        vk::Buffer hdr, display, events;
+        vk::Buffer hdr, display, events, lost;
         ~HostBuffers() {
             vkDeviceWaitIdle(device.device());
             vk::destroyBuffer(device, hdr);
             vk::destroyBuffer(device, display);
             vk::destroyBuffer(device, events);
+            if (lost.buffer) vk::destroyBuffer(device, lost);
         }
-    } host{m_device, {}, {}, {}};
+    } host{m_device, {}, {}, {}, {}};
     // One at a time into the owner: one that fails leaves the ones before it to ~HostBuffers.
     host.hdr =
         eng::frame::createReadbackBuffer(m_device, w, h, VK_FORMAT_R32G32B32A32_SFLOAT, "readback.hdr");
@@ -169,6 +170,10 @@ RenderResult FrameRenderer::render(const RenderRequest& original) {
     eng::frame::addReadbackPass(graph, targets.hdr, hdrHost, "readback.hdr");
     eng::frame::addReadbackPass(graph, targets.display, displayHost, "readback.display");
     eng::frame::addReadbackPass(graph, targets.shadingEvents, eventsHost, "readback.events");
+    if (targets.lostSamples.valid()) {
+        host.lost = eng::frame::createReadbackBuffer(m_device, w, h, VK_FORMAT_R32_UINT, "readback.lost");
+        eng::frame::addReadbackPass(graph, targets.lostSamples, host.lost, "readback.lost");
+    }
     graph.compile();
 
     RenderResult result;
@@ -224,6 +229,17 @@ RenderResult FrameRenderer::render(const RenderRequest& original) {
     result.shadingEventsHistogram.assign(result.shadingEventsMax + 1, 0);
     for (uint32_t e : result.shadingEvents)
         result.shadingEventsHistogram[e] += 1;
+    if (targets.lostSamples.valid()) {
+        vk::invalidateBuffer(m_device, host.lost);
+        std::vector<uint32_t> lost(size_t(w) * h);
+        std::memcpy(lost.data(), host.lost.mapped, lost.size() * 4);
+        uint64_t lostSum = 0;
+        for (uint32_t l : lost) {
+            lostSum += l;
+            result.pixelsWithLostCoverage += l > 0 ? 1 : 0;
+        }
+        result.lostCoverageFraction = double(lostSum) / (pixels * double(tech.samples()));
+    }
     return result;
 }
 

@@ -53,6 +53,10 @@ struct RenderResult {
     double shadingEventsMean = 0.0;
     uint32_t shadingEventsMax = 0;
     std::vector<uint64_t> shadingEventsHistogram; // [k] = pixels with k shading events
+    // Methods that drop coverage (FrameTargets::lostSamples, SBAA): the share of all n w h samples
+    // that were covered but whose surface was not kept, and how many pixels lost any.
+    std::optional<double> lostCoverageFraction;
+    uint64_t pixelsWithLostCoverage = 0;
     uint32_t samples = 0;
     std::string graphDot, graphJson;
     // The shader/pass variants the technique chose from the scene's features, with their causes

@@ -4,6 +4,8 @@
 #include "engine/vk/check.h"
 #include "engine/vk/descriptors.h"
 #include "shaders/reference/gbuffer_frag.h"
+#include "shaders/reference/gbuffer_primitive_frag.h"
+#include "shaders/reference/gbuffer_primitive_sample_rate_frag.h"
 #include "shaders/reference/gbuffer_sample_rate_frag.h"
 #include "shaders/reference/gbuffer_vert.h"
 
@@ -29,12 +31,20 @@ SampleGBufferPass::SampleGBufferPass(vk::Device& device, const eng::frame::GpuSc
     if (options.sampleRateShading && !device.caps().sampleRateShading)
         throw vk::MissingCapability(device.caps().deviceName +
                                     " lacks sampleRateShading (--sample-rate-shading on; allowed here: off)");
+    if (options.primitiveIds && !device.caps().fragmentPrimitiveId)
+        throw vk::MissingCapability(device.caps().deviceName +
+                                    " lacks geometryShader (gl_PrimitiveID in a fragment shader: the "
+                                    "primitive id per sample)");
+    if (options.primitiveIds && scene.scene().triangleCount() >= (1u << 24) - 1u)
+        throw std::invalid_argument(scene.scene().source + ": " +
+                                    std::to_string(scene.scene().triangleCount()) +
+                                    " triangles; primitive ids per sample are exact below 2^24 - 1");
     vk::LayoutDesc layout;
     layout.pushBindings = {
         {0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT},
         {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_FRAGMENT_BIT}};
     layout.extraSets = {scene.textureSetLayout()};
-    layout.pushConstantBytes = 4; // material index
+    layout.pushConstantBytes = options.primitiveIds ? 8 : 4; // material index (, first triangle)
     m_layout = vk::createPipelineLayout(device, layout, m_name + ".gbuffer.layout");
 }
 
@@ -52,8 +62,11 @@ VkPipeline SampleGBufferPass::pipeline(AlphaPath alpha, bool doubleSided) {
     vk::GraphicsPipelineDesc d;
     d.vertex = kReferenceGbufferVert;
     const bool sampleRate = m_options.sampleRateShading && m_samples > 1;
-    d.fragment =
-        sampleRate ? std::span<const uint32_t>(kReferenceGbufferSampleRateFrag) : kReferenceGbufferFrag;
+    d.fragment = m_options.primitiveIds
+                     ? (sampleRate ? std::span<const uint32_t>(kReferenceGbufferPrimitiveSampleRateFrag)
+                                   : std::span<const uint32_t>(kReferenceGbufferPrimitiveFrag))
+                     : (sampleRate ? std::span<const uint32_t>(kReferenceGbufferSampleRateFrag)
+                                   : kReferenceGbufferFrag);
     d.layout = m_layout.layout;
     d.specialization.values = effectSpecialization(m_features, uint32_t(alpha), 0, 1);
     d.specialization.values.resize(8, 0u); // id 7: unused by the fill pass
@@ -64,6 +77,7 @@ VkPipeline SampleGBufferPass::pipeline(AlphaPath alpha, bool doubleSided) {
     d.sampleShading = sampleRate; // minSampleShading 1: one invocation per sample
     d.alphaToCoverage = usesAlphaToCoverage(alpha);
     d.colorFormats = {kNormalFormat, kAlbedoMetalFormat, kEmissiveRoughnessFormat};
+    if (m_options.primitiveIds) d.colorFormats.push_back(kPrimitiveFormat);
     d.depthFormat = kDepthFormat;
     d.samples = m_samples > 1 ? VK_SAMPLE_COUNT_4_BIT : VK_SAMPLE_COUNT_1_BIT;
     d.cullMode = doubleSided ? VK_CULL_MODE_NONE : VK_CULL_MODE_BACK_BIT;
@@ -115,13 +129,18 @@ SampleGBuffer SampleGBufferPass::add(rg::Graph& graph, const FrameInputs& in) {
             d.g.emissiveRoughness =
                 b.write(b.create(m_name + ".gbuffer.emissiveRoughness", desc(kEmissiveRoughnessFormat)),
                         rg::Use::ColorAttachment);
+            if (m_options.primitiveIds)
+                d.g.primitive = b.write(b.create(m_name + ".gbuffer.primitive", desc(kPrimitiveFormat)),
+                                        rg::Use::ColorAttachment);
         },
         [this, gpuScene, drawPipelines, layers = pattern.layers, w = in.width,
          h = in.height](const rg::Context& ctx, const Data& d) {
             VkCommandBuffer cmd = ctx.cmd();
-            VkRenderingAttachmentInfo colors[3];
-            const rg::Texture targets[3] = {d.g.normal, d.g.albedoMetal, d.g.emissiveRoughness};
-            for (int i = 0; i < 3; ++i) {
+            VkRenderingAttachmentInfo colors[4];
+            const rg::Texture targets[4] = {d.g.normal, d.g.albedoMetal, d.g.emissiveRoughness,
+                                            d.g.primitive};
+            const uint32_t targetCount = m_options.primitiveIds ? 4 : 3;
+            for (uint32_t i = 0; i < targetCount; ++i) {
                 colors[i] = {VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
                 colors[i].imageView = ctx.texture(targets[i]).view;
                 colors[i].imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
@@ -137,7 +156,7 @@ SampleGBuffer SampleGBufferPass::add(rg::Graph& graph, const FrameInputs& in) {
             VkRenderingInfo info{VK_STRUCTURE_TYPE_RENDERING_INFO};
             info.renderArea = {{0, 0}, {w, h}};
             info.layerCount = layers;
-            info.colorAttachmentCount = 3;
+            info.colorAttachmentCount = targetCount;
             info.pColorAttachments = colors;
             info.pDepthAttachment = &depth;
             vkCmdBeginRendering(cmd, &info);
@@ -150,7 +169,7 @@ SampleGBuffer SampleGBufferPass::add(rg::Graph& graph, const FrameInputs& in) {
                 .storage(1, ctx.buffer(d.materials).buffer)
                 .push(m_device, cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, m_layout.layout);
             // One instance per emulation layer (common/scene_vertex.glsl).
-            gpuScene->recordDraws(cmd, m_layout.layout, drawPipelines, layers);
+            gpuScene->recordDraws(cmd, m_layout.layout, drawPipelines, layers, m_options.primitiveIds);
             vkCmdEndRendering(cmd);
         });
     return out.g;

@@ -20,6 +20,7 @@ struct SampleGBuffer {
     eng::rg::Texture normal;            // RG16_SNORM octahedral, view space
     eng::rg::Texture albedoMetal;       // RGBA8_SRGB
     eng::rg::Texture emissiveRoughness; // RGBA16F
+    eng::rg::Texture primitive;         // R32_SFLOAT triangle number + 1 (GBufferOptions::primitiveIds only)
 };
 
 // How the fill pass runs. The defaults are the reference's: one material evaluation per pixel
@@ -33,6 +34,10 @@ struct GBufferOptions {
     bool curvatureRoughness = false;
     float curvatureMaxFootprint = 0.3f; // AgaaKaplanyanRoughnessMaxFootprint, GGX alpha^2 units
     float curvatureBoost = 2.0f;        // AgaaKaplanyanRoughnessBoost
+    // A fourth target with every sample's primitive: the scene-wide triangle number + 1 as an exact
+    // float (SBAA's prepass; integer MSAA colour is 1x only on lavapipe). Needs the geometryShader
+    // feature (gl_PrimitiveID in a fragment shader) and fewer than 2^24 triangles.
+    bool primitiveIds = false;
 };
 
 class SampleGBufferPass {
@@ -41,6 +46,7 @@ class SampleGBufferPass {
     static constexpr VkFormat kNormalFormat = VK_FORMAT_R16G16_SNORM;
     static constexpr VkFormat kAlbedoMetalFormat = VK_FORMAT_R8G8B8A8_SRGB;
     static constexpr VkFormat kEmissiveRoughnessFormat = VK_FORMAT_R16G16B16A16_SFLOAT;
+    static constexpr VkFormat kPrimitiveFormat = VK_FORMAT_R32_SFLOAT;
 
     // Throws std::invalid_argument for an unsupported n, MissingCapability without 4x MSAA or,
     // when options.sampleRateShading asks for it, without sampleRateShading.

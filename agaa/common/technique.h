@@ -31,12 +31,16 @@ struct FrameTargets {
     eng::rg::Texture
         display; // RGBA32F: each shading event tone-mapped, weighted by its sample fraction, summed
     eng::rg::Texture shadingEvents; // R32_UINT: shading events per pixel
+    // R32_UINT, only from methods that drop coverage (SBAA): covered samples per pixel whose
+    // surface was not kept, so their coverage is missing from the resolve. Invalid otherwise.
+    eng::rg::Texture lostSamples;
 };
 
 // Settings every method understands; a method ignores the ones it has no use for.
 struct MethodSettings {
     uint32_t samples = 8;    // n: visibility samples per pixel
     uint32_t aggregates = 2; // c: AGAA aggregates per pixel
+    uint32_t surfaces = 4;   // S: SBAA surfaces per pixel (1..6)
     std::string debug;       // a method's debug view ("" = none), e.g. "aggregates" for agaa
     // AGAA clustering (Equation 1): characteristic length k in metres and the seed threshold t;
     // negative = the method's documented default.

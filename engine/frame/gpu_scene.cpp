@@ -396,7 +396,8 @@ void GpuScene::release() {
 }
 
 void GpuScene::recordDraws(VkCommandBuffer cmd, VkPipelineLayout layout,
-                           std::span<const VkPipeline> pipelinePerDraw, uint32_t instances) const {
+                           std::span<const VkPipeline> pipelinePerDraw, uint32_t instances,
+                           bool pushFirstTriangle) const {
     VkDeviceSize offset = 0;
     vkCmdBindVertexBuffers(cmd, 0, 1, &m_vertices.buffer, &offset);
     vkCmdBindIndexBuffer(cmd, m_indices.buffer, 0, VK_INDEX_TYPE_UINT32);
@@ -409,8 +410,8 @@ void GpuScene::recordDraws(VkCommandBuffer cmd, VkPipelineLayout layout,
             bound = pipelinePerDraw[i];
             vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, bound);
         }
-        uint32_t material = draws[i].material;
-        vkCmdPushConstants(cmd, layout, VK_SHADER_STAGE_ALL, 0, sizeof material, &material);
+        const uint32_t push[2] = {draws[i].material, draws[i].firstIndex / 3};
+        vkCmdPushConstants(cmd, layout, VK_SHADER_STAGE_ALL, 0, pushFirstTriangle ? 8 : 4, push);
         vkCmdDrawIndexed(cmd, draws[i].indexCount, instances, draws[i].firstIndex, 0, 0);
     }
 }

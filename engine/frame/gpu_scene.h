@@ -32,9 +32,12 @@ class GpuScene {
     // Records every draw of the scene into a rendering pass: binds the vertex and index
     // buffers and the texture set (set 1 of `layout`), and per draw its pipeline
     // (pipelinePerDraw[i]) and its material index (push constant, 4 bytes at offset 0), with
-    // `instances` instances (one per emulation layer or shadow-map layer).
+    // `instances` instances (one per emulation layer or shadow-map layer). With
+    // `pushFirstTriangle` the push constant is 8 bytes: the material, then the draw's first
+    // triangle (firstIndex / 3), so firstTriangle + gl_PrimitiveID numbers the scene's triangles.
     void recordDraws(VkCommandBuffer cmd, VkPipelineLayout layout,
-                     std::span<const VkPipeline> pipelinePerDraw, uint32_t instances) const;
+                     std::span<const VkPipeline> pipelinePerDraw, uint32_t instances,
+                     bool pushFirstTriangle = false) const;
     const vk::Buffer& materials() const { return m_materials; }
     VkDescriptorSetLayout textureSetLayout() const { return m_textureSetLayout; }
     VkDescriptorSet textureSet() const { return m_textureSet; }

@@ -19,6 +19,7 @@ struct Capabilities {
     VkSampleCountFlags colorSampleCounts = 0; // framebufferColorSampleCounts & depth & storage-image
     VkSampleCountFlags depthSampleCounts = 0;
     bool sampleRateShading = false;
+    bool fragmentPrimitiveId = false;  // geometryShader: gl_PrimitiveID readable in fragment shaders
     bool postDepthCoverage = false;    // VK_EXT_post_depth_coverage
     bool bufferFloatAtomicAdd = false; // VK_EXT_shader_atomic_float
     bool imageFloatAtomicAdd = false;

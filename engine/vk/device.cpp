@@ -291,6 +291,7 @@ void Device::createDevice(bool swapchain) {
     m_caps.depthSampleCounts = limits.framebufferDepthSampleCounts & limits.sampledImageDepthSampleCounts &
                                limits.framebufferStencilSampleCounts;
     m_caps.sampleRateShading = f2.features.sampleRateShading;
+    m_caps.fragmentPrimitiveId = f2.features.geometryShader; // SPIR-V PrimitiveId in fragments: Geometry
     m_caps.postDepthCoverage = hasExtension(exts, VK_EXT_POST_DEPTH_COVERAGE_EXTENSION_NAME);
     m_caps.bufferFloatAtomicAdd = hasAtomicFloat && atomicFloat.shaderBufferFloat32AtomicAdd;
     m_caps.imageFloatAtomicAdd = hasAtomicFloat && atomicFloat.shaderImageFloat32AtomicAdd;
@@ -368,6 +369,7 @@ void Device::createDevice(bool swapchain) {
     on11.multiview = f11.multiview;
     VkPhysicalDeviceFeatures2 on2{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};
     on2.features.sampleRateShading = f2.features.sampleRateShading;
+    on2.features.geometryShader = f2.features.geometryShader; // gl_PrimitiveID in SBAA's prepass
     on2.features.multiViewport = f2.features.multiViewport;
     on2.features.fragmentStoresAndAtomics = VK_TRUE;
     on2.features.vertexPipelineStoresAndAtomics = f2.features.vertexPipelineStoresAndAtomics;

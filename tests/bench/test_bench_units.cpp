@@ -4,6 +4,7 @@
 
 #include "claims.h"
 #include "image_error.h"
+#include "light_axis.h"
 #include "merge.h"
 #include "result_io.h"
 #include "sweep_plan.h"
@@ -212,3 +213,117 @@ TEST(Claims, NotMeasuredWhenTheRunLacksAMethodAndARatioWhenItHasBoth) {
 }
 
 } // namespace
+
+// Issue 15: the light-count axis.
+TEST(LightAxis, SceneVariantsNameTheLightCountAndRoundTrip) {
+    EXPECT_EQ(sceneWithLights("foliage", 0), "foliage") << "K = 0 keeps the ids of sweeps without the axis";
+    EXPECT_EQ(sceneWithLights("foliage", 16), "foliage+l16");
+    const SceneVariant v = parseSceneVariant("foliage+l16");
+    EXPECT_EQ(v.base, "foliage");
+    EXPECT_EQ(v.extraLights, 16u);
+    for (const char* plain : {"foliage", "hard-emissive", "a+l", "a+lx", "a+l0", "a+l007", "+l4"}) {
+        const SceneVariant p = parseSceneVariant(plain);
+        EXPECT_EQ(p.base, plain) << "not a well-formed variant: the name is the scene";
+        EXPECT_EQ(p.extraLights, 0u) << plain;
+    }
+}
+
+TEST(LightAxis, PlanRunsEverySceneOncePerLightCount) {
+    SweepSettings s;
+    s.scenes = {"plane", "foliage"};
+    s.methods = {"reference"};
+    s.samples = {8};
+    s.extraLights = {16, 0, 4, 4};
+    const std::vector<Job> plan = planSweep(s);
+    ASSERT_EQ(plan.size(), 6u);
+    EXPECT_EQ(plan[0].id(), "plane__reference__n8__c0");
+    EXPECT_EQ(plan[1].id(), "plane+l4__reference__n8__c0");
+    EXPECT_EQ(plan[2].id(), "plane+l16__reference__n8__c0");
+    EXPECT_EQ(plan[3].id(), "foliage__reference__n8__c0");
+    // Merged results sort by base scene, then K numerically (not "l16" before "l4").
+    std::vector<JobResult> in = {sampleResult("plane+l16", "reference", 8, 0),
+                                 sampleResult("plane+l4", "reference", 8, 0),
+                                 sampleResult("plane", "reference", 8, 0)};
+    const MergeOutcome m = mergeResults(in);
+    ASSERT_EQ(m.results.size(), 3u);
+    EXPECT_EQ(m.results[0].job.scene, "plane");
+    EXPECT_EQ(m.results[1].job.scene, "plane+l4");
+    EXPECT_EQ(m.results[2].job.scene, "plane+l16");
+}
+
+TEST(LightAxis, CrossingIsTheFirstKOnTheOtherSideWithTheInterpolatedEqualPoint) {
+    auto timed = [](const std::string& scene, const std::string& method, uint32_t n, uint32_t c, double ms) {
+        JobResult r = sampleResult(scene, method, n, c);
+        r.frameMs = makeSpread({ms});
+        return r;
+    };
+    // Simple/Complex grows by 1 ms per light, AGAA by 0.5 ms from a higher start: equal at K = 8.
+    std::vector<JobResult> results;
+    for (uint32_t k : {0u, 4u, 16u, 64u}) {
+        const std::string scene = sceneWithLights("foliage", k);
+        results.push_back(timed(scene, "simple-complex", 8, 0, 10.0 + k));
+        results.push_back(timed(scene, "agaa", 8, 2, 14.0 + 0.5 * k));
+        results.push_back(timed(scene, "reference", 8, 0, 5.0 + 0.1 * k)); // faster throughout
+        if (k != 16) results.push_back(timed(scene, "noaa", 1, 0, 1.0));   // no peer at n = 1
+    }
+    results.push_back(timed("plane", "agaa", 8, 2, 3.0)); // one light count: no table
+    const std::vector<LightAxisTable> tables = lightAxisTables(results);
+    ASSERT_EQ(tables.size(), 1u) << "only scenes measured at two or more light counts";
+    const LightAxisTable& t = tables[0];
+    EXPECT_EQ(t.scene, "foliage");
+    EXPECT_EQ(t.lightCounts, (std::vector<uint32_t>{0, 4, 16, 64}));
+    ASSERT_EQ(t.rows.size(), 4u);
+    const LightAxisRow& agaa = t.rows[1];
+    ASSERT_EQ(agaa.method, "agaa");
+    EXPECT_NEAR(*agaa.ratioToPeer[0], 1.4, 1e-12);
+    EXPECT_NEAR(*agaa.ratioToPeer[3], 46.0 / 74.0, 1e-12);
+    EXPECT_FALSE(agaa.fasterAtFirst);
+    ASSERT_TRUE(agaa.crossesAt);
+    EXPECT_EQ(*agaa.crossesAt, 16u);
+    // Ratios 16/14 at K = 4 and 22/26 at K = 16, interpolated linearly in K.
+    const double r4 = 16.0 / 14.0, r16 = 22.0 / 26.0;
+    EXPECT_NEAR(*agaa.crossingEstimate, 4.0 + 12.0 * (1.0 - r4) / (r16 - r4), 1e-9);
+    EXPECT_NE(agaa.verdict.find("faster than Simple/Complex from K = 16"), std::string::npos) << agaa.verdict;
+    const LightAxisRow& ref = t.rows[2];
+    EXPECT_TRUE(ref.fasterAtFirst);
+    EXPECT_FALSE(ref.crossesAt);
+    EXPECT_EQ(ref.verdict, "faster than Simple/Complex at every measured K");
+    EXPECT_TRUE(agaa.beyondSpread[2]) << "one timed frame each: the quartiles are the values";
+    // The shading-pass tables read the "<method>.lighting" pass (0.5, 0.75 ms in every job here).
+    const std::vector<LightAxisTable> shading = lightAxisTables(results, LightAxisMeasure::ShadingPass);
+    ASSERT_EQ(shading.size(), 1u);
+    ASSERT_TRUE(shading[0].rows[1].frameMs[0]);
+    EXPECT_DOUBLE_EQ(*shading[0].rows[1].frameMs[0], 0.625);
+    EXPECT_DOUBLE_EQ(*shading[0].rows[1].ratioToPeer[0], 1.0);
+    EXPECT_FALSE(shading[0].rows[1].crossesAt);
+    const LightAxisRow& noaa = t.rows[3];
+    EXPECT_FALSE(noaa.frameMs[2]) << "noaa was not run at K = 16";
+    EXPECT_FALSE(noaa.ratioToPeer[0]) << "no Simple/Complex at n = 1";
+    EXPECT_EQ(noaa.verdict, "no Simple/Complex at this n");
+}
+
+TEST(LightAxis, AnOrderWithinTheTimingSpreadIsNotACrossing) {
+    auto timed = [](const std::string& scene, const std::string& method, std::vector<double> ms) {
+        JobResult r = sampleResult(scene, method, 8, method == "agaa" ? 2 : 0);
+        r.frameMs = makeSpread(std::move(ms));
+        return r;
+    };
+    // AGAA faster at K = 0 and 64 beyond the spread; at K = 4 its median is slower but the
+    // quartiles overlap (noise), which must not count as a crossing.
+    std::vector<JobResult> results = {
+        timed("plane", "simple-complex", {10, 10, 10}),     timed("plane", "agaa", {5, 5, 5}),
+        timed("plane+l4", "simple-complex", {9, 10, 12}),   timed("plane+l4", "agaa", {8, 11, 13}),
+        timed("plane+l64", "simple-complex", {20, 20, 20}), timed("plane+l64", "agaa", {9, 9, 9})};
+    const std::vector<LightAxisTable> tables = lightAxisTables(results);
+    ASSERT_EQ(tables.size(), 1u);
+    const LightAxisRow& agaa = tables[0].rows[1];
+    ASSERT_EQ(agaa.method, "agaa");
+    EXPECT_GT(*agaa.ratioToPeer[1], 1.0) << "the median is slower at K = 4";
+    EXPECT_FALSE(agaa.beyondSpread[1]) << "but the quartiles overlap";
+    EXPECT_FALSE(agaa.crossesAt);
+    ASSERT_TRUE(agaa.withinSpreadAt);
+    EXPECT_EQ(*agaa.withinSpreadAt, 4u);
+    EXPECT_EQ(agaa.verdict,
+              "faster than Simple/Complex at every measured K beyond the timing spread (slower at "
+              "K = 4, within the quartiles)");
+}

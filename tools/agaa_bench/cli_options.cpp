@@ -2,6 +2,7 @@
 
 #include "agaa/methods.h"
 #include "engine/frame/sample_pattern.h"
+#include "engine/scene/extra_lights.h"
 #include "engine/scene/scenegen.h"
 
 #include <algorithm>
@@ -56,7 +57,7 @@ std::string usage() {
            "                  [--size WxH] [--frames K] [--warmup K] [--temporal K] [--full] [--job I/N]\n"
            "                  [--agaa-generation auto|accumulate|samples|coverage] [--sample-rate-shading "
            "on|off]\n"
-           "                  [--validate] [--help]\n"
+           "                  [--extra-lights 0,4,16,64] [--validate] [--help]\n"
            "       agaa-bench --out DIR --merge DIR1 DIR2 ...\n"
            "\n"
            "Renders every method and setting on every scene, measures GPU time per pass, memory, and error\n"
@@ -86,6 +87,11 @@ std::string usage() {
            "                    agaa-accumulate and agaa-samples sweep both paths side by side\n"
            "  --sample-rate-shading on|off  every per-sample G-buffer fill at sample rate, the truths'\n"
            "                    too: errors against the supersampled ground truth (default off)\n"
+           "  --extra-lights K,...  the light-count axis: every scene once per K, 0..1000, with K generated\n"
+           "                    point lights (a Halton sequence in the bounds, each lighting its\n"
+           "                    neighbourhood like the key light; agaa-render --help); scene variants are\n"
+           "                    named <scene>+l<K>, and the report tables where each method crosses\n"
+           "                    Simple/Complex in frame time (default 0: the scenes' own lights only)\n"
            "  --validate        Khronos validation layer on; a validation error makes the exit status 1\n"
            "\n"
            "exit status: 0 done; 1 a job failed or validation errors; 2 bad arguments or missing Chart.js;\n"
@@ -138,6 +144,10 @@ BenchOptions parseOptions(int argc, char** argv) {
                                       eng::frame::supportedSampleCounts() + ")");
                 samples->push_back(n);
             }
+        } else if (a == "--extra-lights") {
+            s.extraLights.clear();
+            for (const std::string& v : splitList(a, value()))
+                s.extraLights.push_back(parseUint(a, v, 0, eng::scene::kMaxExtraLights));
         } else if (a == "--agaa-generation") {
             const std::string v = value();
             if (v != "auto" && v != "accumulate" && v != "samples" && v != "coverage")

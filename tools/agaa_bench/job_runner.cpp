@@ -4,6 +4,7 @@
 #include "engine/io/metrics.h"
 #include "engine/io/png.h"
 #include "engine/scene/default_lighting.h"
+#include "engine/scene/extra_lights.h"
 #include "engine/scene/gltf_loader.h"
 #include "engine/scene/scenegen.h"
 
@@ -48,12 +49,14 @@ void JobRunner::selectScene(const std::string& name) {
     m_scene.renderer.reset();
     m_scene = SceneState{};
     m_scene.name = name;
-    if (const std::optional<std::filesystem::path> file = realScenePath(name)) {
+    const SceneVariant variant = parseSceneVariant(name);
+    if (const std::optional<std::filesystem::path> file = realScenePath(variant.base)) {
         m_scene.scene = std::make_unique<eng::scene::Scene>(eng::scene::loadGltf(*file));
         eng::scene::applyLighting(*m_scene.scene, eng::scene::LightingMode::Automatic);
     } else {
-        m_scene.scene = std::make_unique<eng::scene::Scene>(eng::scene::loadBuiltin(name));
+        m_scene.scene = std::make_unique<eng::scene::Scene>(eng::scene::loadBuiltin(variant.base));
     }
+    eng::scene::addExtraLights(*m_scene.scene, variant.extraLights);
     m_scene.renderer = std::make_unique<FrameRenderer>(m_device, *m_scene.scene);
 }
 

@@ -78,8 +78,10 @@ MergeOutcome mergeResults(std::vector<JobResult> results) {
     const std::vector<std::string> scenes = eng::scene::sceneKinds(), methods = methodOrder();
     std::sort(out.results.begin(), out.results.end(), [&](const JobResult& a, const JobResult& b) {
         auto key = [&](const JobResult& r) {
-            return std::make_tuple(rankIn(scenes, r.job.scene), r.job.scene, rankIn(methods, r.job.method),
-                                   r.job.method, r.job.samples, r.job.aggregates);
+            const SceneVariant v = parseSceneVariant(r.job.scene);
+            return std::make_tuple(rankIn(scenes, v.base), v.base, v.extraLights,
+                                   rankIn(methods, r.job.method), r.job.method, r.job.samples,
+                                   r.job.aggregates);
         };
         return key(a) < key(b);
     });

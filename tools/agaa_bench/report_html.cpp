@@ -1,6 +1,7 @@
 #include "report_html.h"
 
 #include "claims.h"
+#include "light_axis.h"
 #include "report_crops.h"
 #include "report_script.h"
 
@@ -288,6 +289,50 @@ std::string claimsTable(const std::vector<JobResult>& results) {
     return h.str();
 }
 
+// The light-count axis: frame ms and the ratio to Simple/Complex per K, and where it crosses 1.
+std::string lightAxisSection(const std::vector<LightAxisTable>& tables,
+                             const std::vector<LightAxisTable>& shadingTables) {
+    std::ostringstream h;
+    h << "<section id=\"lights\"><h2>Light count: where each method crosses Simple/Complex</h2>\n"
+         "<p class=\"small\">Each scene with K generated point lights added (agaa-render --extra-lights: a "
+         "Halton sequence in the bounds grown by a tenth of their diagonal, each light giving its "
+         "neighbourhood the key light's illuminance). Cells: median GPU ms of the frame (first tables) or of "
+         "the shading pass &ldquo;&lt;method&gt;.lighting&rdquo; where the light count acts (second tables), "
+         "and in brackets the ratio "
+         "to Simple/Complex at the same n and K (below 1: faster; ~: the two jobs' frame-time quartiles "
+         "overlap, so the order is within this run's timing spread). The crossing is the first measured K on "
+         "the other side of 1 beyond the spread, with the ratio interpolated linearly in K between the two "
+         "measured counts.</p>\n";
+    std::vector<std::pair<const LightAxisTable*, const char*>> all;
+    for (const LightAxisTable& t : tables)
+        all.push_back({&t, "frame"});
+    for (const LightAxisTable& t : shadingTables)
+        all.push_back({&t, "shading pass"});
+    for (const auto& [table, what] : all) {
+        const LightAxisTable& t = *table;
+        h << "<h3>" << esc(t.scene) << ": " << what << " GPU ms</h3>\n<table class=\"lights\" data-scene=\""
+          << esc(t.scene) << "\" data-measure=\"" << what << "\"><tr><th>method</th><th>n</th><th>c</th>";
+        for (uint32_t k : t.lightCounts)
+            h << "<th>K = " << k << "</th>";
+        h << "<th>against Simple/Complex</th></tr>\n";
+        for (const LightAxisRow& r : t.rows) {
+            h << "<tr><td>" << esc(r.method) << "</td><td class=\"num\">"
+              << (r.usesSamples ? std::to_string(r.samples) : "&ndash;") << "</td><td class=\"num\">"
+              << (r.usesAggregates ? std::to_string(r.aggregates) : "&ndash;") << "</td>";
+            for (size_t i = 0; i < t.lightCounts.size(); ++i) {
+                h << "<td class=\"num\">" << (r.frameMs[i] ? num(*r.frameMs[i], 2) : "&ndash;");
+                if (r.ratioToPeer[i])
+                    h << " (" << num(*r.ratioToPeer[i], 2) << (r.beyondSpread[i] ? "" : "~") << ")";
+                h << "</td>";
+            }
+            h << "<td" << (r.crossesAt ? " class=\"cross\"" : "") << ">" << esc(r.verdict) << "</td></tr>\n";
+        }
+        h << "</table>\n";
+    }
+    h << "</section>\n";
+    return h.str();
+}
+
 } // namespace
 
 fs::path findChartJs() {
@@ -335,7 +380,9 @@ void writeReport(const fs::path& outDir, const std::vector<JobResult>& results, 
     h << "<nav>Scenes:";
     for (const std::string& s : scenes)
         h << " <a href=\"#scene-" << esc(s) << "\">" << esc(s) << "</a>";
-    h << " | <a href=\"#claims\">claims</a> | <a href=\"#jobs\">every job</a> | <a href=\"#how\">method</a> "
+    h << " | <a href=\"#claims\">claims</a>"
+      << (lightAxisTables(results).empty() ? "" : " | <a href=\"#lights\">light count</a>")
+      << " | <a href=\"#jobs\">every job</a> | <a href=\"#how\">method</a> "
          "| "
          "<a href=\"results.json\">results.json</a> <a href=\"results.csv\">results.csv</a></nav>\n";
 
@@ -346,6 +393,9 @@ void writeReport(const fs::path& outDir, const std::vector<JobResult>& results, 
          "scenes. Shading pass = the pass named &ldquo;&lt;method&gt;.lighting&rdquo; (shadow-map "
          "passes are not shading).</p>\n"
       << claimsTable(results) << "</section>\n";
+    const std::vector<LightAxisTable> lightTables = lightAxisTables(results);
+    if (!lightTables.empty())
+        h << lightAxisSection(lightTables, lightAxisTables(results, LightAxisMeasure::ShadingPass));
 
     for (size_t i = 0; i < scenes.size(); ++i) {
         const std::string& scene = scenes[i];

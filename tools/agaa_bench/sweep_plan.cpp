@@ -41,12 +41,31 @@ std::string Job::id() const {
     return jobId(scene, method, samples, aggregates);
 }
 
+std::string sceneWithLights(const std::string& scene, uint32_t extraLights) {
+    return extraLights == 0 ? scene : scene + "+l" + std::to_string(extraLights);
+}
+
+SceneVariant parseSceneVariant(const std::string& name) {
+    const size_t plus = name.rfind("+l");
+    uint32_t k = 0;
+    if (plus == std::string::npos || plus == 0 || !parseUint(name.substr(plus + 2), k) || k == 0 ||
+        name.substr(plus + 2) != std::to_string(k))
+        return {name, 0};
+    return {name.substr(0, plus), k};
+}
+
 std::vector<Job> planSweep(const SweepSettings& settings) {
     const std::vector<uint32_t> samples = sortedUnique(settings.samples);
     const std::vector<uint32_t> aggregates = sortedUnique(settings.aggregates);
+    const std::vector<uint32_t> lightCounts =
+        settings.extraLights.empty() ? std::vector<uint32_t>{0} : sortedUnique(settings.extraLights);
+    std::vector<std::string> scenes;
+    for (const std::string& base : settings.scenes)
+        for (uint32_t k : lightCounts)
+            scenes.push_back(sceneWithLights(base, k));
     std::vector<Job> jobs;
     std::set<std::string> seen;
-    for (const std::string& scene : settings.scenes) {
+    for (const std::string& scene : scenes) {
         for (const std::string& method : settings.methods) {
             const MethodInfo& info = methodInfo(method);
             const std::vector<uint32_t> ns =

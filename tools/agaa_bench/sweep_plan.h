@@ -18,6 +18,8 @@ struct SweepSettings {
     std::vector<std::string> methods;
     std::vector<uint32_t> samples;    // n, for methods that take it
     std::vector<uint32_t> aggregates; // c, for methods that take it
+    // The light-count axis (--extra-lights): every scene once per K, with K generated point lights.
+    std::vector<uint32_t> extraLights = {0};
     uint32_t width = 160;
     uint32_t height = 90;
     uint32_t timedFrames = 3;
@@ -54,9 +56,20 @@ struct Job {
 
 std::string jobId(const std::string& scene, const std::string& method, uint32_t samples, uint32_t aggregates);
 
-// Scenes in the given order; per scene, methods in the given order; per method, n ascending then c
-// ascending. Methods that take neither n nor c get one job per scene. Duplicates are dropped.
-// Throws std::invalid_argument for an unknown method.
+// The light-count axis: a scene with K generated point lights (engine/scene/extra_lights.h) is the
+// scene variant "<scene>+l<K>" in job ids, results and the report; K = 0 is the scene itself, so
+// sweeps without the axis keep their ids.
+std::string sceneWithLights(const std::string& scene, uint32_t extraLights);
+struct SceneVariant {
+    std::string base;
+    uint32_t extraLights = 0;
+};
+// "foliage+l16" -> {foliage, 16}; a name without a well-formed "+l<K>" suffix is a base scene.
+SceneVariant parseSceneVariant(const std::string& name);
+
+// Scenes in the given order, each once per extra-light count (ascending); per scene, methods in the given
+// order; per method, n ascending then c ascending. Methods that take neither n nor c get one job per scene.
+// Duplicates are dropped. Throws std::invalid_argument for an unknown method.
 std::vector<Job> planSweep(const SweepSettings& settings);
 
 // --job I/N: run only the jobs whose plan index i satisfies i % N == I.

@@ -13,6 +13,7 @@
 #include "engine/io/png.h"
 #include "engine/io/tone_map.h"
 #include "engine/scene/default_lighting.h"
+#include "engine/scene/extra_lights.h"
 #include "engine/scene/gltf_loader.h"
 #include "engine/scene/scene_error.h"
 #include "engine/scene/scenegen.h"
@@ -52,15 +53,17 @@ struct Options {
     // --exposure: none = the scene's own (built-in scenes: 1), else auto; "auto"; or a value.
     std::optional<std::string> exposure;
     std::string lights = "auto";
+    uint32_t extraLights = 0; // --extra-lights: generated point lights (engine/scene/extra_lights.h)
     std::optional<std::string> environment;
 };
 
 const char* kUsage =
     "usage: agaa-render [--scene FILE | --builtin NAME] [--method NAME] [--samples N] [--aggregates C]\n"
+    "                   [--surfaces S]\n"
     "                   [--width W] [--height H] [--camera I] [--exposure auto|E] [--ev100 V] [--out PREFIX] "
     "[--debug "
     "VIEW]\n"
-    "                   [--lights auto|scene|fill|default|both] [--environment FILE.exr]\n"
+    "                   [--lights auto|scene|fill|default|both] [--extra-lights K] [--environment FILE.exr]\n"
     "                   [--stats FILE.json] [--graph FILE.dot] [--frames K] [--warmup K]\n"
     "                   [--characteristic-length K] [--seed-threshold T] [--agaa-position mean|centre]\n"
     "                   [--agaa-ndf auto|sggx|toksvig] [--agaa-lighting auto|compact|registers]\n"
@@ -77,6 +80,7 @@ const char* kUsage =
     "  --method NAME     anti-aliasing method (default: reference)\n"
     "  --samples N       visibility samples per pixel: 1, 4 native; 8, 16, 32 emulated (default 8)\n"
     "  --aggregates C    AGAA aggregates per pixel, 1..4 (default 2)\n"
+    "  --surfaces S      SBAA surfaces kept per pixel, 1..6 (default 4)\n"
     "  --width/--height  image size in pixels, 1..8192 (default 256x256)\n"
     "  --camera I        scene camera index (default 0)\n"
     "  --exposure auto|E  linear exposure E (1e-6..1e6), or auto: metered from the log-average luminance\n"
@@ -88,6 +92,9 @@ const char* kUsage =
     "                    1/4 of their illuminance; default: a 100 klux sun with shadows and a procedural\n"
     "                    sky instead; both: all of them; auto (default): fill when the scene has lights,\n"
     "                    else default\n"
+    "  --extra-lights K  K generated point lights, 0..1000 (default 0): a Halton (2, 3, 5) sequence in\n"
+    "                    the bounds grown by a tenth of their diagonal, each lighting its neighbourhood\n"
+    "                    (half the mean spacing) like the key light; no shadows\n"
     "  --environment FILE.exr  equirectangular (2:1) environment lighting every method (diffuse SH +\n"
     "                    pre-filtered specular) and shown as the sky; replaces the default sky and its sun\n"
     "  --debug VIEW      a method's debug view instead of the lit frame (agaa: aggregates; simple-complex: "
@@ -193,6 +200,8 @@ Options parse(int argc, char** argv) {
                                   eng::frame::supportedSampleCounts() + ")");
         } else if (a == "--aggregates")
             r.settings.aggregates = parseUint(a, value(), 1, 4);
+        else if (a == "--surfaces")
+            r.settings.surfaces = parseUint(a, value(), 1, 6);
         else if (a == "--debug")
             r.settings.debug = value();
         else if (a == "--characteristic-length")
@@ -262,7 +271,9 @@ Options parse(int argc, char** argv) {
         } else if (a == "--lights") {
             o.lights = value();
             eng::scene::parseLightingMode(o.lights); // refuses anything else, naming the values
-        } else if (a == "--environment")
+        } else if (a == "--extra-lights")
+            o.extraLights = parseUint(a, value(), 0, eng::scene::kMaxExtraLights);
+        else if (a == "--environment")
             o.environment = value();
         else if (a == "--out")
             o.out = value();
@@ -333,6 +344,11 @@ nlohmann::json statsJson(const Options& o, const agaa::RenderResult& r, const en
     j["width"] = o.request.view.width;
     j["height"] = o.request.view.height;
     j["device"] = device.caps().deviceName;
+    j["extra_lights"] = o.extraLights;
+    if (o.request.method == "sbaa") j["surfaces"] = o.request.settings.surfaces;
+    if (r.lostCoverageFraction)
+        j["lost_coverage"] = {{"fraction_of_samples", *r.lostCoverageFraction},
+                              {"pixels", r.pixelsWithLostCoverage}};
     j["frames_timed"] = o.frames;
     j["frames_warmup"] = o.warmup;
     j["passes"] = nlohmann::json::array();
@@ -389,6 +405,7 @@ int renderWith(const Options& o, eng::vk::Device& device) {
     }
     eng::scene::applyLighting(scene, eng::scene::parseLightingMode(o.lights), std::move(environment),
                               o.request.view.camera);
+    eng::scene::addExtraLights(scene, o.extraLights); // after the sun, so it can be the key light
 
     agaa::RenderRequest request = o.request;
     // Physical exposure: the scene's own when it gives one and --exposure does not, else metered.

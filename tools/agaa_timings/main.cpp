@@ -6,10 +6,13 @@
 //
 //   agaa-timings [--scenes foliage,furball] [--size 640x360] [--frames 5] [--warmup 2]
 //                [--jobs reference:8,agaa:8:2,simple-complex:8] [--breakdown] [--validate] [--json FILE]
-//                [--sample-rate-shading on|off]
-// A job is METHOD[:N[:C]][:KEY=VALUE...]; AGAA's keys are its settings (lighting, routing,
-// atomics, reduce, distance, ndf, generation, curvature), e.g. agaa:8:2:lighting=registers:routing=fragment.
-// Every method whose name starts with "agaa" (agaa, agaa-accumulate, agaa-samples) is an AGAA job.
+//                [--sample-rate-shading on|off] [--extra-lights K[,K...]]
+// --extra-lights: each scene once per K, with K generated point lights added
+// (engine/scene/extra_lights.h); results of K > 0 are keyed "<scene>+l<K>".
+// A job is METHOD[:N[:C]][:KEY=VALUE...] (sbaa:N:S: S surfaces); AGAA's keys are its settings (lighting,
+// routing, atomics, reduce, distance, ndf, generation, curvature), e.g.
+// agaa:8:2:lighting=registers:routing=fragment. Every method whose name starts with "agaa" (agaa,
+// agaa-accumulate, agaa-samples) is an AGAA job.
 // --sample-rate-shading applies to every job that fills a per-sample G-buffer.
 // For every AGAA job it prints, next to the shading/frame ratios against each peer at the same n:
 //   - lighting ms per shading event against no-AA's (needs a noaa job): what one aggregate's
@@ -25,6 +28,7 @@
 #include "agaa/aggregate/agaa_constants.h"
 #include "agaa/common/frame_renderer.h"
 #include "agaa/methods.h"
+#include "engine/scene/extra_lights.h"
 #include "engine/scene/scene_error.h"
 #include "engine/scene/scenegen.h"
 #include "engine/vk/check.h"
@@ -45,10 +49,12 @@ namespace {
 struct Job {
     std::string method;
     uint32_t samples = 8, aggregates = 2;
+    uint32_t surfaces = 4;                                    // sbaa:N:S
     std::vector<std::pair<std::string, std::string>> options; // AGAA KEY=VALUE settings
     bool isAgaa() const { return method.rfind("agaa", 0) == 0; }
     std::string label() const {
         std::string l = method + " n=" + std::to_string(samples);
+        if (method == "sbaa") return l + " S=" + std::to_string(surfaces);
         if (!isAgaa()) return l;
         l += " c=" + std::to_string(aggregates);
         for (const auto& [k, v] : options)
@@ -109,8 +115,12 @@ Job parseJob(const std::string& text) {
     size_t i = 1;
     if (i < parts.size() && parts[i].find('=') == std::string::npos)
         j.samples = number("--jobs samples", parts[i++], 1, 32);
-    if (i < parts.size() && parts[i].find('=') == std::string::npos)
-        j.aggregates = number("--jobs aggregates", parts[i++], 1, 4);
+    if (i < parts.size() && parts[i].find('=') == std::string::npos) {
+        if (j.method == "sbaa")
+            j.surfaces = number("--jobs surfaces", parts[i++], 1, 6); // sbaa:N:S
+        else
+            j.aggregates = number("--jobs aggregates", parts[i++], 1, 4);
+    }
     agaa::MethodSettings probe;
     for (; i < parts.size(); ++i) {
         size_t eq = parts[i].find('=');
@@ -152,6 +162,7 @@ double frameMs(const agaa::RenderResult& r) {
 int main(int argc, char** argv) {
     std::vector<std::string> scenes = {"foliage", "furball"};
     uint32_t width = 640, height = 360, frames = 5, warmup = 2;
+    std::vector<uint32_t> extraLights = {0};
     std::vector<Job> jobs = {{"reference", 8, 1}, {"agaa", 8, 2}};
     if (agaa::isKnownMethod("simple-complex")) jobs.push_back({"simple-complex", 8, 1});
     bool validate = false, breakdown = false, sampleRateShading = false;
@@ -187,6 +198,11 @@ int main(int argc, char** argv) {
                 if (v != "on" && v != "off")
                     throw std::invalid_argument("--sample-rate-shading '" + v + "' is not one of: on, off");
                 sampleRateShading = v == "on";
+            } else if (a == "--extra-lights") {
+                extraLights.clear();
+                for (const auto& k : split(value(), ','))
+                    extraLights.push_back(number(a, k, 0, eng::scene::kMaxExtraLights));
+                if (extraLights.empty()) throw std::invalid_argument("--extra-lights needs at least one K");
             } else if (a == "--json")
                 jsonPath = value();
             else if (a == "--help" || a == "-h") {
@@ -194,7 +210,7 @@ int main(int argc, char** argv) {
                             "                    [--jobs METHOD[:N[:C]][:KEY=VALUE...],...] [--breakdown] "
                             "[--validate]\n"
                             "                    [--json FILE]\n"
-                            "                    [--sample-rate-shading on|off]\n"
+                            "                    [--sample-rate-shading on|off] [--extra-lights K[,K...]]\n"
                             "AGAA job keys: lighting=auto|compact|registers, routing=samples|fragment,\n"
                             "  atomics=auto|32|64, reduce=auto|on|off, distance=position|plane, "
                             "ndf=auto|sggx|toksvig,\n"
@@ -215,123 +231,137 @@ int main(int argc, char** argv) {
         out["warmup"] = warmup;
         std::printf("device: %s, %ux%u, median of %u frames after %u warm-up frames\n",
                     device.caps().deviceName.c_str(), width, height, frames, warmup);
-        for (const std::string& name : scenes) {
-            eng::scene::Scene scene = eng::scene::loadBuiltin(name);
-            agaa::FrameRenderer renderer(device, scene);
-            std::map<std::string, agaa::RenderResult> results;
-            std::printf("\n== %s (%u triangles)\n", name.c_str(), scene.triangleCount());
-            auto request = [&](const Job& job) {
-                agaa::RenderRequest r;
-                r.method = job.method;
-                r.settings.samples = job.samples;
-                r.settings.aggregates = job.aggregates;
-                for (const auto& [k, v] : job.options)
-                    setAgaaOption(r.settings, k, v);
-                r.settings.sampleRateShading = sampleRateShading;
-                r.view.width = width;
-                r.view.height = height;
-                r.warmupFrames = warmup;
-                r.timedFrames = frames;
-                return r;
-            };
-            for (const Job& job : jobs) {
-                agaa::RenderResult res = renderer.render(request(job));
-                std::printf("  %-26s frame %9.2f ms  bytes/px %7.1f  events/px %.2f (max %u)\n",
-                            job.label().c_str(), frameMs(res), res.bytesPerPixel, res.shadingEventsMean,
-                            res.shadingEventsMax);
-                nlohmann::json passes = nlohmann::json::object();
-                for (const auto& p : res.passes) {
-                    if (p.name.rfind("readback.", 0) == 0) continue;
-                    std::printf("      %-28s %9.2f ms\n", p.name.c_str(), p.gpuMs);
-                    passes[p.name] = p.gpuMs;
-                }
-                nlohmann::json variants = nlohmann::json::object();
-                for (const auto& v : res.variants)
-                    variants[v.effect] = v.variant;
-                out["scenes"][name][job.label()] = {{"frame_ms", frameMs(res)},
-                                                    {"shading_ms", shadingMs(res)},
-                                                    {"bytes_per_pixel", res.bytesPerPixel},
-                                                    {"events_per_pixel", res.shadingEventsMean},
-                                                    {"passes", passes},
-                                                    {"variants", variants}};
-                if (breakdown && job.isAgaa()) {
-                    namespace parts = agaa::AggregateBreakdown;
-                    auto without = [&](uint32_t bits) {
-                        agaa::RenderRequest r = request(job);
-                        r.settings.agaaBreakdown = bits;
-                        return renderer.render(r);
-                    };
-                    agaa::RenderResult noShading = without(parts::kLightingWithoutShading);
-                    agaa::RenderResult noAtomics =
-                        without(parts::kGenerationWithoutAtomics | parts::kVisibilityWithoutNormals);
-                    agaa::RenderResult empty = without(parts::kGenerationEmpty);
-                    const double lighting = shadingMs(res), prologue = shadingMs(noShading);
-                    const double generation = passMs(res, "agaa.generation");
-                    const double material = passMs(noAtomics, "agaa.generation");
-                    const double raster = passMs(empty, "agaa.generation");
-                    const double visibility = passMs(res, "agaa.visibility");
-                    const double noNormals = passMs(noAtomics, "agaa.visibility");
-                    std::printf("      breakdown: lighting %.2f = shading %.2f + the rest %.2f (sample walk, "
-                                "normalisation, culling, resolve)\n",
-                                lighting, lighting - prologue, prologue);
-                    std::printf(
-                        "      breakdown: generation %.2f = atomics and routing %.2f + material %.2f + "
-                        "raster, depth and stencil %.2f\n",
-                        generation, generation - material, material - raster, raster);
-                    std::printf(
-                        "      breakdown: visibility %.2f = face-normal encoding %.2f + the rest %.2f\n",
-                        visibility, visibility - noNormals, noNormals);
-                    out["scenes"][name][job.label()]["breakdown_ms"] = {
-                        {"lighting_shading", lighting - prologue},
-                        {"lighting_rest", prologue},
-                        {"generation_atomics", generation - material},
-                        {"generation_material", material - raster},
-                        {"generation_raster", raster},
-                        {"visibility_normals", visibility - noNormals},
-                        {"visibility_rest", noNormals}};
-                }
-                results[job.label()] = std::move(res);
-            }
-            // Ratios of every AGAA job against every peer at the same n.
-            const agaa::RenderResult* noaa = nullptr;
-            for (const Job& b : jobs)
-                if (b.method == "noaa") noaa = &results[b.label()];
-            for (const Job& a : jobs) {
-                if (!a.isAgaa()) continue;
-                const auto& ra = results[a.label()];
-                nlohmann::json& ratios = out["scenes"][name]["ratios"];
-                if (noaa && noaa->shadingEventsMean > 0 && ra.shadingEventsMean > 0 && shadingMs(*noaa) > 0) {
-                    double perEvent =
-                        (shadingMs(ra) / ra.shadingEventsMean) / (shadingMs(*noaa) / noaa->shadingEventsMean);
-                    std::printf(
-                        "  %s: lighting ms per shading event %.2fx no-AA's (%.2f vs %.2f ms per event/px)\n",
-                        a.label().c_str(), perEvent, shadingMs(ra) / ra.shadingEventsMean,
-                        shadingMs(*noaa) / noaa->shadingEventsMean);
-                    ratios[a.label() + " per event vs noaa"] = perEvent;
-                }
-                for (const Job& b : jobs) {
-                    if (b.isAgaa() || b.samples != a.samples) continue;
-                    const auto& rb = results[b.label()];
-                    double shading = shadingMs(ra) > 0 ? shadingMs(rb) / shadingMs(ra) : 0.0;
-                    double frame = frameMs(rb) / frameMs(ra);
-                    double bytes = ra.bytesPerPixel / rb.bytesPerPixel;
-                    std::printf("  %s vs %s: shading pass %.2fx faster, frame %.2fx faster, bytes/px %.3fx\n",
-                                a.label().c_str(), b.label().c_str(), shading, frame, bytes);
-                    nlohmann::json entry = {
-                        {"shading_speedup", shading}, {"frame_speedup", frame}, {"bytes_ratio", bytes}};
-                    double gbuffer = passMs(rb, b.method + ".gbuffer");
-                    if (gbuffer > 0) {
-                        // Accumulate: prepass + accumulation kernel; samples: its one G-buffer pass.
-                        double raster = passMs(ra, "agaa.visibility") + passMs(ra, "agaa.generation") +
-                                        passMs(ra, "agaa.gbuffer");
-                        std::printf("      AGAA raster passes %.2f ms = %.2fx %s.gbuffer (%.2f ms)\n", raster,
-                                    raster / gbuffer, b.method.c_str(), gbuffer);
-                        entry["raster_ratio"] = raster / gbuffer;
+        for (const std::string& sceneName : scenes)
+            for (uint32_t lights : extraLights) {
+                const std::string name = lights == 0 ? sceneName : sceneName + "+l" + std::to_string(lights);
+                eng::scene::Scene scene = eng::scene::loadBuiltin(sceneName);
+                eng::scene::addExtraLights(scene, lights);
+                agaa::FrameRenderer renderer(device, scene);
+                std::map<std::string, agaa::RenderResult> results;
+                std::printf("\n== %s (%u triangles, %zu lights)\n", name.c_str(), scene.triangleCount(),
+                            scene.lights.size());
+                auto request = [&](const Job& job) {
+                    agaa::RenderRequest r;
+                    r.method = job.method;
+                    r.settings.samples = job.samples;
+                    r.settings.aggregates = job.aggregates;
+                    r.settings.surfaces = job.surfaces;
+                    for (const auto& [k, v] : job.options)
+                        setAgaaOption(r.settings, k, v);
+                    r.settings.sampleRateShading = sampleRateShading;
+                    r.view.width = width;
+                    r.view.height = height;
+                    r.warmupFrames = warmup;
+                    r.timedFrames = frames;
+                    return r;
+                };
+                for (const Job& job : jobs) {
+                    agaa::RenderResult res = renderer.render(request(job));
+                    std::printf("  %-26s frame %9.2f ms  bytes/px %7.1f  events/px %.2f (max %u)\n",
+                                job.label().c_str(), frameMs(res), res.bytesPerPixel, res.shadingEventsMean,
+                                res.shadingEventsMax);
+                    nlohmann::json passes = nlohmann::json::object();
+                    for (const auto& p : res.passes) {
+                        if (p.name.rfind("readback.", 0) == 0) continue;
+                        std::printf("      %-28s %9.2f ms\n", p.name.c_str(), p.gpuMs);
+                        passes[p.name] = p.gpuMs;
                     }
-                    ratios[a.label() + " vs " + b.label()] = entry;
+                    nlohmann::json variants = nlohmann::json::object();
+                    for (const auto& v : res.variants)
+                        variants[v.effect] = v.variant;
+                    out["scenes"][name][job.label()] = {{"frame_ms", frameMs(res)},
+                                                        {"shading_ms", shadingMs(res)},
+                                                        {"bytes_per_pixel", res.bytesPerPixel},
+                                                        {"events_per_pixel", res.shadingEventsMean},
+                                                        {"passes", passes},
+                                                        {"variants", variants}};
+                    if (res.lostCoverageFraction) {
+                        std::printf("      lost coverage: %.4f of the samples, %llu pixels\n",
+                                    *res.lostCoverageFraction,
+                                    static_cast<unsigned long long>(res.pixelsWithLostCoverage));
+                        out["scenes"][name][job.label()]["lost_coverage"] = *res.lostCoverageFraction;
+                    }
+                    if (breakdown && job.isAgaa()) {
+                        namespace parts = agaa::AggregateBreakdown;
+                        auto without = [&](uint32_t bits) {
+                            agaa::RenderRequest r = request(job);
+                            r.settings.agaaBreakdown = bits;
+                            return renderer.render(r);
+                        };
+                        agaa::RenderResult noShading = without(parts::kLightingWithoutShading);
+                        agaa::RenderResult noAtomics =
+                            without(parts::kGenerationWithoutAtomics | parts::kVisibilityWithoutNormals);
+                        agaa::RenderResult empty = without(parts::kGenerationEmpty);
+                        const double lighting = shadingMs(res), prologue = shadingMs(noShading);
+                        const double generation = passMs(res, "agaa.generation");
+                        const double material = passMs(noAtomics, "agaa.generation");
+                        const double raster = passMs(empty, "agaa.generation");
+                        const double visibility = passMs(res, "agaa.visibility");
+                        const double noNormals = passMs(noAtomics, "agaa.visibility");
+                        std::printf(
+                            "      breakdown: lighting %.2f = shading %.2f + the rest %.2f (sample walk, "
+                            "normalisation, culling, resolve)\n",
+                            lighting, lighting - prologue, prologue);
+                        std::printf(
+                            "      breakdown: generation %.2f = atomics and routing %.2f + material %.2f + "
+                            "raster, depth and stencil %.2f\n",
+                            generation, generation - material, material - raster, raster);
+                        std::printf(
+                            "      breakdown: visibility %.2f = face-normal encoding %.2f + the rest %.2f\n",
+                            visibility, visibility - noNormals, noNormals);
+                        out["scenes"][name][job.label()]["breakdown_ms"] = {
+                            {"lighting_shading", lighting - prologue},
+                            {"lighting_rest", prologue},
+                            {"generation_atomics", generation - material},
+                            {"generation_material", material - raster},
+                            {"generation_raster", raster},
+                            {"visibility_normals", visibility - noNormals},
+                            {"visibility_rest", noNormals}};
+                    }
+                    results[job.label()] = std::move(res);
+                }
+                // Ratios of every AGAA job against every peer at the same n.
+                const agaa::RenderResult* noaa = nullptr;
+                for (const Job& b : jobs)
+                    if (b.method == "noaa") noaa = &results[b.label()];
+                for (const Job& a : jobs) {
+                    if (!a.isAgaa()) continue;
+                    const auto& ra = results[a.label()];
+                    nlohmann::json& ratios = out["scenes"][name]["ratios"];
+                    if (noaa && noaa->shadingEventsMean > 0 && ra.shadingEventsMean > 0 &&
+                        shadingMs(*noaa) > 0) {
+                        double perEvent = (shadingMs(ra) / ra.shadingEventsMean) /
+                                          (shadingMs(*noaa) / noaa->shadingEventsMean);
+                        std::printf("  %s: lighting ms per shading event %.2fx no-AA's (%.2f vs %.2f ms per "
+                                    "event/px)\n",
+                                    a.label().c_str(), perEvent, shadingMs(ra) / ra.shadingEventsMean,
+                                    shadingMs(*noaa) / noaa->shadingEventsMean);
+                        ratios[a.label() + " per event vs noaa"] = perEvent;
+                    }
+                    for (const Job& b : jobs) {
+                        if (b.isAgaa() || b.samples != a.samples) continue;
+                        const auto& rb = results[b.label()];
+                        double shading = shadingMs(ra) > 0 ? shadingMs(rb) / shadingMs(ra) : 0.0;
+                        double frame = frameMs(rb) / frameMs(ra);
+                        double bytes = ra.bytesPerPixel / rb.bytesPerPixel;
+                        std::printf(
+                            "  %s vs %s: shading pass %.2fx faster, frame %.2fx faster, bytes/px %.3fx\n",
+                            a.label().c_str(), b.label().c_str(), shading, frame, bytes);
+                        nlohmann::json entry = {
+                            {"shading_speedup", shading}, {"frame_speedup", frame}, {"bytes_ratio", bytes}};
+                        double gbuffer = passMs(rb, b.method + ".gbuffer");
+                        if (gbuffer > 0) {
+                            // Accumulate: prepass + accumulation kernel; samples: its one G-buffer pass.
+                            double raster = passMs(ra, "agaa.visibility") + passMs(ra, "agaa.generation") +
+                                            passMs(ra, "agaa.gbuffer");
+                            std::printf("      AGAA raster passes %.2f ms = %.2fx %s.gbuffer (%.2f ms)\n",
+                                        raster, raster / gbuffer, b.method.c_str(), gbuffer);
+                            entry["raster_ratio"] = raster / gbuffer;
+                        }
+                        ratios[a.label() + " vs " + b.label()] = entry;
+                    }
                 }
             }
-        }
         if (device.validationErrors()) {
             std::fprintf(stderr, "agaa-timings: %u validation error(s)\n", device.validationErrors());
             return 1;

@@ -72,15 +72,10 @@ void gbufferDistanceRange(ivec2 pixel, out float tmin, out float tmax) {
 // before the tone map (seed 004), exposure applied. radiance: the exposed linear
 // radiance; display: its tone-mapped value. Both unweighted: the caller weights them
 // by the sample fraction they stand for. The sample must not be sky.
-void shadeGBufferSurface(ivec2 pixel, uint s, vec3 P, out vec3 radiance, out vec3 display) {
+// One shading event of a surface given by its inputs (SBAA's per-surface G-buffer): as
+// shadeGBufferSurface, which calls it.
+void shadeSurfaceInputs(SurfaceInputs surface, vec3 emissive, vec3 P, out vec3 radiance, out vec3 display) {
     vec3 V = normalize(-P); // |P| >= znear > 0
-    SurfaceInputs surface;
-    surface.normal = gbufferNormal(pixel, s);
-    vec4 am = FETCH_SAMPLE(gAlbedoMetal, pixel, s);
-    vec4 er = FETCH_SAMPLE(gEmissiveRoughness, pixel, s);
-    surface.albedo = am.rgb;
-    surface.metallic = am.a;
-    surface.roughness = er.a;
     vec3 lit = kEnvironment != 0u ? environmentLighting(surface, V, surface.roughness) : vec3(0.0);
     for (uint i = nextTileLight(0u); i < kMaxLights; i = nextTileLight(i + 1u)) {
         vec3 L, irradiance;
@@ -94,8 +89,19 @@ void shadeGBufferSurface(ivec2 pixel, uint s, vec3 P, out vec3 radiance, out vec
         lit += evaluateBrdf(surface, V, L, irradiance * shadowVisibilityPoint(i, P, surface.normal));
     }
 #endif
-    radiance = min((lit + er.rgb) * frame.depthParams.z, vec3(kMaxRadiance));
+    radiance = min((lit + emissive) * frame.depthParams.z, vec3(kMaxRadiance));
     display = toneMapAces(radiance);
+}
+
+void shadeGBufferSurface(ivec2 pixel, uint s, vec3 P, out vec3 radiance, out vec3 display) {
+    SurfaceInputs surface;
+    surface.normal = gbufferNormal(pixel, s);
+    vec4 am = FETCH_SAMPLE(gAlbedoMetal, pixel, s);
+    vec4 er = FETCH_SAMPLE(gEmissiveRoughness, pixel, s);
+    surface.albedo = am.rgb;
+    surface.metallic = am.a;
+    surface.roughness = er.a;
+    shadeSurfaceInputs(surface, er.rgb, P, radiance, display);
 }
 
 #if GBUFFER_SHADOWS

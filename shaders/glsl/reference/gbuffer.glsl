@@ -17,7 +17,17 @@ layout(constant_id = 10) const float kCurvatureBoost = 2.0;
 layout(set = 0, binding = 0) uniform Frame { FrameConstants frame; };
 layout(set = 0, binding = 1, std430) readonly buffer Materials { GpuMaterial materials[]; };
 layout(set = 1, binding = 0) uniform sampler2D textures[kMaxSceneTextures];
+// GBUFFER_PRIMITIVE_ID (gbuffer_primitive*.frag; GBufferOptions::primitiveIds, SBAA's prepass):
+// RT3 R32_SFLOAT holds the scene-wide triangle number + 1 (0 = nothing), exact below 2^24.
+// Integer MSAA colour formats are 1x only on lavapipe (framebufferIntegerColorSampleCounts).
+#ifndef GBUFFER_PRIMITIVE_ID
+#define GBUFFER_PRIMITIVE_ID 0
+#endif
+#if GBUFFER_PRIMITIVE_ID
+layout(push_constant) uniform Push { uint material; uint firstTriangle; } pc;
+#else
 layout(push_constant) uniform Push { uint material; } pc;
+#endif
 
 #include "common/material.glsl"
 #include "common/octahedral.glsl"
@@ -44,6 +54,9 @@ layout(location = 3) INTERPOLATION in vec4 inColor;
 layout(location = 0) out vec4 outNormal; // xy octahedral; w coverage alpha (alpha-to-coverage reads it)
 layout(location = 1) out vec4 outAlbedoMetal;
 layout(location = 2) out vec4 outEmissiveRoughness;
+#if GBUFFER_PRIMITIVE_ID
+layout(location = 3) out float outPrimitive;
+#endif
 
 void main() {
     // The geometric normal's derivatives first: in uniform control flow, before any discard.
@@ -60,4 +73,7 @@ void main() {
     outNormal = vec4(encodeOctahedral(s.normal), 0.0, coverage);
     outAlbedoMetal = vec4(s.albedo, s.metallic);
     outEmissiveRoughness = vec4(min(s.emissive, vec3(kMaxRadiance)), s.roughness);
+#if GBUFFER_PRIMITIVE_ID
+    outPrimitive = float(pc.firstTriangle + uint(gl_PrimitiveID) + 1u);
+#endif
 }
