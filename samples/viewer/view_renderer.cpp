@@ -1,0 +1,206 @@
+#include "samples/viewer/view_renderer.h"
+
+#include "agaa/methods.h"
+#include "engine/frame/frame_constants.h"
+#include "engine/frame/readback.h"
+#include "engine/frame/sample_pattern.h"
+#include "engine/graph/graph.h"
+#include "shared/frame.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <stdexcept>
+
+namespace agaa::viewer {
+namespace rg = eng::rg;
+namespace vk = eng::vk;
+
+ViewRenderer::ViewRenderer(vk::Device& device, const eng::scene::Scene& scene)
+    : m_device(device), m_scene(scene), m_gpuScene(device, scene), m_runner(device) {
+    if (scene.lights.size() > shared::kMaxLights)
+        throw std::invalid_argument(scene.source + ": " + std::to_string(scene.lights.size()) +
+                                    " lights; at most " + std::to_string(shared::kMaxLights) +
+                                    " are supported");
+    for (int i = 0; i < 2; ++i)
+        m_frameConstants[i] = vk::createBuffer(device, sizeof(shared::FrameConstants),
+                                               VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, vk::MemoryUse::Upload,
+                                               i == 0 ? "viewer.constants" : "viewer.referenceConstants");
+    m_lights = vk::createBuffer(device, std::max<size_t>(1, scene.lights.size()) * sizeof(shared::GpuLight),
+                                VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, vk::MemoryUse::Upload, "viewer.lights");
+}
+
+ViewRenderer::~ViewRenderer() {
+    vkDeviceWaitIdle(m_device.device());
+    m_techniques.clear();
+    for (vk::Buffer& b : m_frameConstants)
+        vk::destroyBuffer(m_device, b);
+    vk::destroyBuffer(m_device, m_lights);
+    if (m_events.buffer) vk::destroyBuffer(m_device, m_events);
+    if (m_screenshot.buffer) vk::destroyBuffer(m_device, m_screenshot);
+}
+
+Technique& ViewRenderer::technique(const std::string& method, const MethodSettings& s) {
+    // Everything the viewer can change; the rest stays at MethodSettings' defaults.
+    const std::string key =
+        method + "/" + std::to_string(s.samples) + "/" + std::to_string(s.aggregates) + "/" + s.debug + "/" +
+        s.ndf + "/" + s.agaaGeneration + (s.effects.forceAll ? "/all" : "") + "/" +
+        std::to_string(s.effects.shadowMapSize) + "/" + std::to_string(s.effects.shadowTaps) + "/" +
+        std::to_string(uint32_t(s.effects.shadowFootprint));
+    auto it = m_techniques.find(key);
+    if (it == m_techniques.end())
+        it = m_techniques.emplace(key, createTechnique(method, m_device, m_gpuScene, s)).first;
+    return *it->second;
+}
+
+namespace {
+
+// bytesPerTexel: 4 for both the R32_UINT events and the 8-bit BGRA/RGBA swapchain formats.
+void ensureReadback(vk::Device& device, vk::Buffer& buffer, uint32_t w, uint32_t h, uint32_t bytesPerTexel,
+                    const std::string& name) {
+    const VkDeviceSize size = VkDeviceSize(w) * h * bytesPerTexel;
+    if (buffer.buffer && buffer.size == size) return;
+    if (buffer.buffer) vk::destroyBuffer(device, buffer); // the previous frame was waited for
+    buffer = vk::createBuffer(device, size, VK_BUFFER_USAGE_TRANSFER_DST_BIT, vk::MemoryUse::Readback, name);
+}
+
+struct DisplayBlit {
+    rg::Texture display, reference, target;
+};
+
+} // namespace
+
+ViewFrame ViewRenderer::render(const ViewRequest& request, const AcquiredImage& target,
+                               const OverlayPass& overlay) {
+    const RenderRequest& r = request.render;
+    const uint32_t w = target.texture.desc.width, h = target.texture.desc.height;
+    // Created (and validated) before anything is written or recorded, so a refused setting
+    // leaves the frame untouched.
+    Technique& tech = technique(r.method, r.settings);
+    Technique* reference = nullptr;
+    if (request.split) {
+        MethodSettings refSettings;
+        refSettings.samples = r.settings.samples;
+        refSettings.effects = r.settings.effects;
+        reference = &technique("reference", refSettings);
+    }
+
+    eng::frame::ViewSettings view = r.view;
+    view.width = w;
+    view.height = h;
+    shared::FrameConstants constants[2];
+    constants[0] =
+        eng::frame::makeFrameConstants(m_scene, view, eng::frame::makeSamplePattern(tech.samples()));
+    const std::vector<shared::GpuLight> lights = eng::frame::makeGpuLights(m_scene, constants[0].view);
+    vk::writeBuffer(m_device, m_frameConstants[0], std::as_bytes(std::span(&constants[0], 1)));
+    vk::writeBuffer(m_device, m_lights, std::as_bytes(std::span(lights)));
+    if (reference) {
+        constants[1] = eng::frame::makeFrameConstants(m_scene, view,
+                                                      eng::frame::makeSamplePattern(reference->samples()));
+        vk::writeBuffer(m_device, m_frameConstants[1], std::as_bytes(std::span(&constants[1], 1)));
+    }
+
+    rg::Graph graph;
+    // Host-written before the submit (which makes them visible): no earlier GPU use.
+    const rg::Buffer lightsBuffer =
+        graph.importBuffer("frame.lights", {m_lights.buffer, m_lights.size}, std::nullopt, std::nullopt);
+    auto inputs = [&](int i) {
+        FrameInputs in;
+        in.scene = &m_gpuScene;
+        in.constants = &constants[i];
+        in.width = w;
+        in.height = h;
+        in.frameConstants = graph.importBuffer(i == 0 ? "frame.constants" : "frame.referenceConstants",
+                                               {m_frameConstants[i].buffer, m_frameConstants[i].size},
+                                               std::nullopt, std::nullopt);
+        in.lights = lightsBuffer;
+        return in;
+    };
+    const FrameTargets targets = tech.addPasses(graph, inputs(0));
+    rg::Texture referenceDisplay;
+    if (reference) referenceDisplay = reference->addPasses(graph, inputs(1)).display;
+
+    // The acquired image's contents are discarded (initial nullopt); it leaves in PRESENT_SRC.
+    rg::Texture swapchain =
+        graph.importTexture("viewer.swapchain", target.texture, std::nullopt, rg::Use::Present);
+    const uint32_t splitX =
+        reference ? std::clamp(uint32_t(std::lround(request.splitFraction * float(w))), 1u, w - 1) : w;
+    const DisplayBlit& blit = graph.addPass<DisplayBlit>(
+        "viewer.display", rg::PassKind::Transfer,
+        [&](rg::Builder& b, DisplayBlit& d) {
+            d.display = b.read(targets.display, rg::Use::TransferSrc);
+            if (referenceDisplay.valid()) d.reference = b.read(referenceDisplay, rg::Use::TransferSrc);
+            d.target = b.write(swapchain, rg::Use::TransferDst);
+        },
+        [splitX, w, h](const rg::Context& ctx, const DisplayBlit& d) {
+            // 1:1 and NEAREST: each swapchain pixel is exactly one rendered pixel; the blit
+            // converts RGBA32F linear to the SRGB swapchain format (the sRGB encode).
+            const rg::PhysicalTexture& dst = ctx.texture(d.target);
+            auto region = [](int32_t x0, int32_t x1, int32_t height) {
+                VkImageBlit2 blitRegion{VK_STRUCTURE_TYPE_IMAGE_BLIT_2};
+                blitRegion.srcSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+                blitRegion.dstSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+                blitRegion.srcOffsets[0] = {x0, 0, 0};
+                blitRegion.srcOffsets[1] = {x1, height, 1};
+                blitRegion.dstOffsets[0] = blitRegion.srcOffsets[0];
+                blitRegion.dstOffsets[1] = blitRegion.srcOffsets[1];
+                return blitRegion;
+            };
+            auto blitFrom = [&](rg::Texture source, int32_t x0, int32_t x1) {
+                const VkImageBlit2 blitRegion = region(x0, x1, int32_t(h));
+                VkBlitImageInfo2 info{VK_STRUCTURE_TYPE_BLIT_IMAGE_INFO_2};
+                info.srcImage = ctx.texture(source).image;
+                info.srcImageLayout = eng::rg::useInfo(rg::Use::TransferSrc).layout;
+                info.dstImage = dst.image;
+                info.dstImageLayout = eng::rg::useInfo(rg::Use::TransferDst).layout;
+                info.regionCount = 1;
+                info.pRegions = &blitRegion;
+                info.filter = VK_FILTER_NEAREST;
+                vkCmdBlitImage2(ctx.cmd(), &info);
+            };
+            blitFrom(d.display, 0, int32_t(splitX));
+            if (d.reference.valid()) blitFrom(d.reference, int32_t(splitX), int32_t(w));
+        });
+    swapchain = blit.target;
+    if (overlay) swapchain = overlay(graph, swapchain);
+    if (request.screenshot) {
+        ensureReadback(m_device, m_screenshot, w, h, 4, "viewer.screenshot");
+        eng::frame::addReadbackPass(graph, swapchain, m_screenshot, "viewer.screenshot");
+    }
+    if (request.readShadingEvents) {
+        ensureReadback(m_device, m_events, w, h, 4, "viewer.events");
+        eng::frame::addReadbackPass(graph, targets.shadingEvents, m_events, "viewer.events");
+    }
+    graph.compile();
+
+    ViewFrame frame;
+    frame.samples = tech.samples();
+    frame.timing = m_runner.run(graph);
+
+    const double pixels = double(w) * h;
+    for (const auto& [name, bytes] : m_runner.pool().bytesByName()) {
+        if (!tech.isStorage(name)) continue;
+        frame.bytesPerPixel += double(bytes) / pixels;
+        frame.bytesPerPixelSplit[tech.storageCategory(name)] += double(bytes) / pixels;
+    }
+    if (request.readShadingEvents) {
+        vk::invalidateBuffer(m_device, m_events);
+        const uint32_t* events = static_cast<const uint32_t*>(m_events.mapped);
+        uint64_t sum = 0;
+        for (size_t i = 0; i < size_t(w) * h; ++i)
+            sum += events[i];
+        frame.shadingEventsPerPixel = double(sum) / pixels;
+    }
+    if (request.screenshot) {
+        vk::invalidateBuffer(m_device, m_screenshot);
+        eng::io::ImageU8 image = eng::io::makeImageU8(w, h);
+        std::memcpy(image.rgba.data(), m_screenshot.mapped, image.rgba.size());
+        if (target.texture.desc.format == VK_FORMAT_B8G8R8A8_SRGB)
+            for (size_t i = 0; i < image.rgba.size(); i += 4)
+                std::swap(image.rgba[i], image.rgba[i + 2]);
+        frame.screenshot = std::move(image);
+    }
+    return frame;
+}
+
+} // namespace agaa::viewer

@@ -1,0 +1,72 @@
+#pragma once
+// One viewer frame on the GPU, from the scene to the swapchain image, in one render graph: the
+// method's passes, the per-sample reference at the same n when the split view is on, the display
+// blit into the acquired swapchain image (1:1, nearest; the SRGB swapchain format does the sRGB
+// encode), the UI pass on top, and the present transition. Nothing is read back per frame; the
+// shading-event count (for the stats) and a screenshot only when asked for.
+
+#include "agaa/common/frame_renderer.h"
+#include "agaa/common/technique.h"
+#include "engine/frame/frame_runner.h"
+#include "engine/frame/gpu_scene.h"
+#include "engine/io/image.h"
+#include "engine/scene/scene.h"
+#include "engine/vk/device.h"
+#include "engine/vk/resources.h"
+#include "samples/viewer/swapchain.h"
+
+#include <functional>
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+
+namespace agaa::viewer {
+
+struct ViewRequest {
+    RenderRequest render;       // method, settings, view (size = the swapchain's), exposure
+    bool split = false;         // right of splitFraction: the reference at the same n
+    float splitFraction = 0.5f; // of the width, (0, 1)
+    bool readShadingEvents = false;
+    bool screenshot = false; // read the presented image back (needs Swapchain::canReadBack())
+};
+
+struct ViewFrame {
+    eng::frame::FrameTiming timing; // every executed pass, in order, with its GPU ms
+    uint32_t samples = 0;           // what the method rasterised
+    double bytesPerPixel = 0.0;     // the method's own storage (Technique::isStorage)
+    std::map<std::string, double> bytesPerPixelSplit;
+    std::optional<double> shadingEventsPerPixel; // only when readShadingEvents
+    std::optional<eng::io::ImageU8> screenshot;  // RGBA8 sRGB-encoded, only when screenshot
+};
+
+// Adds the UI's pass: reads and writes the swapchain image as a colour attachment, returns the
+// new version.
+using OverlayPass = std::function<eng::rg::Texture(eng::rg::Graph&, eng::rg::Texture)>;
+
+class ViewRenderer {
+  public:
+    ViewRenderer(eng::vk::Device& device, const eng::scene::Scene& scene);
+    ~ViewRenderer();
+    ViewRenderer(const ViewRenderer&) = delete;
+    ViewRenderer& operator=(const ViewRenderer&) = delete;
+
+    // Renders into `target` and waits for the GPU; the caller presents it. Throws
+    // std::invalid_argument for a setting the method refuses, eng::vk::MissingCapability for one
+    // the device lacks (before anything is submitted).
+    ViewFrame render(const ViewRequest& request, const AcquiredImage& target, const OverlayPass& overlay);
+
+  private:
+    Technique& technique(const std::string& method, const MethodSettings& settings);
+
+    eng::vk::Device& m_device;
+    const eng::scene::Scene& m_scene;
+    eng::frame::GpuScene m_gpuScene;
+    eng::frame::FrameRunner m_runner;
+    // [0] the method's, [1] the reference's (its own sample pattern when the method has 1 sample).
+    eng::vk::Buffer m_frameConstants[2], m_lights;
+    eng::vk::Buffer m_events, m_screenshot; // host readbacks, sized on demand
+    std::map<std::string, std::unique_ptr<Technique>> m_techniques;
+};
+
+} // namespace agaa::viewer
