@@ -13,7 +13,7 @@ namespace agaa::viewer {
 
 class TimingHistory {
   public:
-    explicit TimingHistory(size_t capacity = 120) : m_capacity(capacity) {}
+    explicit TimingHistory(size_t capacity = 60) : m_capacity(capacity) {}
 
     void add(const eng::frame::FrameTiming& timing);
     void clear();

@@ -8,10 +8,13 @@
 #include <cmath>
 #include <cstdio>
 #include <string>
+#include <vector>
 
 namespace agaa::viewer {
 
 namespace {
+
+constexpr size_t kListedPasses = 6;
 
 // Distinct hues for the passes of the timing graph, stable per pass index.
 ImU32 passColour(size_t pass) {
@@ -132,19 +135,33 @@ void timingSection(const TimingHistory& timings) {
     std::snprintf(scale, sizeof scale, "%.0f ms", maxMs);
     draw->AddText(ImVec2(origin.x + 2, origin.y), ImGui::GetColorU32(ImGuiCol_Text), scale);
     ImGui::Dummy(size);
-    // The newest frame's passes, two to a row.
+    // The newest frame's slowest passes, two to a row; all of them in the graph's tooltip.
+    std::vector<size_t> passes;
+    for (size_t p = 0; p < timings.passNames().size(); ++p)
+        if (timings.latestMs(p) > 0.0) passes.push_back(p); // in the newest frame (not another method's)
+    std::sort(passes.begin(), passes.end(),
+              [&](size_t a, size_t b) { return timings.latestMs(a) > timings.latestMs(b); });
+    auto entry = [&](size_t p) {
+        ImGui::ColorButton(timings.passNames()[p].c_str(), ImGui::ColorConvertU32ToFloat4(passColour(p)),
+                           ImGuiColorEditFlags_NoTooltip | ImGuiColorEditFlags_NoDragDrop, ImVec2(9, 9));
+        ImGui::SameLine();
+        ImGui::Text("%.1f %s", timings.latestMs(p), timings.passNames()[p].c_str());
+    };
+    if (ImGui::IsItemHovered()) {
+        ImGui::BeginTooltip();
+        for (size_t p : passes)
+            entry(p);
+        ImGui::EndTooltip();
+    }
     if (ImGui::BeginTable("passes", 2)) {
-        for (size_t p = 0; p < timings.passNames().size(); ++p) {
-            const double ms = timings.latestMs(p);
-            if (ms <= 0.0) continue; // not in the newest frame (another method's pass)
+        for (size_t i = 0; i < std::min<size_t>(passes.size(), kListedPasses); ++i) {
             ImGui::TableNextColumn();
-            ImGui::ColorButton(timings.passNames()[p].c_str(), ImGui::ColorConvertU32ToFloat4(passColour(p)),
-                               ImGuiColorEditFlags_NoTooltip | ImGuiColorEditFlags_NoDragDrop, ImVec2(9, 9));
-            ImGui::SameLine();
-            ImGui::Text("%.1f %s", ms, timings.passNames()[p].c_str());
+            entry(passes[i]);
         }
         ImGui::EndTable();
     }
+    if (passes.size() > kListedPasses)
+        ImGui::TextDisabled("+%zu faster passes (hover the graph)", passes.size() - kListedPasses);
 }
 
 void statsSection(const PanelStats& stats) {
@@ -152,17 +169,18 @@ void statsSection(const PanelStats& stats) {
         ImGui::Text("%ux%u 1:1", stats.width, stats.height);
         return;
     }
-    ImGui::Text("%ux%u 1:1 | %.2f fps | GPU %.1f ms | n=%u", stats.width, stats.height, stats.fps,
-                stats.frame->timing.frameMs, stats.frame->samples);
+    ImGui::Text("%ux%u 1:1 | %.2f fps | GPU %.1f ms", stats.width, stats.height, stats.fps,
+                stats.frame->timing.frameMs);
+    ImGui::Text("n = %u rendered | %s shading events/px", stats.frame->samples,
+                stats.eventsPerPixel ? std::to_string(*stats.eventsPerPixel).substr(0, 4).c_str() : "-");
     std::string split;
     for (const auto& [part, bpp] : stats.frame->bytesPerPixelSplit) {
         char buffer[64];
         std::snprintf(buffer, sizeof buffer, "%s%s %.1f", split.empty() ? "" : ", ", part.c_str(), bpp);
         split += buffer;
     }
-    ImGui::Text("%.1f bytes/px%s%s%s | %s events/px", stats.frame->bytesPerPixel, split.empty() ? "" : " (",
-                split.c_str(), split.empty() ? "" : ")",
-                stats.eventsPerPixel ? std::to_string(*stats.eventsPerPixel).substr(0, 4).c_str() : "-");
+    ImGui::Text("storage %.1f B/px%s%s", stats.frame->bytesPerPixel, split.empty() ? "" : ": ",
+                split.c_str());
 }
 
 void legendSection(const Controls& controls) {

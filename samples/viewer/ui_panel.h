@@ -28,7 +28,7 @@ struct PanelActions {
 // The settings panel (left, full height) and the timing window (bottom right), in pixels: the
 // scripted screenshot check looks at the scene outside both.
 inline constexpr float kPanelWidth = 250.0f;
-inline constexpr float kTimingWidth = 390.0f, kTimingHeight = 175.0f;
+inline constexpr float kTimingWidth = 390.0f, kTimingHeight = 190.0f;
 
 PanelActions drawPanel(Controls& controls, const TimingHistory& timings, const PanelStats& stats);
 
