@@ -60,8 +60,9 @@ constexpr const char* kUsage =
   --frames          render this many frames, then exit (0 = until closed); with --script: per method
   --screenshot      with --frames: save the last presented swapchain image (with the UI) as PNG
   --script          cycle-methods: render --frames N (default 3) frames with every method in turn,
-                    save each method's last presented image as DIR/NN-METHOD.png, check the scene
-                    part of each is not blank and count validation messages per method
+                    then agaa split against the reference; save each step's last presented image
+                    as DIR/NN-METHOD.png, check the scene part of each is not blank and count
+                    validation messages per step
   --no-ui           no ImGui panel (for timing the rendering alone)
   --validate        Khronos validation (also AGAA_VALIDATE=1); exits 1 on any validation error
 )";
@@ -211,9 +212,20 @@ std::string numbered(uint32_t n, const std::string& what) {
     return buffer + what + ".png";
 }
 
-// The scripted run: which method is on screen and whether its frames are done.
+// The scripted run: every method alone, then agaa split against the reference (the split view's
+// two techniques in one graph); which step is on screen and whether its frames are done.
 struct Script {
-    size_t method = 0;
+    size_t step = 0;
+    static size_t steps() { return agaa::knownMethods().size() + 1; }
+    bool splitStep() const { return step == agaa::knownMethods().size(); }
+    size_t method() const {
+        if (!splitStep()) return step;
+        const auto& methods = agaa::knownMethods();
+        return size_t(
+            std::find_if(methods.begin(), methods.end(), [](const auto& m) { return m.name == "agaa"; }) -
+            methods.begin());
+    }
+    std::string name() const { return splitStep() ? "agaa-split" : agaa::knownMethods()[step].name; }
     uint32_t framesThisMethod = 0;
     uint32_t framesPerMethod = 3;
     uint32_t validationAtStart = 0;
@@ -279,8 +291,9 @@ int run(const Options& o) {
             if (ui) ui->swapchainRecreated(swapchain);
 
             if (script && script->framesThisMethod == 0) {
-                controls.settings().method = script->method;
+                controls.settings().method = script->method();
                 controls.settings().debugView = 0;
+                controls.settings().split = script->splitStep();
                 script->validationAtStart = device.validationErrors();
             }
             const bool lastFrame = !script && o.frames && *o.frames > 0 && frames + 1 == *o.frames;
@@ -370,9 +383,8 @@ int run(const Options& o) {
                 std::string file =
                     lastFrame && o.screenshot ? *o.screenshot : "agaa-viewer-" + numbered(frames, "shot");
                 if (scriptShot) {
-                    const std::string method = agaa::knownMethods()[script->method].name;
                     file = (std::filesystem::path(*o.screenshotDir) /
-                            numbered(uint32_t(script->method + 1), method))
+                            numbered(uint32_t(script->step + 1), script->name()))
                                .string();
                 }
                 eng::io::writePng(file, *frame.screenshot);
@@ -387,9 +399,8 @@ int run(const Options& o) {
                         agaa::viewer::checkNotBlank(*frame.screenshot, firstColumn, rows);
                     const uint32_t messages = device.validationErrors() - script->validationAtStart;
                     const bool ok = !check.blank && messages == 0 && presented != PresentResult::OutOfDate;
-                    std::cout << "script: " << agaa::knownMethods()[script->method].name << ": "
-                              << check.describe() << ", " << messages << " validation errors"
-                              << (ok ? "" : " FAILED") << "\n";
+                    std::cout << "script: " << script->name() << ": " << check.describe() << ", " << messages
+                              << " validation errors" << (ok ? "" : " FAILED") << "\n";
                     if (!ok) ++script->failures;
                 }
             } else if (scriptShot || (lastFrame && o.screenshot)) {
@@ -399,15 +410,15 @@ int run(const Options& o) {
             last = std::move(frame);
             if (script && ++script->framesThisMethod == script->framesPerMethod) {
                 script->framesThisMethod = 0;
-                if (++script->method == agaa::knownMethods().size()) break;
+                if (++script->step == Script::steps()) break;
             }
             if (lastFrame) break;
         }
         vkDeviceWaitIdle(device.device());
         if (script) {
-            std::cout << "script: " << script->method << " of " << agaa::knownMethods().size() << " methods, "
-                      << script->failures << " failed\n";
-            if (script->failures > 0 || script->method != agaa::knownMethods().size()) status = kExitFailure;
+            std::cout << "script: " << script->step << " of " << Script::steps()
+                      << " steps (every method, then agaa split), " << script->failures << " failed\n";
+            if (script->failures > 0 || script->step != Script::steps()) status = kExitFailure;
         }
     }
     std::cout << "validation errors: " << device.validationErrors()

@@ -78,7 +78,8 @@ ViewFrame ViewRenderer::render(const ViewRequest& request, const AcquiredImage& 
     // leaves the frame untouched.
     Technique& tech = technique(r.method, r.settings);
     Technique* reference = nullptr;
-    if (request.split) {
+    // The reference split against itself needs no second render: both sides are the same image.
+    if (request.split && r.method != "reference") {
         MethodSettings refSettings;
         refSettings.samples = r.settings.samples;
         refSettings.effects = r.settings.effects;
@@ -123,8 +124,11 @@ ViewFrame ViewRenderer::render(const ViewRequest& request, const AcquiredImage& 
     // The acquired image's contents are discarded (initial nullopt); it leaves in PRESENT_SRC.
     rg::Texture swapchain =
         graph.importTexture("viewer.swapchain", target.texture, std::nullopt, rg::Use::Present);
+    if (request.split && !reference) referenceDisplay = targets.display;
     const uint32_t splitX =
-        reference ? std::clamp(uint32_t(std::lround(request.splitFraction * float(w))), 1u, w - 1) : w;
+        referenceDisplay.valid() && w >= 2
+            ? std::clamp(uint32_t(std::lround(request.splitFraction * float(w))), 1u, w - 1)
+            : w;
     const DisplayBlit& blit = graph.addPass<DisplayBlit>(
         "viewer.display", rg::PassKind::Transfer,
         [&](rg::Builder& b, DisplayBlit& d) {
@@ -159,7 +163,7 @@ ViewFrame ViewRenderer::render(const ViewRequest& request, const AcquiredImage& 
                 vkCmdBlitImage2(ctx.cmd(), &info);
             };
             blitFrom(d.display, 0, int32_t(splitX));
-            if (d.reference.valid()) blitFrom(d.reference, int32_t(splitX), int32_t(w));
+            if (d.reference.valid() && splitX < w) blitFrom(d.reference, int32_t(splitX), int32_t(w));
         });
     swapchain = blit.target;
     if (overlay) swapchain = overlay(graph, swapchain);
