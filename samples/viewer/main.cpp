@@ -102,9 +102,11 @@ uint32_t parseUint(const std::string& flag, const std::string& text, uint32_t lo
 float parseFloat(const std::string& flag, const std::string& text, float lo, float hi) {
     char* end = nullptr;
     const float v = std::strtof(text.c_str(), &end);
-    if (text.empty() || end != text.c_str() + text.size() || !(v >= lo && v <= hi))
-        throw BadArgument(flag + " '" + text + "' is not a number in " + std::to_string(lo) + ".." +
-                          std::to_string(hi));
+    if (text.empty() || end != text.c_str() + text.size() || !(v >= lo && v <= hi)) {
+        char range[64];
+        std::snprintf(range, sizeof range, "%g..%g", double(lo), double(hi));
+        throw BadArgument(flag + " '" + text + "' is not a number in " + range);
+    }
     return v;
 }
 
@@ -151,6 +153,9 @@ Options parse(int argc, char** argv) {
                 throw BadArgument("--script '" + *o.script + "' is unknown (allowed: cycle-methods)");
         } else if (a == "--screenshot-dir")
             o.screenshotDir = value();
+        else if (a == "--scale")
+            throw BadArgument(
+                "--scale is gone: the viewer renders 1:1 at the window size (set --width/--height)");
         else if (a == "--no-ui")
             o.ui = false;
         else if (a == "--validate")
