@@ -281,6 +281,7 @@ int run(const Options& o) {
         std::string error;
         agaa::viewer::ViewerSettings previous = controls.settings();
         uint32_t sinceEvents = kEventsEvery;
+        VkExtent2D renderedSize{0, 0}; // the transients in the renderer's pool are of this size
         while (!window.shouldClose() && !controls.quitRequested()) {
             window.pollEvents();
             if (window.minimised()) {
@@ -294,6 +295,11 @@ int run(const Options& o) {
             if (!change.empty()) std::cout << change << "\n";
             if (input.resized) swapchain.recreate(window.framebufferSize());
             if (ui) ui->swapchainRecreated(swapchain);
+            if (swapchain.extent().width != renderedSize.width ||
+                swapchain.extent().height != renderedSize.height) {
+                if (renderedSize.width != 0) renderer.sizeChanged();
+                renderedSize = swapchain.extent();
+            }
 
             if (script && script->framesThisMethod == 0) {
                 controls.settings().method = script->method();

@@ -53,6 +53,11 @@ Technique& ViewRenderer::technique(const std::string& method, const MethodSettin
     return *it->second;
 }
 
+void ViewRenderer::sizeChanged() {
+    vkDeviceWaitIdle(m_device.device());
+    m_runner.pool().destroyAll();
+}
+
 namespace {
 
 // bytesPerTexel: 4 for both the R32_UINT events and the 8-bit BGRA/RGBA swapchain formats.

@@ -56,6 +56,10 @@ class ViewRenderer {
     // the device lacks (before anything is submitted).
     ViewFrame render(const ViewRequest& request, const AcquiredImage& target, const OverlayPass& overlay);
 
+    // The window changed size: the pooled transients of the old size would never be asked for
+    // again, so free them (the caller has waited for the GPU, as Swapchain::recreate does).
+    void sizeChanged();
+
   private:
     Technique& technique(const std::string& method, const MethodSettings& settings);
 
