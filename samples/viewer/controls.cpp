@@ -71,6 +71,9 @@ void validate(const ViewerSettings& s) {
     if (!(s.exposureEv >= kMinExposureEv && s.exposureEv <= kMaxExposureEv))
         throw std::invalid_argument("--exposure-ev " + std::to_string(s.exposureEv) +
                                     " is out of range (-8..8)");
+    if (!(s.differenceGain >= 1.0f && s.differenceGain <= kMaxDifferenceGain))
+        throw std::invalid_argument("--difference-gain " + std::to_string(s.differenceGain) +
+                                    " is out of range (1..64)");
     if (!(s.splitFraction > 0.0f && s.splitFraction < 1.0f))
         throw std::invalid_argument("split position " + std::to_string(s.splitFraction) +
                                     " is out of range (0, 1)");
@@ -130,8 +133,8 @@ std::string Controls::apply(const InputEvents& input) {
                                                                 : std::string("off"));
             }
         } else if (key == GLFW_KEY_X) {
-            m_settings.split = !m_settings.split;
-            changed = std::string("split view against the reference ") + (m_settings.split ? "on" : "off");
+            m_settings.compare = Compare((int(m_settings.compare) + 1) % 3);
+            changed = std::string("against the reference: ") + kCompareNames[int(m_settings.compare)];
         } else if (key == GLFW_KEY_R) {
             reset();
             changed = "reset camera and settings";
@@ -184,7 +187,8 @@ std::string Controls::describe(uint32_t renderedSamples) const {
 std::string Controls::help() {
     std::string s =
         "controls: left-drag orbit | scroll dolly | S samples (4,8,16,32) | A aggregates (1..4) | "
-        "D debug view | X split view | R reset | P screenshot | H help | Esc/Q quit (every setting is also "
+        "D debug view | X compare (off, split, difference) | R reset | P screenshot | H help | Esc/Q quit "
+        "(every setting is also "
         "in "
         "the UI panel)\nmethods:";
     const auto& methods = knownMethods();

@@ -1,7 +1,8 @@
 #pragma once
 // What the viewer's input does: an orbit camera about the scene's bounds centre (drag to orbit,
 // scroll to dolly) and the method/setting keys (1..9 method, S samples, A aggregates, D debug
-// view, X split view, R reset, P screenshot). Pure logic over InputEvents: no window, no device.
+// view, X compare with the reference, R reset, P screenshot). Pure logic over InputEvents: no window, no
+// device.
 
 #include "agaa/common/effects.h"
 #include "agaa/common/frame_renderer.h"
@@ -52,6 +53,12 @@ inline constexpr const char* kGenerations[] = {"auto", "accumulate", "samples", 
 inline constexpr uint32_t kShadowMapSizes[] = {256, 512, 1024, 2048};
 inline constexpr float kMinExposureEv = -8.0f, kMaxExposureEv = 8.0f;
 
+// Against the per-sample reference at the same n: off, split (left the method, right the
+// reference) or difference (|method - reference| x gain over the whole frame).
+enum class Compare { Off, Split, Difference };
+inline constexpr const char* kCompareNames[] = {"off", "split", "difference"};
+inline constexpr float kMaxDifferenceGain = 64.0f;
+
 struct ViewerSettings {
     size_t method = 0; // index into knownMethods()
     uint32_t samples = 8;
@@ -61,8 +68,9 @@ struct ViewerSettings {
     std::string generation = "auto"; // method "agaa" only (the other two fix their path)
     EffectSettings effects;
     float exposureEv = 0.0f; // exposure = 2^exposureEv, on top of the scene's 1.0
-    bool split = false;      // right part: the per-sample reference at the same n
+    Compare compare = Compare::Off;
     float splitFraction = 0.5f;
+    float differenceGain = 4.0f; // Compare::Difference: |method - reference| x gain
 };
 
 // Throws std::invalid_argument naming the option when a setting is out of range.

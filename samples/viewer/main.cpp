@@ -48,7 +48,7 @@ constexpr uint32_t kEventsEvery = 16;
 constexpr const char* kUsage =
     R"(usage: agaa-viewer [--scene FILE.gltf|.glb | --builtin NAME] [--width W --height H]
                    [--method NAME] [--samples N] [--aggregates C] [--debug VIEW] [--ndf NDF]
-                   [--agaa-generation PATH] [--exposure-ev EV] [--split]
+                   [--agaa-generation PATH] [--exposure-ev EV] [--split | --difference [--difference-gain G]]
                    [--frames N [--screenshot FILE.png]] [--script cycle-methods --screenshot-dir DIR]
                    [--no-ui] [--validate] [--help]
   --width/--height  window size in pixels, 1..8192 (default 640x360); rendered 1:1
@@ -57,10 +57,11 @@ constexpr const char* kUsage =
                     samples or coverage (method agaa)
   --exposure-ev     exposure in stops, -8..8 (default 0: exposure 1)
   --split           split view: right half the per-sample reference at the same n
+  --difference      difference view: |method - reference at the same n| x gain (default 4, 1..64)
   --frames          render this many frames, then exit (0 = until closed); with --script: per method
   --screenshot      with --frames: save the last presented swapchain image (with the UI) as PNG
   --script          cycle-methods: render --frames N (default 3) frames with every method in turn,
-                    then agaa split against the reference; save each step's last presented image
+                    then agaa split against and different from the reference; save each step's last presented image
                     as DIR/NN-METHOD.png, check the scene part of each is not blank and count
                     validation messages per step
   --no-ui           no ImGui panel (for timing the rendering alone)
@@ -142,7 +143,11 @@ Options parse(int argc, char** argv) {
             o.settings.exposureEv =
                 parseFloat(a, value(), agaa::viewer::kMinExposureEv, agaa::viewer::kMaxExposureEv);
         else if (a == "--split")
-            o.settings.split = true;
+            o.settings.compare = agaa::viewer::Compare::Split;
+        else if (a == "--difference")
+            o.settings.compare = agaa::viewer::Compare::Difference;
+        else if (a == "--difference-gain")
+            o.settings.differenceGain = parseFloat(a, value(), 1.0f, agaa::viewer::kMaxDifferenceGain);
         else if (a == "--frames")
             o.frames = parseUint(a, value(), 0, 1000000);
         else if (a == "--screenshot")
@@ -217,20 +222,30 @@ std::string numbered(uint32_t n, const std::string& what) {
     return buffer + what + ".png";
 }
 
-// The scripted run: every method alone, then agaa split against the reference (the split view's
-// two techniques in one graph); which step is on screen and whether its frames are done.
+// The scripted run: every method alone, then agaa split against the reference and agaa's
+// difference from it (two techniques in one graph); which step is on screen and whether its
+// frames are done.
 struct Script {
     size_t step = 0;
-    static size_t steps() { return agaa::knownMethods().size() + 1; }
-    bool splitStep() const { return step == agaa::knownMethods().size(); }
+    static size_t steps() { return agaa::knownMethods().size() + 2; }
+    agaa::viewer::Compare compare() const {
+        const size_t methods = agaa::knownMethods().size();
+        return step < methods    ? agaa::viewer::Compare::Off
+               : step == methods ? agaa::viewer::Compare::Split
+                                 : agaa::viewer::Compare::Difference;
+    }
     size_t method() const {
-        if (!splitStep()) return step;
+        if (compare() == agaa::viewer::Compare::Off) return step;
         const auto& methods = agaa::knownMethods();
         return size_t(
             std::find_if(methods.begin(), methods.end(), [](const auto& m) { return m.name == "agaa"; }) -
             methods.begin());
     }
-    std::string name() const { return splitStep() ? "agaa-split" : agaa::knownMethods()[step].name; }
+    std::string name() const {
+        return compare() == agaa::viewer::Compare::Off     ? agaa::knownMethods()[step].name
+               : compare() == agaa::viewer::Compare::Split ? "agaa-split"
+                                                           : "agaa-difference";
+    }
     uint32_t framesThisMethod = 0;
     uint32_t framesPerMethod = 3;
     uint32_t validationAtStart = 0;
@@ -304,7 +319,7 @@ int run(const Options& o) {
             if (script && script->framesThisMethod == 0) {
                 controls.settings().method = script->method();
                 controls.settings().debugView = 0;
-                controls.settings().split = script->splitStep();
+                controls.settings().compare = script->compare();
                 script->validationAtStart = device.validationErrors();
             }
             const bool lastFrame = !script && o.frames && *o.frames > 0 && frames + 1 == *o.frames;
@@ -338,8 +353,9 @@ int run(const Options& o) {
             previous = controls.settings();
 
             agaa::viewer::ViewRequest request;
-            request.split = controls.settings().split;
+            request.compare = controls.settings().compare;
             request.splitFraction = controls.settings().splitFraction;
+            request.differenceGain = controls.settings().differenceGain;
             request.readShadingEvents = settingsChanged || ++sinceEvents >= kEventsEvery;
             request.screenshot =
                 ((lastFrame && o.screenshot) || scriptShot || keyShot) && swapchain.canReadBack();
@@ -362,7 +378,7 @@ int run(const Options& o) {
                 controls.revert();
                 previous = controls.settings();
                 request.render = controls.request(size.width, size.height);
-                request.split = controls.settings().split;
+                request.compare = controls.settings().compare;
                 frame = renderer.render(request, *image, overlay);
             }
             rendered = true;
@@ -428,7 +444,8 @@ int run(const Options& o) {
         vkDeviceWaitIdle(device.device());
         if (script) {
             std::cout << "script: " << script->step << " of " << Script::steps()
-                      << " steps (every method, then agaa split), " << script->failures << " failed\n";
+                      << " steps (every method, then agaa split and difference), " << script->failures
+                      << " failed\n";
             if (script->failures > 0 || script->step != Script::steps()) status = kExitFailure;
         }
     }

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# viewer.screenshots: agaa-viewer under Xvfb, every method in turn and then the split view
-# (--script cycle-methods), with
+# viewer.screenshots: agaa-viewer under Xvfb, every method in turn and then the split and
+# difference views (--script cycle-methods), with
 # the validation layer and synchronisation validation on. Fails on a non-zero exit, a blank
 # scene in any presented frame (the viewer's own check, per method), a missing screenshot, or
 # any VUID-/UNASSIGNED-/SYNC- message in the output. Skips (exit 77) only when no X server can
@@ -40,8 +40,8 @@ fi
 grep -q "validation on" "$log" || { echo "viewer.screenshots: FAILED: validation was not on" >&2; fail=1; }
 methods=$(grep -c '^script: .*not blank.*, 0 validation errors$' "$log")
 shots=$(ls "$out"/*.png 2>/dev/null | wc -l)
-# Every method alone, then agaa split against the reference.
-expected=$(($("$viewer" --help | sed -n 's/^methods://p' | wc -w) + 1))
+# Every method alone, then agaa split against the reference and agaa's difference from it.
+expected=$(($("$viewer" --help | sed -n 's/^methods://p' | wc -w) + 2))
 if [ "$methods" -ne "$expected" ] || [ "$shots" -ne "$expected" ]; then
   echo "viewer.screenshots: FAILED: $methods methods passed the checks and $shots screenshots were written; expected $expected" >&2
   fail=1

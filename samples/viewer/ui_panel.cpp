@@ -87,8 +87,12 @@ void settingsSection(Controls& controls, PanelActions& actions) {
     ImGui::EndDisabled();
 
     ImGui::SliderFloat("exposure EV", &s.exposureEv, kMinExposureEv, kMaxExposureEv, "%+.1f");
-    ImGui::Checkbox("split vs reference", &s.split);
-    if (s.split) ImGui::SliderFloat("split at", &s.splitFraction, 0.05f, 0.95f, "%.2f");
+    int compare = int(s.compare);
+    if (ImGui::Combo("vs reference", &compare, "off\0split\0difference\0")) s.compare = Compare(compare);
+    if (s.compare == Compare::Split) ImGui::SliderFloat("split at", &s.splitFraction, 0.05f, 0.95f, "%.2f");
+    if (s.compare == Compare::Difference)
+        ImGui::SliderFloat("gain", &s.differenceGain, 1.0f, kMaxDifferenceGain, "x%.0f",
+                           ImGuiSliderFlags_Logarithmic);
 
     if (ImGui::TreeNode("effects")) {
         ImGui::Checkbox("force all effects", &s.effects.forceAll);
@@ -186,7 +190,10 @@ void statsSection(const PanelStats& stats) {
 void legendSection(const Controls& controls) {
     const ViewerSettings& s = controls.settings();
     const MethodInfo& method = knownMethods()[s.method];
-    if (s.split)
+    if (s.compare == Compare::Difference)
+        ImGui::TextWrapped("difference: |%s - reference at n = %u| x %.0f per channel, black = equal",
+                           method.name.c_str(), s.samples, s.differenceGain);
+    if (s.compare == Compare::Split)
         ImGui::TextWrapped("split: left %s, right the per-sample reference at n = %u", method.name.c_str(),
                            s.samples);
     if (!s.debugView) return;
@@ -238,7 +245,7 @@ PanelActions drawPanel(Controls& controls, const TimingHistory& timings, const P
     timingSection(timings);
     ImGui::End();
 
-    if (controls.settings().split) {
+    if (controls.settings().compare == Compare::Split) {
         // The split line, over the scene.
         const float x = std::round(controls.settings().splitFraction * float(stats.width));
         ImGui::GetForegroundDrawList()->AddLine(ImVec2(x, 0), ImVec2(x, float(stats.height)),

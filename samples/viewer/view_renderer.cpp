@@ -5,6 +5,9 @@
 #include "engine/frame/readback.h"
 #include "engine/frame/sample_pattern.h"
 #include "engine/graph/graph.h"
+#include "engine/vk/descriptors.h"
+#include "engine/vk/pipeline.h"
+#include "shaders/viewer/difference_comp.h"
 #include "shared/frame.h"
 
 #include <algorithm>
@@ -26,6 +29,17 @@ ViewRenderer::ViewRenderer(vk::Device& device, const eng::scene::Scene& scene)
         m_frameConstants[i] = vk::createBuffer(device, sizeof(shared::FrameConstants),
                                                VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, vk::MemoryUse::Upload,
                                                i == 0 ? "viewer.constants" : "viewer.referenceConstants");
+    vk::LayoutDesc layout;
+    const VkShaderStageFlags cs = VK_SHADER_STAGE_COMPUTE_BIT;
+    layout.pushBindings = {{0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, cs},
+                           {1, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, cs},
+                           {2, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs}};
+    layout.pushConstantBytes = sizeof(float); // difference.comp: the gain
+    m_differenceLayout = vk::createPipelineLayout(device, layout, "viewer.difference.layout");
+    m_difference = vk::createComputePipeline(device, kViewerDifferenceComp, m_differenceLayout.layout, {},
+                                             "viewer.difference");
+    m_fetchSampler = vk::createSampler(device, VK_FILTER_NEAREST, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE, 0.0f,
+                                       "viewer.fetchSampler");
     m_lights = vk::createBuffer(device, std::max<size_t>(1, scene.lights.size()) * sizeof(shared::GpuLight),
                                 VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, vk::MemoryUse::Upload, "viewer.lights");
 }
@@ -33,6 +47,9 @@ ViewRenderer::ViewRenderer(vk::Device& device, const eng::scene::Scene& scene)
 ViewRenderer::~ViewRenderer() {
     vkDeviceWaitIdle(m_device.device());
     m_techniques.clear();
+    vkDestroyPipeline(m_device.device(), m_difference, nullptr);
+    vkDestroySampler(m_device.device(), m_fetchSampler, nullptr);
+    vk::destroyPipelineLayout(m_device, m_differenceLayout);
     for (vk::Buffer& b : m_frameConstants)
         vk::destroyBuffer(m_device, b);
     vk::destroyBuffer(m_device, m_lights);
@@ -51,6 +68,37 @@ Technique& ViewRenderer::technique(const std::string& method, const MethodSettin
     if (it == m_techniques.end())
         it = m_techniques.emplace(key, createTechnique(method, m_device, m_gpuScene, s)).first;
     return *it->second;
+}
+
+rg::Texture ViewRenderer::addDifferencePass(rg::Graph& graph, rg::Texture method, rg::Texture reference,
+                                            float gain, uint32_t width, uint32_t height) {
+    struct Data {
+        rg::Texture method, reference, output;
+    };
+    constexpr uint32_t kGroup = 16; // difference.comp local size
+    const Data& out = graph.addCompute<Data>(
+        "viewer.difference",
+        [&](rg::Builder& b, Data& d) {
+            d.method = b.read(method, rg::Use::SampledCompute);
+            d.reference = b.read(reference, rg::Use::SampledCompute);
+            const rg::TextureDesc desc{VK_FORMAT_R32G32B32A32_SFLOAT, width, height, 1,
+                                       VK_SAMPLE_COUNT_1_BIT};
+            d.output = b.write(b.create("viewer.difference", desc), rg::Use::StorageImageWriteCompute);
+        },
+        [this, gain](const rg::Context& ctx, const Data& d) {
+            VkCommandBuffer cmd = ctx.cmd();
+            const rg::PhysicalTexture& output = ctx.texture(d.output);
+            vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, m_difference);
+            vk::PushDescriptors()
+                .sampled(0, m_fetchSampler, ctx.texture(d.method).sampledView)
+                .sampled(1, m_fetchSampler, ctx.texture(d.reference).sampledView)
+                .storageImage(2, output.view)
+                .push(m_device, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, m_differenceLayout.layout);
+            vkCmdPushConstants(cmd, m_differenceLayout.layout, VK_SHADER_STAGE_ALL, 0, sizeof(gain), &gain);
+            vkCmdDispatch(cmd, (output.desc.width + kGroup - 1) / kGroup,
+                          (output.desc.height + kGroup - 1) / kGroup, 1);
+        });
+    return out.output;
 }
 
 void ViewRenderer::sizeChanged() {
@@ -83,8 +131,8 @@ ViewFrame ViewRenderer::render(const ViewRequest& request, const AcquiredImage& 
     // leaves the frame untouched.
     Technique& tech = technique(r.method, r.settings);
     Technique* reference = nullptr;
-    // The reference split against itself needs no second render: both sides are the same image.
-    if (request.split && r.method != "reference") {
+    // The reference against itself needs no second render: both sides are the same image.
+    if (request.compare != Compare::Off && r.method != "reference") {
         MethodSettings refSettings;
         refSettings.samples = r.settings.samples;
         refSettings.effects = r.settings.effects;
@@ -129,7 +177,12 @@ ViewFrame ViewRenderer::render(const ViewRequest& request, const AcquiredImage& 
     // The acquired image's contents are discarded (initial nullopt); it leaves in PRESENT_SRC.
     rg::Texture swapchain =
         graph.importTexture("viewer.swapchain", target.texture, std::nullopt, rg::Use::Present);
-    if (request.split && !reference) referenceDisplay = targets.display;
+    if (request.compare != Compare::Off && !reference) referenceDisplay = targets.display;
+    rg::Texture shown = targets.display;
+    if (request.compare == Compare::Difference) {
+        shown = addDifferencePass(graph, targets.display, referenceDisplay, request.differenceGain, w, h);
+        referenceDisplay = {}; // the whole frame shows the difference
+    }
     const uint32_t splitX =
         referenceDisplay.valid() && w >= 2
             ? std::clamp(uint32_t(std::lround(request.splitFraction * float(w))), 1u, w - 1)
@@ -137,7 +190,7 @@ ViewFrame ViewRenderer::render(const ViewRequest& request, const AcquiredImage& 
     const DisplayBlit& blit = graph.addPass<DisplayBlit>(
         "viewer.display", rg::PassKind::Transfer,
         [&](rg::Builder& b, DisplayBlit& d) {
-            d.display = b.read(targets.display, rg::Use::TransferSrc);
+            d.display = b.read(shown, rg::Use::TransferSrc);
             if (referenceDisplay.valid()) d.reference = b.read(referenceDisplay, rg::Use::TransferSrc);
             d.target = b.write(swapchain, rg::Use::TransferDst);
         },

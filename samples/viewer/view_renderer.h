@@ -1,9 +1,9 @@
 #pragma once
 // One viewer frame on the GPU, from the scene to the swapchain image, in one render graph: the
-// method's passes, the per-sample reference at the same n when the split view is on, the display
-// blit into the acquired swapchain image (1:1, nearest; the SRGB swapchain format does the sRGB
-// encode), the UI pass on top, and the present transition. Nothing is read back per frame; the
-// shading-event count (for the stats) and a screenshot only when asked for.
+// method's passes, the per-sample reference at the same n for the split or difference view (and
+// the difference kernel), the display blit into the acquired swapchain image (1:1, nearest; the SRGB
+// swapchain format does the sRGB encode), the UI pass on top, and the present transition. Nothing is read
+// back per frame; the shading-event count (for the stats) and a screenshot only when asked for.
 
 #include "agaa/common/frame_renderer.h"
 #include "agaa/common/technique.h"
@@ -12,7 +12,9 @@
 #include "engine/io/image.h"
 #include "engine/scene/scene.h"
 #include "engine/vk/device.h"
+#include "engine/vk/pipeline.h"
 #include "engine/vk/resources.h"
+#include "samples/viewer/controls.h"
 #include "samples/viewer/swapchain.h"
 
 #include <functional>
@@ -24,9 +26,10 @@
 namespace agaa::viewer {
 
 struct ViewRequest {
-    RenderRequest render;       // method, settings, view (size = the swapchain's), exposure
-    bool split = false;         // right of splitFraction: the reference at the same n
-    float splitFraction = 0.5f; // of the width, (0, 1)
+    RenderRequest render;           // method, settings, view (size = the swapchain's), exposure
+    Compare compare = Compare::Off; // against the reference at the same n (controls.h)
+    float splitFraction = 0.5f;     // Split: of the width, (0, 1); right of it the reference
+    float differenceGain = 4.0f;    // Difference: |method - reference| x gain
     bool readShadingEvents = false;
     bool screenshot = false; // read the presented image back (needs Swapchain::canReadBack())
 };
@@ -62,6 +65,10 @@ class ViewRenderer {
 
   private:
     Technique& technique(const std::string& method, const MethodSettings& settings);
+    // "viewer.difference": |method - reference| x gain into a new RGBA32F image.
+    eng::rg::Texture addDifferencePass(eng::rg::Graph& graph, eng::rg::Texture method,
+                                       eng::rg::Texture reference, float gain, uint32_t width,
+                                       uint32_t height);
 
     eng::vk::Device& m_device;
     const eng::scene::Scene& m_scene;
@@ -71,6 +78,9 @@ class ViewRenderer {
     eng::vk::Buffer m_frameConstants[2], m_lights;
     eng::vk::Buffer m_events, m_screenshot; // host readbacks, sized on demand
     std::map<std::string, std::unique_ptr<Technique>> m_techniques;
+    eng::vk::PipelineLayout m_differenceLayout;
+    VkPipeline m_difference = VK_NULL_HANDLE;
+    VkSampler m_fetchSampler = VK_NULL_HANDLE;
 };
 
 } // namespace agaa::viewer
