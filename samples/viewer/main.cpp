@@ -249,6 +249,7 @@ struct Script {
     uint32_t framesThisMethod = 0;
     uint32_t framesPerMethod = 3;
     uint32_t validationAtStart = 0;
+    bool refused = false; // the step's settings were refused: its screenshot shows another step's
     uint32_t failures = 0;
 };
 
@@ -321,6 +322,7 @@ int run(const Options& o) {
                 controls.settings().debugView = 0;
                 controls.settings().compare = script->compare();
                 script->validationAtStart = device.validationErrors();
+                script->refused = false;
             }
             const bool lastFrame = !script && o.frames && *o.frames > 0 && frames + 1 == *o.frames;
             const bool scriptShot = script && script->framesThisMethod + 1 == script->framesPerMethod;
@@ -346,11 +348,15 @@ int run(const Options& o) {
                 keyShot = keyShot || actions.screenshot;
                 ui->endFrame();
             }
-            const bool settingsChanged = std::tie(controls.settings().method, controls.settings().samples) !=
-                                             std::tie(previous.method, previous.samples) ||
-                                         controls.settings().aggregates != previous.aggregates ||
-                                         controls.settings().debugView != previous.debugView;
-            previous = controls.settings();
+            const agaa::viewer::ViewerSettings& now = controls.settings();
+            const bool settingsChanged =
+                std::tie(now.method, now.samples, now.aggregates, now.debugView, now.ndf, now.generation,
+                         now.effects.forceAll, now.effects.shadowMapSize, now.effects.shadowTaps) !=
+                std::tie(previous.method, previous.samples, previous.aggregates, previous.debugView,
+                         previous.ndf, previous.generation, previous.effects.forceAll,
+                         previous.effects.shadowMapSize, previous.effects.shadowTaps);
+            previous = now;
+            if (settingsChanged) error.clear(); // the refusal stays on screen until the next change
 
             agaa::viewer::ViewRequest request;
             request.compare = controls.settings().compare;
@@ -367,13 +373,13 @@ int run(const Options& o) {
                 request.render = controls.request(size.width, size.height);
                 frame = renderer.render(request, *image, overlay);
                 controls.accept();
-                error.clear();
             } catch (const std::exception& e) {
                 // invalid_argument (a setting the method refuses) or MissingCapability: the image
                 // is acquired and must be presented, so render it with the last settings that
                 // rendered. The very first frame has none to go back to.
                 if (!rendered) throw;
                 error = e.what();
+                if (script) script->refused = true;
                 std::cerr << "agaa-viewer: " << error << "; back to the previous settings\n";
                 controls.revert();
                 previous = controls.settings();
@@ -425,9 +431,12 @@ int run(const Options& o) {
                     const agaa::viewer::BlankCheck check =
                         agaa::viewer::checkNotBlank(*frame.screenshot, firstColumn, rows);
                     const uint32_t messages = device.validationErrors() - script->validationAtStart;
-                    const bool ok = !check.blank && messages == 0 && presented != PresentResult::OutOfDate;
+                    const bool ok = !check.blank && messages == 0 && !script->refused &&
+                                    presented != PresentResult::OutOfDate;
                     std::cout << "script: " << script->name() << ": " << check.describe() << ", " << messages
-                              << " validation errors" << (ok ? "" : " FAILED") << "\n";
+                              << " validation errors"
+                              << (script->refused ? ", settings refused: " + error : std::string())
+                              << (ok ? "" : " FAILED") << "\n";
                     if (!ok) ++script->failures;
                 }
             } else if (scriptShot || (lastFrame && o.screenshot)) {
