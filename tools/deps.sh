@@ -43,7 +43,7 @@ for arg in "$@"; do
       # Debian's nodejs needs its npm package; NodeSource's nodejs bundles npm (and conflicts with it).
       command -v npm >/dev/null || packages+=(npm)
       validator=1 ;;
-    -h|--help) sed -n '2,11p' "$0"; exit 0 ;;
+    -h|--help) sed -n '2,10p' "$0"; exit 0 ;;
     *) echo "deps.sh: unknown option '$arg' (allowed: --viewer, --browser, --fuzz, --validator)" >&2; exit 2 ;;
   esac
 done
