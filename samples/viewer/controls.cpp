@@ -74,6 +74,9 @@ void validate(const ViewerSettings& s) {
     if (!(s.differenceGain >= 1.0f && s.differenceGain <= kMaxDifferenceGain))
         throw std::invalid_argument("--difference-gain " + std::to_string(s.differenceGain) +
                                     " is out of range (1..64)");
+    if (s.pixelSize != 1 && s.pixelSize != 2 && s.pixelSize != 4)
+        throw std::invalid_argument("--pixel-size " + std::to_string(s.pixelSize) +
+                                    " is not allowed (allowed: 1, 2, 4)");
     if (!(s.splitFraction > 0.0f && s.splitFraction < 1.0f))
         throw std::invalid_argument("split position " + std::to_string(s.splitFraction) +
                                     " is out of range (0, 1)");

@@ -71,6 +71,7 @@ struct ViewerSettings {
     Compare compare = Compare::Off;
     float splitFraction = 0.5f;
     float differenceGain = 4.0f; // Compare::Difference: |method - reference| x gain
+    uint32_t pixelSize = 1;      // 1, 2 or 4 swapchain pixels per rendered pixel (1 = 1:1)
 };
 
 // Throws std::invalid_argument naming the option when a setting is out of range.

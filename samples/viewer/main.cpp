@@ -50,7 +50,7 @@ constexpr const char* kUsage =
                    [--method NAME] [--samples N] [--aggregates C] [--debug VIEW] [--ndf NDF]
                    [--agaa-generation PATH] [--exposure-ev EV] [--split | --difference [--difference-gain G]]
                    [--frames N [--screenshot FILE.png]] [--script cycle-methods --screenshot-dir DIR]
-                   [--no-ui] [--validate] [--help]
+                   [--pixel-size P] [--no-ui] [--validate] [--help]
   --width/--height  window size in pixels, 1..8192 (default 640x360); rendered 1:1
   --samples         4, 8, 16 or 32 (default 8); --aggregates 1..4 (default 2)
   --ndf             auto, sggx or toksvig (AGAA family); --agaa-generation auto, accumulate,
@@ -64,6 +64,8 @@ constexpr const char* kUsage =
                     then agaa split against and different from the reference; save each step's last presented image
                     as DIR/NN-METHOD.png, check the scene part of each is not blank and count
                     validation messages per step
+  --pixel-size      1, 2 or 4: window pixels per rendered pixel, each way (default 1: 1:1); more
+                    renders 4x or 16x fewer pixels, each shown as an exact block (no blur)
   --no-ui           no ImGui panel (for timing the rendering alone)
   --validate        Khronos validation (also AGAA_VALIDATE=1); exits 1 on any validation error
 )";
@@ -161,6 +163,8 @@ Options parse(int argc, char** argv) {
         else if (a == "--scale")
             throw BadArgument(
                 "--scale is gone: the viewer renders 1:1 at the window size (set --width/--height)");
+        else if (a == "--pixel-size")
+            o.settings.pixelSize = parseUint(a, value(), 1, 4);
         else if (a == "--no-ui")
             o.ui = false;
         else if (a == "--validate")
@@ -223,8 +227,8 @@ std::string numbered(uint32_t n, const std::string& what) {
 }
 
 // The scripted run: every method alone, then agaa split against the reference and agaa's
-// difference from it (two techniques in one graph); which step is on screen and whether its
-// frames are done.
+// difference from it at 2x2 pixel blocks (two techniques in one graph); which step is on screen
+// and whether its frames are done.
 struct Script {
     size_t step = 0;
     static size_t steps() { return agaa::knownMethods().size() + 2; }
@@ -244,7 +248,7 @@ struct Script {
     std::string name() const {
         return compare() == agaa::viewer::Compare::Off     ? agaa::knownMethods()[step].name
                : compare() == agaa::viewer::Compare::Split ? "agaa-split"
-                                                           : "agaa-difference";
+                                                           : "agaa-difference-2x2";
     }
     uint32_t framesThisMethod = 0;
     uint32_t framesPerMethod = 3;
@@ -311,16 +315,21 @@ int run(const Options& o) {
             if (!change.empty()) std::cout << change << "\n";
             if (input.resized) swapchain.recreate(window.framebufferSize());
             if (ui) ui->swapchainRecreated(swapchain);
-            if (swapchain.extent().width != renderedSize.width ||
-                swapchain.extent().height != renderedSize.height) {
+            const VkExtent2D renderTo{
+                agaa::viewer::renderSize(swapchain.extent().width, controls.settings().pixelSize),
+                agaa::viewer::renderSize(swapchain.extent().height, controls.settings().pixelSize)};
+            if (renderTo.width != renderedSize.width || renderTo.height != renderedSize.height) {
                 if (renderedSize.width != 0) renderer.sizeChanged();
-                renderedSize = swapchain.extent();
+                renderedSize = renderTo;
             }
 
             if (script && script->framesThisMethod == 0) {
                 controls.settings().method = script->method();
                 controls.settings().debugView = 0;
                 controls.settings().compare = script->compare();
+                // The last step also renders at 2x2 blocks: the block blit and a pool resize.
+                controls.settings().pixelSize =
+                    script->compare() == agaa::viewer::Compare::Difference ? 2 : 1;
                 script->validationAtStart = device.validationErrors();
                 script->refused = false;
             }
@@ -339,6 +348,8 @@ int run(const Options& o) {
                 agaa::viewer::PanelStats stats;
                 stats.width = size.width;
                 stats.height = size.height;
+                stats.renderWidth = agaa::viewer::renderSize(size.width, controls.settings().pixelSize);
+                stats.renderHeight = agaa::viewer::renderSize(size.height, controls.settings().pixelSize);
                 stats.fps = fps;
                 stats.frame = last ? &*last : nullptr;
                 stats.eventsPerPixel = eventsPerPixel;
@@ -362,6 +373,7 @@ int run(const Options& o) {
             request.compare = controls.settings().compare;
             request.splitFraction = controls.settings().splitFraction;
             request.differenceGain = controls.settings().differenceGain;
+            request.pixelSize = controls.settings().pixelSize;
             request.readShadingEvents = settingsChanged || ++sinceEvents >= kEventsEvery;
             request.screenshot =
                 ((lastFrame && o.screenshot) || scriptShot || keyShot) && swapchain.canReadBack();
@@ -385,6 +397,7 @@ int run(const Options& o) {
                 previous = controls.settings();
                 request.render = controls.request(size.width, size.height);
                 request.compare = controls.settings().compare;
+                request.pixelSize = controls.settings().pixelSize;
                 frame = renderer.render(request, *image, overlay);
             }
             rendered = true;

@@ -87,6 +87,15 @@ void settingsSection(Controls& controls, PanelActions& actions) {
     ImGui::EndDisabled();
 
     ImGui::SliderFloat("exposure EV", &s.exposureEv, kMinExposureEv, kMaxExposureEv, "%+.1f");
+    int pixelSize = s.pixelSize == 4 ? 2 : int(s.pixelSize) - 1;
+    if (ImGui::Combo("pixel size", &pixelSize,
+                     "1:1\0"
+                     "2x2\0"
+                     "4x4\0"))
+        s.pixelSize = 1u << pixelSize;
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip(
+            "swapchain pixels per rendered pixel: larger renders fewer pixels, each an exact block");
     int compare = int(s.compare);
     if (ImGui::Combo("vs reference", &compare, "off\0split\0difference\0")) s.compare = Compare(compare);
     if (s.compare == Compare::Split) ImGui::SliderFloat("split at", &s.splitFraction, 0.05f, 0.95f, "%.2f");
@@ -170,10 +179,11 @@ void timingSection(const TimingHistory& timings) {
 
 void statsSection(const PanelStats& stats) {
     if (!stats.frame) {
-        ImGui::Text("%ux%u 1:1", stats.width, stats.height);
+        ImGui::Text("%ux%u", stats.width, stats.height);
         return;
     }
-    ImGui::Text("%ux%u 1:1 | %.2f fps | GPU %.1f ms", stats.width, stats.height, stats.fps,
+    ImGui::Text("%ux%u %s | %.2f fps | GPU %.1f ms", stats.renderWidth, stats.renderHeight,
+                stats.renderWidth == stats.width ? "1:1" : "(blocks)", stats.fps,
                 stats.frame->timing.frameMs);
     ImGui::Text("n = %u rendered | %s shading events/px", stats.frame->samples,
                 stats.eventsPerPixel ? std::to_string(*stats.eventsPerPixel).substr(0, 4).c_str() : "-");

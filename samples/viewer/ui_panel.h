@@ -13,7 +13,8 @@
 namespace agaa::viewer {
 
 struct PanelStats {
-    uint32_t width = 0, height = 0;
+    uint32_t width = 0, height = 0;             // the window (swapchain)
+    uint32_t renderWidth = 0, renderHeight = 0; // rendered (smaller with pixel size above 1)
     double fps = 0.0;
     const ViewFrame* frame = nullptr;     // the last presented frame
     std::optional<double> eventsPerPixel; // last measured

@@ -14,6 +14,7 @@
 #include <cmath>
 #include <cstring>
 #include <stdexcept>
+#include <vector>
 
 namespace agaa::viewer {
 namespace rg = eng::rg;
@@ -121,12 +122,33 @@ struct DisplayBlit {
     rg::Texture display, reference, target;
 };
 
+// Rendered pixels [src0, src1) onto swapchain pixels [dst0, dst1).
+struct Span {
+    uint32_t src0, src1, dst0, dst1;
+};
+
+// Rendered [begin, end) at `pixel` swapchain pixels each, ending at dstEnd: all but the last
+// rendered pixel at exactly `pixel` wide, the last one clipped to dstEnd (the render size is
+// the swapchain's divided by `pixel`, rounded up), so the blit never scales by a fraction.
+std::vector<Span> spans(uint32_t begin, uint32_t end, uint32_t pixel, uint32_t dstEnd) {
+    std::vector<Span> out;
+    if (end <= begin) return out;
+    if (end - 1 > begin) out.push_back({begin, end - 1, begin * pixel, (end - 1) * pixel});
+    out.push_back({end - 1, end, (end - 1) * pixel, dstEnd});
+    return out;
+}
+
 } // namespace
 
 ViewFrame ViewRenderer::render(const ViewRequest& request, const AcquiredImage& target,
                                const OverlayPass& overlay) {
     const RenderRequest& r = request.render;
-    const uint32_t w = target.texture.desc.width, h = target.texture.desc.height;
+    // The swapchain's size, and the render size: the same at pixelSize 1.
+    const uint32_t sw = target.texture.desc.width, sh = target.texture.desc.height;
+    if (request.pixelSize < 1 || request.pixelSize > kMaxPixelSize)
+        throw std::invalid_argument("pixel size " + std::to_string(request.pixelSize) +
+                                    " is out of range (1..4)");
+    const uint32_t w = renderSize(sw, request.pixelSize), h = renderSize(sh, request.pixelSize);
     // Created (and validated) before anything is written or recorded, so a refused setting
     // leaves the frame untouched.
     Technique& tech = technique(r.method, r.settings);
@@ -187,6 +209,7 @@ ViewFrame ViewRenderer::render(const ViewRequest& request, const AcquiredImage& 
         referenceDisplay.valid() && w >= 2
             ? std::clamp(uint32_t(std::lround(request.splitFraction * float(w))), 1u, w - 1)
             : w;
+    const uint32_t pixel = request.pixelSize;
     const DisplayBlit& blit = graph.addPass<DisplayBlit>(
         "viewer.display", rg::PassKind::Transfer,
         [&](rg::Builder& b, DisplayBlit& d) {
@@ -194,39 +217,43 @@ ViewFrame ViewRenderer::render(const ViewRequest& request, const AcquiredImage& 
             if (referenceDisplay.valid()) d.reference = b.read(referenceDisplay, rg::Use::TransferSrc);
             d.target = b.write(swapchain, rg::Use::TransferDst);
         },
-        [splitX, w, h](const rg::Context& ctx, const DisplayBlit& d) {
-            // 1:1 and NEAREST: each swapchain pixel is exactly one rendered pixel; the blit
-            // converts RGBA32F linear to the SRGB swapchain format (the sRGB encode).
-            const rg::PhysicalTexture& dst = ctx.texture(d.target);
-            auto region = [](int32_t x0, int32_t x1, int32_t height) {
-                VkImageBlit2 blitRegion{VK_STRUCTURE_TYPE_IMAGE_BLIT_2};
-                blitRegion.srcSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-                blitRegion.dstSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-                blitRegion.srcOffsets[0] = {x0, 0, 0};
-                blitRegion.srcOffsets[1] = {x1, height, 1};
-                blitRegion.dstOffsets[0] = blitRegion.srcOffsets[0];
-                blitRegion.dstOffsets[1] = blitRegion.srcOffsets[1];
-                return blitRegion;
-            };
-            auto blitFrom = [&](rg::Texture source, int32_t x0, int32_t x1) {
-                const VkImageBlit2 blitRegion = region(x0, x1, int32_t(h));
+        [splitX, w, h, sw, sh, pixel](const rg::Context& ctx, const DisplayBlit& d) {
+            // NEAREST, each rendered pixel an exact pixel x pixel block (1:1 by default); the
+            // blit converts RGBA32F linear to the SRGB swapchain format (the sRGB encode).
+            const std::vector<Span> columns0 = spans(0, splitX, pixel, splitX == w ? sw : splitX * pixel);
+            const std::vector<Span> columns1 = spans(splitX, w, pixel, sw);
+            const std::vector<Span> rows = spans(0, h, pixel, sh);
+            auto blitFrom = [&](rg::Texture source, const std::vector<Span>& columns) {
+                std::vector<VkImageBlit2> regions;
+                for (const Span& c : columns)
+                    for (const Span& r : rows) {
+                        VkImageBlit2 region{VK_STRUCTURE_TYPE_IMAGE_BLIT_2};
+                        region.srcSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+                        region.dstSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+                        region.srcOffsets[0] = {int32_t(c.src0), int32_t(r.src0), 0};
+                        region.srcOffsets[1] = {int32_t(c.src1), int32_t(r.src1), 1};
+                        region.dstOffsets[0] = {int32_t(c.dst0), int32_t(r.dst0), 0};
+                        region.dstOffsets[1] = {int32_t(c.dst1), int32_t(r.dst1), 1};
+                        regions.push_back(region);
+                    }
+                if (regions.empty()) return;
                 VkBlitImageInfo2 info{VK_STRUCTURE_TYPE_BLIT_IMAGE_INFO_2};
                 info.srcImage = ctx.texture(source).image;
                 info.srcImageLayout = eng::rg::useInfo(rg::Use::TransferSrc).layout;
-                info.dstImage = dst.image;
+                info.dstImage = ctx.texture(d.target).image;
                 info.dstImageLayout = eng::rg::useInfo(rg::Use::TransferDst).layout;
-                info.regionCount = 1;
-                info.pRegions = &blitRegion;
+                info.regionCount = uint32_t(regions.size());
+                info.pRegions = regions.data();
                 info.filter = VK_FILTER_NEAREST;
                 vkCmdBlitImage2(ctx.cmd(), &info);
             };
-            blitFrom(d.display, 0, int32_t(splitX));
-            if (d.reference.valid() && splitX < w) blitFrom(d.reference, int32_t(splitX), int32_t(w));
+            blitFrom(d.display, columns0);
+            if (d.reference.valid()) blitFrom(d.reference, columns1);
         });
     swapchain = blit.target;
     if (overlay) swapchain = overlay(graph, swapchain);
     if (request.screenshot) {
-        ensureReadback(m_device, m_screenshot, w, h, 4, "viewer.screenshot");
+        ensureReadback(m_device, m_screenshot, sw, sh, 4, "viewer.screenshot");
         eng::frame::addReadbackPass(graph, swapchain, m_screenshot, "viewer.screenshot");
     }
     if (request.readShadingEvents) {
@@ -255,7 +282,7 @@ ViewFrame ViewRenderer::render(const ViewRequest& request, const AcquiredImage& 
     }
     if (request.screenshot) {
         vk::invalidateBuffer(m_device, m_screenshot);
-        eng::io::ImageU8 image = eng::io::makeImageU8(w, h);
+        eng::io::ImageU8 image = eng::io::makeImageU8(sw, sh);
         std::memcpy(image.rgba.data(), m_screenshot.mapped, image.rgba.size());
         if (target.texture.desc.format == VK_FORMAT_B8G8R8A8_SRGB)
             for (size_t i = 0; i < image.rgba.size(); i += 4)

@@ -30,6 +30,9 @@ struct ViewRequest {
     Compare compare = Compare::Off; // against the reference at the same n (controls.h)
     float splitFraction = 0.5f;     // Split: of the width, (0, 1); right of it the reference
     float differenceGain = 4.0f;    // Difference: |method - reference| x gain
+    // Swapchain pixels per rendered pixel, each way (1..4): 1 is 1:1; more renders pixelSize^2
+    // times fewer pixels and shows each as an exact block (NEAREST, no blur), for interactivity.
+    uint32_t pixelSize = 1;
     bool readShadingEvents = false;
     bool screenshot = false; // read the presented image back (needs Swapchain::canReadBack())
 };
@@ -42,6 +45,12 @@ struct ViewFrame {
     std::optional<double> shadingEventsPerPixel; // only when readShadingEvents
     std::optional<eng::io::ImageU8> screenshot;  // RGBA8 sRGB-encoded, only when screenshot
 };
+
+inline constexpr uint32_t kMaxPixelSize = 4;
+// The rendered size along one axis for a swapchain of `size` pixels.
+inline uint32_t renderSize(uint32_t size, uint32_t pixelSize) {
+    return (size + pixelSize - 1) / pixelSize;
+}
 
 // Adds the UI's pass: reads and writes the swapchain image as a colour attachment, returns the
 // new version.
