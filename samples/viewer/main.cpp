@@ -161,8 +161,8 @@ Options parse(int argc, char** argv) {
         } else if (a == "--screenshot-dir")
             o.screenshotDir = value();
         else if (a == "--scale")
-            throw BadArgument(
-                "--scale is gone: the viewer renders 1:1 at the window size (set --width/--height)");
+            throw BadArgument("--scale is gone: the viewer renders 1:1 at the window size (set "
+                              "--width/--height, or --pixel-size 2|4 for blocks)");
         else if (a == "--pixel-size")
             o.settings.pixelSize = parseUint(a, value(), 1, 4);
         else if (a == "--no-ui")
