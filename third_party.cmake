@@ -41,9 +41,27 @@ if(AGAA_BUILD_TESTS)
   include(GoogleTest)
 endif()
 
-if(AGAA_BUILD_VIEWER)
+# The sample viewer: GLFW and Dear ImGui 1.86 (Debian libimgui-dev: a static libimgui.a, and the
+# GLFW and Vulkan backends as sources under the package's examples, compiled by the viewer).
+set(AGAA_VIEWER_ENABLED OFF)
+if(NOT AGAA_BUILD_VIEWER MATCHES "^(AUTO|ON|OFF)$")
+  message(FATAL_ERROR "AGAA_BUILD_VIEWER=${AGAA_BUILD_VIEWER}: allowed values are AUTO, ON, OFF")
+endif()
+if(NOT AGAA_BUILD_VIEWER STREQUAL "OFF")
   find_package(glfw3 CONFIG QUIET)
-  agaa_require(glfw3_FOUND "GLFW (sample viewer only)" "libglfw3-dev")
+  find_path(IMGUI_INCLUDE_DIR imgui.h PATH_SUFFIXES imgui)
+  find_library(IMGUI_LIBRARY imgui)
+  find_path(IMGUI_BACKEND_DIR imgui_impl_vulkan.cpp
+            PATHS /usr/share/doc/libimgui-dev/examples/backends NO_DEFAULT_PATH)
+  if(glfw3_FOUND AND IMGUI_INCLUDE_DIR AND IMGUI_LIBRARY AND IMGUI_BACKEND_DIR)
+    set(AGAA_VIEWER_ENABLED ON)
+  elseif(AGAA_BUILD_VIEWER STREQUAL "ON")
+    agaa_require(glfw3_FOUND "GLFW (sample viewer)" "libglfw3-dev")
+    agaa_require(IMGUI_LIBRARY "Dear ImGui with its GLFW and Vulkan backends (sample viewer)" "libimgui-dev")
+    agaa_require(IMGUI_BACKEND_DIR "Dear ImGui backend sources (sample viewer)" "libimgui-dev")
+  else()
+    message(STATUS "AGAA: sample viewer not built (needs libglfw3-dev and libimgui-dev: tools/deps.sh)")
+  endif()
 endif()
 
 # Chart.js for the self-contained report (inlined, never fetched).

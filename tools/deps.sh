@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # Installs the Debian packages the project needs, only when missing.
 # Idempotent: `apt-get update` runs only when something must be installed.
-#   tools/deps.sh            build + test dependencies
-#   tools/deps.sh --viewer   also GLFW for samples/viewer
+#   tools/deps.sh            build + test dependencies, including the sample viewer's (GLFW, Dear
+#                            ImGui) and Xvfb for its screenshot test
+#   tools/deps.sh --viewer   accepted for old scripts; the viewer's packages are always installed
 #   tools/deps.sh --browser  also Chromium and Chart.js for the report's browser test
 #   tools/deps.sh --fuzz     also clang and its runtime libraries (libFuzzer, sanitizers)
 #   tools/deps.sh --validator  also node and the Khronos glTF-Validator (npm gltf-validator, into
@@ -16,6 +17,7 @@ packages=(
   libglm-dev libtinygltf-dev nlohmann-json3-dev libstb-dev libopenexr-dev
   libgtest-dev
   libjs-chart.js
+  libglfw3-dev libimgui-dev xvfb xauth
 )
 validator=0
 # The npm package's version is pinned: a new validator may report new issues.
@@ -33,7 +35,7 @@ install_validator() {
 }
 for arg in "$@"; do
   case "$arg" in
-    --viewer) packages+=(libglfw3-dev) ;;
+    --viewer) ;; # in the default list since the viewer test (xvfb) runs in CI
     --browser) packages+=(chromium) ;;
     --fuzz) packages+=(clang libclang-rt-14-dev) ;;
     --validator)

@@ -53,6 +53,34 @@ void validate(const ViewerSettings& s) {
                                     " is out of range (1..4)");
     if (s.debugView > methods[s.method].debugViews.size())
         throw std::invalid_argument("debug view index out of range for " + methods[s.method].name);
+    auto names = [](const auto& list) {
+        std::string all;
+        for (const char* n : list)
+            all += (all.empty() ? "" : ", ") + std::string(n);
+        return all;
+    };
+    auto known = [](const auto& list, const std::string& v) {
+        return std::find_if(std::begin(list), std::end(list), [&](const char* n) { return v == n; }) !=
+               std::end(list);
+    };
+    if (!known(kNdfs, s.ndf))
+        throw std::invalid_argument("--ndf '" + s.ndf + "' is unknown (allowed: " + names(kNdfs) + ")");
+    if (!known(kGenerations, s.generation))
+        throw std::invalid_argument("--agaa-generation '" + s.generation +
+                                    "' is unknown (allowed: " + names(kGenerations) + ")");
+    if (!(s.exposureEv >= kMinExposureEv && s.exposureEv <= kMaxExposureEv))
+        throw std::invalid_argument("--exposure-ev " + std::to_string(s.exposureEv) +
+                                    " is out of range (-8..8)");
+    if (!(s.differenceGain >= 1.0f && s.differenceGain <= kMaxDifferenceGain))
+        throw std::invalid_argument("--difference-gain " + std::to_string(s.differenceGain) +
+                                    " is out of range (1..64)");
+    if (s.pixelSize != 1 && s.pixelSize != 2 && s.pixelSize != 4)
+        throw std::invalid_argument("--pixel-size " + std::to_string(s.pixelSize) +
+                                    " is not allowed (allowed: 1, 2, 4)");
+    if (!(s.splitFraction > 0.0f && s.splitFraction < 1.0f))
+        throw std::invalid_argument("split position " + std::to_string(s.splitFraction) +
+                                    " is out of range (0, 1)");
+    validate(s.effects);
 }
 
 namespace {
@@ -107,9 +135,11 @@ std::string Controls::apply(const InputEvents& input) {
                 changed = "debug view " + (m_settings.debugView ? method.debugViews[m_settings.debugView - 1]
                                                                 : std::string("off"));
             }
+        } else if (key == GLFW_KEY_X) {
+            m_settings.compare = Compare((int(m_settings.compare) + 1) % 3);
+            changed = std::string("against the reference: ") + kCompareNames[int(m_settings.compare)];
         } else if (key == GLFW_KEY_R) {
-            m_camera.reset();
-            m_settings = m_initial;
+            reset();
             changed = "reset camera and settings";
         } else if (key == GLFW_KEY_P) {
             m_screenshot = true;
@@ -123,6 +153,11 @@ std::string Controls::apply(const InputEvents& input) {
     return lines;
 }
 
+void Controls::reset() {
+    m_camera.reset();
+    m_settings = m_initial;
+}
+
 RenderRequest Controls::request(uint32_t width, uint32_t height) const {
     const MethodInfo& method = knownMethods()[m_settings.method];
     RenderRequest r;
@@ -134,6 +169,11 @@ RenderRequest Controls::request(uint32_t width, uint32_t height) const {
     r.view.height = height;
     r.view.camera = 0;
     r.view.viewOverride = m_camera.view();
+    r.view.exposure = std::exp2(m_settings.exposureEv);
+    const bool agaaFamily = method.usesAggregates;
+    if (agaaFamily) r.settings.ndf = m_settings.ndf;
+    if (method.name == "agaa") r.settings.agaaGeneration = m_settings.generation;
+    r.settings.effects = m_settings.effects;
     r.warmupFrames = 0;
     r.timedFrames = 1; // interactive: one frame each, the live numbers are that frame's
     return r;
@@ -150,7 +190,10 @@ std::string Controls::describe(uint32_t renderedSamples) const {
 std::string Controls::help() {
     std::string s =
         "controls: left-drag orbit | scroll dolly | S samples (4,8,16,32) | A aggregates (1..4) | "
-        "D debug view | R reset | P screenshot | H help | Esc/Q quit\nmethods:";
+        "D debug view | X compare (off, split, difference) | R reset | P screenshot | H help | Esc/Q quit "
+        "(every setting is also "
+        "in "
+        "the UI panel)\nmethods:";
     const auto& methods = knownMethods();
     for (size_t i = 0; i < methods.size() && i < 9; ++i)
         s += " " + std::to_string(i + 1) + "=" + methods[i].name;

@@ -1,8 +1,10 @@
 #pragma once
 // What the viewer's input does: an orbit camera about the scene's bounds centre (drag to orbit,
 // scroll to dolly) and the method/setting keys (1..9 method, S samples, A aggregates, D debug
-// view, R reset, P screenshot). Pure logic over InputEvents: no window, no device.
+// view, X compare with the reference, R reset, P screenshot). Pure logic over InputEvents: no window, no
+// device.
 
+#include "agaa/common/effects.h"
 #include "agaa/common/frame_renderer.h"
 #include "engine/scene/scene.h"
 #include "samples/viewer/window.h"
@@ -45,11 +47,31 @@ class OrbitCamera {
     float m_yaw = 0.0f, m_pitch = 0.0f, m_distance = 1.0f;
 };
 
+// The values the UI offers for the string settings of MethodSettings (agaa-render's options).
+inline constexpr const char* kNdfs[] = {"auto", "sggx", "toksvig"};
+inline constexpr const char* kGenerations[] = {"auto", "accumulate", "samples", "coverage"};
+inline constexpr uint32_t kShadowMapSizes[] = {256, 512, 1024, 2048};
+inline constexpr float kMinExposureEv = -8.0f, kMaxExposureEv = 8.0f;
+
+// Against the per-sample reference at the same n: off, split (left the method, right the
+// reference) or difference (|method - reference| x gain over the whole frame).
+enum class Compare { Off, Split, Difference };
+inline constexpr const char* kCompareNames[] = {"off", "split", "difference"};
+inline constexpr float kMaxDifferenceGain = 64.0f;
+
 struct ViewerSettings {
     size_t method = 0; // index into knownMethods()
     uint32_t samples = 8;
     uint32_t aggregates = 2;
-    size_t debugView = 0; // 0 = none, else knownMethods()[method].debugViews[debugView - 1]
+    size_t debugView = 0;            // 0 = none, else knownMethods()[method].debugViews[debugView - 1]
+    std::string ndf = "auto";        // AGAA family
+    std::string generation = "auto"; // method "agaa" only (the other two fix their path)
+    EffectSettings effects;
+    float exposureEv = 0.0f; // exposure = 2^exposureEv, on top of the scene's 1.0
+    Compare compare = Compare::Off;
+    float splitFraction = 0.5f;
+    float differenceGain = 4.0f; // Compare::Difference: |method - reference| x gain
+    uint32_t pixelSize = 1;      // 1, 2 or 4 swapchain pixels per rendered pixel (1 = 1:1)
 };
 
 // Throws std::invalid_argument naming the option when a setting is out of range.
@@ -71,7 +93,11 @@ class Controls {
     void accept() { m_accepted = m_settings; }
 
     const ViewerSettings& settings() const { return m_settings; }
+    // The UI edits the settings in place; validate() runs when the frame is requested.
+    ViewerSettings& settings() { return m_settings; }
     const OrbitCamera& camera() const { return m_camera; }
+    // The UI's reset button: the same as key R.
+    void reset();
     RenderRequest request(uint32_t width, uint32_t height) const;
     // "agaa n=8 c=2 debug=aggregates": the method and the settings that matter for it.
     std::string describe(uint32_t renderedSamples) const;

@@ -1,17 +1,17 @@
 #pragma once
-// The window's swapchain (FIFO) and the per-frame present: the CPU's sRGB-encoded frame is
-// uploaded, copied into an RGBA8 image and blitted (scaled) into the acquired swapchain image by
-// a small render graph, so every barrier, including the final transition to PRESENT_SRC_KHR,
-// comes from engine/graph. One frame in flight: the viewer renders with FrameRenderer, which
-// already waits for the GPU, so more would buy nothing on lavapipe.
+// The window's swapchain (FIFO): surface, images and their views, acquire and present. Nothing
+// else: the frame graph (view_renderer.h) writes the acquired image and places every barrier,
+// including the final one to presentation (rg::Use::Present). The acquire signals a fence the
+// CPU waits on, and the graph's submit is waited on before the present, so with one frame in
+// flight no semaphore is needed: lavapipe renders on the CPU, more frames in flight buy nothing.
 
-#include "engine/io/image.h"
+#include "engine/graph/resources.h"
 #include "engine/vk/device.h"
-#include "engine/vk/resources.h"
 
 #include <vulkan/vulkan.h>
 
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 namespace agaa::viewer {
@@ -20,15 +20,20 @@ enum class PresentResult {
     Presented,
     // Shown, but the swapchain no longer matches the surface: recreate() before the next frame.
     PresentedOutOfDate,
-    // Not shown (the surface changed under it): recreate() and present the frame again.
+    // Not shown (the surface changed under it): recreate().
     OutOfDate,
+};
+
+struct AcquiredImage {
+    uint32_t index = 0;
+    eng::rg::PhysicalTexture texture; // import with initial nullopt and final Use::Present
 };
 
 class Swapchain {
   public:
     // Takes ownership of `surface` (destroyed with the swapchain, before the device's instance).
-    // Throws eng::vk::MissingCapability when the queue cannot present to it or the surface
-    // offers no format the viewer can blit into.
+    // Throws eng::vk::MissingCapability when the queue cannot present to it or the surface offers
+    // no 8-bit sRGB format the display blit can write (the blit does the sRGB encode).
     Swapchain(eng::vk::Device& device, VkSurfaceKHR surface, VkExtent2D windowSize);
     ~Swapchain();
     Swapchain(const Swapchain&) = delete;
@@ -36,43 +41,35 @@ class Swapchain {
 
     // Waits for the GPU and rebuilds the swapchain for the window's new framebuffer size.
     void recreate(VkExtent2D windowSize);
-
-    // Shows `frame` (sRGB-encoded RGBA8, any size) stretched over the whole window, and waits
-    // for the copy to finish. With `screenshot` set, also reads the presented swapchain image
-    // back into it (RGBA8; the uploaded frame where the surface forbids TRANSFER_SRC).
-    PresentResult present(const eng::io::ImageU8& frame, eng::io::ImageU8* screenshot = nullptr);
+    // Waits until an image is free; nullopt when the swapchain is out of date (recreate()).
+    std::optional<AcquiredImage> acquire();
+    // Presents an image the caller's submit has finished writing (it waited on its fence).
+    PresentResult present(uint32_t index);
 
     VkExtent2D extent() const { return m_extent; }
     VkFormat format() const { return m_format; }
+    uint32_t imageCount() const { return uint32_t(m_images.size()); }
+    uint32_t minImageCount() const { return m_minImageCount; }
+    bool canReadBack() const { return m_canReadBack; } // TRANSFER_SRC: screenshots
+    // Increments on every recreate(): framebuffers made for older image views are stale.
+    uint32_t generation() const { return m_generation; }
 
   private:
     void createSwapchain(VkExtent2D windowSize);
-    void destroySwapchain();
-    void ensureFrameResources(uint32_t width, uint32_t height);
+    void destroyViews();
 
     eng::vk::Device& m_device;
     VkSurfaceKHR m_surface = VK_NULL_HANDLE;
     VkSwapchainKHR m_swapchain = VK_NULL_HANDLE;
     VkFormat m_format = VK_FORMAT_UNDEFINED;
     VkColorSpaceKHR m_colorSpace = VK_COLOR_SPACE_SRGB_NONLINEAR_KHR;
-    VkFormat m_frameFormat =
-        VK_FORMAT_R8G8B8A8_UNORM; // same encoding as m_format, so the blit keeps sRGB bytes
-    VkFilter m_blitFilter = VK_FILTER_LINEAR;
-    bool m_canReadBack = false; // swapchain images support TRANSFER_SRC
+    bool m_canReadBack = false;
     VkExtent2D m_extent{0, 0};
+    uint32_t m_minImageCount = 2;
+    uint32_t m_generation = 0;
     std::vector<VkImage> m_images;
-    // Per swapchain image: the semaphore vkQueuePresentKHR waits on. Per image, not per frame,
-    // because the presentation engine may still hold it when the next frame is submitted.
-    std::vector<VkSemaphore> m_renderFinished;
-    VkSemaphore m_imageAcquired = VK_NULL_HANDLE; // reusable: the fence wait retires its wait
-    VkCommandPool m_commandPool = VK_NULL_HANDLE;
-    VkCommandBuffer m_cmd = VK_NULL_HANDLE;
-    VkFence m_fence = VK_NULL_HANDLE;
-
-    // The frame on its way to the swapchain: host upload buffer and the RGBA8 image the blit reads.
-    eng::vk::Buffer m_upload;
-    eng::vk::Image m_frameImage;
-    eng::vk::Buffer m_readback;
+    std::vector<VkImageView> m_views;
+    VkFence m_acquired = VK_NULL_HANDLE;
 };
 
 } // namespace agaa::viewer

@@ -50,6 +50,8 @@ class Window {
     VkExtent2D framebufferSize() const;
     bool minimised() const;
     void setTitle(const std::string& title);
+    // For the UI's input backend, which installs its callbacks after the window's and chains to them.
+    GLFWwindow* handle() const { return m_window; }
     InputEvents takeInput();
 
   private:
