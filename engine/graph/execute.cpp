@@ -29,6 +29,14 @@ class VulkanRecorder final : public CommandRecorder {
                         uint32_t query) override {
         vkCmdWriteTimestamp2(cmd, stage, pool, query);
     }
+    void beginRendering(VkCommandBuffer cmd, const VkRenderingInfo& rendering) override {
+        vkCmdBeginRendering(cmd, &rendering);
+    }
+    void setViewport(VkCommandBuffer cmd, const VkViewport& viewport, const VkRect2D& scissor) override {
+        vkCmdSetViewport(cmd, 0, 1, &viewport);
+        vkCmdSetScissor(cmd, 0, 1, &scissor);
+    }
+    void endRendering(VkCommandBuffer cmd) override { vkCmdEndRendering(cmd); }
 };
 
 } // namespace
@@ -52,6 +60,15 @@ const PhysicalBuffer& Context::buffer(Buffer buffer) const {
         throw std::logic_error("render graph: pass '" + passName() + "' resolves buffer '" +
                                m_graph.m_resources[resource].name + "' that its setup never declared");
     return m_graph.m_resources[resource].buffer;
+}
+
+VkImageLayout Context::layout(Texture texture) const {
+    const uint32_t resource = m_graph.checkHandle(texture.id, true, "pass '" + passName() + "'").resource;
+    const Graph::Access* access = m_graph.findAccess(m_pass, resource);
+    if (!access)
+        throw std::logic_error("render graph: pass '" + passName() + "' asks the layout of texture '" +
+                               m_graph.m_resources[resource].name + "' that its setup never declared");
+    return access->layout;
 }
 
 const std::string& Context::passName() const {
@@ -136,6 +153,30 @@ void Graph::recordBarriers(CommandRecorder& recorder, VkCommandBuffer cmd,
     recorder.pipelineBarrier(cmd, dependency);
 }
 
+void Graph::recordPass(CommandRecorder& recorder, VkCommandBuffer cmd, uint32_t passIndex) const {
+    const Pass& pass = m_passes[passIndex];
+    const RenderTargets& targets = pass.targets;
+    if (targets.empty()) {
+        if (pass.callback) pass.callback->run(Context(*this, passIndex, cmd));
+        return;
+    }
+    const auto view = [&](uint32_t resource) {
+        const PhysicalTexture& texture = m_resources[resource].texture;
+        return RenderingView{texture.view, findAccess(passIndex, resource)->layout, texture.desc.format};
+    };
+    std::vector<RenderingView> colors;
+    for (const RenderTargets::Target& target : targets.colors)
+        colors.push_back(view(target.resource));
+    const RenderingView depth =
+        targets.depth.resource != kInvalidId ? view(targets.depth.resource) : RenderingView{};
+    Rendering rendering;
+    buildRendering(targets, colors, depth, rendering);
+    recorder.beginRendering(cmd, rendering.info);
+    recorder.setViewport(cmd, rendering.viewport, rendering.scissor);
+    if (pass.callback) pass.callback->run(Context(*this, passIndex, cmd));
+    recorder.endRendering(cmd);
+}
+
 void Graph::execute(const ExecuteInfo& info) {
     const CompiledGraph& graph = compiled();
     if (info.cmd == VK_NULL_HANDLE)
@@ -166,7 +207,7 @@ void Graph::execute(const ExecuteInfo& info) {
         if (info.queryPool != VK_NULL_HANDLE)
             recorder.writeTimestamp(info.cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, info.queryPool,
                                     info.firstQuery + 2 * i);
-        if (pass.callback) pass.callback->run(Context(*this, compiledPass.pass, info.cmd));
+        recordPass(recorder, info.cmd, compiledPass.pass);
         if (info.queryPool != VK_NULL_HANDLE)
             recorder.writeTimestamp(info.cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, info.queryPool,
                                     info.firstQuery + 2 * i + 1);

@@ -6,6 +6,7 @@
 
 #include "engine/graph/compiled.h"
 #include "engine/graph/recorder.h"
+#include "engine/graph/render_pass.h"
 #include "engine/graph/resources.h"
 #include "engine/graph/use.h"
 
@@ -39,6 +40,14 @@ class Builder {
     // DepthStencilRead.
     Texture readWrite(Texture texture, Use use);
     Buffer readWrite(Buffer buffer, Use use);
+    // Attachments of a graphics pass's render pass, which execute() begins before the pass's
+    // callback and ends after it. color() declares ColorAttachment; depthStencil() one of
+    // DepthStencilWrite, DepthStencilRead (EQUAL test, stencil written) or DepthReadOnly. A LOAD
+    // (or a use that reads the previous contents) keeps the previous producer alive; read-only
+    // depth returns the same handle. All attachments of a pass share one width, height and layer
+    // count: the render area.
+    Texture color(Texture texture, const Attachment& attachment = {});
+    Texture depthStencil(Texture texture, Use use, const Attachment& attachment = {});
     // The pass has effects the graph cannot see (host readback, debug output): never culled.
     void sideEffect();
 
@@ -57,6 +66,9 @@ class Context {
     const PhysicalBuffer& buffer(Buffer buffer) const;
     VkCommandBuffer cmd() const { return m_cmd; }
     const std::string& passName() const;
+    // The layout the graph put a declared texture in for this pass: for copy commands and
+    // descriptors that must name it.
+    VkImageLayout layout(Texture texture) const;
 
   private:
     friend class Graph;
@@ -208,6 +220,7 @@ class Graph {
         PassKind kind = PassKind::Graphics;
         bool sideEffect = false;
         std::vector<Access> accesses;
+        RenderTargets targets; // declared attachments; empty: no render pass
         std::unique_ptr<detail::PassCallback> callback;
     };
 
@@ -216,6 +229,8 @@ class Graph {
     uint32_t createResource(std::string name, bool isImage, const TextureDesc* textureDesc,
                             const BufferDesc* bufferDesc);
     uint32_t declare(uint32_t pass, uint32_t handle, bool isImage, Use use, Mode mode);
+    uint32_t declareAttachment(uint32_t pass, uint32_t handle, Use use, const Attachment& attachment);
+    void recordPass(CommandRecorder& recorder, VkCommandBuffer cmd, uint32_t pass) const;
     const Version& checkHandle(uint32_t handle, bool isImage, const std::string& where) const;
     void invalidate();
     std::vector<bool> cullPasses() const;

@@ -171,7 +171,7 @@ Image createImage(const Device& device, const ImageDesc& desc, const std::string
     info.tiling = VK_IMAGE_TILING_OPTIMAL;
     info.usage = desc.usage;
     info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
-    info.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
+    // initialLayout stays zero (UNDEFINED): every transition is the render graph's.
     VK_CHECK(vkCreateImage(device.device(), &info, nullptr, &img.image));
     VkMemoryRequirements req;
     vkGetImageMemoryRequirements(device.device(), img.image, &req);
