@@ -75,23 +75,115 @@ const std::string& Context::passName() const {
     return m_graph.m_passes[m_pass].name;
 }
 
+std::vector<TransientAllocation> Allocator::acquireTransients(const std::vector<TransientRequest>& requests) {
+    std::vector<TransientAllocation> allocations(requests.size());
+    for (size_t i = 0; i < requests.size(); ++i) {
+        const TransientRequest& request = requests[i];
+        if (request.isImage)
+            allocations[i].texture = acquireTexture(request.name, request.textureDesc, request.imageUsage);
+        else
+            allocations[i].buffer = acquireBuffer(request.name, request.bufferDesc, request.bufferUsage);
+    }
+    return allocations;
+}
+
 void Graph::realiseTransients(Allocator& allocator) {
     const CompiledGraph& graph = compiled();
     if (m_allocator && m_allocator != &allocator)
         throw std::logic_error("render graph: transients are realised by another allocator; call "
                                "releaseTransients() before switching");
+    std::vector<uint32_t> position(m_passes.size(), kInvalidId);
+    for (uint32_t i = 0; i < graph.order.size(); ++i)
+        position[graph.order[i].pass] = i;
+    std::vector<uint32_t> resources;
+    std::vector<TransientRequest> requests;
     for (uint32_t r = 0; r < m_resources.size(); ++r) {
-        Resource& resource = m_resources[r];
+        const Resource& resource = m_resources[r];
         if (resource.imported || resource.realised || graph.firstUse[r] == kInvalidId) continue;
-        if (resource.isImage)
-            resource.texture =
-                allocator.acquireTexture(resource.name, resource.textureDesc, graph.imageUsage[r]);
-        else
-            resource.buffer =
-                allocator.acquireBuffer(resource.name, resource.bufferDesc, graph.bufferUsage[r]);
-        resource.realised = true;
-        m_allocator = &allocator;
+        TransientRequest request;
+        request.name = resource.name;
+        request.isImage = resource.isImage;
+        request.textureDesc = resource.textureDesc;
+        request.bufferDesc = resource.bufferDesc;
+        request.imageUsage = graph.imageUsage[r];
+        request.bufferUsage = graph.bufferUsage[r];
+        request.firstUse = position[graph.firstUse[r]];
+        request.lastUse = position[graph.lastUse[r]];
+        resources.push_back(r);
+        requests.push_back(std::move(request));
     }
+    if (requests.empty()) return;
+    std::vector<TransientAllocation> allocations = allocator.acquireTransients(requests);
+    if (allocations.size() != requests.size())
+        throw std::logic_error("render graph: the allocator answered " + std::to_string(allocations.size()) +
+                               " allocations for " + std::to_string(requests.size()) + " transients");
+    for (size_t i = 0; i < resources.size(); ++i) {
+        Resource& resource = m_resources[resources[i]];
+        resource.texture = allocations[i].texture;
+        resource.buffer = allocations[i].buffer;
+        resource.realised = true;
+    }
+    m_allocator = &allocator;
+    computeAliasWaits(resources, allocations);
+}
+
+void Graph::computeAliasWaits(const std::vector<uint32_t>& resources,
+                              const std::vector<TransientAllocation>& allocations) {
+    // Every access of a resource in this graph, as the stages and writes a sharer must wait on.
+    // Sharers both before and after in the frame count: a re-execution (the next frame, a
+    // benchmark loop) runs the later one's accesses before this one's first use again.
+    const auto accessesOf = [&](uint32_t resource, VkPipelineStageFlags2& stage, VkAccessFlags2& access) {
+        for (const CompiledPass& compiledPass : m_compiled.order)
+            if (const Access* a = findAccess(compiledPass.pass, resource)) {
+                stage |= a->stage;
+                access |= a->access & kWriteAccessMask;
+            }
+    };
+    for (size_t i = 0; i < resources.size(); ++i) {
+        Resource& resource = m_resources[resources[i]];
+        resource.aliasStage = VK_PIPELINE_STAGE_2_NONE;
+        resource.aliasAccess = VK_ACCESS_2_NONE;
+        const TransientAllocation& mine = allocations[i];
+        if (mine.memory == kInvalidId) continue;
+        for (size_t j = 0; j < resources.size(); ++j) {
+            const TransientAllocation& other = allocations[j];
+            if (i == j || other.memory != mine.memory) continue;
+            if (!(mine.offset < other.offset + other.size && other.offset < mine.offset + mine.size))
+                continue;
+            accessesOf(resources[j], resource.aliasStage, resource.aliasAccess);
+        }
+    }
+}
+
+std::vector<Barrier> Graph::barriersWithAliasing(const CompiledPass& pass) const {
+    std::vector<Barrier> barriers = pass.barriers;
+    for (const Access& access : m_passes[pass.pass].accesses) {
+        const Resource& resource = m_resources[access.resource];
+        if (resource.aliasStage == VK_PIPELINE_STAGE_2_NONE ||
+            m_compiled.firstUse[access.resource] != pass.pass)
+            continue;
+        Barrier* first = nullptr;
+        for (Barrier& barrier : barriers)
+            if (barrier.resource == access.resource) first = &barrier;
+        if (!first) {
+            // compile() saw no hazard on this resource alone; the memory it shares has one.
+            Barrier barrier;
+            barrier.resource = access.resource;
+            barrier.isImage = resource.isImage;
+            barrier.dstStage = access.stage;
+            barrier.dstAccess = access.access;
+            if (resource.isImage) {
+                barrier.newLayout = access.layout;
+                barrier.aspect = imageAspect(resource.textureDesc.format);
+            }
+            barriers.push_back(barrier);
+            first = &barriers.back();
+        }
+        first->srcStage |= resource.aliasStage;
+        first->srcAccess |= resource.aliasAccess;
+        if (first->isImage) first->oldLayout = VK_IMAGE_LAYOUT_UNDEFINED; // the contents belong to another
+    }
+    return barriers;
 }
 
 void Graph::releaseTransients() {
@@ -105,6 +197,8 @@ void Graph::releaseTransients() {
             resource.buffer = PhysicalBuffer{};
         }
         resource.realised = false;
+        resource.aliasStage = VK_PIPELINE_STAGE_2_NONE;
+        resource.aliasAccess = VK_ACCESS_2_NONE;
     }
     m_allocator = nullptr;
 }
@@ -201,7 +295,7 @@ void Graph::execute(const ExecuteInfo& info) {
             labelColor(pass.kind, label.color);
             info.beginLabel(info.cmd, &label);
         }
-        recordBarriers(recorder, info.cmd, compiledPass.barriers);
+        recordBarriers(recorder, info.cmd, barriersWithAliasing(compiledPass));
         // ALL_COMMANDS on both ends: the first stamp waits for everything before the pass, the
         // second for the pass itself, so per-pass times add up to the frame without overlap.
         if (info.queryPool != VK_NULL_HANDLE)

@@ -154,7 +154,8 @@ class Graph {
     bool isCompiled() const { return m_isCompiled; }
     const CompiledGraph& compiled() const;
 
-    // Acquires every transient an executed pass touches (once; later calls reuse them).
+    // Acquires every transient an executed pass touches (once; later calls reuse them), all in one
+    // Allocator::acquireTransients() call with their lifetimes, so the allocator may alias them.
     // execute() calls it; exposed so allocation can be checked without recording commands.
     void realiseTransients(Allocator& allocator);
     void execute(const ExecuteInfo& info);
@@ -194,6 +195,10 @@ class Graph {
         PhysicalTexture texture; // imported, or realised transient
         PhysicalBuffer buffer;
         bool realised = false; // transient acquired from m_allocator
+        // Accesses of the other transients placed over the same memory: the first barrier of
+        // this one also waits on them (it starts from UNDEFINED, but the bytes were in use).
+        VkPipelineStageFlags2 aliasStage = VK_PIPELINE_STAGE_2_NONE;
+        VkAccessFlags2 aliasAccess = VK_ACCESS_2_NONE;
     };
 
     struct Version {
@@ -239,6 +244,9 @@ class Graph {
     const Access* findAccess(uint32_t pass, uint32_t resource) const;
     void recordBarriers(CommandRecorder& recorder, VkCommandBuffer cmd,
                         const std::vector<Barrier>& barriers) const;
+    void computeAliasWaits(const std::vector<uint32_t>& resources,
+                           const std::vector<TransientAllocation>& allocations);
+    std::vector<Barrier> barriersWithAliasing(const CompiledPass& pass) const;
 
     std::vector<Pass> m_passes;
     std::vector<Resource> m_resources;
