@@ -129,10 +129,15 @@ TransientPool::createSet(const std::vector<rg::TransientRequest>& requests) {
             alias[i].lastUse = request.lastUse;
         }
         set->plan = rg::planAliasing(alias);
+        // A block is named by the transients it holds, so an allocation failure names them.
+        std::vector<std::string> blockNames(set->plan.blocks.size());
+        for (size_t i = 0; i < requests.size(); ++i) {
+            std::string& name = blockNames[set->plan.placements[i].block];
+            name += (name.empty() ? "" : " + ") + requests[i].name;
+        }
         for (size_t b = 0; b < set->plan.blocks.size(); ++b)
-            set->blocks.push_back(vk::allocateDeviceMemory(m_device, set->plan.blocks[b].size,
-                                                           set->plan.blocks[b].memoryTypeBits,
-                                                           "rg.transients.block" + std::to_string(b)));
+            set->blocks.push_back(vk::allocateDeviceMemory(
+                m_device, set->plan.blocks[b].size, set->plan.blocks[b].memoryTypeBits, blockNames[b]));
         for (size_t i = 0; i < requests.size(); ++i) {
             const rg::AliasPlacement& placement = set->plan.placements[i];
             Object& object = set->objects[i];
