@@ -23,15 +23,6 @@ uint32_t groups(uint32_t size, uint32_t group) {
     return (size + group - 1) / group;
 }
 
-VkRenderingAttachmentInfo attachment(VkImageView view, VkImageLayout layout, VkAttachmentLoadOp load) {
-    VkRenderingAttachmentInfo a{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
-    a.imageView = view;
-    a.imageLayout = layout;
-    a.loadOp = load;
-    a.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
-    return a;
-}
-
 } // namespace
 
 FrameTargets AggregateAA::addPasses(rg::Graph& graph, const FrameInputs& in) {
@@ -62,21 +53,6 @@ FrameTargets AggregateAA::addPasses(rg::Graph& graph, const FrameInputs& in) {
                                      const std::vector<VkPipeline>& pipes) {
         scene->recordDraws(cmd, layout, pipes, layers);
     };
-    auto beginRendering = [](VkCommandBuffer cmd, uint32_t w, uint32_t h, uint32_t layerCount,
-                             const VkRenderingAttachmentInfo* color, const VkRenderingAttachmentInfo& depth) {
-        VkRenderingInfo info{VK_STRUCTURE_TYPE_RENDERING_INFO};
-        info.renderArea = {{0, 0}, {w, h}};
-        info.layerCount = layerCount;
-        info.colorAttachmentCount = color ? 1 : 0;
-        info.pColorAttachments = color;
-        info.pDepthAttachment = &depth;
-        info.pStencilAttachment = &depth;
-        vkCmdBeginRendering(cmd, &info);
-        VkViewport viewport{0.0f, 0.0f, float(w), float(h), 0.0f, 1.0f};
-        VkRect2D scissor{{0, 0}, {w, h}};
-        vkCmdSetViewport(cmd, 0, 1, &viewport);
-        vkCmdSetScissor(cmd, 0, 1, &scissor);
-    };
 
     // ---- 1. visibility prepass, or the samples path's per-sample G-buffer ------------------
     struct Visibility {
@@ -99,29 +75,21 @@ FrameTargets AggregateAA::addPasses(rg::Graph& graph, const FrameInputs& in) {
                 d.frame = b.read(in.frameConstants, rg::Use::UniformRead);
                 d.agaa = b.read(agaaConstants, rg::Use::UniformRead);
                 d.materials = b.read(materials, rg::Use::StorageReadFragment);
-                d.depth = b.write(b.create("agaa.visibility.depth", desc(m_depthFormat)),
-                                  rg::Use::DepthStencilWrite);
-                d.normal = b.write(b.create("agaa.visibility.normal", desc(VK_FORMAT_R8G8_UNORM)),
-                                   rg::Use::ColorAttachment);
+                // Reversed Z: 0 = far (sky); stencil 0 for generation's first-fragment test.
+                rg::Attachment clearDepth;
+                clearDepth.clear.depthStencil = {0.0f, 0};
+                d.depth = b.depthStencil(b.create("agaa.visibility.depth", desc(m_depthFormat)),
+                                         rg::Use::DepthStencilWrite, clearDepth);
+                d.normal = b.color(b.create("agaa.visibility.normal", desc(VK_FORMAT_R8G8_UNORM)));
             },
             [=, this](const rg::Context& ctx, const Visibility& d) {
                 VkCommandBuffer cmd = ctx.cmd();
-                VkRenderingAttachmentInfo color =
-                    attachment(ctx.texture(d.normal).view, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
-                               VK_ATTACHMENT_LOAD_OP_CLEAR);
-                VkRenderingAttachmentInfo depth =
-                    attachment(ctx.texture(d.depth).view, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL,
-                               VK_ATTACHMENT_LOAD_OP_CLEAR);
-                depth.clearValue.depthStencil = {0.0f,
-                                                 0}; // reversed Z: 0 = far (sky); stencil 0 for generation
-                beginRendering(cmd, in.width, in.height, layers, &color, depth);
                 vk::PushDescriptors()
                     .uniform(0, ctx.buffer(d.frame).buffer)
                     .storage(1, ctx.buffer(d.materials).buffer)
                     .uniform(2, ctx.buffer(d.agaa).buffer)
                     .push(m_device, cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, m_visibilityLayout.layout);
                 drawScene(cmd, m_visibilityLayout.layout, visibilityPipelines);
-                vkCmdEndRendering(cmd);
             });
     // What the clustering reads: the prepass's depth and face normals, or the G-buffer's.
     const rg::Texture sampleDepth = samplesPath ? gbuffer.depth : visPass->depth;
@@ -268,23 +236,16 @@ FrameTargets AggregateAA::addPasses(rg::Graph& graph, const FrameInputs& in) {
                 d.materials = b.read(materials, rg::Use::StorageReadFragment);
                 d.metadata = b.read(cl.metadata, rg::Use::StorageReadFragment);
                 d.agBuffer = b.readWrite(clear.agBuffer, rg::Use::StorageReadWriteFragment);
-                d.depth =
-                    b.readWrite(visPass->depth, rg::Use::DepthStencilRead); // EQUAL test, stencil written
+                rg::Attachment loadDepth;
+                loadDepth.load = VK_ATTACHMENT_LOAD_OP_LOAD;
+                d.depth = b.depthStencil(visPass->depth, rg::Use::DepthStencilRead,
+                                         loadDepth); // EQUAL test, stencil written
                 if (emissive)
-                    d.emissive = b.write(b.create("agaa.emissive", desc(VK_FORMAT_B10G11R11_UFLOAT_PACK32)),
-                                         rg::Use::ColorAttachment);
+                    d.emissive = b.color(b.create("agaa.emissive", desc(VK_FORMAT_B10G11R11_UFLOAT_PACK32)));
                 if (recording) d.records = b.readWrite(records, rg::Use::StorageReadWriteFragment);
             },
             [=, this](const rg::Context& ctx, const Generation& d) {
                 VkCommandBuffer cmd = ctx.cmd();
-                VkRenderingAttachmentInfo depth =
-                    attachment(ctx.texture(d.depth).view, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL,
-                               VK_ATTACHMENT_LOAD_OP_LOAD);
-                VkRenderingAttachmentInfo color{};
-                if (emissive)
-                    color = attachment(ctx.texture(d.emissive).view, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
-                                       VK_ATTACHMENT_LOAD_OP_CLEAR);
-                beginRendering(cmd, in.width, in.height, layers, emissive ? &color : nullptr, depth);
                 vk::PushDescriptors pd;
                 pd.uniform(0, ctx.buffer(d.frame).buffer)
                     .storage(1, ctx.buffer(d.materials).buffer)
@@ -297,7 +258,6 @@ FrameTargets AggregateAA::addPasses(rg::Graph& graph, const FrameInputs& in) {
                     pd.storage(6, ctx.buffer(d.agBuffer).buffer); // the same buffer as 64-bit words
                 pd.push(m_device, cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, generationLayout);
                 drawScene(cmd, generationLayout, generationPipelines);
-                vkCmdEndRendering(cmd);
             });
         agBuffer = gen.agBuffer;
         lightingDepth = gen.depth; // the generation pass wrote the stencil: later readers use that version

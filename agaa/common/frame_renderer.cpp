@@ -214,6 +214,9 @@ RenderResult FrameRenderer::render(const RenderRequest& original) {
         }
     }
     result.bytesPerPixel = double(storage) / pixels;
+    result.transientBytesRequested = m_runner.pool().requestedBytes();
+    result.transientBytesAllocated = m_runner.pool().allocatedBytes();
+    result.aliasingSavedBytes = result.transientBytesRequested - result.transientBytesAllocated;
 
     result.hdr = readImage(m_device, hdrHost, w, h);
     result.display = readImage(m_device, displayHost, w, h);

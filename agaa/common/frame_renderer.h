@@ -50,6 +50,11 @@ struct RenderResult {
     // frame's other transient allocations (outputs, scratch), in bytes per pixel.
     std::map<std::string, double> bytesPerPixelSplit;
     double transientBytesPerPixel = 0.0;
+    // Every transient's memory requirement summed (what the frame would take without aliasing),
+    // the device memory the aliased blocks take, and the difference, in bytes.
+    uint64_t transientBytesRequested = 0;
+    uint64_t transientBytesAllocated = 0;
+    uint64_t aliasingSavedBytes = 0;
     double shadingEventsMean = 0.0;
     uint32_t shadingEventsMax = 0;
     std::vector<uint64_t> shadingEventsHistogram; // [k] = pixels with k shading events

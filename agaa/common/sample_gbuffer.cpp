@@ -120,57 +120,26 @@ SampleGBuffer SampleGBufferPass::add(rg::Graph& graph, const FrameInputs& in) {
         [&](rg::Builder& b, Data& d) {
             d.frame = b.read(in.frameConstants, rg::Use::UniformRead);
             d.materials = b.read(materials, rg::Use::StorageReadFragment);
-            d.g.depth =
-                b.write(b.create(m_name + ".gbuffer.depth", desc(kDepthFormat)), rg::Use::DepthStencilWrite);
-            d.g.normal =
-                b.write(b.create(m_name + ".gbuffer.normal", desc(kNormalFormat)), rg::Use::ColorAttachment);
-            d.g.albedoMetal = b.write(b.create(m_name + ".gbuffer.albedoMetal", desc(kAlbedoMetalFormat)),
-                                      rg::Use::ColorAttachment);
+            rg::Attachment clearDepth;
+            clearDepth.clear.depthStencil = {0.0f, 0}; // reversed Z: 0 is the far plane (sky)
+            d.g.depth = b.depthStencil(b.create(m_name + ".gbuffer.depth", desc(kDepthFormat)),
+                                       rg::Use::DepthStencilWrite, clearDepth);
+            // Colour locations in declaration order: normal, albedoMetal, emissiveRoughness, primitive.
+            d.g.normal = b.color(b.create(m_name + ".gbuffer.normal", desc(kNormalFormat)));
+            d.g.albedoMetal = b.color(b.create(m_name + ".gbuffer.albedoMetal", desc(kAlbedoMetalFormat)));
             d.g.emissiveRoughness =
-                b.write(b.create(m_name + ".gbuffer.emissiveRoughness", desc(kEmissiveRoughnessFormat)),
-                        rg::Use::ColorAttachment);
+                b.color(b.create(m_name + ".gbuffer.emissiveRoughness", desc(kEmissiveRoughnessFormat)));
             if (m_options.primitiveIds)
-                d.g.primitive = b.write(b.create(m_name + ".gbuffer.primitive", desc(kPrimitiveFormat)),
-                                        rg::Use::ColorAttachment);
+                d.g.primitive = b.color(b.create(m_name + ".gbuffer.primitive", desc(kPrimitiveFormat)));
         },
-        [this, gpuScene, drawPipelines, layers = pattern.layers, w = in.width,
-         h = in.height](const rg::Context& ctx, const Data& d) {
+        [this, gpuScene, drawPipelines, layers = pattern.layers](const rg::Context& ctx, const Data& d) {
             VkCommandBuffer cmd = ctx.cmd();
-            VkRenderingAttachmentInfo colors[4];
-            const rg::Texture targets[4] = {d.g.normal, d.g.albedoMetal, d.g.emissiveRoughness,
-                                            d.g.primitive};
-            const uint32_t targetCount = m_options.primitiveIds ? 4 : 3;
-            for (uint32_t i = 0; i < targetCount; ++i) {
-                colors[i] = {VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
-                colors[i].imageView = ctx.texture(targets[i]).view;
-                colors[i].imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
-                colors[i].loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
-                colors[i].storeOp = VK_ATTACHMENT_STORE_OP_STORE;
-            }
-            VkRenderingAttachmentInfo depth{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
-            depth.imageView = ctx.texture(d.g.depth).view;
-            depth.imageLayout = VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL;
-            depth.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
-            depth.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
-            depth.clearValue.depthStencil = {0.0f, 0}; // reversed Z: 0 is the far plane (sky)
-            VkRenderingInfo info{VK_STRUCTURE_TYPE_RENDERING_INFO};
-            info.renderArea = {{0, 0}, {w, h}};
-            info.layerCount = layers;
-            info.colorAttachmentCount = targetCount;
-            info.pColorAttachments = colors;
-            info.pDepthAttachment = &depth;
-            vkCmdBeginRendering(cmd, &info);
-            VkViewport viewport{0.0f, 0.0f, float(w), float(h), 0.0f, 1.0f};
-            VkRect2D scissor{{0, 0}, {w, h}};
-            vkCmdSetViewport(cmd, 0, 1, &viewport);
-            vkCmdSetScissor(cmd, 0, 1, &scissor);
             eng::vk::PushDescriptors()
                 .uniform(0, ctx.buffer(d.frame).buffer)
                 .storage(1, ctx.buffer(d.materials).buffer)
                 .push(m_device, cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, m_layout.layout);
             // One instance per emulation layer (common/scene_vertex.glsl).
             gpuScene->recordDraws(cmd, m_layout.layout, drawPipelines, layers, m_options.primitiveIds);
-            vkCmdEndRendering(cmd);
         });
     return out.g;
 }

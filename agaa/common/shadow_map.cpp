@@ -179,33 +179,19 @@ ShadowMaps ShadowMapPass::add(rg::Graph& graph, const FrameInputs& in) {
         [&](rg::Builder& b, Data& d) {
             d.constants = b.read(constants, rg::Use::UniformRead);
             d.materials = b.read(materials, rg::Use::StorageReadFragment);
-            d.map = b.write(
+            rg::Attachment clearDepth;
+            clearDepth.clear.depthStencil = {1.0f, 0}; // nothing occludes
+            d.map = b.depthStencil(
                 b.create(m_name + ".shadow.map", {kFormat, size, size, layers, VK_SAMPLE_COUNT_1_BIT}),
-                rg::Use::DepthStencilWrite);
+                rg::Use::DepthStencilWrite, clearDepth);
         },
-        [this, gpuScene, drawPipelines, size, layers](const rg::Context& ctx, const Data& d) {
+        [this, gpuScene, drawPipelines](const rg::Context& ctx, const Data& d) {
             VkCommandBuffer cmd = ctx.cmd();
-            VkRenderingAttachmentInfo depth{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
-            depth.imageView = ctx.texture(d.map).view;
-            depth.imageLayout = VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL;
-            depth.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
-            depth.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
-            depth.clearValue.depthStencil = {1.0f, 0}; // nothing occludes
-            VkRenderingInfo info{VK_STRUCTURE_TYPE_RENDERING_INFO};
-            info.renderArea = {{0, 0}, {size, size}};
-            info.layerCount = layers;
-            info.pDepthAttachment = &depth;
-            vkCmdBeginRendering(cmd, &info);
-            VkViewport viewport{0.0f, 0.0f, float(size), float(size), 0.0f, 1.0f};
-            VkRect2D scissor{{0, 0}, {size, size}};
-            vkCmdSetViewport(cmd, 0, 1, &viewport);
-            vkCmdSetScissor(cmd, 0, 1, &scissor);
             vk::PushDescriptors()
                 .uniform(0, ctx.buffer(d.constants).buffer)
                 .storage(1, ctx.buffer(d.materials).buffer)
                 .push(m_device, cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, m_layout.layout);
             gpuScene->recordDraws(cmd, m_layout.layout, drawPipelines, m_mapCount); // instance = layer
-            vkCmdEndRendering(cmd);
         });
     return {out.map, out.constants};
 }

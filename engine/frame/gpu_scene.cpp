@@ -156,7 +156,8 @@ GpuScene::GpuScene(vk::Device& device, const scene::Scene& scene) : m_device(dev
         std::vector<VkDescriptorImageInfo> infos(shared::kMaxSceneTextures);
         for (uint32_t i = 0; i < shared::kMaxSceneTextures; ++i) {
             const vk::Image& img = i < scene.textures.size() ? m_textures[i] : m_textures.back();
-            infos[i] = {m_sampler, img.view, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
+            // The layout the upload graph leaves them in (its final state, SampledFragment).
+            infos[i] = {m_sampler, img.view, rg::useInfo(rg::Use::SampledFragment).layout};
         }
         VkWriteDescriptorSet write{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
         write.dstSet = m_textureSet;
@@ -336,8 +337,8 @@ void GpuScene::uploadTextures() {
                     copy.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, level, 0, 1};
                     copy.imageExtent = {m.width, m.height, 1};
                     vkCmdCopyBufferToImage(ctx.cmd(), ctx.buffer(d.staging).buffer,
-                                           ctx.texture(d.textures[i]).image,
-                                           VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &copy);
+                                           ctx.texture(d.textures[i]).image, ctx.layout(d.textures[i]), 1,
+                                           &copy);
                     offset += m.rgba.size();
                 }
             }
@@ -347,12 +348,12 @@ void GpuScene::uploadTextures() {
             copy.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, env.desc.layers};
             copy.imageExtent = {env.desc.width, env.desc.height, 1};
             vkCmdCopyBufferToImage(ctx.cmd(), ctx.buffer(d.staging).buffer, env.image,
-                                   VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &copy);
+                                   ctx.layout(d.environment), 1, &copy);
             copy.bufferOffset = dfgOffset;
             copy.imageSubresource.layerCount = 1;
             copy.imageExtent = {kDfgTableSize, kDfgTableSize, 1};
             vkCmdCopyBufferToImage(ctx.cmd(), ctx.buffer(d.staging).buffer, ctx.texture(d.dfg).image,
-                                   VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &copy);
+                                   ctx.layout(d.dfg), 1, &copy);
         });
     graph.compile();
     TransientPool pool(m_device);

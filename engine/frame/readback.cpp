@@ -14,8 +14,10 @@ vk::Buffer createReadbackBuffer(const vk::Device& device, uint32_t width, uint32
 }
 
 void addReadbackPass(rg::Graph& graph, rg::Texture texture, const vk::Buffer& host, const std::string& name) {
+    // Final state HostRead: the graph makes the copy's writes visible to the host after the
+    // fence (a fence wait alone does not).
     rg::Buffer target =
-        graph.importBuffer(name + ".host", {host.buffer, host.size}, std::nullopt, std::nullopt);
+        graph.importBuffer(name + ".host", {host.buffer, host.size}, std::nullopt, rg::Use::HostRead);
     struct Data {
         rg::Texture source;
         rg::Buffer target;
@@ -32,15 +34,15 @@ void addReadbackPass(rg::Graph& graph, rg::Texture texture, const vk::Buffer& ho
             VkBufferImageCopy copy{};
             copy.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
             copy.imageExtent = {src.desc.width, src.desc.height, 1};
-            vkCmdCopyImageToBuffer(ctx.cmd(), src.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
-                                   ctx.buffer(d.target).buffer, 1, &copy);
+            vkCmdCopyImageToBuffer(ctx.cmd(), src.image, ctx.layout(d.source), ctx.buffer(d.target).buffer, 1,
+                                   &copy);
         });
 }
 
 void addBufferReadbackPass(rg::Graph& graph, rg::Buffer buffer, const vk::Buffer& host,
                            const std::string& name) {
     rg::Buffer target =
-        graph.importBuffer(name + ".host", {host.buffer, host.size}, std::nullopt, std::nullopt);
+        graph.importBuffer(name + ".host", {host.buffer, host.size}, std::nullopt, rg::Use::HostRead);
     struct Data {
         rg::Buffer source, target;
     };

@@ -309,6 +309,46 @@ std::string Graph::dumpJson() const {
             orderOf[m_compiled.order[i].pass] = i;
         }
 
+    const auto loadName = [](VkAttachmentLoadOp op) {
+        switch (op) {
+        case VK_ATTACHMENT_LOAD_OP_LOAD:
+            return "LOAD";
+        case VK_ATTACHMENT_LOAD_OP_CLEAR:
+            return "CLEAR";
+        case VK_ATTACHMENT_LOAD_OP_DONT_CARE:
+            return "DONT_CARE";
+        default:
+            return "other";
+        }
+    };
+    const auto storeName = [](VkAttachmentStoreOp op) {
+        switch (op) {
+        case VK_ATTACHMENT_STORE_OP_STORE:
+            return "STORE";
+        case VK_ATTACHMENT_STORE_OP_DONT_CARE:
+            return "DONT_CARE";
+        default:
+            return "other";
+        }
+    };
+    // The render pass execute() begins around the pass: null for passes without attachments.
+    const auto renderPassJson = [&](const RenderTargets& targets) {
+        if (targets.empty()) return json();
+        const auto target = [&](const RenderTargets::Target& t) {
+            return json{{"resource", m_resources[t.resource].name},
+                        {"load", loadName(t.attachment.load)},
+                        {"store", storeName(t.attachment.store)}};
+        };
+        json colors = json::array();
+        for (const RenderTargets::Target& t : targets.colors)
+            colors.push_back(target(t));
+        return json{{"colors", colors},
+                    {"depth", targets.depth.resource == kInvalidId ? json() : target(targets.depth)},
+                    {"width", targets.width},
+                    {"height", targets.height},
+                    {"layers", targets.layers}};
+    };
+
     json passes = json::array();
     for (uint32_t p = 0; p < m_passes.size(); ++p) {
         const Pass& pass = m_passes[p];
@@ -334,6 +374,7 @@ std::string Graph::dumpJson() const {
                           {"order", orderOf[p]},
                           {"reads", reads},
                           {"writes", writes},
+                          {"renderPass", renderPassJson(pass.targets)},
                           {"barriers", barriers}});
     }
 

@@ -185,6 +185,59 @@ uint32_t Graph::declare(uint32_t passIndex, uint32_t handle, bool isImage, Use u
     return resource.latest;
 }
 
+uint32_t Graph::declareAttachment(uint32_t passIndex, uint32_t handle, Use use,
+                                  const Attachment& attachment) {
+    const std::string where = "pass " + quoted(m_passes[passIndex].name);
+    const Version version = checkHandle(handle, true, where);
+    const Resource& resource = m_resources[version.resource];
+    const std::string subject =
+        where + " attaching " + quoted(resource.name) + " as " + std::string(useName(use));
+    if (m_passes[passIndex].kind != PassKind::Graphics)
+        throw std::logic_error("render graph: " + subject + ": only graphics passes have attachments");
+    const bool isDepth = use != Use::ColorAttachment;
+    if (isDepth && use != Use::DepthStencilWrite && use != Use::DepthStencilRead && use != Use::DepthReadOnly)
+        throw std::logic_error(
+            "render graph: " + subject +
+            ": a depth attachment is DepthStencilWrite, DepthStencilRead or DepthReadOnly");
+    if (isDepth != isDepthFormat(resource.textureDesc.format))
+        throw std::logic_error("render graph: " + subject + ": its format is " +
+                               (isDepth ? "not a depth format" : "a depth format; use depthStencil()"));
+    const bool keepsContents = attachment.load == VK_ATTACHMENT_LOAD_OP_LOAD;
+    if ((use == Use::DepthStencilRead || use == Use::DepthReadOnly) && !keepsContents)
+        throw std::logic_error("render graph: " + subject +
+                               ": that use tests against the previous depth, so its load op must be LOAD");
+
+    RenderTargets& targets = m_passes[passIndex].targets;
+    if (isDepth && targets.depth.resource != kInvalidId)
+        throw std::logic_error("render graph: " + subject + ": the pass already has depth attachment " +
+                               quoted(m_resources[targets.depth.resource].name));
+    for (const RenderTargets::Target& target : targets.colors)
+        if (target.resource == version.resource)
+            throw std::logic_error("render graph: " + subject + ": already attached");
+    const TextureDesc& desc = resource.textureDesc;
+    if (!targets.empty() &&
+        (desc.width != targets.width || desc.height != targets.height || desc.layers != targets.layers))
+        throw std::logic_error("render graph: " + subject + ": its size " + std::to_string(desc.width) + "x" +
+                               std::to_string(desc.height) + "x" + std::to_string(desc.layers) +
+                               " differs from the render area " + std::to_string(targets.width) + "x" +
+                               std::to_string(targets.height) + "x" + std::to_string(targets.layers) +
+                               " of the attachments before it");
+
+    const Mode mode = use == Use::DepthReadOnly             ? Mode::Read
+                      : keepsContents || readsPrevious(use) ? Mode::ReadWrite
+                                                            : Mode::Write;
+    const uint32_t result = declare(passIndex, handle, true, use, mode);
+    targets.width = desc.width;
+    targets.height = desc.height;
+    targets.layers = desc.layers;
+    const RenderTargets::Target target{version.resource, attachment};
+    if (isDepth)
+        targets.depth = target;
+    else
+        targets.colors.push_back(target);
+    return result;
+}
+
 Texture Graph::importTexture(std::string name, const PhysicalTexture& texture, std::optional<Use> initial,
                              std::optional<Use> final) {
     for (const std::optional<Use>& use : {initial, final})
@@ -291,6 +344,14 @@ Texture Builder::readWrite(Texture texture, Use use) {
 
 Buffer Builder::readWrite(Buffer buffer, Use use) {
     return Buffer{m_graph.declare(m_pass, buffer.id, false, use, Graph::Mode::ReadWrite)};
+}
+
+Texture Builder::color(Texture texture, const Attachment& attachment) {
+    return Texture{m_graph.declareAttachment(m_pass, texture.id, Use::ColorAttachment, attachment)};
+}
+
+Texture Builder::depthStencil(Texture texture, Use use, const Attachment& attachment) {
+    return Texture{m_graph.declareAttachment(m_pass, texture.id, use, attachment)};
 }
 
 void Builder::sideEffect() {

@@ -6,6 +6,7 @@
 
 #include "engine/graph/compiled.h"
 #include "engine/graph/recorder.h"
+#include "engine/graph/render_pass.h"
 #include "engine/graph/resources.h"
 #include "engine/graph/use.h"
 
@@ -39,6 +40,14 @@ class Builder {
     // DepthStencilRead.
     Texture readWrite(Texture texture, Use use);
     Buffer readWrite(Buffer buffer, Use use);
+    // Attachments of a graphics pass's render pass, which execute() begins before the pass's
+    // callback and ends after it. color() declares ColorAttachment; depthStencil() one of
+    // DepthStencilWrite, DepthStencilRead (EQUAL test, stencil written) or DepthReadOnly. A LOAD
+    // (or a use that reads the previous contents) keeps the previous producer alive; read-only
+    // depth returns the same handle. All attachments of a pass share one width, height and layer
+    // count: the render area.
+    Texture color(Texture texture, const Attachment& attachment = {});
+    Texture depthStencil(Texture texture, Use use, const Attachment& attachment = {});
     // The pass has effects the graph cannot see (host readback, debug output): never culled.
     void sideEffect();
 
@@ -57,6 +66,9 @@ class Context {
     const PhysicalBuffer& buffer(Buffer buffer) const;
     VkCommandBuffer cmd() const { return m_cmd; }
     const std::string& passName() const;
+    // The layout the graph put a declared texture in for this pass: for copy commands and
+    // descriptors that must name it.
+    VkImageLayout layout(Texture texture) const;
 
   private:
     friend class Graph;
@@ -142,7 +154,8 @@ class Graph {
     bool isCompiled() const { return m_isCompiled; }
     const CompiledGraph& compiled() const;
 
-    // Acquires every transient an executed pass touches (once; later calls reuse them).
+    // Acquires every transient an executed pass touches (once; later calls reuse them), all in one
+    // Allocator::acquireTransients() call with their lifetimes, so the allocator may alias them.
     // execute() calls it; exposed so allocation can be checked without recording commands.
     void realiseTransients(Allocator& allocator);
     void execute(const ExecuteInfo& info);
@@ -182,6 +195,10 @@ class Graph {
         PhysicalTexture texture; // imported, or realised transient
         PhysicalBuffer buffer;
         bool realised = false; // transient acquired from m_allocator
+        // Accesses of the other transients placed over the same memory: the first barrier of
+        // this one also waits on them (it starts from UNDEFINED, but the bytes were in use).
+        VkPipelineStageFlags2 aliasStage = VK_PIPELINE_STAGE_2_NONE;
+        VkAccessFlags2 aliasAccess = VK_ACCESS_2_NONE;
     };
 
     struct Version {
@@ -208,6 +225,7 @@ class Graph {
         PassKind kind = PassKind::Graphics;
         bool sideEffect = false;
         std::vector<Access> accesses;
+        RenderTargets targets; // declared attachments; empty: no render pass
         std::unique_ptr<detail::PassCallback> callback;
     };
 
@@ -216,6 +234,8 @@ class Graph {
     uint32_t createResource(std::string name, bool isImage, const TextureDesc* textureDesc,
                             const BufferDesc* bufferDesc);
     uint32_t declare(uint32_t pass, uint32_t handle, bool isImage, Use use, Mode mode);
+    uint32_t declareAttachment(uint32_t pass, uint32_t handle, Use use, const Attachment& attachment);
+    void recordPass(CommandRecorder& recorder, VkCommandBuffer cmd, uint32_t pass) const;
     const Version& checkHandle(uint32_t handle, bool isImage, const std::string& where) const;
     void invalidate();
     std::vector<bool> cullPasses() const;
@@ -224,6 +244,9 @@ class Graph {
     const Access* findAccess(uint32_t pass, uint32_t resource) const;
     void recordBarriers(CommandRecorder& recorder, VkCommandBuffer cmd,
                         const std::vector<Barrier>& barriers) const;
+    void computeAliasWaits(const std::vector<uint32_t>& resources,
+                           const std::vector<TransientAllocation>& allocations);
+    std::vector<Barrier> barriersWithAliasing(const CompiledPass& pass) const;
 
     std::vector<Pass> m_passes;
     std::vector<Resource> m_resources;

@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <string>
+#include <vector>
 
 namespace eng::rg {
 
@@ -48,6 +49,28 @@ struct PhysicalBuffer {
     VkDeviceSize size = 0;
 };
 
+// One transient the graph needs for an execution, with its lifetime, so that an allocator can let
+// transients that are never alive at the same time share memory.
+struct TransientRequest {
+    std::string name;
+    bool isImage = false;
+    TextureDesc textureDesc;
+    BufferDesc bufferDesc;
+    VkImageUsageFlags imageUsage = 0;
+    VkBufferUsageFlags bufferUsage = 0;
+    uint32_t firstUse = 0, lastUse = 0; // positions in execution order, inclusive
+};
+
+// Where the allocator put one transient. Two transients with the same `memory` whose
+// [offset, offset + size) overlap share bytes: the graph orders the later user after the other's
+// accesses. memory kInvalidId: memory of its own.
+struct TransientAllocation {
+    PhysicalTexture texture;
+    PhysicalBuffer buffer;
+    uint32_t memory = kInvalidId;
+    VkDeviceSize offset = 0, size = 0;
+};
+
 // Implemented by the device layer; the graph only asks for objects with the usage flags that
 // compile() accumulated, and hands them back in releaseTransients(). Creating an object must not
 // record commands: the graph is the only place that transitions layouts.
@@ -58,6 +81,9 @@ class Allocator {
                                            VkImageUsageFlags usage) = 0;
     virtual PhysicalBuffer acquireBuffer(const std::string& name, const BufferDesc&,
                                          VkBufferUsageFlags usage) = 0;
+    // Every transient of one execution at once, in request order. The default acquires them one
+    // by one, each with memory of its own.
+    virtual std::vector<TransientAllocation> acquireTransients(const std::vector<TransientRequest>& requests);
     // Called by Graph::releaseTransients(); the caller has already waited for the GPU.
     virtual void release(const PhysicalTexture&) = 0;
     virtual void release(const PhysicalBuffer&) = 0;

@@ -145,6 +145,9 @@ UseInfo describe(Use use) {
         info.bufferUsage = VK_BUFFER_USAGE_TRANSFER_DST_BIT;
         info.writes = true;
         break;
+    case Use::HostRead:
+        info = buffer(VK_PIPELINE_STAGE_2_HOST_BIT, VK_ACCESS_2_HOST_READ_BIT, 0);
+        break;
     case Use::Present:
         info = image(VK_PIPELINE_STAGE_2_NONE, VK_ACCESS_2_NONE, VK_IMAGE_LAYOUT_PRESENT_SRC_KHR, 0);
         break;
@@ -186,7 +189,8 @@ constexpr VkPipelineStageFlags2 kComputeQueueStages = VK_PIPELINE_STAGE_2_COMPUT
                                                       VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT;
 
 bool allowedIn(Use use, PassKind kind) {
-    if (use == Use::Present) return false; // the presentation engine reads it, not a pass
+    // The presentation engine and the host read these, not a pass.
+    if (use == Use::Present || use == Use::HostRead) return false;
     switch (kind) {
     case PassKind::Graphics:
         return true;
@@ -248,6 +252,8 @@ std::string_view useName(Use use) {
         return "TransferSrc";
     case Use::TransferDst:
         return "TransferDst";
+    case Use::HostRead:
+        return "HostRead";
     case Use::Present:
         return "Present";
     }

@@ -39,6 +39,11 @@ enum class Use {
     // lavapipe's synchronisation validation expects TRANSFER after vkCmdFillBuffer.
     TransferSrc,
     TransferDst,
+    // Only as an imported buffer's final state: the host reads it after the submission's fence.
+    // A fence wait makes the queue's work complete, not its writes visible to the host: that
+    // takes a barrier to HOST / HOST_READ, which the graph records as the final-state barrier.
+    // Never in a pass (the host is not a pipeline stage a pass can record in).
+    HostRead,
     // Only as an imported swapchain image's final state: PRESENT_SRC_KHR, no stage and no access,
     // because vkQueuePresentKHR is ordered by the semaphore the submit signals. Never in a pass,
     // never as an initial state (import an acquired image with nullopt: the graph then waits on

@@ -1,5 +1,7 @@
 #include "engine/vk/descriptors.h"
 
+#include "engine/graph/use.h"
+
 namespace eng::vk {
 
 PushDescriptors& PushDescriptors::uniform(uint32_t binding, VkBuffer buffer) {
@@ -12,15 +14,15 @@ PushDescriptors& PushDescriptors::storage(uint32_t binding, VkBuffer buffer) {
     return *this;
 }
 
-PushDescriptors& PushDescriptors::sampled(uint32_t binding, VkSampler sampler, VkImageView view,
-                                          VkImageLayout layout) {
+PushDescriptors& PushDescriptors::sampled(uint32_t binding, VkSampler sampler, VkImageView view) {
+    const VkImageLayout layout = rg::useInfo(rg::Use::SampledCompute).layout;
     m_entries.push_back({binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, {}, {sampler, view, layout}});
     return *this;
 }
 
 PushDescriptors& PushDescriptors::storageImage(uint32_t binding, VkImageView view) {
-    m_entries.push_back(
-        {binding, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, {}, {VK_NULL_HANDLE, view, VK_IMAGE_LAYOUT_GENERAL}});
+    const VkImageLayout layout = rg::useInfo(rg::Use::StorageImageReadWriteCompute).layout;
+    m_entries.push_back({binding, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, {}, {VK_NULL_HANDLE, view, layout}});
     return *this;
 }
 

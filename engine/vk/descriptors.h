@@ -14,8 +14,10 @@ class PushDescriptors {
   public:
     PushDescriptors& uniform(uint32_t binding, VkBuffer buffer);
     PushDescriptors& storage(uint32_t binding, VkBuffer buffer);
-    PushDescriptors& sampled(uint32_t binding, VkSampler sampler, VkImageView view,
-                             VkImageLayout layout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
+    // Image layouts come from the render graph's Use table (engine/graph/use.h), the one place
+    // that decides them: sampled images are in the layout of a Sampled* use, storage images in
+    // that of a StorageImage* use.
+    PushDescriptors& sampled(uint32_t binding, VkSampler sampler, VkImageView view);
     PushDescriptors& storageImage(uint32_t binding, VkImageView view);
     void push(const Device& device, VkCommandBuffer cmd, VkPipelineBindPoint bindPoint,
               VkPipelineLayout layout);

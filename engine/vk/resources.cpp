@@ -158,9 +158,9 @@ void invalidateBuffer(const Device& device, const Buffer& b) {
     VK_CHECK(vkInvalidateMappedMemoryRanges(device.device(), 1, &range));
 }
 
-Image createImage(const Device& device, const ImageDesc& desc, const std::string& name) {
-    Image img;
-    img.desc = desc;
+namespace {
+
+VkImage createImageObject(const Device& device, const ImageDesc& desc) {
     VkImageCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
     info.imageType = VK_IMAGE_TYPE_2D;
     info.format = desc.format;
@@ -171,20 +171,21 @@ Image createImage(const Device& device, const ImageDesc& desc, const std::string
     info.tiling = VK_IMAGE_TILING_OPTIMAL;
     info.usage = desc.usage;
     info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
-    info.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
-    VK_CHECK(vkCreateImage(device.device(), &info, nullptr, &img.image));
-    VkMemoryRequirements req;
-    vkGetImageMemoryRequirements(device.device(), img.image, &req);
-    VkMemoryAllocateInfo alloc{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
-    alloc.allocationSize = req.size;
-    alloc.memoryTypeIndex = device.findMemoryType(req.memoryTypeBits, 0, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
-    if (VkResult r = device.allocateMemory(alloc, &img.memory); r != VK_SUCCESS) {
-        vkDestroyImage(device.device(), img.image, nullptr);
-        throwAllocationFailure(r, name, alloc.allocationSize);
-    }
-    VK_CHECK(vkBindImageMemory(device.device(), img.image, img.memory, 0));
-    img.bytes = req.size;
+    // initialLayout stays zero (UNDEFINED): every transition is the render graph's.
+    VkImage image = VK_NULL_HANDLE;
+    VK_CHECK(vkCreateImage(device.device(), &info, nullptr, &image));
+    return image;
+}
 
+void createViews(const Device& device, Image& img, const std::string& name) {
+    const ImageDesc& desc = img.desc;
+    device.setName(VK_OBJECT_TYPE_IMAGE, img.image, name);
+    // Copy-only images (transfer usage alone) cannot have views.
+    constexpr VkImageUsageFlags kViewUsage =
+        VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT |
+        VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_INPUT_ATTACHMENT_BIT |
+        VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT;
+    if (!(desc.usage & kViewUsage)) return;
     // 2D_ARRAY views by default, so shaders use one sampler type whether or not the
     // sample rate is emulated with layers.
     VkImageViewCreateInfo view{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
@@ -198,11 +199,79 @@ Image createImage(const Device& device, const ImageDesc& desc, const std::string
         view.subresourceRange.aspectMask = VK_IMAGE_ASPECT_DEPTH_BIT;
         VK_CHECK(vkCreateImageView(device.device(), &view, nullptr, &img.sampledView));
     }
-    device.setName(VK_OBJECT_TYPE_IMAGE, img.image, name);
     device.setName(VK_OBJECT_TYPE_IMAGE_VIEW, img.view, name + ".view");
+}
+
+} // namespace
+
+Image createImage(const Device& device, const ImageDesc& desc, const std::string& name) {
+    Image img;
+    img.desc = desc;
+    img.image = createImageObject(device, desc);
+    VkMemoryRequirements req;
+    vkGetImageMemoryRequirements(device.device(), img.image, &req);
+    VkMemoryAllocateInfo alloc{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
+    alloc.allocationSize = req.size;
+    alloc.memoryTypeIndex = device.findMemoryType(req.memoryTypeBits, 0, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
+    if (VkResult r = device.allocateMemory(alloc, &img.memory); r != VK_SUCCESS) {
+        vkDestroyImage(device.device(), img.image, nullptr);
+        throwAllocationFailure(r, name, alloc.allocationSize);
+    }
+    VK_CHECK(vkBindImageMemory(device.device(), img.image, img.memory, 0));
+    img.bytes = req.size;
+    createViews(device, img, name);
     device.setName(VK_OBJECT_TYPE_DEVICE_MEMORY, img.memory, name + ".memory");
     device.trackResource(+1);
     return img;
+}
+
+Image createUnboundImage(const Device& device, const ImageDesc& desc, const std::string& name,
+                         VkMemoryRequirements& req) {
+    Image img;
+    img.desc = desc;
+    img.image = createImageObject(device, desc);
+    vkGetImageMemoryRequirements(device.device(), img.image, &req);
+    img.bytes = req.size;
+    device.setName(VK_OBJECT_TYPE_IMAGE, img.image, name);
+    device.trackResource(+1);
+    return img;
+}
+
+void bindImage(const Device& device, Image& img, VkDeviceMemory memory, VkDeviceSize offset,
+               const std::string& name) {
+    VK_CHECK(vkBindImageMemory(device.device(), img.image, memory, offset));
+    createViews(device, img, name);
+}
+
+Buffer createUnboundBuffer(const Device& device, VkDeviceSize size, VkBufferUsageFlags usage,
+                           const std::string& name, VkMemoryRequirements& req) {
+    Buffer b;
+    b.size = size;
+    VkBufferCreateInfo info{VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO};
+    info.size = size;
+    info.usage = usage;
+    info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
+    VK_CHECK(vkCreateBuffer(device.device(), &info, nullptr, &b.buffer));
+    vkGetBufferMemoryRequirements(device.device(), b.buffer, &req);
+    device.setName(VK_OBJECT_TYPE_BUFFER, b.buffer, name);
+    device.trackResource(+1);
+    return b;
+}
+
+void bindBuffer(const Device& device, Buffer& b, VkDeviceMemory memory, VkDeviceSize offset) {
+    VK_CHECK(vkBindBufferMemory(device.device(), b.buffer, memory, offset));
+}
+
+VkDeviceMemory allocateDeviceMemory(const Device& device, VkDeviceSize size, uint32_t typeBits,
+                                    const std::string& name) {
+    VkMemoryAllocateInfo alloc{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
+    alloc.allocationSize = size;
+    alloc.memoryTypeIndex = device.findMemoryType(typeBits, 0, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
+    VkDeviceMemory memory = VK_NULL_HANDLE;
+    if (VkResult r = device.allocateMemory(alloc, &memory); r != VK_SUCCESS)
+        throwAllocationFailure(r, name, size);
+    device.setName(VK_OBJECT_TYPE_DEVICE_MEMORY, memory, name);
+    return memory;
 }
 
 bool supportsImage(const Device& device, VkFormat format, VkImageUsageFlags usage,

@@ -61,6 +61,17 @@ void writeBuffer(const Device&, const Buffer&, std::span<const std::byte> bytes,
 void invalidateBuffer(const Device&, const Buffer&);
 
 Image createImage(const Device&, const ImageDesc&, const std::string& name);
+// For memory the caller owns and may share (render-graph transient aliasing): the object without
+// memory and its requirements, then bound at an offset of the caller's allocation (an image gets
+// its views then). destroyImage/destroyBuffer leave such memory to its owner.
+Image createUnboundImage(const Device&, const ImageDesc&, const std::string& name, VkMemoryRequirements& req);
+void bindImage(const Device&, Image&, VkDeviceMemory memory, VkDeviceSize offset, const std::string& name);
+Buffer createUnboundBuffer(const Device&, VkDeviceSize size, VkBufferUsageFlags usage,
+                           const std::string& name, VkMemoryRequirements& req);
+void bindBuffer(const Device&, Buffer&, VkDeviceMemory memory, VkDeviceSize offset);
+// Device-local memory of one of typeBits, named; throws OutOfMemory as createImage does.
+VkDeviceMemory allocateDeviceMemory(const Device&, VkDeviceSize size, uint32_t typeBits,
+                                    const std::string& name);
 // Whether an optimal-tiling 2D image of this format, usage and sample count can be created.
 bool supportsImage(const Device&, VkFormat, VkImageUsageFlags, VkSampleCountFlagBits);
 void destroyImage(const Device&, Image&);

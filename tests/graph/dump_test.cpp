@@ -126,5 +126,39 @@ TEST(GraphDump, DumpsWorkBeforeCompile) {
     EXPECT_TRUE(json["culled"].empty()) << "nothing is known to be culled before compile()";
 }
 
+TEST(GraphDump, JsonShowsEachPassesRenderPass) {
+    Graph graph;
+    Texture depth, color;
+    graph.addGraphics<NoData>(
+        "raster",
+        [&](Builder& b, NoData&) {
+            Attachment load;
+            load.load = VK_ATTACHMENT_LOAD_OP_LOAD;
+            load.store = VK_ATTACHMENT_STORE_OP_DONT_CARE;
+            depth = b.depthStencil(b.create("depth", colorDesc(VK_FORMAT_D32_SFLOAT)), Use::DepthStencilWrite,
+                                   load);
+            color = b.color(b.create("color", colorDesc()));
+        },
+        nullptr);
+    graph.addCompute<NoData>(
+        "resolve", [&](Builder& b, NoData&) { b.read(color, Use::SampledCompute); }, nullptr);
+    graph.markOutput(color);
+    graph.compile();
+    const nlohmann::json json = nlohmann::json::parse(graph.dumpJson());
+    const nlohmann::json& raster = json["passes"][0]["renderPass"];
+    ASSERT_TRUE(raster.is_object()) << json["passes"][0].dump();
+    EXPECT_EQ(raster["width"], 64);
+    EXPECT_EQ(raster["height"], 32);
+    EXPECT_EQ(raster["layers"], 1);
+    ASSERT_EQ(raster["colors"].size(), 1u);
+    EXPECT_EQ(raster["colors"][0]["resource"], "color");
+    EXPECT_EQ(raster["colors"][0]["load"], "CLEAR");
+    EXPECT_EQ(raster["colors"][0]["store"], "STORE");
+    EXPECT_EQ(raster["depth"]["resource"], "depth");
+    EXPECT_EQ(raster["depth"]["load"], "LOAD");
+    EXPECT_EQ(raster["depth"]["store"], "DONT_CARE");
+    EXPECT_TRUE(json["passes"][1]["renderPass"].is_null()) << "a compute pass has no render pass";
+}
+
 } // namespace
 } // namespace eng::rg::test

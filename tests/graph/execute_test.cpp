@@ -21,34 +21,6 @@ void endLabel(VkCommandBuffer) {
     gTrace->push_back("label-");
 }
 
-class MockRecorder final : public CommandRecorder {
-  public:
-    explicit MockRecorder(VkCommandBuffer expected) : m_expected(expected) {}
-    void pipelineBarrier(VkCommandBuffer cmd, const VkDependencyInfo& d) override {
-        EXPECT_EQ(cmd, m_expected) << "barrier recorded into another command buffer";
-        EXPECT_EQ(d.memoryBarrierCount, 0u) << "the graph records per-resource barriers only";
-        barriers.emplace_back(d.pImageMemoryBarriers, d.pImageMemoryBarriers + d.imageMemoryBarrierCount);
-        bufferBarriers.emplace_back(d.pBufferMemoryBarriers,
-                                    d.pBufferMemoryBarriers + d.bufferMemoryBarrierCount);
-        trace.push_back("barrier " + std::to_string(d.imageMemoryBarrierCount) + "i" +
-                        std::to_string(d.bufferMemoryBarrierCount) + "b");
-    }
-    void writeTimestamp(VkCommandBuffer cmd, VkPipelineStageFlags2 stage, VkQueryPool pool,
-                        uint32_t query) override {
-        EXPECT_EQ(cmd, m_expected);
-        EXPECT_EQ(stage, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT)
-            << "timestamps wait for everything before them";
-        EXPECT_EQ(pool, fakeHandle<VkQueryPool>(0x77));
-        trace.push_back("timestamp " + std::to_string(query));
-    }
-    std::vector<std::string> trace;
-    std::vector<std::vector<VkImageMemoryBarrier2>> barriers;
-    std::vector<std::vector<VkBufferMemoryBarrier2>> bufferBarriers;
-
-  private:
-    VkCommandBuffer m_expected;
-};
-
 TEST(GraphExecute, RecordsTheCompiledBarriersLabelsAndTimestampsInOrder) {
     Graph graph;
     const PhysicalTexture targetImage = fakeTexture(VK_FORMAT_R16G16B16A16_SFLOAT, 0x100);

@@ -129,6 +129,69 @@ inline Barrier onlyBarrierBefore(const Graph& graph, const std::string& pass, ui
     return found.empty() ? Barrier{} : found.front();
 }
 
+// Records what execute() asks of the command recorder, in order, as a trace of short strings plus
+// deep copies of the structures (which point at storage that ends with the call).
+class MockRecorder final : public CommandRecorder {
+  public:
+    explicit MockRecorder(VkCommandBuffer expected) : m_expected(expected) {}
+    void pipelineBarrier(VkCommandBuffer cmd, const VkDependencyInfo& d) override {
+        EXPECT_EQ(cmd, m_expected) << "barrier recorded into another command buffer";
+        EXPECT_EQ(d.memoryBarrierCount, 0u) << "the graph records per-resource barriers only";
+        barriers.emplace_back(d.pImageMemoryBarriers, d.pImageMemoryBarriers + d.imageMemoryBarrierCount);
+        bufferBarriers.emplace_back(d.pBufferMemoryBarriers,
+                                    d.pBufferMemoryBarriers + d.bufferMemoryBarrierCount);
+        trace.push_back("barrier " + std::to_string(d.imageMemoryBarrierCount) + "i" +
+                        std::to_string(d.bufferMemoryBarrierCount) + "b");
+    }
+    void writeTimestamp(VkCommandBuffer cmd, VkPipelineStageFlags2 stage, VkQueryPool pool,
+                        uint32_t query) override {
+        EXPECT_EQ(cmd, m_expected);
+        EXPECT_EQ(stage, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT)
+            << "timestamps wait for everything before them";
+        EXPECT_EQ(pool, fakeHandle<VkQueryPool>(0x77));
+        trace.push_back("timestamp " + std::to_string(query));
+    }
+    void beginRendering(VkCommandBuffer cmd, const VkRenderingInfo& info) override {
+        EXPECT_EQ(cmd, m_expected);
+        // Deep copy: the graph's VkRenderingInfo points at storage that ends with the pass.
+        RecordedRendering r;
+        r.info = info;
+        r.colors.assign(info.pColorAttachments, info.pColorAttachments + info.colorAttachmentCount);
+        r.hasDepth = info.pDepthAttachment != nullptr;
+        if (r.hasDepth) r.depth = *info.pDepthAttachment;
+        r.hasStencil = info.pStencilAttachment != nullptr;
+        if (r.hasStencil) r.stencil = *info.pStencilAttachment;
+        renderings.push_back(r);
+        trace.push_back("beginRendering " + std::to_string(info.colorAttachmentCount) + "c" +
+                        (r.hasDepth ? "d" : "") + (r.hasStencil ? "s" : ""));
+    }
+    void setViewport(VkCommandBuffer cmd, const VkViewport& viewport, const VkRect2D& scissor) override {
+        EXPECT_EQ(cmd, m_expected);
+        viewports.push_back(viewport);
+        scissors.push_back(scissor);
+        trace.push_back("viewport");
+    }
+    void endRendering(VkCommandBuffer cmd) override {
+        EXPECT_EQ(cmd, m_expected);
+        trace.push_back("endRendering");
+    }
+    struct RecordedRendering {
+        VkRenderingInfo info{};
+        std::vector<VkRenderingAttachmentInfo> colors;
+        VkRenderingAttachmentInfo depth{}, stencil{};
+        bool hasDepth = false, hasStencil = false;
+    };
+    std::vector<std::string> trace;
+    std::vector<RecordedRendering> renderings;
+    std::vector<VkViewport> viewports;
+    std::vector<VkRect2D> scissors;
+    std::vector<std::vector<VkImageMemoryBarrier2>> barriers;
+    std::vector<std::vector<VkBufferMemoryBarrier2>> bufferBarriers;
+
+  private:
+    VkCommandBuffer m_expected;
+};
+
 struct NoData {};
 
 } // namespace eng::rg::test

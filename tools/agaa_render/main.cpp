@@ -362,6 +362,9 @@ nlohmann::json statsJson(const Options& o, const agaa::RenderResult& r, const en
     j["storage_bytes"] = r.storageBytes;
     j["bytes_per_pixel_split"] = r.bytesPerPixelSplit;
     j["transient_bytes_per_pixel"] = r.transientBytesPerPixel;
+    j["transient_bytes_requested"] = r.transientBytesRequested;
+    j["transient_bytes_allocated"] = r.transientBytesAllocated;
+    j["aliasing_saved_bytes"] = r.aliasingSavedBytes;
     j["shading_events_per_pixel"] = {
         {"mean", r.shadingEventsMean}, {"max", r.shadingEventsMax}, {"histogram", r.shadingEventsHistogram}};
     // AGAA lights each aggregate once: its shading events are its aggregates.
