@@ -36,7 +36,9 @@ VkRenderingAttachmentInfo attachment(VkImageView view, VkImageLayout layout, VkA
 
 FrameTargets AggregateAA::addPasses(rg::Graph& graph, const FrameInputs& in) {
     m_constants = makeAgaaConstants(m_settings, *in.constants, m_hasEmissive);
-    vk::writeBuffer(m_device, m_constantsBuffer, std::as_bytes(std::span(&m_constants, 1)));
+    // Per frame slot, so views and frames recorded before any executes keep their own (issue 18).
+    const rg::Buffer agaaConstants =
+        m_constantsRing.write(graph, in.frameSlot, std::as_bytes(std::span(&m_constants, 1)));
     const uint32_t layers = m_settings.samples / 4;
     const uint32_t c = m_settings.aggregates;
     const uint32_t pixels = in.width * in.height;
@@ -52,8 +54,6 @@ FrameTargets AggregateAA::addPasses(rg::Graph& graph, const FrameInputs& in) {
         generationPipelines.push_back(generationPipeline(m.doubleSided));
     }
 
-    rg::Buffer agaaConstants = graph.importBuffer(
-        "agaa.constants", {m_constantsBuffer.buffer, m_constantsBuffer.size}, std::nullopt, std::nullopt);
     rg::Buffer materials = importScene(graph, "scene.materials", scene->materials());
     m_resources.agaaConstants = agaaConstants;
 
