@@ -212,7 +212,7 @@ FrameTargets AggregateAA::addPasses(rg::Graph& graph, const FrameInputs& in) {
                     .push(m_device, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, m_debugLayout.layout);
                 vkCmdDispatch(cmd, groups(in.width, 8), groups(in.height, 8), 1);
             });
-        return {dbg.hdr, dbg.display, dbg.events};
+        return {dbg.hdr, dbg.display, dbg.events, {}, sampleDepth};
     }
 
     // ---- 3. AG-buffer generation (accumulation kernel; the samples path has none) -----------
@@ -377,7 +377,7 @@ FrameTargets AggregateAA::addPasses(rg::Graph& graph, const FrameInputs& in) {
             pd.push(m_device, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, m_lightingLayout.layout);
             vkCmdDispatch(cmd, groups(in.width, shared::kTileSize), groups(in.height, shared::kTileSize), 1);
         });
-    return {lit.hdr, lit.display, lit.events};
+    return {lit.hdr, lit.display, lit.events, {}, lightingDepth};
 }
 
 void AggregateAA::addSampleReadback(rg::Graph& graph, const FrameInputs& in, const vk::Buffer& host) {

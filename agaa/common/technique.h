@@ -53,6 +53,10 @@ struct FrameTargets {
     // R32_UINT, only from methods that drop coverage (SBAA): covered samples per pixel whose
     // surface was not kept, so their coverage is missing from the resolve. Invalid otherwise.
     eng::rg::Texture lostSamples;
+    // The per-sample visibility depth, reversed Z (1 at znear, 0 = sky; common/depth.glsl): 4x
+    // with n/4 layers for n >= 4, one sample for n = 1; D32, with stencil on AGAA's accumulate
+    // path. For writing a host's depth target (agaa/common/host_targets.h).
+    eng::rg::Texture depth;
 };
 
 // Settings every method understands; a method ignores the ones it has no use for.

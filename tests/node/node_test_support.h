@@ -43,8 +43,9 @@ class HostView {
 
     // Imports this view's buffers, adds the technique's passes writing frame slot `slot`, and
     // reads HDR and display back into this view's buffers.
-    void record(eng::rg::Graph& graph, Technique& technique, const eng::frame::GpuScene& scene, uint32_t slot,
-                const std::string& prefix) {
+    // Returns the inputs it handed the technique; lastTargets holds what the technique returned.
+    FrameInputs record(eng::rg::Graph& graph, Technique& technique, const eng::frame::GpuScene& scene,
+                       uint32_t slot, const std::string& prefix) {
         FrameInputs in;
         in.scene = &scene;
         in.constants = &constants;
@@ -55,9 +56,10 @@ class HostView {
             graph.importBuffer(prefix + ".frame", {m_frame.buffer, m_frame.size}, std::nullopt, std::nullopt);
         in.lights = graph.importBuffer(prefix + ".lights", {m_lights.buffer, m_lights.size}, std::nullopt,
                                        std::nullopt);
-        FrameTargets targets = technique.addPasses(graph, in);
-        eng::frame::addReadbackPass(graph, targets.hdr, m_hdr, prefix + ".readback.hdr");
-        eng::frame::addReadbackPass(graph, targets.display, m_display, prefix + ".readback.display");
+        lastTargets = technique.addPasses(graph, in);
+        eng::frame::addReadbackPass(graph, lastTargets.hdr, m_hdr, prefix + ".readback.hdr");
+        eng::frame::addReadbackPass(graph, lastTargets.display, m_display, prefix + ".readback.display");
+        return in;
     }
 
     // HDR then display, as floats, after the GPU finished.
@@ -72,6 +74,7 @@ class HostView {
     }
 
     shared::FrameConstants constants{};
+    FrameTargets lastTargets;
 
   private:
     eng::vk::Device& m_device;
