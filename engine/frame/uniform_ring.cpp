@@ -4,8 +4,9 @@
 
 namespace eng::frame {
 
-UniformRing::UniformRing(const vk::Device& device, VkDeviceSize bytes, std::string name)
-    : m_device(device), m_bytes(bytes), m_name(std::move(name)) {}
+UniformRing::UniformRing(const vk::Device& device, VkDeviceSize bytes, std::string name,
+                         VkBufferUsageFlags usage)
+    : m_device(device), m_bytes(bytes), m_name(std::move(name)), m_usage(usage) {}
 
 UniformRing::~UniformRing() {
     // The GPU may still read the last frames' slots: the owner's destructor waits, but a ring can
@@ -31,9 +32,7 @@ rg::Buffer UniformRing::write(rg::Graph& graph, uint32_t slot, std::span<const s
                                    "executes needs its own FrameInputs::frameSlot");
     if (slot >= m_buffers.size()) m_buffers.resize(slot + 1);
     vk::Buffer& buffer = m_buffers[slot];
-    if (!buffer.buffer)
-        buffer = vk::createBuffer(m_device, m_bytes, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
-                                  vk::MemoryUse::Upload, name);
+    if (!buffer.buffer) buffer = vk::createBuffer(m_device, m_bytes, m_usage, vk::MemoryUse::Upload, name);
     vk::writeBuffer(m_device, buffer, bytes);
     // Host-written before submission (the submit makes host writes visible): no prior GPU use to
     // wait for within this graph.

@@ -27,7 +27,9 @@ class UniformRing {
     // because it is far more likely a host's counter that never wraps than a real need.
     static constexpr uint32_t kMaxSlots = 16;
 
-    UniformRing(const vk::Device& device, VkDeviceSize bytes, std::string name);
+    // usage: UNIFORM_BUFFER for constants, STORAGE_BUFFER for arrays such as the frame's lights.
+    UniformRing(const vk::Device& device, VkDeviceSize bytes, std::string name,
+                VkBufferUsageFlags usage = VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
     ~UniformRing();
     UniformRing(const UniformRing&) = delete;
     UniformRing& operator=(const UniformRing&) = delete;
@@ -42,6 +44,7 @@ class UniformRing {
     const vk::Device& m_device;
     VkDeviceSize m_bytes;
     std::string m_name;
+    VkBufferUsageFlags m_usage;
     std::vector<vk::Buffer> m_buffers; // [slot]; VK_NULL_HANDLE until first used
 };
 

@@ -4,6 +4,7 @@
 
 #include "agaa/aggregate/aggregate.h"
 #include "agaa/common/host_targets.h"
+#include "agaa/methods.h"
 #include "engine/frame/frame_runner.h"
 #include "engine/scene/scenegen.h"
 #include "engine/vk/check.h"
@@ -278,6 +279,72 @@ TEST(HostDevice, RendersIntoTheHostsOwnColourAndDepthTargets) {
     host.device = VK_NULL_HANDLE;
     EXPECT_EQ(host.errors.load(), 0u) << "validation errors on the host's instance";
 }
+
+// Every method hands back its depth, multisampled (n >= 4) or not (noaa), and the writer fills
+// the host's targets validation-clean. A pixel whose resolved depth is 0 (sky) must have
+// exactly the sky's radiance: no sample of it was covered.
+class EveryMethod : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(EveryMethod, WritesTheHostsTargets) {
+    auto device = makeValidatedDevice();
+    const eng::scene::Scene scene = eng::scene::loadBuiltin("furball");
+    eng::frame::GpuScene gpuScene(*device, scene);
+    MethodSettings settings;
+    settings.samples = 4;
+    std::unique_ptr<Technique> node = createTechnique(GetParam(), *device, gpuScene, settings);
+    HostTargetWriter writer(*device);
+    const VkImageUsageFlags use =
+        VK_IMAGE_USAGE_TRANSFER_DST_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_SAMPLED_BIT;
+    vk::Image color = vk::createImage(*device,
+                                      {VK_FORMAT_R16G16B16A16_SFLOAT, kSize, kSize, 1, 1,
+                                       VK_SAMPLE_COUNT_1_BIT, use, VK_IMAGE_VIEW_TYPE_2D},
+                                      "test.color");
+    vk::Image depth = vk::createImage(
+        *device,
+        {VK_FORMAT_D32_SFLOAT_S8_UINT, kSize, kSize, 1, 1, VK_SAMPLE_COUNT_1_BIT, use, VK_IMAGE_VIEW_TYPE_2D},
+        "test.depth");
+    vk::Buffer depthHost =
+        eng::frame::createReadbackBuffer(*device, kSize, kSize, VK_FORMAT_R32_SFLOAT, "test.depth.host");
+    eng::frame::ViewSettings view;
+    view.width = view.height = kSize;
+    {
+        HostView frame(*device, scene, view, node->samples());
+        rg::Graph graph;
+        const FrameInputs in = frame.record(graph, *node, gpuScene, 0, "host");
+        HostTargets targets;
+        targets.color = {{color.image, color.view, color.view, {color.desc.format, kSize, kSize}}, {}, {}};
+        targets.depth = HostTarget{
+            {depth.image, depth.view, depth.sampledView, {depth.desc.format, kSize, kSize}}, {}, {}};
+        const HostTargetVersions out = writer.write(graph, frame.lastTargets, in, targets);
+        graph.markOutput(out.color);
+        addAspectReadback(graph, out.depth, VK_IMAGE_ASPECT_DEPTH_BIT, depthHost, "test.readback.depth");
+        eng::frame::FrameRunner(*device).run(graph);
+        const std::vector<float> images = frame.read();
+        const float* hdr = images.data(); // not display: FXAA filters it across the sky's edges
+        vk::invalidateBuffer(*device, depthHost);
+        const auto* depths = static_cast<const float*>(depthHost.mapped);
+        uint32_t covered = 0, outOfRange = 0, skyLit = 0, sky = 0;
+        while (sky < kSize * kSize - 1 && depths[sky] != 0.0f)
+            ++sky;
+        for (uint32_t p = 0; p < kSize * kSize; ++p) {
+            covered += depths[p] > 0.0f;
+            outOfRange += !(depths[p] >= 0.0f && depths[p] <= 1.0f);
+            // A pixel with no sample in front of the sky has exactly the sky's radiance.
+            skyLit += depths[p] == 0.0f && (hdr[4 * p] != hdr[4 * sky] || hdr[4 * p + 2] != hdr[4 * sky + 2]);
+        }
+        EXPECT_EQ(outOfRange, 0u);
+        EXPECT_GT(covered, kSize * kSize / 10);
+        EXPECT_LT(covered, kSize * kSize);
+        EXPECT_LE(skyLit, 0u) << "pixels the host depth calls sky but the node shaded";
+    }
+    vk::destroyBuffer(*device, depthHost);
+    vk::destroyImage(*device, color);
+    vk::destroyImage(*device, depth);
+    expectNoValidationErrors(*device);
+}
+
+INSTANTIATE_TEST_SUITE_P(Node, EveryMethod,
+                         ::testing::Values("noaa", "reference", "simple-complex", "sbaa", "fxaa", "agaa"));
 
 TEST(HostDevice, RefusesAHostDeviceWithoutARequiredFeatureNamingIt) {
     Host host;

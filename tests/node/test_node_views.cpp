@@ -3,6 +3,7 @@
 // shadow fit were one buffer rewritten by every addPasses, so an earlier view silently rendered
 // with a later view's constants (7,818 of 36,864 values differed, 0 validation errors).
 
+#include "agaa/common/frame_inputs.h"
 #include "agaa/methods.h"
 #include "engine/frame/frame_runner.h"
 #include "engine/frame/uniform_ring.h"
@@ -77,6 +78,45 @@ TEST_P(TwoViews, OneGraphEqualsEachSoloRenderBitForBit) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Node, TwoViews, ::testing::Values("agaa", "reference"));
+
+// The host-side FrameInputWriter keeps each slot's frame constants and lights apart too, and
+// takes a host's own camera: the scene camera handed in as a host camera renders the same frame.
+TEST(FrameInputWriter, HostCamerasInTwoSlotsOfOneGraphEqualTheirSoloRenders) {
+    auto device = makeValidatedDevice();
+    const eng::scene::Scene scene = eng::scene::loadBuiltin("railings");
+    eng::frame::GpuScene gpuScene(*device, scene);
+    std::unique_ptr<Technique> node = createTechnique("agaa", *device, gpuScene, MethodSettings{});
+    std::array<eng::frame::ViewSettings, 2> views = {orbitView(scene, 0), orbitView(scene, 1)};
+    std::array<std::vector<float>, 2> solo;
+    for (uint32_t v = 0; v < 2; ++v)
+        solo[v] = renderAlone(*device, *node, gpuScene, views[v]);
+    agaa::FrameInputWriter writer(*device, gpuScene);
+    std::array<vk::Buffer, 2> display;
+    rg::Graph graph;
+    for (uint32_t v = 0; v < 2; ++v) {
+        views[v].cameraOverride = scene.cameras.at(0); // the host's camera: view replaced by the orbit
+        const FrameInputs in = writer.write(graph, views[v], node->samples(), v);
+        display[v] = eng::frame::createReadbackBuffer(*device, kSize, kSize, VK_FORMAT_R32G32B32A32_SFLOAT,
+                                                      "test.display");
+        eng::frame::addReadbackPass(graph, node->addPasses(graph, in).display, display[v],
+                                    "view" + std::to_string(v) + ".readback");
+    }
+    eng::frame::FrameRunner(*device).run(graph);
+    for (uint32_t v = 0; v < 2; ++v) {
+        vk::invalidateBuffer(*device, display[v]);
+        const auto* got = static_cast<const float*>(display[v].mapped);
+        const std::vector<float> displayOnly(got, got + size_t(kSize) * kSize * 4);
+        const std::vector<float> want(solo[v].begin() + solo[v].size() / 2, solo[v].end());
+        EXPECT_EQ(countDifferentBits(displayOnly, want), 0u) << "view " << v;
+        vk::destroyBuffer(*device, display[v]);
+    }
+    eng::frame::ViewSettings bad = views[0];
+    bad.cameraOverride->yfov = 0.0f;
+    rg::Graph refused;
+    EXPECT_THROW(writer.write(refused, bad, node->samples(), 0), std::invalid_argument)
+        << "a host camera with yfov 0 would make a NaN projection";
+    expectNoValidationErrors(*device);
+}
 
 TEST(FrameSlots, AreRefusedWhenReusedInOneGraphOrOutOfRange) {
     auto device = makeValidatedDevice();
