@@ -13,7 +13,8 @@
 //  - a slot may be recorded again once the fence of the submission that last used it signalled;
 //  - everything else a pass uses is either created by the graph (transients, valid while the
 //    graph's transients are realised) or imported by the host (FrameInputs' buffers, which the
-//    host keeps per frame slot as well: the node reads them, it never writes them);
+//    host keeps per frame slot as well, e.g. with agaa/common/frame_inputs.h: the node reads
+//    them, it never writes them);
 //  - the technique itself (pipelines, samplers, ring) must outlive every submitted graph that
 //    holds its passes.
 // Threads: a technique is not thread-safe. One thread at a time calls addPasses(); recording a

@@ -1,8 +1,9 @@
 #pragma once
-// Per-frame uniform data that a node writes on the host while it records (addPasses), one
-// buffer per frame slot. A host that records several views or frames before any executes gives
-// each its own slot (FrameInputs::frameSlot = frame in flight x views per frame + view), so a
-// later recording never overwrites constants an earlier, still unexecuted one reads (issue 18).
+// Per-frame data that a node writes on the host while it records (addPasses): uniform constants,
+// or a storage array such as the frame's lights; one buffer per frame slot. A host that records several views
+// or frames before any executes gives each its own slot (FrameInputs::frameSlot = frame in flight x views per
+// frame + view), so a later recording never overwrites constants an earlier, still unexecuted one reads
+// (issue 18).
 //
 // Lifetimes: slot s's buffer is written by write() on the host and read by the GPU from the
 // submission of the graph that imported it until that submission's fence signals. The host must
