@@ -196,7 +196,7 @@ float srgbEncode(float x) {
     return x <= 0.0031308f ? 12.92f * x : 1.055f * std::pow(x, 1.0f / 2.4f) - 0.055f;
 }
 
-TEST(HostDevice, RendersIntoTheHostsOwnColourAndDepthTargets) {
+TEST(NodeHostDevice, RendersIntoTheHostsOwnColourAndDepthTargets) {
     Host host;
     host.createDevice();
     {
@@ -346,7 +346,7 @@ TEST_P(EveryMethod, WritesTheHostsTargets) {
 INSTANTIATE_TEST_SUITE_P(Node, EveryMethod,
                          ::testing::Values("noaa", "reference", "simple-complex", "sbaa", "fxaa", "agaa"));
 
-TEST(HostDevice, RefusesAHostDeviceWithoutARequiredFeatureNamingIt) {
+TEST(NodeHostDevice, RefusesAHostDeviceWithoutARequiredFeatureNamingIt) {
     Host host;
     host.createDevice([](vk::FeatureChain& f) { f.v13.dynamicRendering = VK_FALSE; });
     try {
@@ -358,7 +358,7 @@ TEST(HostDevice, RefusesAHostDeviceWithoutARequiredFeatureNamingIt) {
     EXPECT_EQ(host.errors.load(), 0u);
 }
 
-TEST(HostDevice, RefusesAHostDeviceWithoutAFeatureTheRendererReliesOn) {
+TEST(NodeHostDevice, RefusesAHostDeviceWithoutAFeatureTheRendererReliesOn) {
     Host host;
     host.createDevice([](vk::FeatureChain& f) { f.v12.scalarBlockLayout = VK_FALSE; });
     try {

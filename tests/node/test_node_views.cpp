@@ -81,7 +81,7 @@ INSTANTIATE_TEST_SUITE_P(Node, TwoViews, ::testing::Values("agaa", "reference"))
 
 // The host-side FrameInputWriter keeps each slot's frame constants and lights apart too, and
 // takes a host's own camera: the scene camera handed in as a host camera renders the same frame.
-TEST(FrameInputWriter, HostCamerasInTwoSlotsOfOneGraphEqualTheirSoloRenders) {
+TEST(NodeFrameInputWriter, HostCamerasInTwoSlotsOfOneGraphEqualTheirSoloRenders) {
     auto device = makeValidatedDevice();
     const eng::scene::Scene scene = eng::scene::loadBuiltin("railings");
     eng::frame::GpuScene gpuScene(*device, scene);
@@ -118,7 +118,7 @@ TEST(FrameInputWriter, HostCamerasInTwoSlotsOfOneGraphEqualTheirSoloRenders) {
     expectNoValidationErrors(*device);
 }
 
-TEST(FrameSlots, AreRefusedWhenReusedInOneGraphOrOutOfRange) {
+TEST(NodeFrameSlots, AreRefusedWhenReusedInOneGraphOrOutOfRange) {
     auto device = makeValidatedDevice();
     const eng::scene::Scene scene = eng::scene::loadBuiltin("railings");
     eng::frame::GpuScene gpuScene(*device, scene);
@@ -141,7 +141,7 @@ TEST(FrameSlots, AreRefusedWhenReusedInOneGraphOrOutOfRange) {
 
 // Three frames recorded into three command buffers and submitted back to back without waiting,
 // as an engine with three frames in flight runs; sync validation watches the queue.
-TEST(FramesInFlight, ThreeSubmittedWithoutWaitingEqualEachSoloFrame) {
+TEST(NodeFramesInFlight, ThreeSubmittedWithoutWaitingEqualEachSoloFrame) {
     constexpr uint32_t kFrames = 3;
     auto device = makeValidatedDevice();
     const eng::scene::Scene scene = eng::scene::loadBuiltin("railings");
