@@ -27,7 +27,9 @@ uint32_t groups(uint32_t size, uint32_t group) {
 
 FrameTargets AggregateAA::addPasses(rg::Graph& graph, const FrameInputs& in) {
     m_constants = makeAgaaConstants(m_settings, *in.constants, m_hasEmissive);
-    vk::writeBuffer(m_device, m_constantsBuffer, std::as_bytes(std::span(&m_constants, 1)));
+    // Per frame slot, so views and frames recorded before any executes keep their own (issue 18).
+    const rg::Buffer agaaConstants =
+        m_constantsRing.write(graph, in.frameSlot, std::as_bytes(std::span(&m_constants, 1)));
     const uint32_t layers = m_settings.samples / 4;
     const uint32_t c = m_settings.aggregates;
     const uint32_t pixels = in.width * in.height;
@@ -43,8 +45,6 @@ FrameTargets AggregateAA::addPasses(rg::Graph& graph, const FrameInputs& in) {
         generationPipelines.push_back(generationPipeline(m.doubleSided));
     }
 
-    rg::Buffer agaaConstants = graph.importBuffer(
-        "agaa.constants", {m_constantsBuffer.buffer, m_constantsBuffer.size}, std::nullopt, std::nullopt);
     rg::Buffer materials = importScene(graph, "scene.materials", scene->materials());
     m_resources.agaaConstants = agaaConstants;
 
@@ -180,7 +180,7 @@ FrameTargets AggregateAA::addPasses(rg::Graph& graph, const FrameInputs& in) {
                     .push(m_device, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, m_debugLayout.layout);
                 vkCmdDispatch(cmd, groups(in.width, 8), groups(in.height, 8), 1);
             });
-        return {dbg.hdr, dbg.display, dbg.events};
+        return {dbg.hdr, dbg.display, dbg.events, {}, sampleDepth};
     }
 
     // ---- 3. AG-buffer generation (accumulation kernel; the samples path has none) -----------
@@ -337,7 +337,7 @@ FrameTargets AggregateAA::addPasses(rg::Graph& graph, const FrameInputs& in) {
             pd.push(m_device, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, m_lightingLayout.layout);
             vkCmdDispatch(cmd, groups(in.width, shared::kTileSize), groups(in.height, shared::kTileSize), 1);
         });
-    return {lit.hdr, lit.display, lit.events};
+    return {lit.hdr, lit.display, lit.events, {}, lightingDepth};
 }
 
 void AggregateAA::addSampleReadback(rg::Graph& graph, const FrameInputs& in, const vk::Buffer& host) {

@@ -16,6 +16,7 @@
 #include "agaa/common/sample_gbuffer.h"
 #include "agaa/common/shadow_map.h"
 #include "agaa/common/technique.h"
+#include "engine/frame/uniform_ring.h"
 #include "engine/vk/device.h"
 #include "engine/vk/pipeline.h"
 #include "engine/vk/resources.h"
@@ -26,7 +27,8 @@
 
 namespace agaa {
 
-// Handles of the passes' outputs from the last addPasses(), for tests and tools.
+// Handles of the passes' outputs from the last addPasses(), for tests and tools: valid in the
+// graph that call recorded into.
 struct AggregateResources {
     eng::rg::Texture depth, normal; // per-sample visibility (samples path: the G-buffer's)
     eng::rg::Buffer metadata;
@@ -51,6 +53,7 @@ class AggregateAA final : public Technique {
 
     const AggregateSettings& settings() const { return m_settings; }
     const AggregateResources& resources() const { return m_resources; }
+    // The constants the last addPasses() wrote (into its FrameInputs::frameSlot).
     const shared::AgaaConstants& constants() const { return m_constants; }
     VkFormat depthFormat() const { return m_depthFormat; }
 
@@ -81,15 +84,15 @@ class AggregateAA final : public Technique {
     void release(); // the destructor's work, also for a constructor that throws
 
     eng::vk::Device& m_device;
-    AggregateSettings m_settings;  // every Auto resolved
-    AggregateSettings m_requested; // as the caller asked (the variants say which were automatic)
+    eng::frame::UniformRing m_constantsRing; // shared::AgaaConstants per FrameInputs::frameSlot
+    AggregateSettings m_settings;            // every Auto resolved
+    AggregateSettings m_requested;           // as the caller asked (the variants say which were automatic)
     const eng::scene::Scene& m_scene;
     eng::scene::SceneFeatures m_features;
     AggregateNdf m_requestedNdf; // m_settings.ndf is the resolved one (never Auto)
     bool m_hasEmissive = false;
     VkFormat m_depthFormat = VK_FORMAT_D32_SFLOAT_S8_UINT;
     shared::AgaaConstants m_constants{};
-    eng::vk::Buffer m_constantsBuffer;
     eng::vk::PipelineLayout m_visibilityLayout, m_generationLayout, m_recordLayout, m_clusterLayout,
         m_lightingLayout, m_debugLayout, m_readbackLayout;
     std::array<VkPipeline, 2 * kAlphaPaths> m_visibilityPipelines{}; // [alpha path][double-sided]

@@ -45,7 +45,8 @@ constexpr VkShaderStageFlags kVsFs = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAG
 
 AggregateAA::AggregateAA(vk::Device& device, const eng::frame::GpuScene& scene,
                          const AggregateSettings& settings)
-    : m_device(device), m_settings(settings), m_requested(settings), m_scene(scene.scene()),
+    : m_device(device), m_constantsRing(device, sizeof(shared::AgaaConstants), "agaa.constants"),
+      m_settings(settings), m_requested(settings), m_scene(scene.scene()),
       m_features(effectiveFeatures(scene.scene(), settings.effects)), m_requestedNdf(settings.ndf),
       m_hasEmissive(m_features.hasEmissive()) {
     validate(settings);
@@ -108,9 +109,6 @@ AggregateAA::AggregateAA(vk::Device& device, const eng::frame::GpuScene& scene,
 
     // A later step that throws (out of memory) takes what was made before it along.
     try {
-        m_constantsBuffer =
-            vk::createBuffer(device, sizeof(shared::AgaaConstants), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
-                             vk::MemoryUse::Upload, "agaa.constants");
         m_fetchSampler = vk::createSampler(device, VK_FILTER_NEAREST, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE,
                                            0.0f, "agaa.fetchSampler");
         if (samplesPath)
@@ -285,7 +283,6 @@ void AggregateAA::release() {
     for (vk::PipelineLayout* l : {&m_visibilityLayout, &m_generationLayout, &m_recordLayout, &m_clusterLayout,
                                   &m_lightingLayout, &m_debugLayout, &m_readbackLayout})
         vk::destroyPipelineLayout(m_device, *l);
-    vk::destroyBuffer(m_device, m_constantsBuffer);
 }
 
 VkPipeline AggregateAA::visibilityPipeline(AlphaPath alpha, bool doubleSided) {

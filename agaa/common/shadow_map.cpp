@@ -84,7 +84,9 @@ glm::mat4 ShadowMapPass::fitLight(const eng::scene::Scene& scene, const eng::sce
 ShadowMapPass::ShadowMapPass(vk::Device& device, const eng::frame::GpuScene& scene,
                              const eng::scene::SceneFeatures& features, const EffectSettings& settings,
                              std::string name)
-    : m_device(device), m_name(std::move(name)), m_settings(settings), m_lights(features.shadowedLights),
+    : m_device(device), m_name(std::move(name)),
+      m_constantsRing(device, sizeof(shared::ShadowConstants), m_name + ".shadow.constants"),
+      m_settings(settings), m_lights(features.shadowedLights),
       m_mapCount(uint32_t(std::min<size_t>(features.shadowedLights.size(), shared::kMaxShadowMaps))) {
     validate(settings);
     if (!enabled()) return;
@@ -108,14 +110,6 @@ ShadowMapPass::ShadowMapPass(vk::Device& device, const eng::frame::GpuScene& sce
     }
     m_sampler = vk::createSampler(device, VK_FILTER_NEAREST, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE, 0.0f,
                                   m_name + ".shadow.sampler");
-    try {
-        m_constantsBuffer =
-            vk::createBuffer(device, sizeof(shared::ShadowConstants), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
-                             vk::MemoryUse::Upload, m_name + ".shadow.constants");
-    } catch (...) {
-        release(); // out of memory: the pipelines, layout and sampler made above go with it
-        throw;
-    }
 }
 
 ShadowMapPass::~ShadowMapPass() {
@@ -130,7 +124,6 @@ void ShadowMapPass::release() {
         if (p) vkDestroyPipeline(d, p, nullptr);
     vkDestroySampler(d, m_sampler, nullptr);
     vk::destroyPipelineLayout(m_device, m_layout);
-    vk::destroyBuffer(m_device, m_constantsBuffer);
 }
 
 ShadowMaps ShadowMapPass::add(rg::Graph& graph, const FrameInputs& in) {
@@ -154,7 +147,9 @@ ShadowMaps ShadowMapPass::add(rg::Graph& graph, const FrameInputs& in) {
     }
     // Depth bias in shadow clip z: a few ulps of D32 plus a small constant for the comparison.
     m_constants.params = {float(m_mapCount), 1.0f / float(size), 2.0e-4f, 0.0f};
-    vk::writeBuffer(m_device, m_constantsBuffer, std::as_bytes(std::span(&m_constants, 1)));
+    // The fit follows the camera: per frame slot, so views recorded before any executes keep theirs.
+    const rg::Buffer constants =
+        m_constantsRing.write(graph, in.frameSlot, std::as_bytes(std::span(&m_constants, 1)));
 
     const eng::frame::GpuScene* gpuScene = in.scene;
     std::vector<VkPipeline> drawPipelines;
@@ -162,9 +157,6 @@ ShadowMaps ShadowMapPass::add(rg::Graph& graph, const FrameInputs& in) {
         const eng::scene::Material& m = scene.materials.at(draw.material);
         drawPipelines.push_back(m_pipelines[m.alphaMode == eng::scene::AlphaMode::Mask ? 1 : 0]);
     }
-    rg::Buffer constants =
-        graph.importBuffer(m_name + ".shadow.constants", {m_constantsBuffer.buffer, m_constantsBuffer.size},
-                           std::nullopt, std::nullopt);
     rg::Buffer materials = graph.importBuffer(m_name + ".shadow.materials",
                                               {gpuScene->materials().buffer, gpuScene->materials().size},
                                               std::nullopt, std::nullopt);

@@ -14,6 +14,7 @@
 
 #include "agaa/common/effects.h"
 #include "agaa/common/technique.h"
+#include "engine/frame/uniform_ring.h"
 #include "engine/vk/device.h"
 #include "engine/vk/pipeline.h"
 #include "engine/vk/resources.h"
@@ -41,7 +42,8 @@ class ShadowMapPass {
     ShadowMapPass& operator=(const ShadowMapPass&) = delete;
 
     bool enabled() const { return m_mapCount > 0; }
-    // Adds "<name>.shadow" (only call when enabled()). Writes the frame's ShadowConstants.
+    // Adds "<name>.shadow" (only call when enabled()). Writes the frame's ShadowConstants into the
+    // ring slot inputs.frameSlot (engine/frame/uniform_ring.h for its lifetime).
     ShadowMaps add(eng::rg::Graph& graph, const FrameInputs& inputs);
     VkSampler sampler() const { return m_sampler; }
     const shared::ShadowConstants& constants() const { return m_constants; }
@@ -56,14 +58,14 @@ class ShadowMapPass {
     void release(); // the destructor's work, also for a constructor that throws
     eng::vk::Device& m_device;
     std::string m_name;
+    eng::frame::UniformRing m_constantsRing; // shared::ShadowConstants per FrameInputs::frameSlot
     EffectSettings m_settings;
     std::vector<uint32_t> m_lights; // scene light indices, one per layer
     uint32_t m_mapCount = 0;
     eng::vk::PipelineLayout m_layout;
     std::array<VkPipeline, 2> m_pipelines{}; // [masked]
     VkSampler m_sampler = VK_NULL_HANDLE;
-    eng::vk::Buffer m_constantsBuffer;
-    shared::ShadowConstants m_constants{};
+    shared::ShadowConstants m_constants{}; // the last add()'s, for tests
 };
 
 } // namespace agaa

@@ -1,8 +1,25 @@
 #pragma once
 // The face every anti-aliasing technique shows the host: it adds its passes to
 // the host's render graph and hands back the targets. It owns pipelines (which
-// outlive frames: lavapipe JIT-compiles each on first use) but no per-frame
-// state, no window, no swapchain.
+// outlive frames: lavapipe JIT-compiles each on first use), no window, no swapchain.
+//
+// Per-frame state and lifetimes (issue 18). addPasses() records; nothing runs until the host
+// executes and submits the graph. The only per-frame data a technique writes on the host are its
+// uniform constants (AGAA's AgaaConstants, every shadowed method's ShadowConstants), and those go
+// into a ring of buffers indexed by FrameInputs::frameSlot (engine/frame/uniform_ring.h). So:
+//  - a host that records several views, or several frames, before any of them executes gives each
+//    its own frameSlot, e.g. frame-in-flight index x views per frame + view (at most
+//    UniformRing::kMaxSlots); two views in one graph with the same slot are refused;
+//  - a slot may be recorded again once the fence of the submission that last used it signalled;
+//  - everything else a pass uses is either created by the graph (transients, valid while the
+//    graph's transients are realised) or imported by the host (FrameInputs' buffers, which the
+//    host keeps per frame slot as well, e.g. with agaa/common/frame_inputs.h: the node reads
+//    them, it never writes them);
+//  - the technique itself (pipelines, samplers, ring) must outlive every submitted graph that
+//    holds its passes.
+// Threads: a technique is not thread-safe. One thread at a time calls addPasses(); recording a
+// graph that holds its passes (Graph::execute) may happen on another thread after addPasses()
+// returned, as execute callbacks only read state that no later addPasses() changes.
 
 #include "agaa/common/effects.h"
 #include "engine/frame/gpu_scene.h"
@@ -23,6 +40,9 @@ struct FrameInputs {
     eng::rg::Buffer lights;                            // shared::GpuLight[], storage
     uint32_t width = 0;
     uint32_t height = 0;
+    // Which slot of the technique's per-frame ring this recording writes its constants into
+    // (see the top of this file). 0 for a host that waits for each frame before the next.
+    uint32_t frameSlot = 0;
 };
 
 // Outputs every technique produces, with the same meaning (DESIGN section 6).
@@ -34,6 +54,10 @@ struct FrameTargets {
     // R32_UINT, only from methods that drop coverage (SBAA): covered samples per pixel whose
     // surface was not kept, so their coverage is missing from the resolve. Invalid otherwise.
     eng::rg::Texture lostSamples;
+    // The per-sample visibility depth, reversed Z (1 at znear, 0 = sky; common/depth.glsl): 4x
+    // with n/4 layers for n >= 4, one sample for n = 1; D32, with stencil on AGAA's accumulate
+    // path. For writing a host's depth target (agaa/common/host_targets.h).
+    eng::rg::Texture depth;
 };
 
 // Settings every method understands; a method ignores the ones it has no use for.

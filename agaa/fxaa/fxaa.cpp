@@ -57,7 +57,8 @@ Fxaa::~Fxaa() {
 
 FrameTargets Fxaa::addPasses(rg::Graph& graph, const FrameInputs& in) {
     FrameTargets noaa = m_noaa.addPasses(graph, in);
-    return {noaa.hdr, addFxaaPass(graph, noaa.display, in.width, in.height), noaa.shadingEvents};
+    return {
+        noaa.hdr, addFxaaPass(graph, noaa.display, in.width, in.height), noaa.shadingEvents, {}, noaa.depth};
 }
 
 rg::Texture Fxaa::addFxaaPass(rg::Graph& graph, rg::Texture display, uint32_t width, uint32_t height) {

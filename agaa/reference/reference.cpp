@@ -116,7 +116,7 @@ FrameTargets Reference::addPasses(rg::Graph& graph, const FrameInputs& in) {
             vkCmdDispatch(cmd, (w + shared::kTileSize - 1) / shared::kTileSize,
                           (h + shared::kTileSize - 1) / shared::kTileSize, 1);
         });
-    return {l.hdr, l.display, l.events};
+    return {l.hdr, l.display, l.events, {}, g.depth};
 }
 
 } // namespace agaa

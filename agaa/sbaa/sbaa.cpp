@@ -221,6 +221,7 @@ FrameTargets Sbaa::addLighting(rg::Graph& graph, const FrameInputs& in, const Sa
         });
     FrameTargets t{l.hdr, l.display, l.events};
     t.lostSamples = surfaces.lostSamples;
+    t.depth = g.depth;
     return t;
 }
 

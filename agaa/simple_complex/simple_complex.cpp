@@ -137,7 +137,7 @@ FrameTargets SimpleComplex::addLighting(rg::Graph& graph, const FrameInputs& in,
             vkCmdDispatch(cmd, (w + shared::kTileSize - 1) / shared::kTileSize,
                           (h + shared::kTileSize - 1) / shared::kTileSize, 1);
         });
-    return {l.hdr, l.display, l.events};
+    return {l.hdr, l.display, l.events, {}, gbuffer.depth};
 }
 
 void SimpleComplex::addClassificationExport(rg::Graph& graph, const FrameInputs& in,

@@ -33,11 +33,20 @@ glm::mat4 orbitView(const glm::mat4& view, const glm::vec3& pivot, float degrees
 
 shared::FrameConstants makeFrameConstants(const scene::Scene& scene, const ViewSettings& view,
                                           const SamplePattern& pattern) {
-    if (view.camera >= scene.cameras.size())
+    if (!view.cameraOverride && view.camera >= scene.cameras.size())
         throw std::invalid_argument("camera " + std::to_string(view.camera) +
                                     " does not exist (the scene has " + std::to_string(scene.cameras.size()) +
                                     ")");
-    const scene::Camera& cam = scene.cameras[view.camera];
+    if (const std::optional<scene::Camera>& host = view.cameraOverride) {
+        // A host's camera is user input: refused here rather than turned into a NaN projection.
+        if (!(host->yfov > 0.0f && host->yfov < 3.14159f))
+            throw std::invalid_argument("camera yfov " + std::to_string(host->yfov) +
+                                        " is out of range (0..pi radians)");
+        if (!(host->znear > 0.0f && host->zfar > host->znear))
+            throw std::invalid_argument("camera znear " + std::to_string(host->znear) + " / zfar " +
+                                        std::to_string(host->zfar) + " are out of range (0 < znear < zfar)");
+    }
+    const scene::Camera& cam = view.cameraOverride ? *view.cameraOverride : scene.cameras[view.camera];
     shared::FrameConstants c{};
     float aspect = float(view.width) / float(view.height);
     c.view = view.viewOverride ? *view.viewOverride : cam.view;

@@ -20,6 +20,9 @@ struct ViewSettings {
     // Replaces the scene camera's view matrix (camera paths, the viewer's orbit camera);
     // the camera's fov and clip planes still apply.
     std::optional<glm::mat4> viewOverride;
+    // A host's own camera (view, yfov, znear, zfar) instead of Scene::cameras[camera]; checked
+    // (0 < yfov < pi, 0 < znear < zfar). viewOverride, when set, still replaces its view.
+    std::optional<scene::Camera> cameraOverride;
 };
 
 // The scene camera's view rotated about the world Y axis through `pivot` by `degrees`

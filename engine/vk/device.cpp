@@ -1,6 +1,7 @@
 #include "engine/vk/device.h"
 
 #include "engine/vk/check.h"
+#include "engine/vk/device_setup.h"
 
 #include <algorithm>
 #include <cctype>
@@ -8,6 +9,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <sstream>
+#include <stdexcept>
 
 namespace eng::vk {
 namespace {
@@ -72,17 +74,18 @@ Device::Device(const DeviceOptions& options) {
 
 Device::~Device() {
     if (m_device) {
-        vkDeviceWaitIdle(m_device);
+        // A host device: only the wrapper's own objects go (submitAndWait() waited on its work).
+        if (m_ownsDevice) vkDeviceWaitIdle(m_device);
         vkDestroyFence(m_device, m_fence, nullptr);
         vkDestroyCommandPool(m_device, m_commandPool, nullptr);
-        vkDestroyDevice(m_device, nullptr);
+        if (m_ownsDevice) vkDestroyDevice(m_device, nullptr);
     }
     if (m_messenger) {
         auto destroy = reinterpret_cast<PFN_vkDestroyDebugUtilsMessengerEXT>(
             vkGetInstanceProcAddr(m_instance, "vkDestroyDebugUtilsMessengerEXT"));
         if (destroy) destroy(m_instance, m_messenger, nullptr);
     }
-    if (m_instance) vkDestroyInstance(m_instance, nullptr);
+    if (m_instance && m_ownsDevice) vkDestroyInstance(m_instance, nullptr);
 }
 
 void Device::createInstance(const DeviceOptions& options) {
@@ -160,17 +163,28 @@ void Device::createInstance(const DeviceOptions& options) {
         throw MissingCapability("no Vulkan 1.3 driver found (install mesa-vulkan-drivers for lavapipe)");
     VK_CHECK(result);
 
-    if (m_debugUtils) {
-        auto create = reinterpret_cast<PFN_vkCreateDebugUtilsMessengerEXT>(
-            vkGetInstanceProcAddr(m_instance, "vkCreateDebugUtilsMessengerEXT"));
-        if (create) VK_CHECK(create(m_instance, &messengerInfo, nullptr, &m_messenger));
-        m_setObjectName = reinterpret_cast<PFN_vkSetDebugUtilsObjectNameEXT>(
-            vkGetInstanceProcAddr(m_instance, "vkSetDebugUtilsObjectNameEXT"));
-        m_beginLabel = reinterpret_cast<PFN_vkCmdBeginDebugUtilsLabelEXT>(
-            vkGetInstanceProcAddr(m_instance, "vkCmdBeginDebugUtilsLabelEXT"));
-        m_endLabel = reinterpret_cast<PFN_vkCmdEndDebugUtilsLabelEXT>(
-            vkGetInstanceProcAddr(m_instance, "vkCmdEndDebugUtilsLabelEXT"));
-    }
+    createMessenger();
+}
+
+void Device::createMessenger() {
+    if (!m_debugUtils) return;
+    VkDebugUtilsMessengerCreateInfoEXT messengerInfo{VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT};
+    messengerInfo.messageSeverity =
+        VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT;
+    messengerInfo.messageType = VK_DEBUG_UTILS_MESSAGE_TYPE_GENERAL_BIT_EXT |
+                                VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT |
+                                VK_DEBUG_UTILS_MESSAGE_TYPE_PERFORMANCE_BIT_EXT;
+    messengerInfo.pfnUserCallback = &Device::onMessage;
+    messengerInfo.pUserData = this;
+    auto create = reinterpret_cast<PFN_vkCreateDebugUtilsMessengerEXT>(
+        vkGetInstanceProcAddr(m_instance, "vkCreateDebugUtilsMessengerEXT"));
+    if (create) VK_CHECK(create(m_instance, &messengerInfo, nullptr, &m_messenger));
+    m_setObjectName = reinterpret_cast<PFN_vkSetDebugUtilsObjectNameEXT>(
+        vkGetInstanceProcAddr(m_instance, "vkSetDebugUtilsObjectNameEXT"));
+    m_beginLabel = reinterpret_cast<PFN_vkCmdBeginDebugUtilsLabelEXT>(
+        vkGetInstanceProcAddr(m_instance, "vkCmdBeginDebugUtilsLabelEXT"));
+    m_endLabel = reinterpret_cast<PFN_vkCmdEndDebugUtilsLabelEXT>(
+        vkGetInstanceProcAddr(m_instance, "vkCmdEndDebugUtilsLabelEXT"));
 }
 
 std::vector<std::string> Device::listDevices() {
@@ -226,169 +240,28 @@ void Device::pickPhysicalDevice(const DeviceOptions& options) {
     }
 }
 
-void Device::createDevice(bool swapchain) {
-    uint32_t extCount = 0;
-    vkEnumerateDeviceExtensionProperties(m_physical, nullptr, &extCount, nullptr);
-    std::vector<VkExtensionProperties> exts(extCount);
-    vkEnumerateDeviceExtensionProperties(m_physical, nullptr, &extCount, exts.data());
-
-    // --- capability probe -------------------------------------------------------------------
-    VkPhysicalDeviceShaderAtomicFloatFeaturesEXT atomicFloat{
-        VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SHADER_ATOMIC_FLOAT_FEATURES_EXT};
-    VkPhysicalDeviceFragmentShaderInterlockFeaturesEXT interlock{
-        VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FRAGMENT_SHADER_INTERLOCK_FEATURES_EXT};
-    VkPhysicalDeviceVulkan13Features f13{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES};
-    VkPhysicalDeviceVulkan12Features f12{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES};
-    VkPhysicalDeviceVulkan11Features f11{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_1_FEATURES};
-    VkPhysicalDeviceFeatures2 f2{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};
-    f2.pNext = &f11;
-    f11.pNext = &f12;
-    f12.pNext = &f13;
-    bool hasAtomicFloat = hasExtension(exts, VK_EXT_SHADER_ATOMIC_FLOAT_EXTENSION_NAME);
-    bool hasInterlock = hasExtension(exts, VK_EXT_FRAGMENT_SHADER_INTERLOCK_EXTENSION_NAME);
-    void** tail = &f13.pNext;
-    if (hasAtomicFloat) {
-        *tail = &atomicFloat;
-        tail = &atomicFloat.pNext;
-    }
-    if (hasInterlock) {
-        *tail = &interlock;
-        tail = &interlock.pNext;
-    }
-    vkGetPhysicalDeviceFeatures2(m_physical, &f2);
-
-    VkPhysicalDeviceSubgroupProperties subgroup{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SUBGROUP_PROPERTIES};
-    VkPhysicalDeviceDriverProperties driver{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_DRIVER_PROPERTIES};
-    subgroup.pNext = &driver;
-    VkPhysicalDeviceProperties2 p2{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2};
-    p2.pNext = &subgroup;
-    vkGetPhysicalDeviceProperties2(m_physical, &p2);
-    const VkPhysicalDeviceLimits& limits = p2.properties.limits;
-
+void Device::pickQueueFamily() {
     uint32_t familyCount = 0;
     vkGetPhysicalDeviceQueueFamilyProperties(m_physical, &familyCount, nullptr);
     std::vector<VkQueueFamilyProperties> families(familyCount);
     vkGetPhysicalDeviceQueueFamilyProperties(m_physical, &familyCount, families.data());
-    bool foundFamily = false;
     for (uint32_t i = 0; i < familyCount; ++i) {
         VkQueueFlags need = VK_QUEUE_GRAPHICS_BIT | VK_QUEUE_COMPUTE_BIT;
         if ((families[i].queueFlags & need) == need && families[i].timestampValidBits > 0) {
             m_queueFamily = i;
             m_caps.timestampValidBits = families[i].timestampValidBits;
-            foundFamily = true;
-            break;
+            return;
         }
     }
-    if (!foundFamily)
-        throw MissingCapability(std::string(p2.properties.deviceName) +
-                                ": no queue family with graphics + compute + timestamps");
+    throw MissingCapability(m_caps.deviceName + ": no queue family with graphics + compute + timestamps");
+}
 
-    m_caps.deviceName = p2.properties.deviceName;
-    m_caps.driverName = std::string(driver.driverName) + " " + driver.driverInfo;
-    m_caps.apiVersion = p2.properties.apiVersion;
-    m_caps.deviceType = p2.properties.deviceType;
-    m_caps.colorSampleCounts = limits.framebufferColorSampleCounts & limits.sampledImageColorSampleCounts;
-    m_caps.depthSampleCounts = limits.framebufferDepthSampleCounts & limits.sampledImageDepthSampleCounts &
-                               limits.framebufferStencilSampleCounts;
-    m_caps.sampleRateShading = f2.features.sampleRateShading;
-    m_caps.fragmentPrimitiveId = f2.features.geometryShader; // SPIR-V PrimitiveId in fragments: Geometry
-    m_caps.postDepthCoverage = hasExtension(exts, VK_EXT_POST_DEPTH_COVERAGE_EXTENSION_NAME);
-    m_caps.bufferFloatAtomicAdd = hasAtomicFloat && atomicFloat.shaderBufferFloat32AtomicAdd;
-    m_caps.imageFloatAtomicAdd = hasAtomicFloat && atomicFloat.shaderImageFloat32AtomicAdd;
-    m_caps.bufferInt64Atomics = f12.shaderBufferInt64Atomics && f2.features.shaderInt64;
-    m_caps.subgroupSize = subgroup.subgroupSize;
-    m_caps.subgroupStages = subgroup.supportedStages;
-    m_caps.subgroupOperations = subgroup.supportedOperations;
-    m_caps.fragmentShaderInterlock = hasInterlock && interlock.fragmentShaderSampleInterlock;
-    m_caps.mixedSamples = hasExtension(exts, "VK_AMD_mixed_attachment_samples") ||
-                          hasExtension(exts, "VK_NV_framebuffer_mixed_samples");
-    m_caps.coverageOverride = hasExtension(exts, "VK_NV_sample_mask_override_coverage");
-    m_caps.sampleLocations = hasExtension(exts, VK_EXT_SAMPLE_LOCATIONS_EXTENSION_NAME);
-    m_caps.multiview = f11.multiview;
-    m_caps.layeredOutput = f12.shaderOutputLayer && f12.shaderOutputViewportIndex;
-    m_caps.multiViewport = f2.features.multiViewport;
-    m_caps.pushDescriptors = hasExtension(exts, VK_KHR_PUSH_DESCRIPTOR_EXTENSION_NAME);
-    m_caps.calibratedTimestamps = hasExtension(exts, VK_EXT_CALIBRATED_TIMESTAMPS_EXTENSION_NAME);
-    m_caps.timestampPeriodNs = limits.timestampPeriod;
-    m_caps.maxComputeSharedMemory = limits.maxComputeSharedMemorySize;
-    m_caps.maxImageArrayLayers = limits.maxImageArrayLayers;
-
-    // --- required features: the renderer cannot run without these -------------------------
-    struct Required {
-        bool present;
-        const char* name;
-    };
-    const Required required[] = {
-        {f13.dynamicRendering == VK_TRUE, "Vulkan 1.3 dynamicRendering"},
-        {f13.synchronization2 == VK_TRUE, "Vulkan 1.3 synchronization2"},
-        {f12.hostQueryReset == VK_TRUE, "Vulkan 1.2 hostQueryReset"},
-        {f2.features.fragmentStoresAndAtomics == VK_TRUE, "fragmentStoresAndAtomics"},
-        {m_caps.pushDescriptors, VK_KHR_PUSH_DESCRIPTOR_EXTENSION_NAME},
-        {m_caps.layeredOutput, "Vulkan 1.2 shaderOutputLayer (layered sample-rate emulation)"},
-        {limits.timestampComputeAndGraphics == VK_TRUE, "timestampComputeAndGraphics"},
-    };
-    for (const Required& r : required)
-        if (!r.present) throw MissingCapability(m_caps.deviceName + " lacks " + r.name);
-
-    // --- enable what exists ------------------------------------------------------------------
-    std::vector<const char*> enable = {VK_KHR_PUSH_DESCRIPTOR_EXTENSION_NAME};
-    if (m_caps.postDepthCoverage) enable.push_back(VK_EXT_POST_DEPTH_COVERAGE_EXTENSION_NAME);
-    if (hasAtomicFloat) enable.push_back(VK_EXT_SHADER_ATOMIC_FLOAT_EXTENSION_NAME);
-    if (m_caps.fragmentShaderInterlock) enable.push_back(VK_EXT_FRAGMENT_SHADER_INTERLOCK_EXTENSION_NAME);
-    if (swapchain) {
-        if (!hasExtension(exts, VK_KHR_SWAPCHAIN_EXTENSION_NAME))
-            throw MissingCapability(m_caps.deviceName + " lacks " + VK_KHR_SWAPCHAIN_EXTENSION_NAME);
-        enable.push_back(VK_KHR_SWAPCHAIN_EXTENSION_NAME);
-    }
-
-    VkPhysicalDeviceShaderAtomicFloatFeaturesEXT atomicFloatOn{
-        VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SHADER_ATOMIC_FLOAT_FEATURES_EXT};
-    atomicFloatOn.shaderBufferFloat32Atomics = atomicFloat.shaderBufferFloat32Atomics;
-    atomicFloatOn.shaderBufferFloat32AtomicAdd = atomicFloat.shaderBufferFloat32AtomicAdd;
-    atomicFloatOn.shaderImageFloat32Atomics = atomicFloat.shaderImageFloat32Atomics;
-    atomicFloatOn.shaderImageFloat32AtomicAdd = atomicFloat.shaderImageFloat32AtomicAdd;
-    VkPhysicalDeviceFragmentShaderInterlockFeaturesEXT interlockOn{
-        VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FRAGMENT_SHADER_INTERLOCK_FEATURES_EXT};
-    interlockOn.fragmentShaderSampleInterlock = interlock.fragmentShaderSampleInterlock;
-    interlockOn.fragmentShaderPixelInterlock = interlock.fragmentShaderPixelInterlock;
-
-    VkPhysicalDeviceVulkan13Features on13{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES};
-    on13.dynamicRendering = VK_TRUE;
-    on13.synchronization2 = VK_TRUE;
-    on13.maintenance4 = f13.maintenance4;
-    on13.subgroupSizeControl = f13.subgroupSizeControl;
-    VkPhysicalDeviceVulkan12Features on12{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES};
-    on12.hostQueryReset = VK_TRUE;
-    on12.shaderOutputLayer = VK_TRUE;
-    on12.shaderOutputViewportIndex = VK_TRUE;
-    on12.scalarBlockLayout = f12.scalarBlockLayout;
-    on12.shaderFloat16 = f12.shaderFloat16;
-    on12.storageBuffer8BitAccess = f12.storageBuffer8BitAccess;
-    on12.shaderBufferInt64Atomics = m_caps.bufferInt64Atomics ? VK_TRUE : VK_FALSE;
-    VkPhysicalDeviceVulkan11Features on11{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_1_FEATURES};
-    on11.multiview = f11.multiview;
-    VkPhysicalDeviceFeatures2 on2{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};
-    on2.features.sampleRateShading = f2.features.sampleRateShading;
-    on2.features.geometryShader = f2.features.geometryShader; // gl_PrimitiveID in SBAA's prepass
-    on2.features.multiViewport = f2.features.multiViewport;
-    on2.features.fragmentStoresAndAtomics = VK_TRUE;
-    on2.features.vertexPipelineStoresAndAtomics = f2.features.vertexPipelineStoresAndAtomics;
-    on2.features.shaderInt64 = f2.features.shaderInt64;
-    on2.features.independentBlend = f2.features.independentBlend;
-    on2.features.shaderStorageImageMultisample = f2.features.shaderStorageImageMultisample;
-    on2.features.samplerAnisotropy = f2.features.samplerAnisotropy;
-    on2.pNext = &on11;
-    on11.pNext = &on12;
-    on12.pNext = &on13;
-    void** onTail = &on13.pNext;
-    if (hasAtomicFloat) {
-        *onTail = &atomicFloatOn;
-        onTail = &atomicFloatOn.pNext;
-    }
-    if (m_caps.fragmentShaderInterlock) {
-        *onTail = &interlockOn;
-        onTail = &interlockOn.pNext;
-    }
+void Device::createDevice(bool swapchain) {
+    // What the device enables is also what a host creating its own device must enable
+    // (device_setup.h); the capabilities are probed from exactly that.
+    const DeviceSetup setup(m_physical, swapchain);
+    m_caps = probeCapabilities(m_physical, setup.features(), supportedDeviceExtensions(m_physical));
+    pickQueueFamily();
 
     float priority = 1.0f;
     VkDeviceQueueCreateInfo queueInfo{VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO};
@@ -396,23 +269,57 @@ void Device::createDevice(bool swapchain) {
     queueInfo.queueCount = 1;
     queueInfo.pQueuePriorities = &priority;
     VkDeviceCreateInfo info{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO};
-    info.pNext = &on2;
+    setup.fill(info);
     info.queueCreateInfoCount = 1;
     info.pQueueCreateInfos = &queueInfo;
-    info.enabledExtensionCount = uint32_t(enable.size());
-    info.ppEnabledExtensionNames = enable.data();
     VK_CHECK(vkCreateDevice(m_physical, &info, nullptr, &m_device));
     vkGetDeviceQueue(m_device, m_queueFamily, 0, &m_queue);
+    createSubmitObjects();
+}
+
+Device::Device(const HostDevice& host) {
+    if (!host.instance || !host.physical || !host.device || !host.queue)
+        throw std::invalid_argument("HostDevice: instance, physical, device and queue must all be set");
+    m_ownsDevice = false;
+    m_quiet = host.quiet;
+    m_instance = host.instance;
+    m_physical = host.physical;
+    m_device = host.device;
+    m_queue = host.queue;
+    m_validation = host.validation;
+    m_debugUtils = host.debugUtils;
+    m_failAllocation = envCount("AGAA_FAIL_ALLOCATION");
+    m_loseDeviceAtSubmit = envCount("AGAA_LOSE_DEVICE");
+    const std::vector<std::string> extensions(host.enabledExtensions.begin(), host.enabledExtensions.end());
+    const FeatureChain enabled = FeatureChain::fromCreateInfoChain(host.enabledFeatures);
+    // The host's enables decide what the renderer may use, not what the hardware offers.
+    checkHostEnables(m_physical, enabled, extensions);
+    m_caps = probeCapabilities(m_physical, enabled, extensions);
+    uint32_t familyCount = 0;
+    vkGetPhysicalDeviceQueueFamilyProperties(m_physical, &familyCount, nullptr);
+    std::vector<VkQueueFamilyProperties> families(familyCount);
+    vkGetPhysicalDeviceQueueFamilyProperties(m_physical, &familyCount, families.data());
+    const VkQueueFlags need = VK_QUEUE_GRAPHICS_BIT | VK_QUEUE_COMPUTE_BIT;
+    if (host.queueFamily >= familyCount || (families[host.queueFamily].queueFlags & need) != need ||
+        families[host.queueFamily].timestampValidBits == 0)
+        throw MissingCapability("host queue family " + std::to_string(host.queueFamily) + " of " +
+                                m_caps.deviceName + " lacks graphics + compute + timestamps");
+    m_queueFamily = host.queueFamily;
+    m_caps.timestampValidBits = families[host.queueFamily].timestampValidBits;
+    createMessenger();
+    createSubmitObjects();
+}
+
+void Device::createSubmitObjects() {
     m_pushDescriptorSet = reinterpret_cast<PFN_vkCmdPushDescriptorSetKHR>(
         vkGetDeviceProcAddr(m_device, "vkCmdPushDescriptorSetKHR"));
-
     VkCommandPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
     poolInfo.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT | VK_COMMAND_POOL_CREATE_TRANSIENT_BIT;
     poolInfo.queueFamilyIndex = m_queueFamily;
     VK_CHECK(vkCreateCommandPool(m_device, &poolInfo, nullptr, &m_commandPool));
     VkFenceCreateInfo fenceInfo{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
     VK_CHECK(vkCreateFence(m_device, &fenceInfo, nullptr, &m_fence));
-    setName(VK_OBJECT_TYPE_QUEUE, m_queue, "agaa.queue");
+    if (m_ownsDevice) setName(VK_OBJECT_TYPE_QUEUE, m_queue, "agaa.queue"); // the host's queue keeps its name
     setName(VK_OBJECT_TYPE_COMMAND_POOL, m_commandPool, "agaa.commandPool");
 }
 

@@ -38,9 +38,38 @@ struct DeviceOptions {
     uint32_t loseDeviceAtSubmit = 0;
 };
 
+// A device a host engine created and keeps owning (issue 18). The wrapper never destroys these
+// handles; the host keeps them alive until the Device wrapper and everything made with it are
+// gone. The host must have enabled what eng::vk::DeviceSetup (device_setup.h) lists: a missing
+// required feature is refused with MissingCapability naming it.
+struct HostDevice {
+    VkInstance instance = VK_NULL_HANDLE;
+    VkPhysicalDevice physical = VK_NULL_HANDLE;
+    VkDevice device = VK_NULL_HANDLE;
+    VkQueue queue = VK_NULL_HANDLE; // graphics + compute, with timestamps
+    uint32_t queueFamily = 0;
+    // What the host passed to vkCreateDevice: the pNext chain of VkDeviceCreateInfo
+    // (VkPhysicalDeviceFeatures2 first) and ppEnabledExtensionNames.
+    const void* enabledFeatures = nullptr;
+    std::vector<const char*> enabledExtensions;
+    // The instance has VK_EXT_debug_utils enabled: the wrapper then adds its own messenger (to
+    // count validation errors, see Device) and names objects. validation: the host enabled the
+    // Khronos validation layer (only reported by validationEnabled()).
+    bool debugUtils = false;
+    bool validation = false;
+    bool quiet = true; // do not print non-error messages
+};
+
 class Device {
   public:
     explicit Device(const DeviceOptions& options);
+    // Wraps the host's device (no instance or device is created, none destroyed). It creates
+    // only its own command pool and fence for submitAndWait() (uploads), and a debug messenger
+    // when host.debugUtils. Threads: submitAndWait() submits to the host's queue, which Vulkan
+    // requires to be externally synchronised: the host must not submit to it from another
+    // thread at the same time.
+    explicit Device(const HostDevice& host);
+    bool ownsDevice() const { return m_ownsDevice; }
     ~Device();
     Device(const Device&) = delete;
     Device& operator=(const Device&) = delete;
@@ -93,6 +122,9 @@ class Device {
     void createInstance(const DeviceOptions& options);
     void pickPhysicalDevice(const DeviceOptions& options);
     void createDevice(bool swapchain);
+    void pickQueueFamily();     // graphics + compute + timestamps, or MissingCapability
+    void createMessenger();     // the debug messenger and debug_utils entry points
+    void createSubmitObjects(); // command pool and fence for submitAndWait()
     static VKAPI_ATTR VkBool32 VKAPI_CALL onMessage(VkDebugUtilsMessageSeverityFlagBitsEXT severity,
                                                     VkDebugUtilsMessageTypeFlagsEXT type,
                                                     const VkDebugUtilsMessengerCallbackDataEXT* data,
@@ -108,6 +140,7 @@ class Device {
     VkFence m_fence = VK_NULL_HANDLE;
     Capabilities m_caps;
     bool m_validation = false;
+    bool m_ownsDevice = true; // false: a HostDevice, whose instance and device the host destroys
     bool m_debugUtils = false;
     bool m_quiet = false;
     std::shared_ptr<std::atomic<uint32_t>> m_validationErrors = std::make_shared<std::atomic<uint32_t>>(0);

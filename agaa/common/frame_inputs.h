@@ -1,0 +1,35 @@
+#pragma once
+// The host's side of FrameInputs, for hosts that do not keep their own frame buffers: the
+// camera (ViewSettings, which takes a host's own eng::scene::Camera) becomes the frame
+// constants and the scene's lights in that view, written into per-frame-slot buffers
+// (engine/frame/uniform_ring.h) and imported into the host's graph.
+//
+// Lifetimes: as the technique's own ring. Slot s may be written again once the fence of the
+// submission that last read it signalled; several views or frames recorded before any executes
+// each take their own slot (the same slot numbers as FrameInputs::frameSlot, which this sets).
+// The returned FrameInputs point at this object's copy of the constants: valid until the next
+// write() to the same slot. Threads: one recording thread at a time.
+
+#include "agaa/common/technique.h"
+#include "engine/frame/frame_constants.h"
+#include "engine/frame/uniform_ring.h"
+
+#include <array>
+
+namespace agaa {
+
+class FrameInputWriter {
+  public:
+    FrameInputWriter(eng::vk::Device& device, const eng::frame::GpuScene& scene);
+
+    // `samples`: the technique's (Technique::samples()), which selects the sample pattern.
+    FrameInputs write(eng::rg::Graph& graph, const eng::frame::ViewSettings& view, uint32_t samples,
+                      uint32_t frameSlot);
+
+  private:
+    const eng::frame::GpuScene& m_scene;
+    eng::frame::UniformRing m_constants, m_lights;
+    std::array<shared::FrameConstants, eng::frame::UniformRing::kMaxSlots> m_values{};
+};
+
+} // namespace agaa
