@@ -31,12 +31,20 @@ const std::vector<MethodInfo>& knownMethods() {
         {"sbaa",
          "surface based anti-aliasing (Salvi and Vidimce 2012): the S most covered surfaces per pixel "
          "(--surfaces, default 4; similar planes merged) lit once each; the rest's coverage is lost",
-         true, false},
+         true,
+         false,
+         {},
+         6,
+         4},
         {"streaming",
          "streaming G-buffer compression (Kerzner and Salvi 2014): fragments merged in primitive order into "
          "at most S depth-sorted surfaces per pixel (--surfaces 1..3, default 3; --streaming-normal-angle), "
          "each lit once",
-         true, false},
+         true,
+         false,
+         {},
+         3,
+         3},
         {"agaa",
          "aggregate G-buffer anti-aliasing: n visibility samples, c aggregates lit once each "
          "(--agaa-generation picks the path; auto by default)",
