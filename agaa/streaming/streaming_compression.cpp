@@ -12,7 +12,6 @@ namespace agaa {
 namespace {
 
 // The GLSL constants these mirror live in shaders/glsl/common/epsilon.glsl.
-constexpr float kMinCosine = 1.0e-4f;
 constexpr float kDepthCompareRelative = 1.0e-4f;
 constexpr float kMinNormalLength = 1.0e-6f;
 
@@ -157,18 +156,23 @@ std::vector<StreamingSurface> recordedFragments(const shared::FrameConstants& fr
         f.zView = viewDistance(r[0].x, frame);
         f.normal = octahedralNormal(r[0].y, r[0].z);
         // The plane through the sample with its normal, t(q) = c / (N.D(q)) along the ray t D(q):
-        // dt/dq = -t (N.dD/dq) / (N.D), N.D kept kMinCosine |D| from 0 with its sign.
+        // dt/dq = -t (N.dD/dq) / (N.D), N.D kept kStreamingMinFacing |D| from 0 with its sign.
         const glm::vec2 q = glm::vec2(float(px), float(py)) + glm::vec2(frame.samplePositions[g.rep]);
         const glm::vec2 ndc = q * glm::vec2(frame.extent.z, frame.extent.w) * 2.0f - 1.0f;
         const glm::vec3 ray(ndc.x / frame.projParams.x, ndc.y / frame.projParams.y, -1.0f);
         float facing = glm::dot(f.normal, ray);
-        const float floorFacing = kMinCosine * glm::length(ray);
+        const float floorFacing = shared::kStreamingMinFacing * glm::length(ray);
         if (std::abs(facing) < floorFacing) facing = facing >= 0.0f ? floorFacing : -floorFacing;
         const float limit = shared::kStreamingMaxDerivative;
         f.dzdx = std::clamp(-f.zView * f.normal.x * (2.0f * frame.extent.z / frame.projParams.x) / facing,
                             -limit, limit);
         f.dzdy = std::clamp(-f.zView * f.normal.y * (2.0f * frame.extent.w / frame.projParams.y) / facing,
                             -limit, limit);
+        // The plane's depth at the pixel centre, kept within [1/2, 2] of the sample's.
+        const glm::vec2 toCentre = glm::vec2(0.5f) - glm::vec2(frame.samplePositions[g.rep]);
+        const float range = shared::kStreamingCentreDepthRange;
+        f.zView =
+            std::clamp(f.zView + f.dzdx * toCentre.x + f.dzdy * toCentre.y, f.zView / range, f.zView * range);
         f.albedo = glm::vec3(r[1]);
         f.metallic = r[1].w;
         f.emissive = glm::vec3(r[2]);

@@ -70,8 +70,8 @@ StreamingSurface streamingMerge(const StreamingSurface& surface, const Streaming
 using StreamingSample = std::array<glm::vec4, 3>;
 
 // The pixel's recorded fragments in primitive order (ascending id = draw order): its samples
-// grouped by primitive, each with its first sample's depth, normal and material and the plane
-// derivatives of that sample's depth and normal.
+// grouped by primitive, each with its first sample's normal and material, the derivatives of the
+// plane through that sample with that normal, and the plane's depth at the pixel centre.
 std::vector<StreamingSurface> recordedFragments(const shared::FrameConstants& frame,
                                                 const StreamingSample* samples, int px, int py);
 

@@ -198,17 +198,27 @@ TEST(StreamingCompression, RecordedFragmentsAreReplayedInPrimitiveOrder) {
     EXPECT_EQ(f[0].dzdx, 0.0f) << "octahedral (0, 0) is the view axis: a face-on plane";
 }
 
-TEST(StreamingCompression, GrazingPlanesGetFiniteDerivatives) {
-    // The kMinCosine floor of N.D: a normal perpendicular to the ray would divide by 0; the slope
-    // is then clamped to the largest half, kStreamingMaxDerivative.
+TEST(StreamingCompression, GrazingPlanesGetBoundedDerivativesAndCentreDepth) {
+    // A normal perpendicular to the ray would divide by N.D = 0: kStreamingMinFacing floors it, so
+    // the slope is t |N.x| dD/dx / kStreamingMinFacing; the centre depth extrapolated from the
+    // sample stays within kStreamingCentreDepthRange of it.
     shared::FrameConstants frame = frameFor(4);
     frame.extent = {2.0f, 2.0f, 0.5f, 0.5f};
     frame.samplePositions[0] = {0.0f, 0.0f, 0.0f, 0.0f}; // pixel (1, 1) + 0: ndc (0, 0), D = (0, 0, -1)
     std::vector<agaa::StreamingSample> samples(4);
     samples[0][0] = {0.001f, 0.5f, 0.5f, 1.0f}; // t = 50 m; octahedral (0.5, 0.5): normal (0.707, 0.707, 0)
-    const std::vector<StreamingSurface> f = agaa::recordedFragments(frame, samples.data(), 1, 1);
+    std::vector<StreamingSurface> f = agaa::recordedFragments(frame, samples.data(), 1, 1);
     ASSERT_EQ(f.size(), 1u);
-    EXPECT_TRUE(std::isfinite(f[0].dzdx) && std::isfinite(f[0].dzdy));
+    const float t = 0.1f * 100.0f / (0.001f * 99.9f + 0.1f);
+    const float slope = t * std::sqrt(0.5f) * (2.0f * 0.5f / 1.5f) / shared::kStreamingMinFacing;
+    EXPECT_NEAR(std::abs(f[0].dzdx), slope, 1.0e-4f * slope);
+    EXPECT_GE(f[0].zView, t / shared::kStreamingCentreDepthRange) << "the centre depth stays in range";
+    EXPECT_LE(f[0].zView, t * shared::kStreamingCentreDepthRange);
+    // Far enough away the slope passes the largest half float: clamped to kStreamingMaxDerivative.
+    frame.depthParams = {0.1f, 1.0e6f, 1.0f, 0.0f};
+    samples[0][0].x = 1.0e-9f; // t ~ 1e6 m
+    f = agaa::recordedFragments(frame, samples.data(), 1, 1);
+    ASSERT_EQ(f.size(), 1u);
     EXPECT_EQ(std::abs(f[0].dzdx), shared::kStreamingMaxDerivative);
     const std::array<uint32_t, 9> r = agaa::streamingRecord(f[0]);
     EXPECT_TRUE(std::isfinite(glm::unpackHalf2x16(r[shared::kStreamingWordDepthDerivatives]).x))

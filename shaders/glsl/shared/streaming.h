@@ -35,6 +35,20 @@ SHARED_CONST kStreamingWordEmissiveBRoughness = 8u;
 // packHalf2x16 (word 3), so the record never holds an infinity.
 SHARED_CONST_FLOAT kStreamingMaxDerivative = 65504.0f;
 
+// Smallest |cos| between a fragment's normal and its view ray when its depth derivatives are
+// taken from the plane through its sample with that normal. The G-buffer normal is the shading
+// normal: thin geometry (fur, grass blades) has shading normals near-perpendicular to the ray at
+// its silhouettes while its triangles' depth slope is bounded; without the floor such a fragment's
+// depth range spans the pixel's whole depth and merges it with what lies behind (on lavapipe the
+// replayed fragments are depth-tested, so their coverage is always disjoint and only the depth and
+// normal tests keep surfaces apart).
+SHARED_CONST_FLOAT kStreamingMinFacing = 0.25f;
+
+// zView is the fragment's plane at the pixel centre (section 3: "depth computed at the pixel
+// center"), extrapolated from its first sample by the derivatives; the extrapolation is kept
+// within [1/2, 2] times the sample's depth so a steep plane cannot reach the camera.
+SHARED_CONST_FLOAT kStreamingCentreDepthRange = 2.0f;
+
 struct StreamingParams {
     // x: cos of the normal threshold (a fragment merges only if n0 . n1 > x; the paper's
     // alpha = pi/4 gives 0.7071); yzw unused.

@@ -43,10 +43,11 @@ float halfRange(Surface s) { return abs(s.dzdx) + abs(s.dzdy) + kDepthCompareRel
 float zMin(Surface s) { return s.zView - halfRange(s); }
 float zMax(Surface s) { return s.zView + halfRange(s); }
 
-// The fragment of primitive group g: its first sample's depth, normal and material; dz/dx, dz/dy of
-// the plane through that sample with that normal. t(q) = c / (N.D(q)) on the ray t D(q), so
-// dt/dq = -t (N.dD/dq) / (N.D); N.D is kept at least kMinCosine |D| from 0 with its sign (a
-// grazing plane: huge slope, clamped to a finite half).
+// The fragment of primitive group g: its first sample's normal and material; dz/dx, dz/dy of the
+// plane through that sample with that normal, and that plane's depth at the pixel centre.
+// t(q) = c / (N.D(q)) on the ray t D(q), so dt/dq = -t (N.dD/dq) / (N.D); N.D is kept at least
+// kStreamingMinFacing |D| from 0 with its sign (shared/streaming.h: shading normals of thin
+// geometry), the slope clamped to a finite half.
 Surface fragmentOf(ivec2 pixel, uint rep, uint mask) {
     Surface f;
     f.coverage = mask;
@@ -58,12 +59,16 @@ Surface fragmentOf(ivec2 pixel, uint rep, uint mask) {
     vec2 ndc = q * frame.extent.zw * 2.0 - 1.0;
     vec3 D = vec3(ndc.x / frame.projParams.x, ndc.y / frame.projParams.y, -1.0);
     float NoD = dot(f.normal, D);
-    float floorNoD = kMinCosine * length(D);
+    float floorNoD = kStreamingMinFacing * length(D);
     if (abs(NoD) < floorNoD) NoD = NoD >= 0.0 ? floorNoD : -floorNoD;
     f.dzdx = clamp(-f.zView * f.normal.x * (2.0 * frame.extent.z / frame.projParams.x) / NoD,
                    -kStreamingMaxDerivative, kStreamingMaxDerivative);
     f.dzdy = clamp(-f.zView * f.normal.y * (2.0 * frame.extent.w / frame.projParams.y) / NoD,
                    -kStreamingMaxDerivative, kStreamingMaxDerivative);
+    // The plane at the pixel centre (the lighting shades there): on the surface, not off it.
+    vec2 toCentre = vec2(0.5) - frame.samplePositions[rep].xy;
+    f.zView = clamp(f.zView + f.dzdx * toCentre.x + f.dzdy * toCentre.y, f.zView / kStreamingCentreDepthRange,
+                    f.zView * kStreamingCentreDepthRange);
     vec4 am = STREAMING_FETCH(gAlbedoMetal, pixel, rep);
     vec4 er = STREAMING_FETCH(gEmissiveRoughness, pixel, rep);
     f.albedo = am.rgb;
