@@ -11,6 +11,7 @@
 #include "shared/streaming.h"
 
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
 
 namespace agaa {
@@ -114,8 +115,10 @@ std::string StreamingCompression::storageCategory(const std::string& resourceNam
 std::vector<VariantChoice> StreamingCompression::variants() const {
     std::vector<VariantChoice> v = effectVariants(m_features, m_scene, m_settings.samples, 1);
     v.push_back({"surfaces", std::to_string(m_settings.surfaces), "setting --surfaces"});
-    v.push_back({"normal-threshold", std::to_string(m_settings.normalAngleDegrees) + " degrees",
-                 "setting --streaming-normal-angle"});
+    char angle[48];
+    std::snprintf(angle, sizeof angle, "%.4g degrees (cos %.4f)", m_settings.normalAngleDegrees,
+                  std::cos(m_settings.normalAngleDegrees * 3.14159265358979f / 180.0f));
+    v.push_back({"normal-threshold", angle, "setting --streaming-normal-angle"});
     v.push_back({"primitive-order",
                  "recorded fragments replayed in compute (no fragment-shader interlock path)",
                  "not built: lavapipe has no VK_EXT_fragment_shader_interlock"});

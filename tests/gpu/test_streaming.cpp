@@ -318,6 +318,27 @@ TEST(StreamingGpu, LostCoverageMemoryShadingEventsAndReruns) {
     agaa::test::expectNoValidationErrors(*device);
 }
 
+// The normal threshold is a setting: the authors' code's cosine 0.78539816 (38.24 degrees) merges
+// less than the paper's pi/4, so foliage's leaves keep more surfaces and the image changes.
+TEST(StreamingGpu, TheNormalThresholdIsASetting) {
+    auto device = agaa::test::makeValidatedDevice();
+    const eng::scene::Scene scene = eng::scene::loadBuiltin("foliage");
+    agaa::FrameRenderer renderer(*device, scene);
+    agaa::RenderRequest r;
+    r.method = "streaming";
+    r.settings.samples = 8;
+    r.view.width = r.view.height = 48;
+    const agaa::RenderResult paper = renderer.render(r);
+    r.settings.streamingNormalAngle =
+        std::acos(agaa::kStreamingPublicCodeNormalCos) * 180.0f / 3.14159265358979f;
+    const agaa::RenderResult code = renderer.render(r);
+    std::printf("[ measured ] foliage 48x48: events mean %.4f at 45 degrees, %.4f at %.2f degrees\n",
+                paper.shadingEventsMean, code.shadingEventsMean, r.settings.streamingNormalAngle);
+    EXPECT_NE(paper.display.rgba, code.display.rgba) << "the threshold changes which fragments merge";
+    EXPECT_GT(code.shadingEventsMean, paper.shadingEventsMean) << "a stricter threshold merges less";
+    agaa::test::expectNoValidationErrors(*device);
+}
+
 TEST(StreamingGpu, RefusesSettingsOutOfRange) {
     auto device = agaa::test::makeValidatedDevice();
     const eng::scene::Scene scene = eng::scene::loadBuiltin("plane");
