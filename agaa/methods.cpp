@@ -5,6 +5,7 @@
 #include "agaa/reference/reference.h"
 #include "agaa/sbaa/sbaa.h"
 #include "agaa/simple_complex/simple_complex.h"
+#include "agaa/streaming/streaming.h"
 
 #include <stdexcept>
 
@@ -30,7 +31,20 @@ const std::vector<MethodInfo>& knownMethods() {
         {"sbaa",
          "surface based anti-aliasing (Salvi and Vidimce 2012): the S most covered surfaces per pixel "
          "(--surfaces, default 4; similar planes merged) lit once each; the rest's coverage is lost",
-         true, false},
+         true,
+         false,
+         {},
+         6,
+         4},
+        {"streaming",
+         "streaming G-buffer compression (Kerzner and Salvi 2014): fragments merged in primitive order into "
+         "at most S depth-sorted surfaces per pixel (--surfaces 1..3, default 3; --streaming-normal-angle), "
+         "each lit once",
+         true,
+         false,
+         {},
+         3,
+         3},
         {"agaa",
          "aggregate G-buffer anti-aliasing: n visibility samples, c aggregates lit once each "
          "(--agaa-generation picks the path; auto by default)",
@@ -105,10 +119,19 @@ std::unique_ptr<Technique> createTechnique(const std::string& method, eng::vk::D
     if (method == "sbaa") {
         SbaaSettings s;
         s.samples = settings.samples;
-        s.surfaces = settings.surfaces;
+        if (settings.surfaces) s.surfaces = settings.surfaces;
         s.effects = settings.effects;
         s.sampleRateShading = settings.sampleRateShading;
         return std::make_unique<Sbaa>(device, scene, s);
+    }
+    if (method == "streaming") {
+        StreamingSettings s;
+        s.samples = settings.samples;
+        if (settings.surfaces) s.surfaces = settings.surfaces;
+        if (settings.streamingNormalAngle >= 0.0f) s.normalAngleDegrees = settings.streamingNormalAngle;
+        s.effects = settings.effects;
+        s.sampleRateShading = settings.sampleRateShading;
+        return std::make_unique<StreamingCompression>(device, scene, s);
     }
     if (method == "agaa" || method == "agaa-accumulate" || method == "agaa-samples") {
         AggregateSettings s;

@@ -18,6 +18,8 @@ struct MethodInfo {
     bool usesSamples = true;             // --samples matters
     bool usesAggregates = false;         // --aggregates matters
     std::vector<std::string> debugViews; // values --debug accepts for this method
+    uint32_t maxSurfaces = 0;            // --surfaces matters when > 0: S in 1..maxSurfaces
+    uint32_t defaultSurfaces = 0;        // S when --surfaces is not given
 };
 
 const std::vector<MethodInfo>& knownMethods();

@@ -62,7 +62,8 @@ FrameRenderer::~FrameRenderer() {
 Technique& FrameRenderer::technique(const RenderRequest& r) {
     std::string key =
         r.method + "/" + std::to_string(r.settings.samples) + "/" + std::to_string(r.settings.aggregates) +
-        "/s" + std::to_string(r.settings.surfaces) + "/" + r.settings.debug + "/" +
+        "/s" + std::to_string(r.settings.surfaces) + "/angle" +
+        std::to_string(r.settings.streamingNormalAngle) + "/" + r.settings.debug + "/" +
         std::to_string(r.settings.characteristicLength) + "/" + std::to_string(r.settings.seedThreshold) +
         (r.settings.pixelCentrePosition ? "/centre" : "") + "/" + r.settings.ndf + "/" +
         r.settings.agaaLighting + "/" + r.settings.agaaRouting + "/" + r.settings.agaaAtomics + "/" +

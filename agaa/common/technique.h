@@ -64,8 +64,11 @@ struct FrameTargets {
 struct MethodSettings {
     uint32_t samples = 8;    // n: visibility samples per pixel
     uint32_t aggregates = 2; // c: AGAA aggregates per pixel
-    uint32_t surfaces = 4;   // S: SBAA surfaces per pixel (1..6)
-    std::string debug;       // a method's debug view ("" = none), e.g. "aggregates" for agaa
+    // S: surfaces per pixel; 0 = the method's default (SBAA: 4 of 1..6; streaming: 3 of 1..3).
+    uint32_t surfaces = 0;
+    // Streaming compression's normal threshold alpha in degrees; negative = the paper's pi/4.
+    float streamingNormalAngle = -1.0f;
+    std::string debug; // a method's debug view ("" = none), e.g. "aggregates" for agaa
     // AGAA clustering (Equation 1): characteristic length k in metres and the seed threshold t;
     // negative = the method's documented default.
     float characteristicLength = -1.0f;

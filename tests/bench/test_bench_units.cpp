@@ -7,6 +7,7 @@
 #include "light_axis.h"
 #include "merge.h"
 #include "result_io.h"
+#include "shading_lanes.h"
 #include "sweep_plan.h"
 
 #include "agaa/methods.h"
@@ -16,6 +17,7 @@
 
 #include <cmath>
 #include <limits>
+#include <map>
 #include <set>
 
 namespace {
@@ -63,6 +65,44 @@ TEST(SweepPlan, EachMethodGetsExactlyTheSettingsItTakes) {
 
 TEST(SweepPlan, JobIdNamesSceneMethodAndSettings) {
     EXPECT_EQ(jobId("foliage", "agaa", 8, 2), "foliage__agaa__n8__c2");
+    EXPECT_EQ(jobId("foliage", "streaming", 8, 0, 3), "foliage__streaming__n8__c0__s3");
+}
+
+// Issue 15: the surfaces axis. Each method that takes S runs the sweep's values within its own
+// range (SBAA 1..6, streaming 1..3), or its default without --surfaces; the others ignore it.
+TEST(SweepPlan, SurfacesAxisKeepsEachMethodsRange) {
+    SweepSettings s;
+    s.scenes = {"plane"};
+    s.methods = {"sbaa", "streaming", "agaa"};
+    s.samples = {8};
+    s.aggregates = {2};
+    s.surfaces = {6, 1, 3};
+    std::vector<std::string> ids;
+    for (const Job& j : planSweep(s))
+        ids.push_back(j.id());
+    EXPECT_EQ(ids, (std::vector<std::string>{"plane__sbaa__n8__c0__s1", "plane__sbaa__n8__c0__s3",
+                                             "plane__sbaa__n8__c0__s6", "plane__streaming__n8__c0__s1",
+                                             "plane__streaming__n8__c0__s3", "plane__agaa__n8__c2"}));
+    s.surfaces.clear();
+    ids.clear();
+    for (const Job& j : planSweep(s))
+        ids.push_back(j.id());
+    EXPECT_EQ(ids, (std::vector<std::string>{"plane__sbaa__n8__c0__s4", "plane__streaming__n8__c0__s3",
+                                             "plane__agaa__n8__c2"}))
+        << "the defaults: SBAA 4, streaming 3";
+    s.methods = {"streaming"};
+    s.surfaces = {5, 6};
+    EXPECT_THROW(planSweep(s), std::invalid_argument) << "no value in streaming's 1..3";
+}
+
+TEST(ShadingLanes, EachLaneGroupCostsItsWorstPixel) {
+    // One row of 10 pixels in 8-lane groups: the first group's worst pixel has 5 events, the
+    // second (2 pixels) 2: (8 * 5 + 2 * 2) / 10.
+    const std::vector<uint32_t> events = {1, 1, 1, 1, 1, 1, 1, 5, 2, 0};
+    EXPECT_DOUBLE_EQ(worstLaneEventsPerPixel(events, 10, 1), 4.4);
+    EXPECT_DOUBLE_EQ(worstLaneEventsPerPixel(events, 10, 1, 1), 1.4) << "one lane: the mean";
+    EXPECT_DOUBLE_EQ(worstLaneEventsPerPixel({3, 3, 3, 3}, 2, 2), 3.0) << "uniform: the mean";
+    EXPECT_EQ(worstLaneEventsPerPixel(events, 11, 1), 0.0) << "fewer events than pixels: nothing measured";
 }
 
 TEST(SweepPlan, UnknownMethodIsRefusedByName) {
@@ -215,6 +255,44 @@ TEST(Claims, NotMeasuredWhenTheRunLacksAMethodAndARatioWhenItHasBoth) {
 } // namespace
 
 // Issue 15: the light-count axis.
+// Issue 15's claims from the peers' jobs: the error ratios against the high-rate truth, the shading
+// events' shares, SBAA's memory at the smallest S as good as AGAA, and the worst-lane events.
+TEST(Claims, PeersClaimsFromTheirJobs) {
+    auto job = [](const std::string& method, uint32_t c, uint32_t S, double rmse, double events, double worst,
+                  double bytes) {
+        JobResult r = sampleResult("foliage", method, 8, c);
+        r.job.surfaces = S;
+        r.errorHighRate = ErrorMetrics{rmse, 30.0, 0.9, 0.1};
+        r.shadingEventsMean = events;
+        r.shadingEventsWorstLane = worst;
+        r.shadingEventsMax = uint32_t(worst) + 1;
+        r.bytesPerPixel = bytes;
+        return r;
+    };
+    const std::vector<JobResult> run = {
+        job("agaa", 2, 0, 0.010, 1.0, 1.8, 100.0),      job("simple-complex", 0, 0, 0.005, 5.0, 7.2, 160.0),
+        job("sbaa", 0, 4, 0.020, 1.5, 3.0, 250.0),      job("sbaa", 0, 6, 0.008, 2.5, 5.0, 300.0),
+        job("streaming", 0, 2, 0.030, 1.2, 2.0, 250.0), job("streaming", 0, 3, 0.015, 1.4, 3.0, 300.0)};
+    std::map<std::string, std::string> measured;
+    for (const ClaimRow& row : measureClaims(run))
+        measured[row.claim] = row.measured + (row.perScene.empty() ? "" : " | " + row.perScene[0]);
+    auto starting = [&](const std::string& prefix) {
+        for (const auto& [claim, value] : measured)
+            if (claim.rfind(prefix, 0) == 0) return value;
+        return std::string("missing");
+    };
+    EXPECT_EQ(starting("AGAA (8x, c=2) looks as good as SBAA"), "0.50 | foliage: 0.50") << "0.010 / 0.020";
+    EXPECT_EQ(starting("Streaming compression needs 3"), "2.00 | foliage: 2.00") << "0.030 / 0.015";
+    EXPECT_EQ(starting("AGAA (8x, c=2) against streaming"), "0.67 | foliage: 0.67");
+    EXPECT_EQ(starting("AGAA (8x, c=2) shading events per pixel (mean) as a share of Simple"),
+              "20% | foliage: 20%");
+    EXPECT_EQ(starting("AGAA (8x, c=2) shading events per pixel (mean) as a share of SBAA"),
+              "40% | foliage: 40%");
+    EXPECT_EQ(starting("SBAA at iso-quality"), "3.00x | foliage: 3.00x at S=6")
+        << "S = 4 is worse than AGAA, S = 6 better: 300 / 100 B";
+    EXPECT_EQ(starting("Worst-lane shading events").substr(0, 4), "0.25") << "1.8 / 7.2";
+}
+
 TEST(LightAxis, SceneVariantsNameTheLightCountAndRoundTrip) {
     EXPECT_EQ(sceneWithLights("foliage", 0), "foliage") << "K = 0 keeps the ids of sweeps without the axis";
     EXPECT_EQ(sceneWithLights("foliage", 16), "foliage+l16");

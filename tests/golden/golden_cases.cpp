@@ -40,11 +40,12 @@ std::vector<GoldenScene> goldenScenes() {
 }
 
 std::vector<GoldenCase> goldenCases(const GoldenScene& scene) {
-    // Every method at the default settings (n = 8, c = 2, S = 4; no-AA and FXAA take one sample). "agaa"
-    // is the automatic path choice (samples at n <= 16).
+    // Every method at the default settings (n = 8, c = 2, S = 4 for SBAA and 3 for streaming; no-AA and FXAA
+    // take one sample). "agaa" is the automatic path choice (samples at n <= 16).
     std::vector<GoldenCase> cases = {
         {"reference", 8, 1},       {"noaa", 1, 1},         {"fxaa", 1, 1}, {"simple-complex", 8, 1},
         {"agaa-accumulate", 8, 2}, {"agaa-samples", 8, 2}, {"sbaa", 8, 1}, // sbaa: S = 4 (default)
+        {"streaming", 8, 1},                                               // streaming: S = 3 (default)
     };
     if (scene.source == SceneSource::Gltf) return cases;
     // c = 1 and 4 on both generation paths.

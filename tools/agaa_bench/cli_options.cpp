@@ -54,7 +54,8 @@ std::string joined(const std::vector<std::string>& v) {
 
 std::string usage() {
     return "usage: agaa-bench --out DIR [--scenes a,b] [--methods a,b] [--samples 8,32] [--aggregates 1,2]\n"
-           "                  [--size WxH] [--frames K] [--warmup K] [--temporal K] [--full] [--job I/N]\n"
+           "                  [--surfaces 1,2,3] [--size WxH] [--frames K] [--warmup K] [--temporal K] "
+           "[--full] [--job I/N]\n"
            "                  [--agaa-generation auto|accumulate|samples|coverage] [--sample-rate-shading "
            "on|off]\n"
            "                  [--extra-lights 0,4,16,64] [--validate] [--help]\n"
@@ -73,6 +74,8 @@ std::string usage() {
            "  --methods a,b     methods (default: all known)\n"
            "  --samples 8,32    n for methods that take it: 1, 4, 8, 16, 32 (default 8,16,32)\n"
            "  --aggregates 1,2  c for methods that take it: 1..4 (default 1,2)\n"
+           "  --surfaces 1,3    S for the methods that take it, 1..6, each method keeping the values in\n"
+           "                    its range (sbaa 1..6, streaming 1..3); default: each method's own (4, 3)\n"
            "  --size WxH        image size, 1..8192 each (default 160x90)\n"
            "  --frames K        timed frames per job, 1..1000 (default 3); times are medians with min/max\n"
            "  --warmup K        untimed frames first, 0..1000 (default 1)\n"
@@ -159,6 +162,10 @@ BenchOptions parseOptions(int argc, char** argv) {
             if (v != "on" && v != "off")
                 throw BadArgument("--sample-rate-shading '" + v + "' is not one of: on, off");
             s.sampleRateShading = v == "on";
+        } else if (a == "--surfaces") {
+            s.surfaces.clear();
+            for (const std::string& v : splitList(a, value()))
+                s.surfaces.push_back(parseUint(a, v, 1, 6));
         } else if (a == "--aggregates") {
             aggregates.emplace();
             for (const std::string& v : splitList(a, value()))

@@ -1,5 +1,7 @@
 #include "job_runner.h"
 
+#include "shading_lanes.h"
+
 #include "engine/frame/frame_constants.h"
 #include "engine/io/metrics.h"
 #include "engine/io/png.h"
@@ -61,10 +63,12 @@ void JobRunner::selectScene(const std::string& name) {
 }
 
 RenderRequest JobRunner::request(const std::string& method, uint32_t samples, uint32_t aggregates,
-                                 uint32_t width, uint32_t height, float orbitDegrees) const {
+                                 uint32_t width, uint32_t height, float orbitDegrees,
+                                 uint32_t surfaces) const {
     RenderRequest r;
     r.method = method;
     r.settings.samples = samples;
+    r.settings.surfaces = surfaces; // 0: the method's default
     if (aggregates != kAggregatesWhenUnused) r.settings.aggregates = aggregates;
     if (method == "agaa") r.settings.agaaGeneration = m_settings.agaaGeneration;
     r.settings.sampleRateShading = m_settings.sampleRateShading;
@@ -122,13 +126,13 @@ const std::vector<eng::io::ImageF>& JobRunner::pathTruth() {
 }
 
 std::vector<eng::io::ImageF> JobRunner::renderPath(const std::string& method, uint32_t samples,
-                                                   uint32_t aggregates) {
+                                                   uint32_t aggregates, uint32_t surfaces) {
     uint32_t w = 0, h = 0;
     temporalSize(m_settings, w, h);
     std::vector<eng::io::ImageF> frames;
     for (uint32_t t = 0; t < m_settings.temporalFrames; ++t) {
         RenderResult r = m_scene.renderer->render(
-            request(method, samples, aggregates, w, h, float(t) * m_settings.temporalStepDegrees));
+            request(method, samples, aggregates, w, h, float(t) * m_settings.temporalStepDegrees, surfaces));
         frames.push_back(srgbEncoded(r.display));
     }
     return frames;
@@ -139,15 +143,16 @@ JobResult JobRunner::run(const Job& job) {
     const auto start = std::chrono::steady_clock::now();
     const uint32_t validationBefore = m_device.validationErrors();
 
-    RenderRequest req =
-        request(job.method, job.samples, job.aggregates, m_settings.width, m_settings.height, 0.0f);
+    RenderRequest req = request(job.method, job.samples, job.aggregates, m_settings.width, m_settings.height,
+                                0.0f, job.surfaces);
     req.warmupFrames = m_settings.warmupFrames;
     req.timedFrames = m_settings.timedFrames;
     RenderResult rendered = m_scene.renderer->render(req);
     if (!eng::io::allFinite(rendered.hdr) || !eng::io::allFinite(rendered.display))
         throw std::runtime_error(job.id() + ": the frame contains NaN or Inf");
     std::vector<eng::io::ImageF> path;
-    if (m_settings.temporalFrames >= 2) path = renderPath(job.method, job.samples, job.aggregates);
+    if (m_settings.temporalFrames >= 2)
+        path = renderPath(job.method, job.samples, job.aggregates, job.surfaces);
     uint32_t validationErrors = m_device.validationErrors() - validationBefore;
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
@@ -174,6 +179,8 @@ JobResult JobRunner::run(const Job& job) {
     r.storageBytes = rendered.storageBytes;
     r.shadingEventsMean = rendered.shadingEventsMean;
     r.shadingEventsMax = rendered.shadingEventsMax;
+    r.shadingEventsWorstLane =
+        worstLaneEventsPerPixel(rendered.shadingEvents, m_settings.width, m_settings.height);
     r.culledPasses = rendered.culledPasses;
     r.validationEnabled = m_device.validationEnabled();
     r.validationErrors = validationErrors;

@@ -46,11 +46,12 @@ class JobRunner {
 
     void selectScene(const std::string& name);
     RenderRequest request(const std::string& method, uint32_t samples, uint32_t aggregates, uint32_t width,
-                          uint32_t height, float orbitDegrees) const;
+                          uint32_t height, float orbitDegrees, uint32_t surfaces = 0) const;
     const eng::io::ImageF& truth(uint32_t samples);
     const eng::io::ImageF* supersampledTruth(); // nullptr where it is not measured
     const std::vector<eng::io::ImageF>& pathTruth();
-    std::vector<eng::io::ImageF> renderPath(const std::string& method, uint32_t samples, uint32_t aggregates);
+    std::vector<eng::io::ImageF> renderPath(const std::string& method, uint32_t samples, uint32_t aggregates,
+                                            uint32_t surfaces);
     RenderResult renderTruth(const RenderRequest& request);
 
     eng::vk::Device& m_device;

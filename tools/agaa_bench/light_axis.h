@@ -16,6 +16,7 @@ namespace agaa::bench {
 struct LightAxisRow {
     std::string method;
     uint32_t samples = 0, aggregates = 0;
+    uint32_t surfaces = 0; // S of SBAA and streaming; 0 = none
     bool usesSamples = false, usesAggregates = false;
     std::vector<std::optional<double>> frameMs;     // per light count; nullopt: not in the run
     std::vector<std::optional<double>> ratioToPeer; // frame ms / Simple/Complex's at the same n and K

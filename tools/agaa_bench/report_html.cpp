@@ -80,11 +80,12 @@ std::string num(double v, int precision = 3) {
     return buf;
 }
 
-// "n8 c2", "n8", or "" for a method that takes neither.
+// "n8 c2", "n8 S3", "n8", or "" for a method that takes none.
 std::string setting(const Job& j) {
     std::string s;
     if (j.usesSamples) s += "n" + std::to_string(j.samples);
     if (j.usesAggregates) s += (s.empty() ? "" : " ") + std::string("c") + std::to_string(j.aggregates);
+    if (j.surfaces) s += (s.empty() ? "" : " ") + std::string("S") + std::to_string(j.surfaces);
     return s;
 }
 
@@ -142,7 +143,8 @@ json benchData(const std::vector<JobResult>& results) {
              {"method", r.job.method},
              {"label", label(r.job)},
              {"setting", setting(r.job)},
-             {"series", r.job.method + (r.job.usesAggregates ? " c" + std::to_string(r.job.aggregates) : "")},
+             {"series", r.job.method + (r.job.usesAggregates ? " c" + std::to_string(r.job.aggregates) : "") +
+                            (r.job.surfaces ? " S" + std::to_string(r.job.surfaces) : "")},
              {"n", r.job.samples},
              {"c", r.job.aggregates},
              {"usesSamples", r.job.usesSamples},
@@ -254,7 +256,9 @@ std::string jobsTable(const std::vector<JobResult>& results) {
         const std::optional<double> shading = shadingPassMs(r);
         h << "<tr><td>" << esc(r.job.scene) << "</td><td>" << esc(r.job.method) << "</td><td class=\"num\">"
           << (r.job.usesSamples ? std::to_string(r.job.samples) : "&ndash;") << "</td><td class=\"num\">"
-          << (r.job.usesAggregates ? std::to_string(r.job.aggregates) : "&ndash;")
+          << (r.job.usesAggregates ? std::to_string(r.job.aggregates)
+              : r.job.surfaces     ? "S = " + std::to_string(r.job.surfaces)
+                                   : std::string("&ndash;"))
           << "</td><td class=\"num\" title=\"" << esc(passes) << "\">" << num(r.frameMs.median)
           << "</td><td class=\"num\">" << num(r.frameMs.min) << ".." << num(r.frameMs.max)
           << "</td><td class=\"num\">" << (shading ? num(*shading) : "&ndash;") << "</td><td class=\"num\">"
@@ -318,7 +322,10 @@ std::string lightAxisSection(const std::vector<LightAxisTable>& tables,
         for (const LightAxisRow& r : t.rows) {
             h << "<tr><td>" << esc(r.method) << "</td><td class=\"num\">"
               << (r.usesSamples ? std::to_string(r.samples) : "&ndash;") << "</td><td class=\"num\">"
-              << (r.usesAggregates ? std::to_string(r.aggregates) : "&ndash;") << "</td>";
+              << (r.usesAggregates ? std::to_string(r.aggregates)
+                  : r.surfaces     ? "S = " + std::to_string(r.surfaces)
+                                   : std::string("&ndash;"))
+              << "</td>";
             for (size_t i = 0; i < t.lightCounts.size(); ++i) {
                 h << "<td class=\"num\">" << (r.frameMs[i] ? num(*r.frameMs[i], 2) : "&ndash;");
                 if (r.ratioToPeer[i])

@@ -93,6 +93,7 @@ json toJson(const JobResult& r) {
     j["method"] = r.job.method;
     j["samples"] = r.job.samples;
     j["aggregates"] = r.job.aggregates;
+    j["surfaces"] = r.job.surfaces;
     j["uses_samples"] = r.job.usesSamples;
     j["uses_aggregates"] = r.job.usesAggregates;
     j["plan_index"] = r.job.index;
@@ -111,7 +112,9 @@ json toJson(const JobResult& r) {
                    {"wall_s", r.wallSeconds}};
     j["bytes_per_pixel"] = r.bytesPerPixel;
     j["storage_bytes"] = r.storageBytes;
-    j["shading_events_per_pixel"] = {{"mean", r.shadingEventsMean}, {"max", r.shadingEventsMax}};
+    j["shading_events_per_pixel"] = {{"mean", r.shadingEventsMean},
+                                     {"max", r.shadingEventsMax},
+                                     {"worst_lane_mean", r.shadingEventsWorstLane}};
     j["passes_culled"] = r.culledPasses;
     j["validation"] = {{"enabled", r.validationEnabled}, {"errors", r.validationErrors}};
     j["error_vs_same_n_reference"] = errorJson(r.errorSameN);
@@ -142,6 +145,7 @@ JobResult jobFromJson(const json& j) {
         r.job.method = j.at("method").get<std::string>();
         r.job.samples = j.at("samples").get<uint32_t>();
         r.job.aggregates = j.at("aggregates").get<uint32_t>();
+        r.job.surfaces = j.value("surfaces", 0u); // absent in results written before the S axis
         r.job.usesSamples = j.at("uses_samples").get<bool>();
         r.job.usesAggregates = j.at("uses_aggregates").get<bool>();
         r.job.index = j.at("plan_index").get<size_t>();
@@ -163,6 +167,7 @@ JobResult jobFromJson(const json& j) {
         r.storageBytes = j.at("storage_bytes").get<std::map<std::string, uint64_t>>();
         r.shadingEventsMean = j.at("shading_events_per_pixel").at("mean").get<double>();
         r.shadingEventsMax = j.at("shading_events_per_pixel").at("max").get<uint32_t>();
+        r.shadingEventsWorstLane = j.at("shading_events_per_pixel").value("worst_lane_mean", 0.0);
         r.culledPasses = j.at("passes_culled").get<std::vector<std::string>>();
         r.validationEnabled = j.at("validation").at("enabled").get<bool>();
         r.validationErrors = j.at("validation").at("errors").get<uint32_t>();
@@ -230,7 +235,8 @@ void writeResultsCsv(const std::filesystem::path& file, const std::vector<JobRes
     s << "id,scene,method,samples,aggregates,samples_rendered,width,height,frames_timed,frame_ms_median,"
          "frame_ms_min,frame_ms_max,frame_ms_q1,frame_ms_q3,bytes_per_pixel,shading_events_mean,"
          "shading_events_max,rmse_same_n,psnr_same_n,ssim_same_n,p99_same_n,rmse_truth,psnr_truth,ssim_truth,"
-         "p99_truth,rmse_supersampled_truth,temporal_error_change,validation_errors,passes\n";
+         "p99_truth,rmse_supersampled_truth,temporal_error_change,validation_errors,passes,surfaces,"
+         "shading_events_worst_lane\n";
     for (const JobResult& r : results) {
         auto err = [&](const std::optional<ErrorMetrics>& e) {
             if (!e) return std::string(",,,");
@@ -249,7 +255,7 @@ void writeResultsCsv(const std::filesystem::path& file, const std::vector<JobRes
           << err(r.errorHighRate) << ","
           << (r.errorSupersampledTruth ? csvNumber(r.errorSupersampledTruth->rmse) : "") << ","
           << (r.temporal ? csvNumber(r.temporal->meanErrorChange) : "") << "," << r.validationErrors << ","
-          << csvField(passes) << "\n";
+          << csvField(passes) << "," << r.job.surfaces << "," << csvNumber(r.shadingEventsWorstLane) << "\n";
     }
     writeTextFile(file, s.str());
 }

@@ -59,6 +59,9 @@ struct JobResult {
     std::map<std::string, uint64_t> storageBytes;
     double shadingEventsMean = 0.0;
     uint32_t shadingEventsMax = 0;
+    // Figure 13's SIMD view: events per pixel when each 8-pixel lane group costs its worst pixel
+    // (shading_lanes.h); 0 in results written before it was measured.
+    double shadingEventsWorstLane = 0.0;
     std::vector<std::string> culledPasses;
     bool validationEnabled = false;
     uint32_t validationErrors = 0;

@@ -32,13 +32,14 @@ bool parseUint(const std::string& s, uint32_t& out) {
 
 } // namespace
 
-std::string jobId(const std::string& scene, const std::string& method, uint32_t samples,
-                  uint32_t aggregates) {
-    return scene + "__" + method + "__n" + std::to_string(samples) + "__c" + std::to_string(aggregates);
+std::string jobId(const std::string& scene, const std::string& method, uint32_t samples, uint32_t aggregates,
+                  uint32_t surfaces) {
+    return scene + "__" + method + "__n" + std::to_string(samples) + "__c" + std::to_string(aggregates) +
+           (surfaces ? "__s" + std::to_string(surfaces) : "");
 }
 
 std::string Job::id() const {
-    return jobId(scene, method, samples, aggregates);
+    return jobId(scene, method, samples, aggregates, surfaces);
 }
 
 std::string sceneWithLights(const std::string& scene, uint32_t extraLights) {
@@ -72,18 +73,31 @@ std::vector<Job> planSweep(const SweepSettings& settings) {
                 info.usesSamples ? samples : std::vector<uint32_t>{kSamplesWhenUnused};
             const std::vector<uint32_t> cs =
                 info.usesAggregates ? aggregates : std::vector<uint32_t>{kAggregatesWhenUnused};
+            std::vector<uint32_t> ss = {0};
+            if (info.maxSurfaces) {
+                ss.clear();
+                for (uint32_t s : sortedUnique(settings.surfaces))
+                    if (s >= 1 && s <= info.maxSurfaces) ss.push_back(s);
+                if (settings.surfaces.empty()) ss.push_back(info.defaultSurfaces);
+                if (ss.empty())
+                    throw std::invalid_argument("--surfaces: none of the values is in " + method + "'s 1.." +
+                                                std::to_string(info.maxSurfaces));
+            }
             for (uint32_t n : ns) {
                 for (uint32_t c : cs) {
-                    Job job;
-                    job.scene = scene;
-                    job.method = method;
-                    job.samples = n;
-                    job.aggregates = c;
-                    job.usesSamples = info.usesSamples;
-                    job.usesAggregates = info.usesAggregates;
-                    if (!seen.insert(job.id()).second) continue;
-                    job.index = jobs.size();
-                    jobs.push_back(job);
+                    for (uint32_t s : ss) {
+                        Job job;
+                        job.scene = scene;
+                        job.method = method;
+                        job.samples = n;
+                        job.aggregates = c;
+                        job.surfaces = s;
+                        job.usesSamples = info.usesSamples;
+                        job.usesAggregates = info.usesAggregates;
+                        if (!seen.insert(job.id()).second) continue;
+                        job.index = jobs.size();
+                        jobs.push_back(job);
+                    }
                 }
             }
         }

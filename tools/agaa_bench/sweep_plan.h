@@ -18,6 +18,9 @@ struct SweepSettings {
     std::vector<std::string> methods;
     std::vector<uint32_t> samples;    // n, for methods that take it
     std::vector<uint32_t> aggregates; // c, for methods that take it
+    // S, for methods that take it (SBAA, streaming), each kept to the method's range; empty: each
+    // method's default.
+    std::vector<uint32_t> surfaces;
     // The light-count axis (--extra-lights): every scene once per K, with K generated point lights.
     std::vector<uint32_t> extraLights = {0};
     uint32_t width = 160;
@@ -49,12 +52,14 @@ struct Job {
     uint32_t aggregates = kAggregatesWhenUnused;
     bool usesSamples = false;
     bool usesAggregates = false;
+    uint32_t surfaces = 0; // S of the methods that take it (SBAA, streaming); 0 = none
 
-    // "<scene>__<method>__n<N>__c<C>"
+    // "<scene>__<method>__n<N>__c<C>", then "__s<S>" for methods that take S
     std::string id() const;
 };
 
-std::string jobId(const std::string& scene, const std::string& method, uint32_t samples, uint32_t aggregates);
+std::string jobId(const std::string& scene, const std::string& method, uint32_t samples, uint32_t aggregates,
+                  uint32_t surfaces = 0);
 
 // The light-count axis: a scene with K generated point lights (engine/scene/extra_lights.h) is the
 // scene variant "<scene>+l<K>" in job ids, results and the report; K = 0 is the scene itself, so
@@ -68,8 +73,10 @@ struct SceneVariant {
 SceneVariant parseSceneVariant(const std::string& name);
 
 // Scenes in the given order, each once per extra-light count (ascending); per scene, methods in the given
-// order; per method, n ascending then c ascending. Methods that take neither n nor c get one job per scene.
-// Duplicates are dropped. Throws std::invalid_argument for an unknown method.
+// order; per method, n ascending then c ascending, then S ascending (methods that take S: the
+// sweep's surfaces within the method's range, or its default). Methods that take neither n nor c
+// get one job per scene. Duplicates are dropped. Throws std::invalid_argument for an unknown method
+// or for surfaces none of which a method that takes S allows.
 std::vector<Job> planSweep(const SweepSettings& settings);
 
 // --job I/N: run only the jobs whose plan index i satisfies i % N == I.

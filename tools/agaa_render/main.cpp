@@ -59,7 +59,7 @@ struct Options {
 
 const char* kUsage =
     "usage: agaa-render [--scene FILE | --builtin NAME] [--method NAME] [--samples N] [--aggregates C]\n"
-    "                   [--surfaces S]\n"
+    "                   [--surfaces S] [--streaming-normal-angle DEG]\n"
     "                   [--width W] [--height H] [--camera I] [--exposure auto|E] [--ev100 V] [--out PREFIX] "
     "[--debug "
     "VIEW]\n"
@@ -80,7 +80,9 @@ const char* kUsage =
     "  --method NAME     anti-aliasing method (default: reference)\n"
     "  --samples N       visibility samples per pixel: 1, 4 native; 8, 16, 32 emulated (default 8)\n"
     "  --aggregates C    AGAA aggregates per pixel, 1..4 (default 2)\n"
-    "  --surfaces S      SBAA surfaces kept per pixel, 1..6 (default 4)\n"
+    "  --surfaces S      surfaces kept per pixel: sbaa 1..6 (default 4), streaming 1..3 (default 3)\n"
+    "  --streaming-normal-angle DEG  streaming's merge threshold on normals, degrees in (0, 90]\n"
+    "                    (default 45: the paper's pi/4; the authors' code uses cos = 0.785, about 38.2)\n"
     "  --width/--height  image size in pixels, 1..8192 (default 256x256)\n"
     "  --camera I        scene camera index (default 0)\n"
     "  --exposure auto|E  linear exposure E (1e-6..1e6), or auto: metered from the log-average luminance\n"
@@ -202,6 +204,8 @@ Options parse(int argc, char** argv) {
             r.settings.aggregates = parseUint(a, value(), 1, 4);
         else if (a == "--surfaces")
             r.settings.surfaces = parseUint(a, value(), 1, 6);
+        else if (a == "--streaming-normal-angle")
+            r.settings.streamingNormalAngle = parseFloat(a, value(), 1e-3f, 90.0f);
         else if (a == "--debug")
             r.settings.debug = value();
         else if (a == "--characteristic-length")
@@ -345,7 +349,10 @@ nlohmann::json statsJson(const Options& o, const agaa::RenderResult& r, const en
     j["height"] = o.request.view.height;
     j["device"] = device.caps().deviceName;
     j["extra_lights"] = o.extraLights;
-    if (o.request.method == "sbaa") j["surfaces"] = o.request.settings.surfaces;
+    if (o.request.method == "sbaa" || o.request.method == "streaming")
+        j["surfaces"] = o.request.settings.surfaces  ? o.request.settings.surfaces
+                        : o.request.method == "sbaa" ? 4u
+                                                     : 3u;
     if (r.lostCoverageFraction)
         j["lost_coverage"] = {{"fraction_of_samples", *r.lostCoverageFraction},
                               {"pixels", r.pixelsWithLostCoverage}};

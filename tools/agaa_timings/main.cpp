@@ -9,8 +9,8 @@
 //                [--sample-rate-shading on|off] [--extra-lights K[,K...]]
 // --extra-lights: each scene once per K, with K generated point lights added
 // (engine/scene/extra_lights.h); results of K > 0 are keyed "<scene>+l<K>".
-// A job is METHOD[:N[:C]][:KEY=VALUE...] (sbaa:N:S: S surfaces); AGAA's keys are its settings (lighting,
-// routing, atomics, reduce, distance, ndf, generation, curvature), e.g.
+// A job is METHOD[:N[:C]][:KEY=VALUE...] (sbaa:N:S, streaming:N:S: S surfaces); AGAA's keys are its settings
+// (lighting, routing, atomics, reduce, distance, ndf, generation, curvature), e.g.
 // agaa:8:2:lighting=registers:routing=fragment. Every method whose name starts with "agaa" (agaa,
 // agaa-accumulate, agaa-samples) is an AGAA job.
 // --sample-rate-shading applies to every job that fills a per-sample G-buffer.
@@ -49,12 +49,13 @@ namespace {
 struct Job {
     std::string method;
     uint32_t samples = 8, aggregates = 2;
-    uint32_t surfaces = 4;                                    // sbaa:N:S
+    uint32_t surfaces = 0; // sbaa:N:S, streaming:N:S; 0 = the method's default (4, 3)
     std::vector<std::pair<std::string, std::string>> options; // AGAA KEY=VALUE settings
     bool isAgaa() const { return method.rfind("agaa", 0) == 0; }
     std::string label() const {
         std::string l = method + " n=" + std::to_string(samples);
-        if (method == "sbaa") return l + " S=" + std::to_string(surfaces);
+        if (method == "sbaa" || method == "streaming")
+            return l + " S=" + std::to_string(surfaces ? surfaces : method == "sbaa" ? 4u : 3u);
         if (!isAgaa()) return l;
         l += " c=" + std::to_string(aggregates);
         for (const auto& [k, v] : options)
@@ -118,6 +119,8 @@ Job parseJob(const std::string& text) {
     if (i < parts.size() && parts[i].find('=') == std::string::npos) {
         if (j.method == "sbaa")
             j.surfaces = number("--jobs surfaces", parts[i++], 1, 6); // sbaa:N:S
+        else if (j.method == "streaming")
+            j.surfaces = number("--jobs surfaces", parts[i++], 1, 3); // streaming:N:S
         else
             j.aggregates = number("--jobs aggregates", parts[i++], 1, 4);
     }
