@@ -194,9 +194,10 @@ std::string Controls::help() {
         "(every setting is also "
         "in "
         "the UI panel)\nmethods:";
+    // Every method; keys 1..9 select the first nine, the rest are in the UI panel only.
     const auto& methods = knownMethods();
-    for (size_t i = 0; i < methods.size() && i < 9; ++i)
-        s += " " + std::to_string(i + 1) + "=" + methods[i].name;
+    for (size_t i = 0; i < methods.size(); ++i)
+        s += " " + (i < 9 ? std::to_string(i + 1) + "=" : std::string("(panel)")) + methods[i].name;
     return s;
 }
 
