@@ -3,9 +3,9 @@
 // scroll to dolly) and the method/setting keys (1..9 method, S samples, A aggregates, D debug
 // view, R reset, P screenshot). Pure logic over InputEvents: no window, no device.
 
-#include "agaa/common/frame_renderer.h"
 #include "engine/scene/scene.h"
 #include "samples/viewer/window.h"
+#include "tools/harness/frame_renderer.h"
 
 #include <glm/glm.hpp>
 

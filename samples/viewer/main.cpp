@@ -6,7 +6,6 @@
 // Exit codes: 0 ok; 1 validation errors or an internal failure; 2 bad command line, scene or
 // setting; 3 no window (GLFW cannot start: no display) or a missing device capability.
 
-#include "agaa/common/frame_renderer.h"
 #include "agaa/methods.h"
 #include "engine/io/io_error.h"
 #include "engine/io/png.h"
@@ -17,6 +16,7 @@
 #include "samples/viewer/controls.h"
 #include "samples/viewer/swapchain.h"
 #include "samples/viewer/window.h"
+#include "tools/harness/frame_renderer.h"
 
 #include <algorithm>
 #include <chrono>

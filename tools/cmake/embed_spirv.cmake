@@ -2,7 +2,8 @@
 # they run from any directory. A shader compile error fails the build.
 #
 #   agaa_embed_shaders(TARGET name SOURCES a/b.comp ...)
-# creates an INTERFACE library `name` whose include directory holds, for each
+# creates an INTERFACE library `name` whose include directory (${PROJECT_BINARY_DIR}/generated/<name>:
+# the project's own binary folder, also under a host's add_subdirectory) holds, for each
 # shaders/glsl/<dir>/<pass>.<stage>, a header shaders/<dir>/<pass>_<stage>.h defining
 #   inline constexpr uint32_t k<Dir><Pass><Stage>[] (the SPIR-V words)
 # e.g. shaders/glsl/reference/lighting.comp -> #include "shaders/reference/lighting_comp.h", kReferenceLightingComp.
@@ -26,7 +27,7 @@ endfunction()
 function(agaa_embed_shaders)
   cmake_parse_arguments(ARG "" "TARGET" "SOURCES" ${ARGN})
   set(glsl_root ${PROJECT_SOURCE_DIR}/shaders/glsl)
-  set(out_root ${CMAKE_BINARY_DIR}/generated)
+  set(out_root ${PROJECT_BINARY_DIR}/generated/${ARG_TARGET})
   set(headers "")
   # AGAA_TEST_PERTURB (top-level CMakeLists.txt): a deliberate shader error for the suite to catch.
   set(perturb "")
@@ -59,5 +60,5 @@ function(agaa_embed_shaders)
   add_custom_target(${ARG_TARGET}_spirv DEPENDS ${headers})
   add_library(${ARG_TARGET} INTERFACE)
   add_dependencies(${ARG_TARGET} ${ARG_TARGET}_spirv)
-  target_include_directories(${ARG_TARGET} INTERFACE ${out_root} ${glsl_root})
+  target_include_directories(${ARG_TARGET} INTERFACE $<BUILD_INTERFACE:${out_root}> $<BUILD_INTERFACE:${glsl_root}>)
 endfunction()
