@@ -31,6 +31,9 @@ agaa_require(STB_LIBRARY "stb library" "libstb-dev")
 add_library(agaa_stb INTERFACE)
 target_include_directories(agaa_stb SYSTEM INTERFACE ${STB_INCLUDE_DIR})
 target_link_libraries(agaa_stb INTERFACE ${STB_LIBRARY})
+# Installed with the package: agaa::io and agaa::scene link it privately, which a static library
+# still passes on to the host's link.
+set_target_properties(agaa_stb PROPERTIES EXPORT_NAME stb)
 
 find_package(OpenEXR CONFIG QUIET)
 agaa_require(OpenEXR_FOUND "OpenEXR" "libopenexr-dev")
@@ -47,4 +50,6 @@ if(AGAA_BUILD_VIEWER)
 endif()
 
 # Chart.js for the self-contained report (inlined, never fetched).
-find_file(AGAA_CHARTJS chart.min.js PATHS /usr/share/javascript/chart.js NO_DEFAULT_PATH)
+if(AGAA_BUILD_TOOLS)
+  find_file(AGAA_CHARTJS chart.min.js PATHS /usr/share/javascript/chart.js NO_DEFAULT_PATH)
+endif()
