@@ -3,7 +3,7 @@
 # repository path reaches it), builds it with the build's own compiler and runs it: one small
 # frame on lavapipe under the validation layer, which must be validation-clean and non-blank.
 #   cmake -DBUILD=<build> -DSOURCE=<repo> -DWORK=<folder> -DCXX=<compiler> [-DLAUNCHER=ccache]
-#         -DGENERATOR=<generator> -P package_test.cmake
+#         -DGENERATOR=<generator> [-DCXX_FLAGS=...] [-DLINKER_FLAGS=...] -P package_test.cmake
 foreach(var BUILD SOURCE WORK CXX GENERATOR)
   if(NOT DEFINED ${var})
     message(FATAL_ERROR "package_test.cmake: -D${var}= is missing")
@@ -43,7 +43,8 @@ if(NOT at EQUAL -1)
 endif()
 
 set(args -S ${SOURCE}/tests/package/consumer -B ${WORK}/build -G ${GENERATOR} -DCMAKE_BUILD_TYPE=Release
-         -DCMAKE_PREFIX_PATH=${prefix} -DCMAKE_CXX_COMPILER=${CXX})
+         -DCMAKE_PREFIX_PATH=${prefix} -DCMAKE_CXX_COMPILER=${CXX} "-DCMAKE_CXX_FLAGS=${CXX_FLAGS}"
+         "-DCMAKE_EXE_LINKER_FLAGS=${LINKER_FLAGS}")
 if(LAUNCHER)
   list(APPEND args -DCMAKE_CXX_COMPILER_LAUNCHER=${LAUNCHER})
 endif()
