@@ -31,6 +31,9 @@ agaa_require(STB_LIBRARY "stb library" "libstb-dev")
 add_library(agaa_stb INTERFACE)
 target_include_directories(agaa_stb SYSTEM INTERFACE ${STB_INCLUDE_DIR})
 target_link_libraries(agaa_stb INTERFACE ${STB_LIBRARY})
+# Installed with the package: agaa::io and agaa::scene link it privately, which a static library
+# still passes on to the host's link.
+set_target_properties(agaa_stb PROPERTIES EXPORT_NAME stb)
 
 find_package(OpenEXR CONFIG QUIET)
 agaa_require(OpenEXR_FOUND "OpenEXR" "libopenexr-dev")
@@ -47,7 +50,7 @@ set(AGAA_VIEWER_ENABLED OFF)
 if(NOT AGAA_BUILD_VIEWER MATCHES "^(AUTO|ON|OFF)$")
   message(FATAL_ERROR "AGAA_BUILD_VIEWER=${AGAA_BUILD_VIEWER}: allowed values are AUTO, ON, OFF")
 endif()
-if(NOT AGAA_BUILD_VIEWER STREQUAL "OFF")
+if(NOT AGAA_BUILD_VIEWER STREQUAL "OFF" AND AGAA_BUILD_TOOLS AND AGAA_BUILD_SAMPLES)
   find_package(glfw3 CONFIG QUIET)
   find_path(IMGUI_INCLUDE_DIR imgui.h PATH_SUFFIXES imgui)
   find_library(IMGUI_LIBRARY imgui)
@@ -65,4 +68,6 @@ if(NOT AGAA_BUILD_VIEWER STREQUAL "OFF")
 endif()
 
 # Chart.js for the self-contained report (inlined, never fetched).
-find_file(AGAA_CHARTJS chart.min.js PATHS /usr/share/javascript/chart.js NO_DEFAULT_PATH)
+if(AGAA_BUILD_TOOLS)
+  find_file(AGAA_CHARTJS chart.min.js PATHS /usr/share/javascript/chart.js NO_DEFAULT_PATH)
+endif()

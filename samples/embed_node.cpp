@@ -4,13 +4,7 @@
 // the host can keep drawing after it), and the graph records every barrier in between.
 //   embed_node [SCENE]   renders a builtin scene (default: railings) at 64x64 and prints the
 //                        passes that ran; exit status 1 on a validation error.
-#include "agaa/aggregate/aggregate.h"
-#include "agaa/common/frame_inputs.h"
-#include "agaa/common/host_targets.h"
-#include "engine/frame/frame_runner.h"
-#include "engine/scene/scenegen.h"
-#include "engine/vk/check.h"
-#include "engine/vk/device_setup.h"
+#include <agaa/agaa.h>
 
 #include <cstdio>
 

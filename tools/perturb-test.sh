@@ -1,8 +1,11 @@
 #!/usr/bin/env bash
 # Proof that the golden suite can fail (issue 17): builds test_golden twice with a deliberate
-# shader error (AGAA_TEST_PERTURB, top-level CMakeLists.txt), each in its own build folder
-# (build/perturb-<variant>, incremental after the first run), runs the golden test against the
-# stored images and asserts what it must catch:
+# shader error (AGAA_TEST_PERTURB, top-level CMakeLists.txt), runs the golden test against the
+# stored images and asserts what it must catch. Both variants reuse one build folder, the plain
+# one of tools/test.sh ($AGAA_BUILD_DIR, default build/test; configured as tools/test.sh does when
+# it does not exist yet): reconfigured per variant, it recompiles the shaders and only the sources
+# that embed a shader whose SPIR-V changed, then relinks test_golden; on exit (also on failure) it
+# is reconfigured with AGAA_TEST_PERTURB=none and test_golden rebuilt, so it is left a plain build.
 #   brdf      every BRDF 1 % darker: the reference, no-AA, Simple/Complex and both AGAA paths
 #             fail on every built-in scene (they are all lit);
 #   metadata  sample 0's aggregate-id bit flipped in every pixel (c >= 2): every AGAA c = 2 and
@@ -21,8 +24,18 @@ export VK_ICD_FILENAMES="${VK_ICD_FILENAMES:-$lvp}"
 variants=("$@")
 [ ${#variants[@]} -gt 0 ] || variants=(brdf metadata)
 builtins="furball metal foliage bamboo railings plane default spikes"
+build="${AGAA_BUILD_DIR:-build/test}"
+case "$build" in /*) ;; *) build="$root/$build" ;; esac
 tmp="$(mktemp -d)"
-trap 'rm -rf "$tmp"' EXIT
+restore() {
+  echo "perturb-test: restoring $build (AGAA_TEST_PERTURB=none)"
+  cmake -S . -B "$build" -DAGAA_TEST_PERTURB=none >/dev/null
+  cmake --build "$build" --target test_golden -j"$(nproc)" >/dev/null
+}
+trap 'status=$?; rm -rf "$tmp"; restore || status=1; exit $status' EXIT
+if [ ! -f "$build/CMakeCache.txt" ]; then
+  cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DAGAA_BUILD_TESTS=ON -DAGAA_WERROR=ON >/dev/null
+fi
 fail=0
 check() { # check DESCRIPTION COUNT: COUNT must be 0
   if [ "$2" != 0 ]; then
@@ -31,10 +44,10 @@ check() { # check DESCRIPTION COUNT: COUNT must be 0
   fi
 }
 for variant in "${variants[@]}"; do
-  build="$root/build/perturb-$variant"
-  cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release -DAGAA_BUILD_TESTS=ON \
-    -DAGAA_TEST_PERTURB="$variant" >/dev/null
-  cmake --build "$build" --target test_golden -j2 >/dev/null
+  start=$SECONDS
+  cmake -S . -B "$build" -DAGAA_TEST_PERTURB="$variant" >/dev/null
+  cmake --build "$build" --target test_golden -j"$(nproc)" >/dev/null
+  echo "perturb-test: $variant: rebuilt test_golden in $((SECONDS - start)) s"
   for shard in 0 1; do
     GTEST_TOTAL_SHARDS=2 GTEST_SHARD_INDEX=$shard "$build/tests/golden/test_golden" >"$tmp/$variant.$shard" 2>&1 &
   done
@@ -43,7 +56,7 @@ for variant in "${variants[@]}"; do
     wait "$job" || status=1
   done
   grep -h '^\[ golden \]' "$tmp/$variant.0" "$tmp/$variant.1" | sed 's/^\[ golden \] //' | LC_ALL=C sort >"$tmp/$variant"
-  cp "$tmp/$variant" "$build/perturb-results.txt" # every golden's numbers, for the record
+  cp "$tmp/$variant" "$build/perturb-results-$variant.txt" # every golden's numbers, for the record
   total=$(wc -l <"$tmp/$variant")
   failed=$(grep -c ' FAIL$' "$tmp/$variant" || true)
   echo "perturb-test: $variant: $failed of $total goldens fail"
@@ -63,7 +76,7 @@ for variant in "${variants[@]}"; do
     wrong=$(grep -vE "^[^/]+/agaa-[a-z]+-n[0-9]+-c[24]:" "$tmp/$variant" | grep -c ' FAIL$' || true)
     check "metadata: goldens the metadata cannot reach failed" "$wrong"
   fi
-  echo "perturb-test: $variant: the goldens that still pass are listed in $build/perturb-results.txt"
+  echo "perturb-test: $variant: the goldens that still pass are listed in $build/perturb-results-$variant.txt"
   grep ' PASS$' "$tmp/$variant" | cut -d: -f1 | cut -d/ -f1 | uniq -c | sed 's/^/  still passing, per scene: /' || true
 done
 exit "$fail"

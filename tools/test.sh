@@ -13,12 +13,30 @@
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
 cd "$root"
-# --browser: Chromium for the report's browser test (label `browser`), part of the whole suite;
-# --fuzz: clang and its runtime for the loader's fuzz stage.
-tools/deps.sh --browser --fuzz --validator
 # Software Vulkan only: a machine with a GPU still tests the same driver CI uses.
 lvp="$(ls /usr/share/vulkan/icd.d/lvp_icd.*.json 2>/dev/null | head -n1)"
 export VK_ICD_FILENAMES="${VK_ICD_FILENAMES:-$lvp}"
+
+# Every stage's wall time, printed when it ends and again as a summary when the script exits
+# (also on failure), so CI time can be attributed: stage NAME COMMAND...
+stage_times=()
+stage() {
+  local name="$1" start=$SECONDS
+  shift
+  "$@"
+  stage_times+=("$(printf '%-22s %5d s' "$name" $((SECONDS - start)))")
+  echo "test.sh: stage $name took $((SECONDS - start)) s"
+}
+stage_summary() {
+  [ ${#stage_times[@]} -gt 0 ] || return 0
+  echo "test.sh: stage times (total ${SECONDS} s):"
+  printf '  %s\n' "${stage_times[@]}"
+}
+trap stage_summary EXIT
+
+# --browser: Chromium for the report's browser test (label `browser`), part of the whole suite;
+# --fuzz: clang and its runtime for the loader's fuzz stage.
+stage deps tools/deps.sh --browser --fuzz --validator
 
 # The suite built with AddressSanitizer and UndefinedBehaviorSanitizer (GCC, -O1, assertions on).
 # Leak detection is on for the CPU tests. The GPU tests run with it off: the Vulkan driver and
@@ -28,19 +46,20 @@ export VK_ICD_FILENAMES="${VK_ICD_FILENAMES:-$lvp}"
 # minute-long loop) and the browser test (Chromium, not our code) are left to the plain build.
 sanitize() {
   local build="${AGAA_SANITIZE_BUILD_DIR:-build/sanitize}"
-  cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Debug -DAGAA_BUILD_TESTS=ON \
+  stage sanitize-configure cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Debug -DAGAA_BUILD_TESTS=ON \
     "-DCMAKE_CXX_FLAGS=-O1 -fsanitize=address,undefined -fno-sanitize-recover=undefined -fno-omit-frame-pointer" \
     "-DCMAKE_EXE_LINKER_FLAGS=-fsanitize=address,undefined" >/dev/null
-  cmake --build "$build" -j"$(nproc)"
+  stage sanitize-build cmake --build "$build" -j"$(nproc)"
   export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
   if [ "$#" -gt 0 ]; then
-    ASAN_OPTIONS=detect_leaks=0 ctest --test-dir "$build" --output-on-failure -j2 "$@"
+    ASAN_OPTIONS=detect_leaks=0 stage sanitize-ctest ctest --test-dir "$build" --output-on-failure -j2 "$@"
     return
   fi
   echo "sanitize: CPU tests, leak detection on"
-  ASAN_OPTIONS=detect_leaks=1 ctest --test-dir "$build" --output-on-failure -j2 -L cpu
+  ASAN_OPTIONS=detect_leaks=1 stage sanitize-ctest-cpu ctest --test-dir "$build" --output-on-failure -j2 -L cpu
   echo "sanitize: GPU, hard-case and command-line tests"
-  ASAN_OPTIONS=detect_leaks=0 ctest --test-dir "$build" --output-on-failure -j2 -LE "cpu|soak|browser"
+  ASAN_OPTIONS=detect_leaks=0 stage sanitize-ctest-gpu \
+    ctest --test-dir "$build" --output-on-failure -j2 -LE "cpu|soak|browser"
 }
 
 if [ "${1:-}" = "--sanitize" ]; then
@@ -50,20 +69,23 @@ if [ "${1:-}" = "--sanitize" ]; then
 fi
 
 build="${AGAA_BUILD_DIR:-build/test}"
-cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DAGAA_BUILD_TESTS=ON -DAGAA_WERROR=ON >/dev/null
-cmake --build "$build" -j"$(nproc)"
-ctest --test-dir "$build" --output-on-failure -j2 "$@"
+# AGAA_TEST_PERTURB=none: a perturbation run (tools/perturb-test.sh reconfigures this folder)
+# that was killed before it restored the folder must not leave a perturbed build behind.
+stage configure cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DAGAA_BUILD_TESTS=ON -DAGAA_WERROR=ON \
+  -DAGAA_TEST_PERTURB=none >/dev/null
+stage build cmake --build "$build" -j"$(nproc)"
+stage ctest ctest --test-dir "$build" --output-on-failure -j2 "$@"
 if [ "$#" -eq 0 ]; then
-  # Two small builds of test_golden with a deliberate shader error each (build/perturb-*,
-  # incremental): the golden suite must fail on both.
+  # The same build folder with a deliberate shader error, one variant after the other: only the
+  # shaders and the sources that embed a changed one rebuild; the golden suite must fail on both.
   if [ "${AGAA_PERTURB:-1}" != 0 ]; then
-    tools/perturb-test.sh
+    AGAA_BUILD_DIR="$build" stage perturb tools/perturb-test.sh
   fi
   if [ "${AGAA_SANITIZE:-1}" != 0 ]; then
     sanitize
   fi
   # A bounded libFuzzer run of the glTF loader under ASan + UBSan (tools/fuzz.sh).
   if [ "${AGAA_FUZZ_SECONDS:-120}" != 0 ]; then
-    tools/fuzz.sh "${AGAA_FUZZ_SECONDS:-120}"
+    stage fuzz tools/fuzz.sh "${AGAA_FUZZ_SECONDS:-120}"
   fi
 fi

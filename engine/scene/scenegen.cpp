@@ -1,6 +1,5 @@
 #include "engine/scene/scenegen.h"
 
-#include "engine/scene/adversarial_scenes.h"
 #include "engine/scene/camera_framing.h"
 #include "engine/scene/gltf_loader.h"
 #include "engine/scene/scene_subjects.h"
@@ -184,8 +183,6 @@ std::vector<std::string> sceneKinds() {
 }
 
 tinygltf::Model generateScene(std::string_view kindName, const GenOptions& options) {
-    if (isHardSceneKind(kindName))
-        return generateHardScene(kindName, options); // tests/hard, not in sceneKinds()
     const KindName* found = nullptr;
     for (const KindName& k : kKinds) {
         if (kindName == k.name) {

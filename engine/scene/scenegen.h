@@ -25,8 +25,8 @@ struct GenOptions {
 
 inline constexpr float kMaxDensity = 8.0f;
 
-// furball, metal, foliage, bamboo, railings, plane, default, spikes. generateScene and loadBuiltin also
-// accept the adversarial hard-* kinds (adversarial_scenes.h: hardSceneKinds()), which this list leaves out.
+// furball, metal, foliage, bamboo, railings, plane, default, spikes. The adversarial hard-* test
+// scenes live outside the package (tools/scenes/adversarial_scenes.h: loadTestScene).
 std::vector<std::string> sceneKinds();
 
 // Throws SceneError for an unknown kind (listing the known ones) or a density

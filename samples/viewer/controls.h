@@ -5,9 +5,9 @@
 // device.
 
 #include "agaa/common/effects.h"
-#include "agaa/common/frame_renderer.h"
 #include "engine/scene/scene.h"
 #include "samples/viewer/window.h"
+#include "tools/harness/frame_renderer.h"
 
 #include <glm/glm.hpp>
 

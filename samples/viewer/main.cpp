@@ -20,6 +20,8 @@
 #include "samples/viewer/ui_panel.h"
 #include "samples/viewer/view_renderer.h"
 #include "samples/viewer/window.h"
+#include "tools/harness/frame_renderer.h"
+#include "tools/scenes/adversarial_scenes.h"
 
 #include <algorithm>
 #include <chrono>
@@ -259,7 +261,7 @@ struct Script {
 
 int run(const Options& o) {
     eng::scene::Scene scene =
-        o.sceneFile ? eng::scene::loadGltf(*o.sceneFile) : eng::scene::loadBuiltin(o.builtin);
+        o.sceneFile ? eng::scene::loadGltf(*o.sceneFile) : eng::scene::loadTestScene(o.builtin);
     for (const std::string& w : scene.stats.warnings)
         std::cerr << "warning: " << w << "\n";
 

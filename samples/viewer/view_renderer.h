@@ -5,7 +5,7 @@
 // swapchain format does the sRGB encode), the UI pass on top, and the present transition. Nothing is read
 // back per frame; the shading-event count (for the stats) and a screenshot only when asked for.
 
-#include "agaa/common/frame_renderer.h"
+#include "tools/harness/frame_renderer.h"
 #include "agaa/common/technique.h"
 #include "engine/frame/frame_runner.h"
 #include "engine/frame/gpu_scene.h"

@@ -2,9 +2,9 @@
 // Constants for CPU tests of the AGAA kernels: a 64x64 view from the origin down -Z.
 
 #include "agaa/aggregate/agaa_constants.h"
-#include "agaa/common/frame_renderer.h"
 #include "engine/frame/frame_constants.h"
 #include "engine/frame/sample_pattern.h"
+#include "tools/harness/frame_renderer.h"
 
 namespace agaa::test {
 

@@ -3,15 +3,15 @@
 
 #include "agaa/aggregate/aggregate.h"
 #include "agaa/aggregate/clustering.h"
-#include "agaa/common/frame_renderer.h"
 #include "engine/frame/readback.h"
 #include "engine/io/image.h"
 #include "engine/io/metrics.h"
 #include "engine/io/tone_map.h"
-#include "engine/scene/scenegen.h"
 #include "gpu_test_support.h"
 #include "shared/ag_buffer.h"
 #include "shared/clustering.h"
+#include "tools/harness/frame_renderer.h"
+#include "tools/scenes/adversarial_scenes.h"
 
 #include <gtest/gtest.h>
 
@@ -65,7 +65,7 @@ TEST(AgaaClusteringGpu, MetadataMatchesTheCpuReferenceBitForBit) {
     for (const ClusterCase& k : cases) {
         if (loaded != k.scene) {
             renderer.reset();
-            scene = eng::scene::loadBuiltin(k.scene);
+            scene = eng::scene::loadTestScene(k.scene);
             renderer = std::make_unique<agaa::FrameRenderer>(*device, scene);
             loaded = k.scene;
         }
@@ -142,7 +142,7 @@ TEST(AgaaGpu, AccumulationMatchesACpuReplayOfTheSameFragments) {
     constexpr uint32_t kRecordWords = 3 + shared::kQuantizedFields + 8;
     // furball and foliage accumulate Toksvig vectors, railings (glossy metal paint) SGGX matrices.
     for (const Case& k : {Case{"furball", 8, 2}, Case{"railings", 16, 3}, Case{"foliage", 32, 4}}) {
-        eng::scene::Scene scene = eng::scene::loadBuiltin(k.scene);
+        eng::scene::Scene scene = eng::scene::loadTestScene(k.scene);
         agaa::FrameRenderer renderer(*device, scene);
         const uint32_t size = 64, window = 16, capacity = 400000;
         const uint32_t words = shared::metadataWords(k.n, k.c);
@@ -223,7 +223,7 @@ TEST(AgaaGpu, AccumulationMatchesACpuReplayOfTheSameFragments) {
 // Issue 4: on one flat quad AGAA equals per-sample shading.
 TEST(AgaaGpu, PlaneEqualsTheReference) {
     auto device = agaa::test::makeValidatedDevice();
-    eng::scene::Scene scene = eng::scene::loadBuiltin("plane");
+    eng::scene::Scene scene = eng::scene::loadTestScene("plane");
     agaa::FrameRenderer renderer(*device, scene);
     for (auto [n, c] : {std::pair{4u, 1u}, std::pair{8u, 2u}}) {
         agaa::RenderResult ref = renderer.render(request("reference", n, 1, 64));
@@ -249,7 +249,7 @@ TEST(AgaaGpu, PlaneEqualsTheReference) {
 TEST(AgaaGpu, ErrorBelowHalfOfNoAaAndFallsWithMoreAggregates) {
     auto device = agaa::test::makeValidatedDevice();
     for (const char* name : {"furball", "metal", "foliage", "railings"}) {
-        eng::scene::Scene scene = eng::scene::loadBuiltin(name);
+        eng::scene::Scene scene = eng::scene::loadTestScene(name);
         agaa::FrameRenderer renderer(*device, scene);
         const uint32_t size = 128;
         agaa::RenderResult refFrame = renderer.render(request("reference", 8, 1, size));
@@ -299,7 +299,7 @@ TEST(AgaaGpu, ErrorBelowHalfOfNoAaAndFallsWithMoreAggregates) {
 TEST(AgaaGpu, PixelCentrePositionShortcutAgainstTheFullVersion) {
     auto device = agaa::test::makeValidatedDevice();
     for (const char* name : {"furball", "foliage", "railings"}) {
-        eng::scene::Scene scene = eng::scene::loadBuiltin(name);
+        eng::scene::Scene scene = eng::scene::loadTestScene(name);
         agaa::FrameRenderer renderer(*device, scene);
         eng::io::ImageF ref = encoded(renderer.render(request("reference", 8, 1, 96)).display);
         double noaa = eng::io::rmse(encoded(renderer.render(request("noaa", 1, 1, 96)).display), ref);
@@ -319,7 +319,7 @@ TEST(AgaaGpu, PixelCentrePositionShortcutAgainstTheFullVersion) {
 
 TEST(AgaaGpu, TwoRunsAreBitIdentical) {
     auto device = agaa::test::makeValidatedDevice();
-    eng::scene::Scene scene = eng::scene::loadBuiltin("default");
+    eng::scene::Scene scene = eng::scene::loadTestScene("default");
     agaa::FrameRenderer renderer(*device, scene);
     agaa::RenderResult a = renderer.render(request("agaa", 8, 2, 96));
     agaa::RenderResult b = renderer.render(request("agaa", 8, 2, 96));
@@ -330,7 +330,7 @@ TEST(AgaaGpu, TwoRunsAreBitIdentical) {
 
 TEST(AgaaGpu, MemoryIsSplitAndBelowTheReference) {
     auto device = agaa::test::makeValidatedDevice();
-    eng::scene::Scene scene = eng::scene::loadBuiltin("railings");
+    eng::scene::Scene scene = eng::scene::loadTestScene("railings");
     agaa::FrameRenderer renderer(*device, scene);
     agaa::RenderResult ag = renderer.render(request("agaa-accumulate", 8, 2, 64));
     agaa::RenderResult ref = renderer.render(request("reference", 8, 1, 64));
@@ -351,7 +351,7 @@ TEST(AgaaGpu, MemoryIsSplitAndBelowTheReference) {
 // D24_UNORM the prepass and the reference saw different visibility, counted as AGAA's error.
 TEST(AgaaGpu, VisibilityDepthHasTheReferencePrecision) {
     auto device = agaa::test::makeValidatedDevice();
-    eng::scene::Scene scene = eng::scene::loadBuiltin("hard-far");
+    eng::scene::Scene scene = eng::scene::loadTestScene("hard-far");
     agaa::FrameRenderer renderer(*device, scene);
     agaa::RenderRequest r = request("agaa-accumulate", 8, 2, 32);
     agaa::RenderResult res = renderer.render(r);

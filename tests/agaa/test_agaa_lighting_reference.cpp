@@ -18,12 +18,12 @@
 // reference from). The built-in scenes have no environment light (Scene::environment empty).
 
 #include "agaa/aggregate/aggregate.h"
-#include "agaa/common/frame_renderer.h"
 #include "agaa_layout_reference.h"
 #include "agaa_test_support.h"
 #include "engine/frame/readback.h"
-#include "engine/scene/scenegen.h"
 #include "gpu_test_support.h"
+#include "tools/harness/frame_renderer.h"
+#include "tools/scenes/adversarial_scenes.h"
 
 #include <gtest/gtest.h>
 
@@ -246,7 +246,7 @@ TEST(AgaaLightingReference, AggregateShadingMatchesADoublePrecisionCpuShading) {
                           {"furball", 8, 4, "sggx"}, {"spikes", 32, 2, "sggx"}};
     const uint32_t size = 64, pixels = size * size;
     for (const Case& k : cases) {
-        eng::scene::Scene scene = eng::scene::loadBuiltin(k.scene);
+        eng::scene::Scene scene = eng::scene::loadTestScene(k.scene);
         for (eng::scene::Light& l : scene.lights)
             l.castsShadows = false; // the export variant has no shadow maps
         agaa::FrameRenderer renderer(*device, scene);
@@ -352,7 +352,7 @@ TEST(AgaaLightingReference, AccumulatePathShadingMatchesADoublePrecisionCpuShadi
         {"furball", 8, 2}, {"railings", 4, 4}, {"foliage", 16, 2}, {"metal", 8, 3}, {"spikes", 32, 4}};
     const uint32_t size = 64, pixels = size * size;
     for (const Case& k : cases) {
-        eng::scene::Scene scene = eng::scene::loadBuiltin(k.scene);
+        eng::scene::Scene scene = eng::scene::loadTestScene(k.scene);
         ASSERT_TRUE(scene.environment.empty()) << "the reference lights punctual lights only";
         for (eng::scene::Light& l : scene.lights)
             l.castsShadows = false; // the reference has no shadow maps

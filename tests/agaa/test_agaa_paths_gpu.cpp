@@ -6,13 +6,13 @@
 // printed for the README.
 
 #include "agaa/aggregate/aggregate.h"
-#include "agaa/common/frame_renderer.h"
 #include "engine/frame/readback.h"
 #include "engine/io/metrics.h"
 #include "engine/io/tone_map.h"
-#include "engine/scene/scenegen.h"
 #include "gpu_test_support.h"
 #include "shared/ag_buffer.h"
+#include "tools/harness/frame_renderer.h"
+#include "tools/scenes/adversarial_scenes.h"
 
 #include <gtest/gtest.h>
 
@@ -49,7 +49,7 @@ TEST(AgaaPathsGpu, CompactedLightingEqualsThePerPixelScheduleBitForBit) {
     const Case cases[] = {{"default", 8, 2}, {"metal", 8, 2},    {"foliage", 8, 4},
                           {"furball", 8, 3}, {"furball", 32, 2}, {"hard-emissive", 8, 2}};
     for (const Case& k : cases) {
-        eng::scene::Scene scene = eng::scene::loadBuiltin(k.scene);
+        eng::scene::Scene scene = eng::scene::loadTestScene(k.scene);
         agaa::FrameRenderer renderer(*device, scene);
         // Both generation paths: on a GPU, auto runs the samples path with the compacted list.
         for (const char* path : {"agaa-accumulate", "agaa-samples"}) {
@@ -106,7 +106,7 @@ TEST(AgaaPathsGpu, WideAtomicsAndSubgroupReductionLeaveTheAgBufferUnchanged) {
     const Case cases[] = {{"furball", 8, 2}, {"foliage", 8, 4}, {"metal", 16, 2}, {"hard-zfight", 8, 2}};
     const uint32_t size = 48;
     for (const Case& k : cases) {
-        eng::scene::Scene scene = eng::scene::loadBuiltin(k.scene);
+        eng::scene::Scene scene = eng::scene::loadTestScene(k.scene);
         agaa::FrameRenderer renderer(*device, scene);
         agaa::RenderRequest base = agaaRequest(k.n, k.c, size);
         base.settings.agaaAtomics = "32";
@@ -157,7 +157,7 @@ TEST(AgaaPathsGpu, FragmentRoutingCountsEveryVisibleSampleOnce) {
     auto device = agaa::test::makeValidatedDevice();
     const uint32_t size = 64;
     for (const char* name : {"furball", "foliage", "railings"}) { // Toksvig layout under auto
-        eng::scene::Scene scene = eng::scene::loadBuiltin(name);
+        eng::scene::Scene scene = eng::scene::loadTestScene(name);
         agaa::FrameRenderer renderer(*device, scene);
         agaa::RenderRequest samples = agaaRequest(8, 2, size);
         samples.settings.ndf = "toksvig";
@@ -189,7 +189,7 @@ TEST(AgaaPathsGpu, FragmentRoutingCountsEveryVisibleSampleOnce) {
 // it twice. The plane distance keeps those samples together.
 TEST(AgaaPathsGpu, PlaneDistanceLightsAFlatFloorOnce) {
     auto device = agaa::test::makeValidatedDevice();
-    eng::scene::Scene scene = eng::scene::loadBuiltin("default");
+    eng::scene::Scene scene = eng::scene::loadTestScene("default");
     agaa::FrameRenderer renderer(*device, scene);
     agaa::RenderRequest position = agaaRequest(8, 2, 96);
     agaa::RenderRequest plane = position;
@@ -207,7 +207,7 @@ TEST(AgaaPathsGpu, PlaneDistanceLightsAFlatFloorOnce) {
         << "the plane distance must merge the floor's samples";
 
     // A flat quad seen edge-on-ish: every covered pixel is one aggregate under the plane distance.
-    eng::scene::Scene grazing = eng::scene::loadBuiltin("hard-grazing");
+    eng::scene::Scene grazing = eng::scene::loadTestScene("hard-grazing");
     agaa::FrameRenderer grazingRenderer(*device, grazing);
     agaa::RenderResult g = grazingRenderer.render(plane);
     agaa::RenderResult gp = grazingRenderer.render(position);

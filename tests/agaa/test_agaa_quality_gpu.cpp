@@ -7,13 +7,13 @@
 // against the reference at n = N,
 // AGAA_QUALITY_NDF=sggx|toksvig with one normal distribution: the measurements behind the README's causes).
 
-#include "agaa/common/frame_renderer.h"
 #include "agaa_test_support.h"
 #include "engine/io/metrics.h"
 #include "engine/io/tone_map.h"
-#include "engine/scene/adversarial_scenes.h"
 #include "engine/scene/scenegen.h"
 #include "gpu_test_support.h"
+#include "tools/harness/frame_renderer.h"
+#include "tools/scenes/adversarial_scenes.h"
 
 #include <gtest/gtest.h>
 
@@ -94,7 +94,7 @@ class QualityScene : public ::testing::TestWithParam<std::string> {};
 // mirror, hard-light-inside), no further from it than no-AA's one-sample estimate is.
 TEST_P(QualityScene, AgaaIsNeverWorseThanNoAaAndKeepsTheEnergy) {
     auto device = agaa::test::makeValidatedDevice();
-    eng::scene::Scene scene = eng::scene::loadBuiltin(GetParam());
+    eng::scene::Scene scene = eng::scene::loadTestScene(GetParam());
     if (std::getenv("AGAA_QUALITY_NO_SHADOWS"))
         for (eng::scene::Light& l : scene.lights)
             l.castsShadows = false;

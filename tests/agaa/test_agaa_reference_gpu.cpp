@@ -11,13 +11,13 @@
 // lighting.
 
 #include "agaa/aggregate/aggregate.h"
-#include "agaa/common/frame_renderer.h"
 #include "agaa_layout_reference.h"
 #include "agaa_test_support.h"
 #include "algorithm1_reference.h"
 #include "engine/frame/readback.h"
-#include "engine/scene/scenegen.h"
 #include "gpu_test_support.h"
+#include "tools/harness/frame_renderer.h"
+#include "tools/scenes/adversarial_scenes.h"
 
 #include <gtest/gtest.h>
 
@@ -99,7 +99,7 @@ TEST(AgaaClusteringReferenceGpu, GpuMetadataMatchesAlgorithm1InDouble) {
     const uint32_t size = 64, pixels = size * size;
     uint32_t totalPixels = 0, totalTies = 0, totalExact = 0, totalMismatches = 0, totalUnresolved = 0;
     for (const char* name : {"furball", "foliage", "railings", "spikes"}) {
-        eng::scene::Scene scene = eng::scene::loadBuiltin(name);
+        eng::scene::Scene scene = eng::scene::loadTestScene(name);
         agaa::FrameRenderer renderer(*device, scene);
         for (uint32_t n : {8u, 32u})
             for (uint32_t c : {2u, 4u}) {
@@ -256,7 +256,7 @@ TEST(AgaaAccumulationReferenceGpu, AgBufferMatchesDoubleSumsOfTheMaterialInputs)
                           {"metal", 8, 2, "sggx"},      {"furball", 32, 4, "sggx"}};
     const uint32_t size = 64, window = 16, capacity = 400000;
     for (const Case& k : cases) {
-        eng::scene::Scene scene = eng::scene::loadBuiltin(k.scene);
+        eng::scene::Scene scene = eng::scene::loadTestScene(k.scene);
         agaa::FrameRenderer renderer(*device, scene);
         const uint32_t words = wordsPerPixel(k.n, k.c);
         vk::Buffer records =

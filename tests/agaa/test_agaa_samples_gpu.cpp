@@ -11,16 +11,16 @@
 //  - coverage routing is refused by name on a device without mixed samples.
 
 #include "agaa/aggregate/aggregate.h"
-#include "agaa/common/frame_renderer.h"
 #include "agaa/methods.h"
 #include "agaa_test_support.h"
 #include "engine/frame/readback.h"
 #include "engine/scene/camera_framing.h"
 #include "engine/scene/gltf_loader.h"
 #include "engine/scene/model_builder.h"
-#include "engine/scene/scenegen.h"
 #include "engine/vk/check.h"
 #include "gpu_test_support.h"
+#include "tools/harness/frame_renderer.h"
+#include "tools/scenes/adversarial_scenes.h"
 
 #include <gtest/gtest.h>
 
@@ -100,7 +100,7 @@ TEST(AgaaSamplesGpu, AggregationMatchesAnIndependentCpuAggregation) {
                           {"railings", "sggx", 4, 4}};
     const uint32_t size = 64, pixels = size * size;
     for (const Case& k : cases) {
-        eng::scene::Scene scene = unshadowed(eng::scene::loadBuiltin(k.scene));
+        eng::scene::Scene scene = unshadowed(eng::scene::loadTestScene(k.scene));
         agaa::FrameRenderer renderer(*device, scene);
         agaa::RenderRequest r = request("agaa-samples", k.n, k.c, size);
         r.settings.ndf = k.ndf;
@@ -200,7 +200,7 @@ TEST(AgaaSamplesGpu, AggregationMatchesAnIndependentCpuAggregation) {
 // On one flat quad the samples path equals per-sample shading, at pixel and at sample rate.
 TEST(AgaaSamplesGpu, PlaneEqualsTheReference) {
     auto device = agaa::test::makeValidatedDevice();
-    eng::scene::Scene scene = eng::scene::loadBuiltin("plane");
+    eng::scene::Scene scene = eng::scene::loadTestScene("plane");
     agaa::FrameRenderer renderer(*device, scene);
     for (bool sampleRate : {false, true})
         for (auto [n, c] : {std::pair{4u, 1u}, std::pair{8u, 2u}, std::pair{32u, 2u}}) {
@@ -236,7 +236,7 @@ TEST(AgaaSamplesGpu, RerunsAreBitIdenticalAndTheVariantsNameThePath) {
     auto device = agaa::test::makeValidatedDevice();
     // default: shadows; metal: SGGX; foliage: alpha-to-coverage; hard-emissive: per-sample emissive.
     for (const char* name : {"default", "metal", "foliage", "hard-emissive"}) {
-        eng::scene::Scene scene = eng::scene::loadBuiltin(name);
+        eng::scene::Scene scene = eng::scene::loadTestScene(name);
         agaa::FrameRenderer renderer(*device, scene);
         for (bool sampleRate : {false, true}) {
             agaa::RenderRequest r = request("agaa-samples", 8, 2, 64);
@@ -263,7 +263,7 @@ TEST(AgaaSamplesGpu, RerunsAreBitIdenticalAndTheVariantsNameThePath) {
 // aggregate, with the lit frame's aggregate counts.
 TEST(AgaaSamplesGpu, DebugViewShowsTheLitFramesAggregates) {
     auto device = agaa::test::makeValidatedDevice();
-    eng::scene::Scene scene = eng::scene::loadBuiltin("railings");
+    eng::scene::Scene scene = eng::scene::loadTestScene("railings");
     agaa::FrameRenderer renderer(*device, scene);
     agaa::RenderRequest lit = request("agaa-samples", 8, 4, 64);
     agaa::RenderRequest debug = lit;
@@ -359,7 +359,7 @@ TEST(AgaaSamplesGpu, CurvatureRoughnessKeepsFlatSurfacesAndBoundsTheSphereBias) 
 // the request names what is missing instead of running something else.
 TEST(AgaaSamplesGpu, CoverageRoutingIsRefusedByName) {
     auto device = agaa::test::makeValidatedDevice();
-    eng::scene::Scene scene = eng::scene::loadBuiltin("plane");
+    eng::scene::Scene scene = eng::scene::loadTestScene("plane");
     agaa::FrameRenderer renderer(*device, scene);
     agaa::RenderRequest r = request("agaa", 8, 2, 64);
     r.settings.agaaGeneration = "coverage";

@@ -3,13 +3,13 @@
 // every shared real scene (../shared/scenes) readable with every method under the lighting and
 // exposure users get by default.
 
-#include "agaa/common/frame_renderer.h"
 #include "agaa/methods.h"
 #include "engine/io/tone_map.h"
 #include "engine/scene/default_lighting.h"
 #include "engine/scene/environment.h"
 #include "engine/scene/gltf_loader.h"
 #include "gpu_test_support.h"
+#include "tools/harness/frame_renderer.h"
 
 #include <gtest/gtest.h>
 

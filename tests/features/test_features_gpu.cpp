@@ -2,12 +2,12 @@
 // scene's features, and the effects themselves (shadows, alpha-to-coverage, per-sample emissive)
 // do what they claim.
 
-#include "agaa/common/frame_renderer.h"
 #include "engine/io/image.h"
 #include "engine/io/metrics.h"
 #include "engine/io/tone_map.h"
-#include "engine/scene/scenegen.h"
 #include "gpu_test_support.h"
+#include "tools/harness/frame_renderer.h"
+#include "tools/scenes/adversarial_scenes.h"
 
 #include <gtest/gtest.h>
 
@@ -409,7 +409,7 @@ TEST(FeaturesGpu, ForcingEveryEffectAddsThePassesAndVariants) {
 
 TEST(FeaturesGpu, BuiltinFoliageRunsShadowsAndAlphaToCoverage) {
     auto device = agaa::test::makeValidatedDevice();
-    Scene scene = eng::scene::loadBuiltin("foliage");
+    Scene scene = eng::scene::loadTestScene("foliage");
     agaa::FrameRenderer renderer(*device, scene);
     for (const char* method : kPerSampleMethods) {
         const uint32_t n = method == std::string("noaa") ? 1 : 8;
@@ -492,7 +492,7 @@ TEST(FeaturesGpu, ToksvigNormalMipsDimTheHighlightOfMinifiedBumps) {
 // shadowing with the other shading inputs inside an aggregate, as the paper's section 6 reports.
 TEST(FeaturesGpu, ShadowedFoliageErrorStaysWithinOneAndAHalfTimesTheUnshadowedError) {
     auto device = agaa::test::makeValidatedDevice();
-    Scene shadowed = eng::scene::loadBuiltin("foliage");
+    Scene shadowed = eng::scene::loadTestScene("foliage");
     Scene unshadowed = shadowed;
     for (auto& light : unshadowed.lights)
         light.castsShadows = false;

@@ -4,7 +4,7 @@
 #include "agaa/common/effects.h"
 #include "agaa/common/shadow_map.h"
 #include "engine/scene/scene_features.h"
-#include "engine/scene/scenegen.h"
+#include "tools/scenes/adversarial_scenes.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>
@@ -147,7 +147,7 @@ TEST(SceneFeatures, ForcingTurnsEveryEffectOn) {
 
 TEST(SceneFeatures, BuiltinScenesHaveAShadowedSunAndFoliageIsMasked) {
     for (const char* name : {"plane", "foliage", "furball"}) {
-        const Scene s = eng::scene::loadBuiltin(name);
+        const Scene s = eng::scene::loadTestScene(name);
         const auto f = eng::scene::deriveSceneFeatures(s);
         EXPECT_EQ(f.shadowedLights.size(), 1u) << name;
         EXPECT_EQ(f.hasMasked(), std::string(name) == "foliage") << name;
@@ -230,7 +230,8 @@ TEST(SceneFeatures, GlossyMetalsCountAtTheThresholdsAndOnlyWhenDrawn) {
     EXPECT_EQ(eng::scene::deriveSceneFeatures(s).glossyMetalMaterials, 0u) << "an undrawn material";
     for (auto [name, glossy] : {std::pair{"metal", 2u}, std::pair{"railings", 1u}, std::pair{"furball", 0u},
                                 std::pair{"foliage", 0u}, std::pair{"plane", 0u}})
-        EXPECT_EQ(eng::scene::deriveSceneFeatures(eng::scene::loadBuiltin(name)).glossyMetalMaterials, glossy)
+        EXPECT_EQ(eng::scene::deriveSceneFeatures(eng::scene::loadTestScene(name)).glossyMetalMaterials,
+                  glossy)
             << name;
 }
 

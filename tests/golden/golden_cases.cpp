@@ -1,7 +1,7 @@
 #include "golden_cases.h"
 
-#include "engine/scene/adversarial_scenes.h"
 #include "engine/scene/scenegen.h"
+#include "tools/scenes/adversarial_scenes.h"
 
 namespace agaa::golden {
 

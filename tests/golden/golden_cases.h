@@ -3,7 +3,7 @@
 // holds, and where its files live. One list, read by the golden test and by the update script
 // (through the same test binary), so the two cannot disagree about what a golden is.
 
-#include "agaa/common/frame_renderer.h"
+#include "tools/harness/frame_renderer.h"
 
 #include <cstdint>
 #include <filesystem>
@@ -15,7 +15,7 @@ namespace agaa::golden {
 
 enum class SceneSource {
     Builtin, // eng::scene::loadBuiltin: the procedural scenes (sceneKinds())
-    Hard,    // eng::scene::loadBuiltin: the adversarial hard-* scenes (hardSceneKinds())
+    Hard,    // eng::scene::loadTestScene: the adversarial hard-* scenes (hardSceneKinds())
     Gltf,    // a real asset under ../shared/scenes (AGAA_SHARED_SCENES_DIR)
 };
 

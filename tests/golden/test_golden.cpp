@@ -10,7 +10,6 @@
 #include "golden_cases.h"
 #include "golden_compare.h"
 
-#include "agaa/common/frame_renderer.h"
 #include "engine/io/exr.h"
 #include "engine/io/metrics.h"
 #include "engine/io/png.h"
@@ -18,8 +17,9 @@
 #include "engine/scene/default_lighting.h"
 #include "engine/scene/gltf_loader.h"
 #include "engine/scene/scene_error.h"
-#include "engine/scene/scenegen.h"
 #include "gpu_test_support.h"
+#include "tools/harness/frame_renderer.h"
+#include "tools/scenes/adversarial_scenes.h"
 
 #include <gtest/gtest.h>
 
@@ -49,7 +49,7 @@ eng::scene::Scene loadScene(const GoldenScene& s) {
         eng::scene::applyLighting(scene, eng::scene::LightingMode::Automatic);
         return scene;
     }
-    return eng::scene::loadBuiltin(s.name);
+    return eng::scene::loadTestScene(s.name);
 }
 
 void writeImages(const fs::path& stem, const eng::io::ImageF& display) {

@@ -3,10 +3,10 @@
 // names what failed, and leave nothing behind: the validation layer reports any object still
 // alive when the device is destroyed, and the test device's deleter fails the test on it.
 
-#include "agaa/common/frame_renderer.h"
-#include "engine/scene/scenegen.h"
 #include "engine/vk/check.h"
 #include "gpu_test_support.h"
+#include "tools/harness/frame_renderer.h"
+#include "tools/scenes/adversarial_scenes.h"
 
 #include <gtest/gtest.h>
 
@@ -50,7 +50,7 @@ uint32_t sweepFaults(const eng::scene::Scene& scene, uint32_t limit, Inject inje
 }
 
 TEST(Faults, EveryAllocationOfAnAgaaFrameFailsCleanlyNamingTheResource) {
-    eng::scene::Scene scene = eng::scene::loadBuiltin("railings"); // shadow map, point lights
+    eng::scene::Scene scene = eng::scene::loadTestScene("railings"); // shadow map, point lights
     std::set<std::string> failed;
     const uint32_t k = sweepFaults<eng::vk::OutOfMemory>(
         scene, 200, [](eng::vk::DeviceOptions& o, uint32_t n) { o.failAllocation = n; },
@@ -69,7 +69,7 @@ TEST(Faults, EveryAllocationOfAnAgaaFrameFailsCleanlyNamingTheResource) {
 }
 
 TEST(Faults, ADeviceLostAtAnySubmissionIsReportedAsSuch) {
-    eng::scene::Scene scene = eng::scene::loadBuiltin("railings");
+    eng::scene::Scene scene = eng::scene::loadTestScene("railings");
     uint32_t losses = 0;
     const uint32_t k = sweepFaults<eng::vk::DeviceLost>(
         scene, 20, [](eng::vk::DeviceOptions& o, uint32_t n) { o.loseDeviceAtSubmit = n; },

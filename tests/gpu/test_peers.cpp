@@ -1,7 +1,6 @@
 // Peers 1 on lavapipe, validation on: Simple/Complex deferred MSAA (Lauritzen 2010)
 // and FXAA 3.11 (Lottes 2009), each against its ground truth and its CPU twin.
 
-#include "agaa/common/frame_renderer.h"
 #include "agaa/fxaa/fxaa_reference.h"
 #include "agaa/simple_complex/classify.h"
 #include "agaa/simple_complex/simple_complex.h"
@@ -9,8 +8,9 @@
 #include "engine/frame/frame_runner.h"
 #include "engine/frame/readback.h"
 #include "engine/io/metrics.h"
-#include "engine/scene/scenegen.h"
 #include "gpu_test_support.h"
+#include "tools/harness/frame_renderer.h"
+#include "tools/scenes/adversarial_scenes.h"
 
 #include <gtest/gtest.h>
 
@@ -72,7 +72,7 @@ TEST(SimpleComplexGpu, MatchesTheReferenceAtTheSameRate) {
     // default is cos 0.999 (2.6 degrees), the paper's "configured for no quality degradation".
     auto bound = [](const std::string&, uint32_t) { return 1e-3; };
     for (const Case& c : cases) {
-        eng::scene::Scene scene = eng::scene::loadBuiltin(c.scene);
+        eng::scene::Scene scene = eng::scene::loadTestScene(c.scene);
         agaa::FrameRenderer renderer(*device, scene);
         for (uint32_t n : c.rates) {
             agaa::RenderResult ref = render(renderer, "reference", n);
@@ -108,7 +108,7 @@ TEST(SimpleComplexGpu, MatchesTheReferenceAtTheSameRate) {
 // they must equal it bit for bit; and the two schedules must agree bit for bit.
 TEST(SimpleComplexGpu, ComplexPixelsEqualTheReferenceAndSchedulesAgree) {
     auto device = agaa::test::makeValidatedDevice();
-    eng::scene::Scene scene = eng::scene::loadBuiltin("railings");
+    eng::scene::Scene scene = eng::scene::loadTestScene("railings");
     agaa::FrameRenderer renderer(*device, scene);
     const uint32_t n = 8;
     agaa::RenderResult ref = render(renderer, "reference", n);
@@ -133,7 +133,7 @@ TEST(SimpleComplexGpu, ComplexPixelsEqualTheReferenceAndSchedulesAgree) {
 // One plane: interior pixels (fully covered, with fully covered neighbours) are all simple.
 TEST(SimpleComplexGpu, PlaneInteriorIsSimple) {
     auto device = agaa::test::makeValidatedDevice();
-    eng::scene::Scene scene = eng::scene::loadBuiltin("plane");
+    eng::scene::Scene scene = eng::scene::loadTestScene("plane");
     agaa::FrameRenderer renderer(*device, scene);
     for (uint32_t n : {4u, 8u, 32u}) {
         agaa::RenderResult ref = render(renderer, "reference", n);
@@ -160,7 +160,7 @@ TEST(SimpleComplexGpu, PlaneInteriorIsSimple) {
 // furball fills enough of it that no crop is needed (the printed counts show it).
 TEST(SimpleComplexGpu, FurballIsMostlyComplex) {
     auto device = agaa::test::makeValidatedDevice();
-    eng::scene::Scene scene = eng::scene::loadBuiltin("furball");
+    eng::scene::Scene scene = eng::scene::loadTestScene("furball");
     agaa::FrameRenderer renderer(*device, scene);
     const uint32_t n = 8;
     agaa::RenderResult ref = render(renderer, "reference", n);
@@ -176,7 +176,7 @@ TEST(SimpleComplexGpu, FurballIsMostlyComplex) {
 
 TEST(SimpleComplexGpu, TwoRunsAreBitIdenticalAndDebugViewMarksComplexPixels) {
     auto device = agaa::test::makeValidatedDevice();
-    eng::scene::Scene scene = eng::scene::loadBuiltin("default");
+    eng::scene::Scene scene = eng::scene::loadTestScene("default");
     agaa::FrameRenderer renderer(*device, scene);
     agaa::RenderResult a = render(renderer, "simple-complex", 8);
     agaa::RenderResult b = render(renderer, "simple-complex", 8);
@@ -201,7 +201,7 @@ TEST(SimpleComplexGpu, TwoRunsAreBitIdenticalAndDebugViewMarksComplexPixels) {
 // (relative) of its threshold, where fp32 rounding may legitimately differ; those are counted.
 TEST(SimpleComplexGpu, ClassificationMatchesTheCpuTwin) {
     auto device = agaa::test::makeValidatedDevice();
-    eng::scene::Scene scene = eng::scene::loadBuiltin("foliage");
+    eng::scene::Scene scene = eng::scene::loadTestScene("foliage");
     eng::frame::GpuScene gpuScene(*device, scene);
     eng::frame::FrameRunner runner(*device);
     const uint32_t n = 8, w = kSize, h = kSize;

@@ -2,11 +2,11 @@
 // image, against its CPU twin (agaa/fxaa/fxaa_reference.cpp) and its defining property:
 // it changes only pixels at luma edges.
 
-#include "agaa/common/frame_renderer.h"
 #include "agaa/fxaa/fxaa_reference.h"
 #include "engine/io/metrics.h"
-#include "engine/scene/scenegen.h"
 #include "gpu_test_support.h"
+#include "tools/harness/frame_renderer.h"
+#include "tools/scenes/adversarial_scenes.h"
 
 #include <gtest/gtest.h>
 
@@ -53,7 +53,7 @@ TEST(FxaaGpu, ChangesOnlyPixelsNearLumaEdges) {
     auto device = agaa::test::makeValidatedDevice();
     const uint32_t size = 128;
     for (const char* name : {"railings", "foliage"}) {
-        eng::scene::Scene scene = eng::scene::loadBuiltin(name);
+        eng::scene::Scene scene = eng::scene::loadTestScene(name);
         agaa::FrameRenderer renderer(*device, scene);
         agaa::RenderResult noaa = render(renderer, "noaa", size);
         agaa::RenderResult fxaa = render(renderer, "fxaa", size);
@@ -101,7 +101,7 @@ TEST(FxaaGpu, MatchesTheCpuTwin) {
     auto device = agaa::test::makeValidatedDevice();
     uint32_t total = 0, exact = 0, rounding = 0, flipped = 0, unexplained = 0;
     for (const char* name : {"railings", "foliage", "furball"}) {
-        eng::scene::Scene scene = eng::scene::loadBuiltin(name);
+        eng::scene::Scene scene = eng::scene::loadTestScene(name);
         agaa::FrameRenderer renderer(*device, scene);
         const uint32_t size = 128;
         agaa::RenderResult noaa = render(renderer, "noaa", size);
@@ -139,7 +139,7 @@ TEST(FxaaGpu, MatchesTheCpuTwin) {
 
 TEST(FxaaGpu, TwoRunsAreBitIdenticalAndFinite) {
     auto device = agaa::test::makeValidatedDevice();
-    eng::scene::Scene scene = eng::scene::loadBuiltin("default");
+    eng::scene::Scene scene = eng::scene::loadTestScene("default");
     agaa::FrameRenderer renderer(*device, scene);
     agaa::RenderResult a = render(renderer, "fxaa", 64);
     agaa::RenderResult b = render(renderer, "fxaa", 64);

@@ -1,9 +1,9 @@
 // The per-sample deferred reference and no-AA on lavapipe, validation on.
 
-#include "agaa/common/frame_renderer.h"
 #include "engine/io/image.h"
-#include "engine/scene/scenegen.h"
 #include "gpu_test_support.h"
+#include "tools/harness/frame_renderer.h"
+#include "tools/scenes/adversarial_scenes.h"
 
 #include <gtest/gtest.h>
 
@@ -22,7 +22,7 @@ agaa::RenderResult renderBuiltin(agaa::FrameRenderer& renderer, const std::strin
 
 TEST(ReferenceGpu, DefaultSceneRendersFiniteAndValidationClean) {
     auto device = agaa::test::makeValidatedDevice();
-    eng::scene::Scene scene = eng::scene::loadBuiltin("default");
+    eng::scene::Scene scene = eng::scene::loadTestScene("default");
     agaa::FrameRenderer renderer(*device, scene);
     for (uint32_t n : {1u, 4u, 8u}) {
         agaa::RenderResult out = renderBuiltin(renderer, "reference", n, 64);
@@ -46,7 +46,7 @@ TEST(ReferenceGpu, DefaultSceneRendersFiniteAndValidationClean) {
 
 TEST(ReferenceGpu, NoAaShadesOncePerCoveredPixel) {
     auto device = agaa::test::makeValidatedDevice();
-    eng::scene::Scene scene = eng::scene::loadBuiltin("default");
+    eng::scene::Scene scene = eng::scene::loadTestScene("default");
     agaa::FrameRenderer renderer(*device, scene);
     agaa::RenderResult out = renderBuiltin(renderer, "noaa", 8, 64); // noaa ignores --samples
     EXPECT_EQ(out.samples, 1u);
@@ -60,7 +60,7 @@ TEST(ReferenceGpu, NoAaShadesOncePerCoveredPixel) {
 // nothing beyond the second-order variation of the lighting across the pixel.
 TEST(ReferenceGpu, PlaneInteriorIsInvariantToSampleCount) {
     auto device = agaa::test::makeValidatedDevice();
-    eng::scene::Scene scene = eng::scene::loadBuiltin("plane");
+    eng::scene::Scene scene = eng::scene::loadTestScene("plane");
     agaa::FrameRenderer renderer(*device, scene);
     agaa::RenderResult one = renderBuiltin(renderer, "reference", 1, 64);
     for (uint32_t n : {4u, 8u}) {
@@ -89,7 +89,7 @@ TEST(ReferenceGpu, PlaneInteriorIsInvariantToSampleCount) {
 
 TEST(ReferenceGpu, TwoRunsAreBitIdentical) {
     auto device = agaa::test::makeValidatedDevice();
-    eng::scene::Scene scene = eng::scene::loadBuiltin("default");
+    eng::scene::Scene scene = eng::scene::loadTestScene("default");
     agaa::FrameRenderer renderer(*device, scene);
     agaa::RenderResult a = renderBuiltin(renderer, "reference", 8, 64);
     agaa::RenderResult b = renderBuiltin(renderer, "reference", 8, 64);

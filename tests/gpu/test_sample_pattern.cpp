@@ -1,9 +1,9 @@
 // The emulated sample positions (DESIGN section 3): distinct, inside the pixel,
 // centred, and exactly what the rasteriser covers.
 
-#include "agaa/common/frame_renderer.h"
 #include "engine/frame/sample_pattern.h"
 #include "gpu_test_support.h"
+#include "tools/harness/frame_renderer.h"
 
 #include <gtest/gtest.h>
 

@@ -3,16 +3,16 @@
 // CPU weights on an emissive-only scene (no lights: each surface's shade is its emissive), the lost
 // coverage the stats report, and reruns.
 
-#include "agaa/common/frame_renderer.h"
 #include "agaa/sbaa/sbaa.h"
 #include "agaa/sbaa/surface_selection.h"
 #include "engine/frame/frame_constants.h"
 #include "engine/frame/frame_runner.h"
 #include "engine/frame/readback.h"
 #include "engine/io/tone_map.h"
-#include "engine/scene/scenegen.h"
 #include "gpu_test_support.h"
 #include "shared/sbaa.h"
+#include "tools/harness/frame_renderer.h"
+#include "tools/scenes/adversarial_scenes.h"
 
 #include <glm/gtc/packing.hpp>
 #include <gtest/gtest.h>
@@ -140,7 +140,7 @@ eng::scene::Scene emissiveBars() {
 // 1e-4 of its threshold may differ by fp32 rounding; those are counted, not compared.
 TEST(SbaaGpu, SurfaceSelectionMatchesTheCpuTwin) {
     auto device = agaa::test::makeValidatedDevice();
-    const eng::scene::Scene scene = eng::scene::loadBuiltin("foliage");
+    const eng::scene::Scene scene = eng::scene::loadTestScene("foliage");
     agaa::SbaaSettings settings;
     settings.samples = 8;
     settings.surfaces = 2;
@@ -237,7 +237,7 @@ TEST(SbaaGpu, ResolveIsTheCoverageWeightedSumOfTheKeptSurfaces) {
 // rerun is bit-identical.
 TEST(SbaaGpu, LostCoverageStatsShadingEventsAndReruns) {
     auto device = agaa::test::makeValidatedDevice();
-    const eng::scene::Scene scene = eng::scene::loadBuiltin("furball");
+    const eng::scene::Scene scene = eng::scene::loadTestScene("furball");
     agaa::FrameRenderer renderer(*device, scene);
     double previous = 2.0;
     for (uint32_t S : {1u, 2u, 4u, 6u}) {
@@ -315,7 +315,7 @@ TEST(SbaaGpu, MergeKeepsATessellatedPlaneOneSurface) {
 
 TEST(SbaaGpu, RefusesSettingsOutOfRange) {
     auto device = agaa::test::makeValidatedDevice();
-    const eng::scene::Scene scene = eng::scene::loadBuiltin("plane");
+    const eng::scene::Scene scene = eng::scene::loadTestScene("plane");
     eng::frame::GpuScene gpuScene(*device, scene);
     for (auto [n, S, what] : {std::tuple{1u, 4u, "--samples 1"}, std::tuple{8u, 0u, "--surfaces 0"},
                               std::tuple{8u, 7u, "--surfaces 7"}}) {

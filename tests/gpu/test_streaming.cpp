@@ -4,7 +4,7 @@
 // each surface's shade is its emissive), the lost coverage and memory the stats report, reruns,
 // and the settings refused.
 
-#include "agaa/common/frame_renderer.h"
+#include "tools/harness/frame_renderer.h"
 #include "agaa/streaming/streaming.h"
 #include "agaa/streaming/streaming_compression.h"
 #include "engine/frame/frame_constants.h"

@@ -2,7 +2,7 @@
 // Malformed variants of the hard-flat scene, made by corrupting the glTF buffer the way a broken
 // exporter would: for the loader tests and the agaa-render exit-code tests.
 
-#include "engine/scene/adversarial_scenes.h"
+#include "tools/scenes/adversarial_scenes.h"
 
 #include <tiny_gltf.h>
 

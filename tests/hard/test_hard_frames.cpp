@@ -1,12 +1,10 @@
-// Whole frames of every adversarial scene (engine/scene/adversarial_scenes.h) with every method of
+// Whole frames of every adversarial scene (tools/scenes/adversarial_scenes.h) with every method of
 // agaa::knownMethods(), on lavapipe with validation: no NaN/Inf, no firefly above the scene's
 // bound, bit-identical reruns, coverage invariants (and AGAA's AG-buffer read back and decoded),
 // agreement with the per-sample reference where the paper says they must agree.
 
 #include "agaa/aggregate/aggregate.h"
-#include "agaa/common/frame_renderer.h"
 #include "engine/frame/readback.h"
-#include "engine/scene/adversarial_scenes.h"
 #include "engine/scene/default_lighting.h"
 #include "engine/scene/gltf_loader.h"
 #include "engine/scene/scenegen.h"
@@ -15,6 +13,8 @@
 #include "shared/ag_buffer.h"
 #include "shared/clustering.h"
 #include "shared/sggx.h"
+#include "tools/harness/frame_renderer.h"
+#include "tools/scenes/adversarial_scenes.h"
 
 #include <gtest/gtest.h>
 
@@ -213,7 +213,7 @@ class HardScene : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(HardScene, EveryMethodFiniteBoundedDeterministicAndCovered) {
     auto device = agaa::test::makeValidatedDevice();
-    const eng::scene::Scene scene = eng::scene::loadBuiltin(GetParam());
+    const eng::scene::Scene scene = eng::scene::loadTestScene(GetParam());
     for (const std::string& w : scene.stats.warnings)
         std::printf("[ warning  ] %s\n", w.c_str());
     agaa::FrameRenderer renderer(*device, scene);
@@ -282,7 +282,7 @@ TEST(HardRealScenes, EveryMethodFiniteBoundedAndDeterministic) {
 TEST(HardSizes, OddSizesEveryMethod) {
     auto device = agaa::test::makeValidatedDevice();
     for (const char* name : {"hard-dense", "hard-fold", "hard-emissive"}) {
-        const eng::scene::Scene scene = eng::scene::loadBuiltin(name);
+        const eng::scene::Scene scene = eng::scene::loadTestScene(name);
         agaa::FrameRenderer renderer(*device, scene);
         for (auto [w, h] : {std::pair{1u, 1u}, std::pair{17u, 13u}}) {
             for (const agaa::MethodInfo& m : agaa::knownMethods()) {
@@ -325,7 +325,7 @@ double worstDisplayDifference(const agaa::RenderResult& a, const agaa::RenderRes
 // Complex classifies every pixel simple (kDepthCompareRelative: a face-on plane has zero slope).
 TEST(HardAgreement, FlatPlaneAgaaEqualsReferenceAndIsAllSimple) {
     auto device = agaa::test::makeValidatedDevice();
-    const eng::scene::Scene scene = eng::scene::loadBuiltin("hard-flat");
+    const eng::scene::Scene scene = eng::scene::loadTestScene("hard-flat");
     agaa::FrameRenderer renderer(*device, scene);
     for (auto [n, c] : {std::pair{4u, 1u}, std::pair{8u, 2u}, std::pair{16u, 4u}}) {
         const agaa::RenderResult ref = renderer.render(request("reference", n, 1, 32, 32));
@@ -355,7 +355,7 @@ TEST(HardAgreement, FlatPlaneAgaaEqualsReferenceAndIsAllSimple) {
 // (measured: 7e-5 worst, 4e-5 mean). With c = 1 the walls merge and must differ visibly.
 TEST(HardAgreement, LambertVGroovesWithEnoughAggregatesMatchTheReference) {
     auto device = agaa::test::makeValidatedDevice();
-    const eng::scene::Scene scene = eng::scene::loadBuiltin("hard-vgroove");
+    const eng::scene::Scene scene = eng::scene::loadTestScene("hard-vgroove");
     agaa::FrameRenderer renderer(*device, scene);
     const agaa::RenderResult ref = renderer.render(request("reference", 8, 1, 32, 32));
     for (const char* path : {"agaa-accumulate", "agaa-samples"}) {
@@ -383,7 +383,7 @@ TEST(HardAgreement, LambertVGroovesWithEnoughAggregatesMatchTheReference) {
 // The light cap: 1000 lights render (above), 1025 are refused with a message naming the limit.
 TEST(HardInput, MoreLightsThanTheCapAreRefused) {
     auto device = agaa::test::makeValidatedDevice();
-    eng::scene::Scene scene = eng::scene::loadBuiltin("hard-many-lights");
+    eng::scene::Scene scene = eng::scene::loadTestScene("hard-many-lights");
     ASSERT_EQ(scene.lights.size(), 1000u);
     while (scene.lights.size() <= shared::kMaxLights)
         scene.lights.push_back(scene.lights.back());

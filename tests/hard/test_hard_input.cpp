@@ -1,10 +1,10 @@
 // Bad input reaches the loader (CPU): refused with a SceneError naming the source and the field,
 // or repaired with a warning; the adversarial scenes load and report their repairs.
 
-#include "engine/scene/adversarial_scenes.h"
 #include "engine/scene/gltf_loader.h"
 #include "engine/scene/scenegen.h"
 #include "malformed_models.h"
+#include "tools/scenes/adversarial_scenes.h"
 
 #include <gtest/gtest.h>
 
@@ -38,40 +38,40 @@ TEST(HardScenes, AllKindsLoadAndStayOutOfTheDefaultList) {
     for (const std::string& kind : eng::scene::hardSceneKinds()) {
         EXPECT_EQ(std::count(regular.begin(), regular.end(), kind), 0)
             << kind << " must not be swept by the benchmark";
-        const eng::scene::Scene s = eng::scene::loadBuiltin(kind);
+        const eng::scene::Scene s = eng::scene::loadTestScene(kind);
         EXPECT_GT(s.triangleCount(), 0u) << kind;
         expectFiniteUnitNormals(s);
     }
-    EXPECT_THROW(eng::scene::generateScene("hard-nonexistent"), eng::scene::SceneError);
+    EXPECT_THROW(eng::scene::generateTestScene("hard-nonexistent"), eng::scene::SceneError);
 }
 
 TEST(HardScenes, ScenesAreWhatTheyClaim) {
-    EXPECT_EQ(eng::scene::loadBuiltin("hard-many-lights").lights.size(), 1000u) << "1000 lights";
-    EXPECT_TRUE(eng::scene::loadBuiltin("hard-no-lights").lights.empty()) << "no lights";
-    const eng::scene::Scene emissive = eng::scene::loadBuiltin("hard-emissive");
+    EXPECT_EQ(eng::scene::loadTestScene("hard-many-lights").lights.size(), 1000u) << "1000 lights";
+    EXPECT_TRUE(eng::scene::loadTestScene("hard-no-lights").lights.empty()) << "no lights";
+    const eng::scene::Scene emissive = eng::scene::loadTestScene("hard-emissive");
     float strongest = 0.0f;
     for (const auto& m : emissive.materials)
         strongest = std::max(strongest, m.emissiveStrength);
     EXPECT_EQ(strongest, 1.0e4f) << "KHR_materials_emissive_strength 1e4 survives the loader";
-    const eng::scene::Scene mirror = eng::scene::loadBuiltin("hard-mirror");
+    const eng::scene::Scene mirror = eng::scene::loadTestScene("hard-mirror");
     bool zero = false, one = false;
     for (const auto& m : mirror.materials) {
         zero |= m.roughnessFactor == 0.0f;
         one |= m.roughnessFactor == 1.0f;
     }
     EXPECT_TRUE(zero && one) << "roughness exactly 0 and exactly 1";
-    const eng::scene::Scene far = eng::scene::loadBuiltin("hard-far");
+    const eng::scene::Scene far = eng::scene::loadTestScene("hard-far");
     EXPECT_GT(glm::length(far.bounds.min), 9.9e4f) << "geometry 1e5 m from the origin";
     EXPECT_EQ(far.cameras[0].znear, 1.0e-4f);
     EXPECT_EQ(far.cameras[0].zfar, 1.0e7f);
     // About 90 triangles per covered pixel at 32x32: 24000 triangles in a 0.4 m box seen from
     // 1.2 m with a 0.7 rad fov cover about (0.4 / (2 * 1.2 * tan 0.35) * 32)^2 = 225 pixels.
-    EXPECT_GE(eng::scene::loadBuiltin("hard-dense").triangleCount(), 225u * 32u)
+    EXPECT_GE(eng::scene::loadTestScene("hard-dense").triangleCount(), 225u * 32u)
         << ">= 32 triangles per pixel";
 }
 
 TEST(HardInput, DegenerateTrianglesAndZeroNormalsAreRepairedWithWarnings) {
-    const eng::scene::Scene s = eng::scene::loadBuiltin("hard-degenerate");
+    const eng::scene::Scene s = eng::scene::loadTestScene("hard-degenerate");
     for (const auto& w : s.stats.warnings)
         std::printf("[ warning  ] %s\n", w.c_str());
     EXPECT_GE(s.stats.degenerateTrianglesDropped, 64u * 2u) << "collinear and point triangles are dropped";

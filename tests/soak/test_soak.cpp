@@ -4,9 +4,9 @@
 // flat (a per-frame or per-switch leak would grow both). The frames run under the validation
 // layer, and the device deleter checks its destruction too.
 
-#include "agaa/common/frame_renderer.h"
-#include "engine/scene/scenegen.h"
 #include "gpu_test_support.h"
+#include "tools/harness/frame_renderer.h"
+#include "tools/scenes/adversarial_scenes.h"
 
 #include <gtest/gtest.h>
 
@@ -29,7 +29,7 @@ constexpr double kMaxResidentGrowthBytes = 24.0 * 1024 * 1024;
 
 TEST(Soak, AThousandFramesSwitchingSettingsHoldMemoryAndObjectsFlat) {
     auto device = agaa::test::makeValidatedDevice();
-    eng::scene::Scene scene = eng::scene::loadBuiltin("railings"); // a shadowed sun and 16 point lights
+    eng::scene::Scene scene = eng::scene::loadTestScene("railings"); // a shadowed sun and 16 point lights
     agaa::FrameRenderer renderer(*device, scene);
     struct Config {
         const char* method;

@@ -8,7 +8,7 @@
 #include "engine/scene/default_lighting.h"
 #include "engine/scene/extra_lights.h"
 #include "engine/scene/gltf_loader.h"
-#include "engine/scene/scenegen.h"
+#include "tools/scenes/adversarial_scenes.h"
 
 #include <chrono>
 #include <limits>
@@ -56,7 +56,7 @@ void JobRunner::selectScene(const std::string& name) {
         m_scene.scene = std::make_unique<eng::scene::Scene>(eng::scene::loadGltf(*file));
         eng::scene::applyLighting(*m_scene.scene, eng::scene::LightingMode::Automatic);
     } else {
-        m_scene.scene = std::make_unique<eng::scene::Scene>(eng::scene::loadBuiltin(variant.base));
+        m_scene.scene = std::make_unique<eng::scene::Scene>(eng::scene::loadTestScene(variant.base));
     }
     eng::scene::addExtraLights(*m_scene.scene, variant.extraLights);
     m_scene.renderer = std::make_unique<FrameRenderer>(m_device, *m_scene.scene);

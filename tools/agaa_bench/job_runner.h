@@ -9,9 +9,9 @@
 #include "result_io.h"
 #include "sweep_plan.h"
 
-#include "agaa/common/frame_renderer.h"
 #include "engine/scene/scene.h"
 #include "engine/vk/device.h"
+#include "tools/harness/frame_renderer.h"
 
 #include <filesystem>
 #include <map>

@@ -4,7 +4,6 @@
 //
 // Exit codes: 0 success; 2 bad arguments or bad input; 3 the device lacks something required.
 
-#include "agaa/common/frame_renderer.h"
 #include "agaa/methods.h"
 #include "engine/frame/exposure.h"
 #include "engine/frame/sample_pattern.h"
@@ -16,9 +15,10 @@
 #include "engine/scene/extra_lights.h"
 #include "engine/scene/gltf_loader.h"
 #include "engine/scene/scene_error.h"
-#include "engine/scene/scenegen.h"
 #include "engine/vk/check.h"
 #include "engine/vk/device.h"
+#include "tools/harness/frame_renderer.h"
+#include "tools/scenes/adversarial_scenes.h"
 
 #include <nlohmann/json.hpp>
 
@@ -398,7 +398,7 @@ int renderWith(const Options& o, eng::vk::Device& device) {
         return 0;
     }
     eng::scene::Scene scene =
-        o.sceneFile ? eng::scene::loadGltf(*o.sceneFile) : eng::scene::loadBuiltin(o.builtin);
+        o.sceneFile ? eng::scene::loadGltf(*o.sceneFile) : eng::scene::loadTestScene(o.builtin);
     for (const std::string& w : scene.stats.warnings)
         std::cerr << "warning: " << w << "\n";
     if (o.noShadowCasters)

@@ -26,12 +26,12 @@
 // Exit codes: 0 done; 2 bad arguments; 3 the device lacks something required.
 
 #include "agaa/aggregate/agaa_constants.h"
-#include "agaa/common/frame_renderer.h"
 #include "agaa/methods.h"
 #include "engine/scene/extra_lights.h"
 #include "engine/scene/scene_error.h"
-#include "engine/scene/scenegen.h"
 #include "engine/vk/check.h"
+#include "tools/harness/frame_renderer.h"
+#include "tools/scenes/adversarial_scenes.h"
 
 #include <nlohmann/json.hpp>
 
@@ -237,7 +237,7 @@ int main(int argc, char** argv) {
         for (const std::string& sceneName : scenes)
             for (uint32_t lights : extraLights) {
                 const std::string name = lights == 0 ? sceneName : sceneName + "+l" + std::to_string(lights);
-                eng::scene::Scene scene = eng::scene::loadBuiltin(sceneName);
+                eng::scene::Scene scene = eng::scene::loadTestScene(sceneName);
                 eng::scene::addExtraLights(scene, lights);
                 agaa::FrameRenderer renderer(device, scene);
                 std::map<std::string, agaa::RenderResult> results;

@@ -4,8 +4,8 @@
 //   scenegen --list | --help
 // Exit codes: 0 success, 1 write or generation failure, 2 bad arguments.
 
-#include "engine/scene/adversarial_scenes.h"
 #include "engine/scene/scenegen.h"
+#include "tools/scenes/adversarial_scenes.h"
 
 #include <tiny_gltf.h>
 
@@ -142,7 +142,7 @@ Args parse(int argc, char** argv) {
 
 bool writeScene(const std::string& kind, const eng::scene::GenOptions& gen,
                 const std::filesystem::path& out) {
-    const tinygltf::Model model = eng::scene::generateScene(kind, gen);
+    const tinygltf::Model model = eng::scene::generateTestScene(kind, gen);
     const bool binary = out.extension() == ".glb";
     tinygltf::TinyGLTF writer;
     // embedImages: images live in the buffer already; embedBuffers: data URIs

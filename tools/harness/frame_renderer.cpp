@@ -1,4 +1,4 @@
-#include "agaa/common/frame_renderer.h"
+#include "tools/harness/frame_renderer.h"
 
 #include "engine/frame/exposure.h"
 #include "engine/frame/readback.h"

@@ -1,6 +1,7 @@
-#include "engine/scene/adversarial_scenes.h"
+#include "tools/scenes/adversarial_scenes.h"
 
 #include "engine/scene/camera_framing.h"
+#include "engine/scene/gltf_loader.h"
 #include "engine/scene/model_builder.h"
 #include "engine/scene/prng.h"
 
@@ -415,6 +416,17 @@ tinygltf::Model generateHardScene(std::string_view kind, const GenOptions& optio
         known += (known.empty() ? "" : ", ") + std::string(k.name);
     throw SceneError("builtin:" + std::string(kind) + ": unknown hard scene kind; known hard kinds are " +
                      known);
+}
+
+tinygltf::Model generateTestScene(std::string_view kind, const GenOptions& options) {
+    return isHardSceneKind(kind) ? generateHardScene(kind, options) : generateScene(kind, options);
+}
+
+Scene loadTestScene(std::string_view name) {
+    if (!isHardSceneKind(name)) return loadBuiltin(name);
+    Scene scene = loadGltfModel(generateHardScene(name), "builtin:" + std::string(name));
+    scene.exposure = 1.0f; // the generated lights are sized for it, as loadBuiltin's
+    return scene;
 }
 
 } // namespace eng::scene

@@ -1,0 +1,57 @@
+# The installed package from outside (issue 18): installs the build to a temporary prefix,
+# configures tests/package/consumer against it with find_package(agaa CONFIG REQUIRED) (no
+# repository path reaches it), builds it with the build's own compiler and runs it: one small
+# frame on lavapipe under the validation layer, which must be validation-clean and non-blank.
+#   cmake -DBUILD=<build> -DSOURCE=<repo> -DWORK=<folder> -DCXX=<compiler> [-DLAUNCHER=ccache]
+#         -DGENERATOR=<generator> [-DCXX_FLAGS=...] [-DLINKER_FLAGS=...] -P package_test.cmake
+foreach(var BUILD SOURCE WORK CXX GENERATOR)
+  if(NOT DEFINED ${var})
+    message(FATAL_ERROR "package_test.cmake: -D${var}= is missing")
+  endif()
+endforeach()
+
+function(run what)
+  execute_process(COMMAND ${ARGN} RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE out)
+  if(NOT code EQUAL 0)
+    message(FATAL_ERROR "package test: ${what} failed (${code}):\n${out}")
+  endif()
+  set(last_output "${out}" PARENT_SCOPE)
+endfunction()
+
+file(REMOVE_RECURSE ${WORK})
+set(prefix ${WORK}/prefix)
+run("cmake --install" ${CMAKE_COMMAND} --install ${BUILD} --prefix ${prefix})
+
+# What a host gets and only that: the umbrella header, no test content, no tool harness, and no
+# include directory but <prefix>/include/agaa.
+foreach(path include/agaa/agaa/agaa.h include/agaa/engine/vk/device.h include/agaa/shared/frame.h
+             lib/cmake/agaa/agaa-config.cmake lib/cmake/agaa/agaa-targets.cmake)
+  if(NOT EXISTS ${prefix}/${path})
+    message(FATAL_ERROR "package test: the install lacks ${path}")
+  endif()
+endforeach()
+file(GLOB_RECURSE installed RELATIVE ${prefix} ${prefix}/*)
+foreach(path IN LISTS installed)
+  if(path MATCHES "adversarial_scenes|frame_renderer|harness|test_scenes|test_shaders|/tests/|gtest")
+    message(FATAL_ERROR "package test: test or tool content installed: ${path}")
+  endif()
+endforeach()
+file(READ ${prefix}/lib/cmake/agaa/agaa-targets.cmake targets)
+string(FIND "${targets}" "${SOURCE}" at)
+if(NOT at EQUAL -1)
+  message(FATAL_ERROR "package test: the exported targets name the source tree ${SOURCE}")
+endif()
+
+set(args -S ${SOURCE}/tests/package/consumer -B ${WORK}/build -G ${GENERATOR} -DCMAKE_BUILD_TYPE=Release
+         -DCMAKE_PREFIX_PATH=${prefix} -DCMAKE_CXX_COMPILER=${CXX} "-DCMAKE_CXX_FLAGS=${CXX_FLAGS}"
+         "-DCMAKE_EXE_LINKER_FLAGS=${LINKER_FLAGS}")
+if(LAUNCHER)
+  list(APPEND args -DCMAKE_CXX_COMPILER_LAUNCHER=${LAUNCHER})
+endif()
+run("configuring the consumer" ${CMAKE_COMMAND} ${args})
+run("building the consumer" ${CMAKE_COMMAND} --build ${WORK}/build)
+run("running the consumer" ${WORK}/build/consumer agaa plane 32)
+message(STATUS "${last_output}")
+if(NOT last_output MATCHES "not blank, 0 validation error")
+  message(FATAL_ERROR "package test: the consumer's frame is not a clean non-blank one:\n${last_output}")
+endif()
