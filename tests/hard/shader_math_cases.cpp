@@ -1,5 +1,7 @@
 #include "shader_math_cases.h"
 
+#include "../agaa/filtered_diffuse_reference.h"
+
 #include "engine/frame/frame_constants.h"
 #include "engine/frame/sample_pattern.h"
 #include "shared/sggx.h"
@@ -154,65 +156,6 @@ double filtered(double len, double smax) {
     double f = len / (len + smax * (1.0 - len));
     return std::sqrt(2.0 / (f * smax + 2.0));
 }
-// AGAA's filtered Lambert (common/brdf.glsl filteredClampedCosine), from its definition rather
-// than the shader's expansion: the clamped cosine's Legendre coefficients integrated numerically,
-// P_l by the three-term recurrence, bands l = 1..6 attenuated by r^(l(l+1)/2) on the exact max(0, x).
-double legendre(int l, double x) {
-    double p0 = 1.0, p1 = x;
-    if (l == 0) return p0;
-    for (int k = 1; k < l; ++k) {
-        const double p2 = ((2 * k + 1) * x * p1 - k * p0) / (k + 1);
-        p0 = p1;
-        p1 = p2;
-    }
-    return p1;
-}
-double clampedCosineCoefficient(int l) { // (2l + 1) / 2 * integral_0^1 x P_l(x) dx, midpoint rule
-    const int steps = 4096;
-    double sum = 0.0;
-    for (int i = 0; i < steps; ++i) {
-        const double x = (i + 0.5) / steps;
-        sum += x * legendre(l, x);
-    }
-    return (2 * l + 1) / 2.0 * sum / steps;
-}
-double filteredCosine(double x, double r) {
-    double v = std::max(x, 0.0);
-    for (int l = 1; l <= 6; ++l)
-        v += clampedCosineCoefficient(l) * (std::pow(r, l * (l + 1) / 2.0) - 1.0) * legendre(l, x);
-    return std::max(v, 0.0);
-}
-// What the expansion approximates: E[max(0, N.L)] for N drawn from a von Mises-Fisher lobe around z
-// whose mean length is r (kappa from coth(kappa) - 1/kappa = r by bisection), x = z.L, by
-// quadrature over the polar angle's cosine t and the azimuth.
-double vmfClampedCosine(double x, double r) {
-    double kappa = 0.0;
-    if (r > 0.0) {
-        double lo = 1e-9, hi = 1e6;
-        for (int i = 0; i < 200; ++i) {
-            const double m = std::sqrt(lo * hi);
-            (1.0 / std::tanh(m) - 1.0 / m < r ? lo : hi) = m;
-        }
-        kappa = lo;
-    }
-    const double sx = std::sqrt(std::max(1.0 - x * x, 0.0));
-    const int nt = 400, nphi = 128;
-    double sum = 0.0, weight = 0.0;
-    for (int i = 0; i < nt; ++i) {
-        const double t = -1.0 + (i + 0.5) * 2.0 / nt, st = std::sqrt(std::max(1.0 - t * t, 0.0));
-        const double density = std::exp(kappa * (t - 1.0)); // vMF density in t, unnormalised
-        double ring = 0.0;
-        for (int j = 0; j < nphi; ++j)
-            ring +=
-                std::max(st * std::cos((j + 0.5) * 2.0 * 3.14159265358979323846 / nphi) * sx + t * x, 0.0);
-        sum += density * ring / nphi;
-        weight += density;
-    }
-    return sum / weight;
-}
-// The expansion's largest distance from the vMF integral over r in [0, 0.99], x in [-1, 1]
-// (measured: 0.043, at x = 0, where the clamped cosine's kink needs the bands above 6).
-constexpr double kFilteredCosineModelError = 0.045;
 
 uint32_t quantize(double v, uint32_t scale) {
     double c = v > 0.0 ? (v < 1.0 ? v : 1.0) : 0.0; // NaN -> 0
@@ -840,12 +783,13 @@ std::vector<EdgeCase> shaderMathCases() {
         for (double x : {-1.0, -0.6, -0.2, -0.05, 0.0, 0.05, 0.2, 0.6, 1.0})
             add("filteredClampedCosine x=" + fmt(float(x)) + " r=" + fmt(float(r)), {},
                 op(kOpFilteredCosine, glm::vec4(float(x), float(r), 0, 0)), [x, r](const MathResult& got) {
-                    if (std::string e = near("expansion", got.r0.x, filteredCosine(x, r), 1e-5, 2e-6);
+                    if (std::string e =
+                            near("expansion", got.r0.x, agaa::test::filteredCosine(x, r), 1e-5, 2e-6);
                         !e.empty())
                         return e;
                     if (r == 1.0) return near("clamped cosine", got.r0.x, std::max(x, 0.0), 0.0, 1e-6);
-                    return near("vMF integral", got.r0.x, vmfClampedCosine(x, r), 0.0,
-                                kFilteredCosineModelError);
+                    return near("vMF integral", got.r0.x, agaa::test::vmfClampedCosine(x, r), 0.0,
+                                agaa::test::kFilteredCosineModelError);
                 });
 
     // Face normal from derivatives (common/face_normal.glsl): the guard is on the sine of the angle
