@@ -110,7 +110,20 @@ TEST(GoalP8, MoreGeometrySamplesBeatMoreShadingSamples) {
                         split(display).c_str());
         }
     }
-    EXPECT_GT(agaaError, 0.0);
+    // Goal P8 is not met at the default settings (the README gives the split): c = 2 must merge
+    // the third and fourth surfaces of the 18 % of pixels that have them (fur behind railings in
+    // front of foliage), and the statistical shadow footprint adds error on one-surface pixels
+    // (AGAA_P8_SHADOW_SAMPLES=1: 1.02x). The test guards the measured level (1.05x; 1.34x before
+    // the filtered diffuse and the NDF rule) and fails when the goal is reached, so that this
+    // becomes the assertion the goal asks for.
+    const bool measuredSetting = !std::getenv("AGAA_P8_NDF") && !std::getenv("AGAA_P8_NO_SHADOWS") &&
+                                 !std::getenv("AGAA_P8_DIFFUSE") && !std::getenv("AGAA_P8_SHADOW_SAMPLES") &&
+                                 !std::getenv("AGAA_P8_SHADOW_TAPS");
+    if (measuredSetting) {
+        EXPECT_LE(agaaError, 1.1 * perSampleError) << "AGAA (32, 2) got worse against per-sample (8)";
+        EXPECT_GT(agaaError, perSampleError)
+            << "goal P8 holds now: make this test assert it (agaaError <= perSampleError)";
+    }
     agaa::test::expectNoValidationErrors(*device);
 }
 
