@@ -36,16 +36,19 @@ vec2 equirectCoordinates(vec3 d) {
 // single normal; an aggregate's spread of normals attenuates them, environmentLightingFiltered).
 // Band-2 ringing can dip below 0 opposite a bright sun: clamped.
 vec3 environmentIrradiance(vec3 N, vec2 bands) {
-    float x = N.x, y = N.y, z = N.z;
-    vec3 e1 = environment.irradianceSh[1].rgb * (0.488603 * y);
-    e1 += environment.irradianceSh[2].rgb * (0.488603 * z);
-    e1 += environment.irradianceSh[3].rgb * (0.488603 * x);
-    vec3 e2 = environment.irradianceSh[4].rgb * (1.092548 * x * y);
-    e2 += environment.irradianceSh[5].rgb * (1.092548 * y * z);
-    e2 += environment.irradianceSh[6].rgb * (0.315392 * (3.0 * z * z - 1.0));
-    e2 += environment.irradianceSh[7].rgb * (1.092548 * x * z);
-    e2 += environment.irradianceSh[8].rgb * (0.546274 * (x * x - y * y));
-    return max(environment.irradianceSh[0].rgb * 0.282095 + e1 * bands.x + e2 * bands.y, vec3(0.0));
+    float x = N.x, y = N.y, z = N.z, b1 = bands.x, b2 = bands.y;
+    // Each band's factor inside its term, in the sum's order: bands (1, 1) add exactly what the
+    // unscaled sum adds (a point sample's irradiance is unchanged to the bit).
+    vec3 e = environment.irradianceSh[0].rgb * 0.282095;
+    e += environment.irradianceSh[1].rgb * (0.488603 * y * b1);
+    e += environment.irradianceSh[2].rgb * (0.488603 * z * b1);
+    e += environment.irradianceSh[3].rgb * (0.488603 * x * b1);
+    e += environment.irradianceSh[4].rgb * (1.092548 * x * y * b2);
+    e += environment.irradianceSh[5].rgb * (1.092548 * y * z * b2);
+    e += environment.irradianceSh[6].rgb * (0.315392 * (3.0 * z * z - 1.0) * b2);
+    e += environment.irradianceSh[7].rgb * (1.092548 * x * z * b2);
+    e += environment.irradianceSh[8].rgb * (0.546274 * (x * x - y * y) * b2);
+    return max(e, vec3(0.0));
 }
 
 // Pre-filtered radiance towards world direction D for perceptual roughness r: the two levels
