@@ -17,9 +17,9 @@ enum class AggregatePosition : uint32_t { SampleMean = 0, PixelCentre = 1 };
 // How an aggregate's normals are filtered (shared/agaa.h layouts, same 24 bytes each): the
 // isotropic Toksvig vector of paper section 3.5.2, or the anisotropic SGGX matrix (shared/sggx.h,
 // the paper's choice for thin glossy rods) with the two-point tone-mapped resolve.
-// Auto: SGGX where the scene has glossy metals (eng::scene::SceneFeatures::glossyMetalMaterials),
-// Toksvig elsewhere (its mean shading normal lights diffuse aggregates better: measured in
-// agaa/aggregate/README.md).
+// Auto: SGGX where glossy metals are at least half of the drawn materials
+// (eng::scene::SceneFeatures::glossyMetalsDominate), Toksvig elsewhere (its mean shading normal
+// and first moment light diffuse aggregates better: measured in README, issue 14).
 enum class AggregateNdf : uint32_t { Toksvig = 0, Sggx = 1, Auto = 2 };
 // How the lighting pass schedules its shading events (shaders/glsl/agaa/lighting.glsl, step 3):
 // Registers: each invocation shades its own pixel's aggregates (a SIMD group pays for its pixel

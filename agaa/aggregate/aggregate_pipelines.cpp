@@ -51,7 +51,7 @@ AggregateAA::AggregateAA(vk::Device& device, const eng::frame::GpuScene& scene,
       m_hasEmissive(m_features.hasEmissive()) {
     validate(settings);
     if (m_settings.ndf == AggregateNdf::Auto)
-        m_settings.ndf = m_features.hasGlossyMetals() ? AggregateNdf::Sggx : AggregateNdf::Toksvig;
+        m_settings.ndf = m_features.glossyMetalsDominate() ? AggregateNdf::Sggx : AggregateNdf::Toksvig;
     m_shadow = std::make_unique<ShadowMapPass>(device, scene, m_features, settings.effects, "agaa");
     const vk::Capabilities& caps = device.caps();
     if (!caps.supportsSamples(4))
@@ -372,7 +372,8 @@ std::vector<VariantChoice> AggregateAA::variants() const {
     v.push_back({"normal-distribution", sggx ? "sggx, two-point tone-mapped resolve" : "toksvig",
                  m_requestedNdf != AggregateNdf::Auto
                      ? std::string("setting --agaa-ndf")
-                     : std::to_string(m_features.glossyMetalMaterials) + " glossy metal materials"});
+                     : std::to_string(m_features.glossyMetalMaterials) + " of " +
+                           std::to_string(m_features.drawnMaterials) + " drawn materials glossy metal"});
     const vk::Capabilities& caps = m_device.caps();
     const bool compact = m_settings.shading == AggregateShading::Compact;
     v.push_back({"lighting-schedule",

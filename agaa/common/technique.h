@@ -76,8 +76,8 @@ struct MethodSettings {
     // AGAA shading position: false = mean of the aggregate's sample positions, true = the UE4
     // shortcut (seed 004): the mean depth on the pixel centre's ray.
     bool pixelCentrePosition = false;
-    // AGAA normal distribution per aggregate: "auto" (SGGX where the scene has glossy metals,
-    // Toksvig elsewhere), "sggx" or "toksvig" (agaa/aggregate/agaa_constants.h AggregateNdf).
+    // AGAA normal distribution per aggregate: "auto" (SGGX where glossy metals are at least half of the drawn
+    // materials, Toksvig elsewhere), "sggx" or "toksvig" (agaa/aggregate/agaa_constants.h AggregateNdf).
     std::string ndf = "auto";
     // AGAA lighting schedule "auto" | "compact" | "registers", generation routing "samples" |
     // "fragment", atomics "auto" | "32" | "64", subgroup pre-reduction "auto" | "on" | "off",

@@ -42,6 +42,7 @@ SceneFeatures deriveSceneFeatures(const Scene& scene) {
     for (size_t m = 0; m < scene.materials.size(); ++m) {
         if (!used[m]) continue;
         const Material& mat = scene.materials[m];
+        ++f.drawnMaterials;
         if (mat.alphaMode == AlphaMode::Mask) ++f.maskedMaterials;
         if (mat.alphaMode == AlphaMode::Blend) ++f.blendedMaterials;
         const glm::vec3 e = mat.emissiveFactor * mat.emissiveStrength;

@@ -21,6 +21,7 @@
 #include "agaa_layout_reference.h"
 #include "agaa_test_support.h"
 #include "engine/frame/readback.h"
+#include "filtered_diffuse_reference.h"
 #include "gpu_test_support.h"
 #include "tools/harness/frame_renderer.h"
 #include "tools/scenes/adversarial_scenes.h"
@@ -93,11 +94,18 @@ bool incidence(const ViewLight& l, const dvec3& P, dvec3& L, dvec3& E) {
     return att > 0.0;
 }
 
-// glTF 2.0 appendix B, per unit irradiance times N.L.
+// glTF 2.0 appendix B, per unit irradiance times N.L; the diffuse through a spread of normals of
+// mean length `spread` (filtered_diffuse_reference.h), lit below N's horizon too.
 dvec3 brdfTimesCosine(const dvec3& N, const dvec3& V, const dvec3& L, double alpha, const dvec3& base,
-                      double metallic) {
+                      double metallic, double spread) {
     const double NoL = glm::dot(N, L);
-    if (NoL <= 0.0) return dvec3(0.0);
+    if (NoL <= 0.0) {
+        const dvec3 H = glm::normalize(V + L);
+        const double VoH = std::clamp(glm::dot(V, H), 0.0, 1.0);
+        const dvec3 f0 = glm::mix(dvec3(0.04), base, metallic);
+        const dvec3 F = f0 + (dvec3(1.0) - f0) * std::pow(1.0 - VoH, 5.0);
+        return (dvec3(1.0) - F) * (1.0 - metallic) * base / kPi * agaa::test::filteredCosine(NoL, spread);
+    }
     const double NoV = std::max(glm::dot(N, V), 1e-4); // the renderer's guard for back-facing views
     const dvec3 H = glm::normalize(V + L);
     const double NoH = std::clamp(glm::dot(N, H), 0.0, 1.0), VoH = std::clamp(glm::dot(V, H), 0.0, 1.0);
@@ -110,24 +118,36 @@ dvec3 brdfTimesCosine(const dvec3& N, const dvec3& V, const dvec3& L, double alp
     const dvec3 f0 = glm::mix(dvec3(0.04), base, metallic);
     const dvec3 F = f0 + (dvec3(1.0) - f0) * std::pow(1.0 - VoH, 5.0);
     const dvec3 diffuse = (dvec3(1.0) - F) * (1.0 - metallic) * base / kPi;
-    return (diffuse + F * (D * Vis)) * NoL;
+    return diffuse * agaa::test::filteredCosine(NoL, spread) + F * (D * Vis) * NoL;
+}
+
+// The Toksvig length of a GGX alpha (DESIGN 4.4: s = 2 / alpha^2 - 2, |N| = s smax / (smax - s +
+// s smax)), alpha in the BRDF's range.
+double toksvigLengthOf(double alpha, double smax) {
+    const double a = std::clamp(alpha, kAlphaMin, kAlphaMax);
+    const double s = std::clamp(2.0 / (a * a) - 2.0, 0.0, smax);
+    return s * smax / (smax - s + s * smax);
 }
 
 // One aggregate lit by every light: the Toksvig normal and filtered alpha from its mean Toksvig
-// vector (DESIGN 4.4), the glTF BRDF at its mean position P (view space).
+// vector (DESIGN 4.4), the glTF BRDF at its mean position P (view space), the diffuse through the
+// normals' spread: |N| over the Toksvig length of the samples' mean material alpha.
 // lengthScale: |N| scaled by it (the reference's sensitivity to the float rounding of |N|).
-dvec3 shadeToksvig(const dvec3& mean, const dvec3& base, double metallic, const dvec3& P,
-                   const std::vector<ViewLight>& lights, double smax, double lengthScale = 1.0) {
+dvec3 shadeToksvig(const dvec3& mean, double materialAlpha, const dvec3& base, double metallic,
+                   const dvec3& P, const std::vector<ViewLight>& lights, double smax,
+                   double lengthScale = 1.0) {
     const dvec3 V = glm::normalize(-P);
     const double len = glm::length(mean) * lengthScale;
     const dvec3 N = len > 1e-6 ? mean / len : V;
     const double l = std::clamp(len, 0.0, 1.0);
     const double f = l / (l + smax * (1.0 - l));
     const double alpha = std::clamp(std::sqrt(2.0 / (f * smax + 2.0)), kAlphaMin, kAlphaMax);
+    const double spread = std::clamp(len / toksvigLengthOf(materialAlpha, smax), 0.0, 1.0);
     dvec3 radiance(0.0);
     for (const ViewLight& light : lights) {
         dvec3 L, E;
-        if (incidence(light, P, L, E)) radiance += brdfTimesCosine(N, V, L, alpha, base, metallic) * E;
+        if (incidence(light, P, L, E))
+            radiance += brdfTimesCosine(N, V, L, alpha, base, metallic, spread) * E;
     }
     return radiance;
 }
@@ -175,7 +195,10 @@ void symmetricEigen(double A[3][3], double Q[3][3]) {
 // + (b.h/ay)^2 + (n.h)^2)^2); Heitz 2014's height-correlated visibility 0.5 / (n.l |(ax t.v, ay b.v,
 // n.v)| + n.v |(ax t.l, ay b.l, n.l)|)). eigenError: every eigenvalue moved by it (the
 // reference's sensitivity to the fp32 decomposition).
-dvec3 shadeSggx(const double S[6], const dvec3& base, double metallic, const dvec3& P,
+// The diffuse goes through the normals' spread r: the second moment along N with the material's
+// lobe taken out, m = (lambda_n - a^2) / (1 - a^2) (S = (1 - a^2) E[N N^T] + a^2 I at the samples'
+// mean material alpha a), read as a vMF lobe's E[P2] = (3m - 1) / 2 = r^3.
+dvec3 shadeSggx(const double S[6], double materialAlpha, const dvec3& base, double metallic, const dvec3& P,
                 const std::vector<ViewLight>& lights, double eigenError = 0.0) {
     double A[3][3] = {{S[0], S[3], S[4]}, {S[3], S[1], S[5]}, {S[4], S[5], S[2]}}, Q[3][3];
     symmetricEigen(A, Q);
@@ -191,12 +214,22 @@ dvec3 shadeSggx(const double S[6], const dvec3& base, double metallic, const dve
         std::clamp(std::sqrt(std::max(A[order[1]][order[1]] + eigenError, 0.0) / ln), kAlphaMin, kAlphaMax);
     const double ay =
         std::clamp(std::sqrt(std::max(A[order[2]][order[2]] + eigenError, 0.0) / ln), kAlphaMin, kAlphaMax);
+    const double a2 = std::pow(std::clamp(materialAlpha, kAlphaMin, kAlphaMax), 2.0);
+    const double m = std::clamp((A[order[0]][order[0]] - a2) / (1.0 - a2), 1.0 / 3.0, 1.0);
+    const double spread = std::cbrt(1.5 * m - 0.5);
     dvec3 radiance(0.0);
     for (const ViewLight& light : lights) {
         dvec3 L, E;
         if (!incidence(light, P, L, E)) continue;
         const double NoL = glm::dot(N, L);
-        if (NoL <= 0.0) continue;
+        const dvec3 f0 = glm::mix(dvec3(0.04), base, metallic);
+        if (NoL <= 0.0) {
+            const double VoH = std::clamp(glm::dot(V, glm::normalize(V + L)), 0.0, 1.0);
+            const dvec3 F = f0 + (dvec3(1.0) - f0) * std::pow(1.0 - VoH, 5.0);
+            radiance += (dvec3(1.0) - F) * (1.0 - metallic) * base / kPi *
+                        agaa::test::filteredCosine(NoL, spread) * E;
+            continue;
+        }
         const double NoV = std::max(glm::dot(N, V), 1e-4), NoLc = std::max(NoL, 1e-4);
         const dvec3 H = glm::normalize(V + L);
         const double NoH = std::clamp(glm::dot(N, H), 0.0, 1.0), VoH = std::clamp(glm::dot(V, H), 0.0, 1.0);
@@ -206,10 +239,9 @@ dvec3 shadeSggx(const double S[6], const dvec3& base, double metallic, const dve
         const double gv = NoLc * glm::length(dvec3(ax * glm::dot(T, V), ay * glm::dot(B, V), NoV));
         const double gl = NoV * glm::length(dvec3(ax * glm::dot(T, L), ay * glm::dot(B, L), NoLc));
         const double Vis = 0.5 / (gv + gl);
-        const dvec3 f0 = glm::mix(dvec3(0.04), base, metallic);
         const dvec3 F = f0 + (dvec3(1.0) - f0) * std::pow(1.0 - VoH, 5.0);
         const dvec3 diffuse = (dvec3(1.0) - F) * (1.0 - metallic) * base / kPi;
-        radiance += (diffuse + F * (D * Vis)) * NoL * E;
+        radiance += (diffuse * agaa::test::filteredCosine(NoL, spread) + F * (D * Vis) * NoL) * E;
     }
     return radiance;
 }
@@ -264,6 +296,7 @@ TEST(AgaaLightingReference, AggregateShadingMatchesADoublePrecisionCpuShading) {
         uint32_t worstPixel = 0, lit = 0;
         for (uint32_t p = 0; p < pixels; ++p) {
             dvec3 positionSum[4] = {};
+            double alphaSum[4] = {};
             uint32_t count[4] = {}, skySamples = 0;
             for (uint32_t s = 0; s < k.n; ++s) {
                 const float* rec = &e[(size_t(p) * k.n + s) * kRecordFloats];
@@ -274,6 +307,8 @@ TEST(AgaaLightingReference, AggregateShadingMatchesADoublePrecisionCpuShading) {
                 const uint32_t a = uint32_t(rec[11]);
                 ASSERT_LT(a, k.c);
                 positionSum[a] += dvec3(rec[8], rec[9], rec[10]);
+                alphaSum[a] +=
+                    std::clamp(double(rec[3]) * double(rec[3]), kAlphaMin, kAlphaMax); // roughness^2
                 ++count[a];
             }
             dvec3 hdr = sky * (double(skySamples) / k.n), allowance(0.0);
@@ -283,18 +318,21 @@ TEST(AgaaLightingReference, AggregateShadingMatchesADoublePrecisionCpuShading) {
                 const dvec3 base(rec[6], rec[7], rec[8]);
                 const double metallic = rec[9];
                 const dvec3 P = positionSum[a] / double(count[a]);
+                const double materialAlpha = alphaSum[a] / double(count[a]);
                 const double weight = double(r.view.exposure) * double(count[a]) / k.n;
                 dvec3 radiance;
                 if (sggx) {
                     const double S[6] = {rec[0], rec[1], rec[2], rec[3], rec[4], rec[5]};
-                    radiance = shadeSggx(S, base, metallic, P, lights);
+                    radiance = shadeSggx(S, materialAlpha, base, metallic, P, lights);
                     // fp32 Jacobi sweeps: eigenvalues within a few ulps of the trace (>= 1 - quantisation).
                     for (double eps : {-4.0 * 0x1p-24, 4.0 * 0x1p-24})
                         allowance = glm::max(
                             allowance,
-                            glm::abs(shadeSggx(S, base, metallic, P, lights, eps) - radiance) * weight);
+                            glm::abs(shadeSggx(S, materialAlpha, base, metallic, P, lights, eps) - radiance) *
+                                weight);
                 } else {
-                    radiance = shadeToksvig(dvec3(rec[0], rec[1], rec[2]), base, metallic, P, lights, smax);
+                    radiance = shadeToksvig(dvec3(rec[0], rec[1], rec[2]), materialAlpha, base, metallic, P,
+                                            lights, smax);
                 }
                 hdr += glm::min(radiance * double(r.view.exposure), dvec3(6.0e4)) * (double(count[a]) / k.n);
             }
@@ -434,15 +472,17 @@ TEST(AgaaLightingReference, AccumulatePathShadingMatchesADoublePrecisionCpuShadi
                 const dvec3 base(mean(lay.albedo[0]), mean(lay.albedo[1]), mean(lay.albedo[2]));
                 const dvec3 P = positionSum[a] / double(count[a]);
                 const double metallic = mean(lay.metallic);
-                const dvec3 radiance = shadeToksvig(toksvig, base, metallic, P, lights, smax);
+                const double materialAlpha = mean(lay.alpha);
+                const dvec3 radiance = shadeToksvig(toksvig, materialAlpha, base, metallic, P, lights, smax);
                 const double weight = double(r.view.exposure) * double(count[a]) / k.n;
                 hdr += glm::min(radiance * double(r.view.exposure), dvec3(6.0e4)) * (double(count[a]) / k.n);
                 // |N| within 2 fp32 ulps either way: what the shader's float length() may return.
                 for (double scale : {1.0 - 0x1p-23, 1.0 + 0x1p-23})
-                    sensitivity = glm::max(
-                        sensitivity,
-                        glm::abs(shadeToksvig(toksvig, base, metallic, P, lights, smax, scale) - radiance) *
-                            weight);
+                    sensitivity =
+                        glm::max(sensitivity, glm::abs(shadeToksvig(toksvig, materialAlpha, base, metallic, P,
+                                                                    lights, smax, scale) -
+                                                       radiance) *
+                                                  weight);
             }
             for (int ch = 0; ch < 3; ++ch) {
                 const double gpu = result.hdr.rgba[size_t(p) * 4 + ch];

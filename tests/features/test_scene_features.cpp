@@ -235,4 +235,30 @@ TEST(SceneFeatures, GlossyMetalsCountAtTheThresholdsAndOnlyWhenDrawn) {
             << name;
 }
 
+// --agaa-ndf auto's rule: SGGX when glossy metals are at least half of the drawn materials.
+TEST(SceneFeatures, GlossyMetalsDominateFromHalfTheDrawnMaterials) {
+    Scene s = oneDrawScene();
+    s.materials[0].metallicFactor = 1.0f;
+    s.materials[0].roughnessFactor = 0.1f;
+    EXPECT_TRUE(eng::scene::deriveSceneFeatures(s).glossyMetalsDominate()) << "one of one";
+    s.materials.push_back(s.materials[0]);
+    s.materials[1].metallicFactor = 0.0f;
+    s.draws.push_back(s.draws[0]);
+    s.draws[1].material = 1;
+    EXPECT_TRUE(eng::scene::deriveSceneFeatures(s).glossyMetalsDominate()) << "one of two";
+    s.materials.push_back(s.materials[1]);
+    s.draws.push_back(s.draws[1]);
+    s.draws[2].material = 2;
+    EXPECT_EQ(eng::scene::deriveSceneFeatures(s).drawnMaterials, 3u);
+    EXPECT_FALSE(eng::scene::deriveSceneFeatures(s).glossyMetalsDominate()) << "one of three";
+    s.materials[0].metallicFactor = 0.0f;
+    EXPECT_FALSE(eng::scene::deriveSceneFeatures(s).glossyMetalsDominate()) << "none";
+    for (auto [name, sggx] : {std::pair{"metal", true}, std::pair{"spikes", true},
+                              std::pair{"default", false}, std::pair{"furball", false}})
+        EXPECT_EQ(eng::scene::deriveSceneFeatures(eng::scene::loadBuiltin(name)).glossyMetalsDominate(), sggx)
+            << name << ": "
+            << eng::scene::deriveSceneFeatures(eng::scene::loadBuiltin(name)).glossyMetalMaterials << " of "
+            << eng::scene::deriveSceneFeatures(eng::scene::loadBuiltin(name)).drawnMaterials;
+}
+
 } // namespace

@@ -1,5 +1,7 @@
 #include "shader_math_cases.h"
 
+#include "../agaa/filtered_diffuse_reference.h"
+
 #include "engine/frame/frame_constants.h"
 #include "engine/frame/sample_pattern.h"
 #include "shared/sggx.h"
@@ -154,6 +156,7 @@ double filtered(double len, double smax) {
     double f = len / (len + smax * (1.0 - len));
     return std::sqrt(2.0 / (f * smax + 2.0));
 }
+
 uint32_t quantize(double v, uint32_t scale) {
     double c = v > 0.0 ? (v < 1.0 ? v : 1.0) : 0.0; // NaN -> 0
     return uint32_t(std::floor(c * scale + 0.5));
@@ -772,6 +775,22 @@ std::vector<EdgeCase> shaderMathCases() {
                     return near("footprint", r.r0.x, 2.0 * t * std::tan(0.4) / 64.0, 1e-5);
                 });
     }
+
+    // Filtered Lambert (common/brdf.glsl filteredClampedCosine, issue 14): the shader against the
+    // expansion in double, and the expansion against the vMF integral it stands for; r = 1 is the
+    // clamped cosine exactly (a single normal shades as before), r = 0 about the sphere's mean 1/4.
+    for (double r : {0.0, 0.25, 0.5, 0.75, 0.9, 0.97, 0.99, 1.0})
+        for (double x : {-1.0, -0.6, -0.2, -0.05, 0.0, 0.05, 0.2, 0.6, 1.0})
+            add("filteredClampedCosine x=" + fmt(float(x)) + " r=" + fmt(float(r)), {},
+                op(kOpFilteredCosine, glm::vec4(float(x), float(r), 0, 0)), [x, r](const MathResult& got) {
+                    if (std::string e =
+                            near("expansion", got.r0.x, agaa::test::filteredCosine(x, r), 1e-5, 2e-6);
+                        !e.empty())
+                        return e;
+                    if (r == 1.0) return near("clamped cosine", got.r0.x, std::max(x, 0.0), 0.0, 1e-6);
+                    return near("vMF integral", got.r0.x, agaa::test::vmfClampedCosine(x, r), 0.0,
+                                agaa::test::kFilteredCosineModelError);
+                });
 
     // Face normal from derivatives (common/face_normal.glsl): the guard is on the sine of the angle
     // between dP/dx and dP/dy, so micrometre footprints keep their plane (issue 14) and only

@@ -48,6 +48,7 @@ enum MathOp : uint32_t {
     kOpCurvature = 21,
     kOpPixelFootprint = 22,
     kOpFaceNormal = 23,
+    kOpFilteredCosine = 24,
 };
 
 struct EdgeCase {

@@ -169,6 +169,7 @@ const uint kListRound = kTilePixels;
 //   sAlbedo    rgb albedo, a metallic
 //   sTangent   xyz tangent (SGGX), w alphas.x;  sBitangent: xyz bitangent (SGGX), w alphas.y
 //   sOwner     tile pixel index | aggregate id << 8 | the aggregate's sample count << 10
+//   sSpread    the mean length of the aggregate's normals (Toksvig's filtered diffuse; 1: none)
 // Outputs, written in place by the invocation that shades the entry: sPosition.xyz radiance,
 // sNormal.xyz specular part, sAlbedo.xyz its variance over the aggregate's samples.
 shared vec4 sPosition[kListRound];
@@ -177,18 +178,19 @@ shared vec4 sAlbedo[kListRound];
 shared vec4 sTangent[kListRound];
 shared vec4 sBitangent[kListRound];
 shared uint sOwner[kListRound];
+shared float sSpread[kListRound];
 shared uint sEntryCount;
 
 // One light's contribution to an aggregate: its radiance, its specular part, and the square of
 // that (the two-point resolve's variance is (spike ratio - 1) times the sum of the squares: the
 // highlights of different lights fall on different samples, so their variances add).
-void addLight(SurfaceInputs surface, vec3 T, vec3 B, vec2 alphas, vec3 V, vec3 L, vec3 irradiance, bool sggx,
-              inout vec3 radiance, inout vec3 specular, inout vec3 specularSquares) {
+void addLight(SurfaceInputs surface, vec3 T, vec3 B, vec2 alphas, float spread, vec3 V, vec3 L, vec3 irradiance,
+              bool sggx, inout vec3 radiance, inout vec3 specular, inout vec3 specularSquares) {
     vec3 spec;
     if (sggx)
-        radiance += evaluateBrdfAnisotropic(surface, T, B, alphas.x, alphas.y, V, L, irradiance, spec);
+        radiance += evaluateBrdfAnisotropicFiltered(surface, T, B, alphas.x, alphas.y, spread, V, L, irradiance, spec);
     else
-        radiance += evaluateBrdfSplit(surface, V, L, irradiance, spec);
+        radiance += evaluateBrdfFilteredSplit(surface, spread, V, L, irradiance, spec);
     specular += spec;
     specularSquares += spec * spec;
 }
@@ -196,7 +198,7 @@ void addLight(SurfaceInputs surface, vec3 T, vec3 B, vec2 alphas, vec3 V, vec3 L
 // One shading event: the aggregate `a` of `pixel` (k samples), seen at P, lit by every light of
 // the tile. radiance: its linear radiance before exposure, with its specular part and the
 // variance of the specular radiance over the aggregate's samples (the two-point resolve's).
-void shadeAggregate(SurfaceInputs surface, vec3 T, vec3 B, vec2 alphas, vec3 P, float sigma, ivec2 pixel,
+void shadeAggregate(SurfaceInputs surface, vec3 T, vec3 B, vec2 alphas, float spread, vec3 P, float sigma, ivec2 pixel,
                     uint pixelIndex, uint a, uint k, bool sggx, out vec3 radiance, out vec3 specular,
                     out vec3 specularVariance) {
     radiance = vec3(0.0);
@@ -212,11 +214,12 @@ void shadeAggregate(SurfaceInputs surface, vec3 T, vec3 B, vec2 alphas, vec3 P, 
     // Toksvig roughness or the SGGX lobe's (the geometric mean of its two alphas). Smooth at the
     // scale of an aggregate: no spike, so it stays out of the two-point resolve's variance.
     if (kEnvironment != 0u)
-        radiance += environmentLighting(surface, V, sggx ? sqrt(sqrt(alphas.x * alphas.y)) : surface.roughness);
+        radiance += environmentLightingFiltered(surface, V, sggx ? sqrt(sqrt(alphas.x * alphas.y)) : surface.roughness,
+                                                spread);
     for (uint i = nextTileLight(0u); i < kMaxLights; i = nextTileLight(i + 1u)) {
         vec3 L, irradiance;
         if (!lightIncidence(lights[i], P, L, irradiance)) continue;
-        addLight(surface, T, B, alphas, V, L, irradiance, sggx, radiance, specular, specularSquares);
+        addLight(surface, T, B, alphas, spread, V, L, irradiance, sggx, radiance, specular, specularSquares);
     }
 #if AGAA_SHADOWS
     for (uint i = nextTileShadowedLight(0u); i < kMaxLights; i = nextTileShadowedLight(i + 1u)) {
@@ -224,7 +227,7 @@ void shadeAggregate(SurfaceInputs surface, vec3 T, vec3 B, vec2 alphas, vec3 P, 
         if (!lightIncidence(lights[i], P, L, irradiance)) continue;
         irradiance *= kShadowFootprint == 1u ? shadowVisibilityAggregateSamples(i, pixel, pixelIndex, a, k, surface.normal)
                                              : shadowVisibilityAggregate(i, P, surface.normal, sigma, pixelSize);
-        addLight(surface, T, B, alphas, V, L, irradiance, sggx, radiance, specular, specularSquares);
+        addLight(surface, T, B, alphas, spread, V, L, irradiance, sggx, radiance, specular, specularSquares);
     }
 #endif
     // The spike ratio E[L^2] / E[L]^2 of the aggregate's samples (shared/sggx.h), once per event:
@@ -247,7 +250,11 @@ void main() {
     // ---- 1. aggregate at the top of the tile: one walk over the pixel's samples -----------
     uint count = inside ? imageLoad(aggregateCount, pixel).r : 0u;
     float depthSum[kMaxAggregates] = float[](0.0, 0.0, 0.0, 0.0);
+    // Depths relative to the pixel's first covered sample for the variance: E[t^2] - E[t]^2 at
+    // t ~ metres cancels in fp32 below about 1e-6 t^2, the whole spread of a face-on pixel.
+    float depthShifted[kMaxAggregates] = float[](0.0, 0.0, 0.0, 0.0);
     float depthSquares[kMaxAggregates] = float[](0.0, 0.0, 0.0, 0.0);
+    float depthOrigin = -1.0;
     vec3 positionSum[kMaxAggregates] = vec3[](vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0));
     uint samplesIn[kMaxAggregates] = uint[](0u, 0u, 0u, 0u);
     uint skySamples = 0u;
@@ -301,7 +308,9 @@ void main() {
 #endif
             float t = -P.z;
             depthSum[a] += t;
-            depthSquares[a] += t * t;
+            if (depthOrigin < 0.0) depthOrigin = t;
+            depthShifted[a] += t - depthOrigin;
+            depthSquares[a] += (t - depthOrigin) * (t - depthOrigin);
             positionSum[a] += P;
             samplesIn[a] += 1u;
             tmin = min(tmin, t);
@@ -314,6 +323,9 @@ void main() {
     bool present[kMaxAggregates] = bool[](false, false, false, false);
     vec3 tangents[kMaxAggregates], bitangents[kMaxAggregates];
     vec2 alphas[kMaxAggregates]; // SGGX: (alphaT, alphaB), clamped to the BRDF's range
+    // The mean length of the aggregate's unit normals, the material's roughness taken out of the
+    // Toksvig length: the spread the filtered diffuse integrates over (1: one direction).
+    float spreads[kMaxAggregates] = float[](1.0, 1.0, 1.0, 1.0);
     uint presentCount = 0u;
     uint accumulated[kMaxAggregates] = uint[](0u, 0u, 0u, 0u);
     for (uint a = 0u; a < c; ++a) {
@@ -393,12 +405,26 @@ void main() {
             alphas[a] = clamp(vec2(lobe.alphaT, lobe.alphaB), kMinGgxAlpha, kMaxGgxAlpha);
             // The material alpha of the spike ratio (the anisotropic BRDF reads only the alphas).
             surfaces[a].roughness = sqrt(clamp(materialAlpha, kMinGgxAlpha, alphas[a].y));
+            // The normals' spread from the matrix's second moment along the lobe normal, the
+            // material's lobe taken out (S = (1 - a^2) E[N N^T] + a^2 I): m = E[(N.n)^2], and a vMF
+            // lobe of mean length r has E[P2(N.n)] = (3m - 1) / 2 = r^3 (the band factors of
+            // common/brdf.glsl filteredClampedCosine).
+            vec3 nn = lobe.normal;
+            float sn = dot(nn * nn, mean0) + 2.0 * (nn.x * nn.y * mean1.x + nn.x * nn.z * mean1.y + nn.y * nn.z * mean1.z);
+            float a2 = clamp(materialAlpha, kMinGgxAlpha, kMaxGgxAlpha);
+            a2 *= a2;
+            float m = clamp((sn - a2) / (1.0 - a2), 1.0 / 3.0, 1.0); // 1 - a2 >= 1 - 0.81
+            spreads[a] = pow(1.5 * m - 0.5, 1.0 / 3.0);
         } else {
             float len = length(mean0);
             // |N| -> 0 when opposing normals cancel: no mean direction; shade facing the viewer
             // (the filtered roughness is then 1, so the direction barely matters).
             surfaces[a].normal = len > kMinNormalLength ? mean0 / len : V;
             surfaces[a].roughness = sqrt(filteredAlpha(len, agaa.toksvig.x)); // the BRDF squares it back
+            // The Toksvig length is the normals' mean length times the material's own length
+            // (toksvigLength(alpha) >= 0.32 for alpha <= kMaxGgxAlpha: the division is bounded).
+            spreads[a] = clamp(len / toksvigLength(materialAlpha, agaa.toksvig.x, agaa.toksvig.y, agaa.toksvig.z),
+                               0.0, 1.0);
             // The two-point resolve's (filtered, material) alphas, in the BRDF's range.
             float filtered = clamp(surfaces[a].roughness * surfaces[a].roughness, kMinGgxAlpha, kMaxGgxAlpha);
             alphas[a] = vec2(filtered, clamp(materialAlpha, kMinGgxAlpha, filtered));
@@ -409,7 +435,8 @@ void main() {
 #endif
         // Depth variance (E[t^2] - E[t]^2, clamped: cancellation can make it slightly negative):
         // the aggregate's extent along the view ray, the footprint shadow filtering samples in.
-        depthSigma[a] = sqrt(max(depthSquares[a] / fs - meanDepth * meanDepth, 0.0));
+        float meanShifted = depthShifted[a] / fs;
+        depthSigma[a] = sqrt(max(depthSquares[a] / fs - meanShifted * meanShifted, 0.0));
     }
 
     // ---- 2. tile depth bounds and light culling; the pixel's place in the tile's list -------
@@ -447,6 +474,7 @@ void main() {
                     sTangent[e] = vec4(tangents[a], alphas[a].x);
                     sBitangent[e] = vec4(bitangents[a], alphas[a].y);
                     sOwner[e] = self | (a << 8u) | (samplesIn[a] << 10u);
+                    sSpread[e] = spreads[a];
                 }
                 slot += 1u;
             }
@@ -463,7 +491,8 @@ void main() {
                 vec4 T = sTangent[self];
                 vec4 B = sBitangent[self];
                 vec3 lit, spec, variance;
-                shadeAggregate(surface, T.xyz, B.xyz, vec2(T.w, B.w), sPosition[self].xyz, sPosition[self].w,
+                shadeAggregate(surface, T.xyz, B.xyz, vec2(T.w, B.w), sSpread[self], sPosition[self].xyz,
+                               sPosition[self].w,
                                ownerPixel, uint(ownerPixel.y * size.x + ownerPixel.x), (owner >> 8u) & 3u,
                                owner >> 10u, sggx, lit, spec, variance);
                 sPosition[self].xyz = lit;
@@ -488,13 +517,13 @@ void main() {
         // After the list's rounds: no barrier follows it, so lavapipe (whose compute barriers
         // split the shader into coroutine segments) keeps its loop free of frame spills.
         if (inside && present[0])
-            shadeAggregate(surfaces[0], tangents[0], bitangents[0], alphas[0], positions[0], depthSigma[0], pixel,
-                           pixelIndex, 0u, samplesIn[0], sggx, radiance[0], specular[0], specularVariance[0]);
+            shadeAggregate(surfaces[0], tangents[0], bitangents[0], alphas[0], spreads[0], positions[0], depthSigma[0],
+                           pixel, pixelIndex, 0u, samplesIn[0], sggx, radiance[0], specular[0], specularVariance[0]);
     } else if (inside) {
         for (uint a = 0u; a < c; ++a) {
             if (!present[a]) continue;
-            shadeAggregate(surfaces[a], tangents[a], bitangents[a], alphas[a], positions[a], depthSigma[a], pixel,
-                           pixelIndex, a, samplesIn[a], sggx, radiance[a], specular[a], specularVariance[a]);
+            shadeAggregate(surfaces[a], tangents[a], bitangents[a], alphas[a], spreads[a], positions[a], depthSigma[a],
+                           pixel, pixelIndex, a, samplesIn[a], sggx, radiance[a], specular[a], specularVariance[a]);
         }
     }
     if (!inside) return;

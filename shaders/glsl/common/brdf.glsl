@@ -69,17 +69,43 @@ vec3 evaluateBrdf(SurfaceInputs s, vec3 V, vec3 L, vec3 irradiance) {
     return (diffuseLobe(s, F) + specular) * irradiance * g.NoL;
 }
 
-// evaluateBrdf's value, with its specular part returned too (AGAA's two-point resolve spreads
-// the specular part of a Toksvig aggregate over its samples: agaa/lighting.glsl).
-vec3 evaluateBrdfSplit(SurfaceInputs s, vec3 V, vec3 L, vec3 irradiance, out vec3 specularOut) {
+// Lambert through a spread of normals: E[max(0, N.L)] over a von Mises-Fisher lobe of mean
+// length r around the shading normal, x = N0.L. AGAA's filtered diffuse (paper section 3.5.2,
+// after Baker and Hill 2012): without it an aggregate lights its diffuse with the clamped cosine
+// of its mean normal, as if every sample faced that way (issue 14: strands and edges whose normals
+// spread over a half circle). The clamped cosine's Legendre bands l = 1, 2, 4, 6 (a_l = 1/2, 5/16,
+// -3/32, 13/256; odd l > 1 vanish) are attenuated by the lobe's band factors r^(l(l+1)/2) (a vMF
+// lobe's bands fall as exp(-l(l+1) / 2 kappa), Han et al. 2007; A_1 = r fixes kappa), on top of
+// the exact clamped cosine: r = 1 is max(0, x) exactly, r = 0 the sphere's mean 1/4 up to the
+// bands above 6 (0.207 to 0.231). Clamped at 0: the truncated series dips below it near x = -1.
+float filteredClampedCosine(float x, float r) {
+    float x2 = x * x;
+    float p2 = 1.5 * x2 - 0.5;
+    float p4 = ((35.0 * x2 - 30.0) * x2 + 3.0) / 8.0;
+    float p6 = (((231.0 * x2 - 315.0) * x2 + 105.0) * x2 - 5.0) / 16.0;
+    float r3 = r * r * r;
+    float r10 = r3 * r3 * r3 * r;
+    float r21 = r10 * r10 * r;
+    float bands = 0.5 * (r - 1.0) * x + 0.3125 * (r3 - 1.0) * p2 - 0.09375 * (r10 - 1.0) * p4 +
+                  0.05078125 * (r21 - 1.0) * p6;
+    return max(max(x, 0.0) + bands, 0.0);
+}
+
+// evaluateBrdf for a Toksvig aggregate whose normals spread with mean length `spread` (1: one
+// normal, evaluateBrdf's value): the specular lobe is the caller's filtered roughness, the diffuse
+// filteredClampedCosine, which stays lit for lights below the mean normal's horizon that some of
+// the samples face. `specularOut` receives the specular part (AGAA's two-point resolve spreads
+// only that part over the aggregate's samples: agaa/lighting.glsl).
+vec3 evaluateBrdfFilteredSplit(SurfaceInputs s, float spread, vec3 V, vec3 L, vec3 irradiance, out vec3 specularOut) {
     specularOut = vec3(0.0);
     BrdfAngles g;
-    if (!brdfAngles(s.normal, V, L, g)) return vec3(0.0);
-    float alpha = clamp(s.roughness * s.roughness, kMinGgxAlpha, kMaxGgxAlpha);
+    bool above = brdfAngles(s.normal, V, L, g);
     vec3 F = surfaceFresnel(s, g.VoH);
-    vec3 specular = F * (ggxD(g.NoH, alpha) * smithVisibility(g.NoV, max(g.NoL, kMinCosine), alpha));
-    specularOut = specular * irradiance * g.NoL;
-    return diffuseLobe(s, F) * irradiance * g.NoL + specularOut;
+    vec3 diffuse = diffuseLobe(s, F) * irradiance * filteredClampedCosine(g.NoL, clamp(spread, 0.0, 1.0));
+    if (!above) return diffuse;
+    float alpha = clamp(s.roughness * s.roughness, kMinGgxAlpha, kMaxGgxAlpha);
+    specularOut = F * (ggxD(g.NoH, alpha) * smithVisibility(g.NoV, max(g.NoL, kMinCosine), alpha)) * irradiance * g.NoL;
+    return diffuse + specularOut;
 }
 
 // Anisotropic GGX (Burley 2012; Heitz 2014 for the height-correlated visibility), alphas ax
@@ -107,13 +133,15 @@ vec2 tangentComponents(vec3 X, vec3 T, vec3 B, float NoX) {
     return l > kMinNormalLength ? p * (sqrt(max(1.0 - NoX * NoX, 0.0)) / l) : vec2(0.0);
 }
 
-// As evaluateBrdf, anisotropic; `specular` receives the specular part of the result (AGAA's
-// two-point resolve spreads only that part).
-vec3 evaluateBrdfAnisotropic(SurfaceInputs s, vec3 T, vec3 B, float ax, float ay, vec3 V, vec3 L, vec3 irradiance,
-                             out vec3 specularOut) {
+// As evaluateBrdfFilteredSplit, anisotropic (SGGX aggregates); `spread` as there.
+vec3 evaluateBrdfAnisotropicFiltered(SurfaceInputs s, vec3 T, vec3 B, float ax, float ay, float spread, vec3 V,
+                                     vec3 L, vec3 irradiance, out vec3 specularOut) {
     specularOut = vec3(0.0);
     BrdfAngles g;
-    if (!brdfAngles(s.normal, V, L, g)) return vec3(0.0);
+    bool above = brdfAngles(s.normal, V, L, g);
+    vec3 F = surfaceFresnel(s, g.VoH);
+    vec3 diffuse = diffuseLobe(s, F) * irradiance * filteredClampedCosine(g.NoL, clamp(spread, 0.0, 1.0));
+    if (!above) return diffuse;
     ax = clamp(ax, kMinGgxAlpha, kMaxGgxAlpha);
     ay = clamp(ay, kMinGgxAlpha, kMaxGgxAlpha);
     float NoLc = max(g.NoL, kMinCosine);
@@ -121,8 +149,13 @@ vec3 evaluateBrdfAnisotropic(SurfaceInputs s, vec3 T, vec3 B, float ax, float ay
     float D = ggxDAnisotropic(h.x, h.y, g.NoH, ax, ay);
     float Vis = smithVisibilityAnisotropic(tangentComponents(V, T, B, g.NoV), g.NoV, tangentComponents(L, T, B, NoLc),
                                            NoLc, ax, ay);
-    vec3 F = surfaceFresnel(s, g.VoH);
     specularOut = F * (D * Vis) * irradiance * g.NoL;
-    return diffuseLobe(s, F) * irradiance * g.NoL + specularOut;
+    return diffuse + specularOut;
+}
+
+// As evaluateBrdf, anisotropic: one normal.
+vec3 evaluateBrdfAnisotropic(SurfaceInputs s, vec3 T, vec3 B, float ax, float ay, vec3 V, vec3 L, vec3 irradiance,
+                             out vec3 specularOut) {
+    return evaluateBrdfAnisotropicFiltered(s, T, B, ax, ay, 1.0, V, L, irradiance, specularOut);
 }
 #endif

@@ -32,19 +32,22 @@ vec2 equirectCoordinates(vec3 d) {
 }
 
 // Irradiance (lux) on a surface with world normal N: E = sum_i c_i Y_i(N), the basis of
-// engine/frame/environment_maps.cpp shBasis. Band-2 ringing can dip below 0 opposite a bright
-// sun: clamped.
-vec3 environmentIrradiance(vec3 N) {
-    float x = N.x, y = N.y, z = N.z;
+// engine/frame/environment_maps.cpp shBasis, with bands 1 and 2 scaled by `bands` (1, 1: a
+// single normal; an aggregate's spread of normals attenuates them, environmentLightingFiltered).
+// Band-2 ringing can dip below 0 opposite a bright sun: clamped.
+vec3 environmentIrradiance(vec3 N, vec2 bands) {
+    float x = N.x, y = N.y, z = N.z, b1 = bands.x, b2 = bands.y;
+    // Each band's factor inside its term, in the sum's order: bands (1, 1) add exactly what the
+    // unscaled sum adds (a point sample's irradiance is unchanged to the bit).
     vec3 e = environment.irradianceSh[0].rgb * 0.282095;
-    e += environment.irradianceSh[1].rgb * (0.488603 * y);
-    e += environment.irradianceSh[2].rgb * (0.488603 * z);
-    e += environment.irradianceSh[3].rgb * (0.488603 * x);
-    e += environment.irradianceSh[4].rgb * (1.092548 * x * y);
-    e += environment.irradianceSh[5].rgb * (1.092548 * y * z);
-    e += environment.irradianceSh[6].rgb * (0.315392 * (3.0 * z * z - 1.0));
-    e += environment.irradianceSh[7].rgb * (1.092548 * x * z);
-    e += environment.irradianceSh[8].rgb * (0.546274 * (x * x - y * y));
+    e += environment.irradianceSh[1].rgb * (0.488603 * y * b1);
+    e += environment.irradianceSh[2].rgb * (0.488603 * z * b1);
+    e += environment.irradianceSh[3].rgb * (0.488603 * x * b1);
+    e += environment.irradianceSh[4].rgb * (1.092548 * x * y * b2);
+    e += environment.irradianceSh[5].rgb * (1.092548 * y * z * b2);
+    e += environment.irradianceSh[6].rgb * (0.315392 * (3.0 * z * z - 1.0) * b2);
+    e += environment.irradianceSh[7].rgb * (1.092548 * x * z * b2);
+    e += environment.irradianceSh[8].rgb * (0.546274 * (x * x - y * y) * b2);
     return max(e, vec3(0.0));
 }
 
@@ -68,8 +71,10 @@ vec2 environmentBrdf(float roughness, float NoV) {
 }
 
 // Outgoing radiance towards V (view space) from the whole environment, for a surface of
-// perceptual roughness `roughness` (a point sample's own, or an aggregate's filtered one).
-vec3 environmentLighting(SurfaceInputs s, vec3 V, float roughness) {
+// perceptual roughness `roughness` (an aggregate's filtered one) whose normals spread with mean
+// length `spread` around s.normal: the diffuse irradiance's bands 1 and 2 attenuated by the
+// vMF lobe's factors r and r^3 (the filtered diffuse of common/brdf.glsl filteredClampedCosine).
+vec3 environmentLightingFiltered(SurfaceInputs s, vec3 V, float roughness, float spread) {
     vec3 N = s.normal;
     float NoV = max(dot(N, V), kMinCosine);
     vec3 f0 = mix(vec3(0.04), s.albedo, s.metallic);
@@ -77,9 +82,15 @@ vec3 environmentLighting(SurfaceInputs s, vec3 V, float roughness) {
     vec3 reflectance = f0 * ab.x + ab.y;
     vec3 specular = environmentRadiance(environmentDirection(reflect(-V, N)), roughness) * reflectance;
     // Lambert with the energy the specular lobe leaves, as the punctual lights' diffuseLobe.
+    float r = clamp(spread, 0.0, 1.0);
     vec3 diffuse = (1.0 - reflectance) * (1.0 - s.metallic) * s.albedo / kPi *
-                   environmentIrradiance(environmentDirection(N));
+                   environmentIrradiance(environmentDirection(N), vec2(r, r * r * r));
     return diffuse + specular;
+}
+
+// A point sample's (one normal): the bands unscaled.
+vec3 environmentLighting(SurfaceInputs s, vec3 V, float roughness) {
+    return environmentLightingFiltered(s, V, roughness, 1.0);
 }
 
 // What an uncovered sample of `pixel` sees, before exposure: the environment on the pixel

@@ -68,6 +68,7 @@ const uint kOpSggxLobe = 19u;    // S diagonal a.xyz, off-diagonal (xy, xz, yz) 
 const uint kOpToneMapAggregate = 20u; // L a.xyz, S b.xyz, variance c.xyz -> r0.xyz; r1.x spike ratio of (d.x, d.y)
 const uint kOpPixelFootprint = 22u; // t a.x, extent b, projParams c -> r0.x
 const uint kOpFaceNormal = 23u;  // dP/dx a.xyz, dP/dy b.xyz, towards camera c.xyz -> r0.xyz
+const uint kOpFilteredCosine = 24u; // x a.x, spread a.y -> r0.x
 const uint kOpCurvature = 21u;   // dN/dx a.xyz, dN/dy b.xyz, roughness c.x, max footprint c.y, boost c.z -> r0.x
 
 void main() {
@@ -120,6 +121,8 @@ void main() {
         r1 = vec4(lobe.tangent, lobe.alphaB);
     } else if (op == kOpFaceNormal) {
         r0.xyz = faceNormalFromDerivatives(k.a.xyz, k.b.xyz, k.c.xyz);
+    } else if (op == kOpFilteredCosine) {
+        r0.x = filteredClampedCosine(k.a.x, k.a.y);
     } else if (op == kOpPixelFootprint) {
         r0.x = pixelFootprint(k.a.x, k.b, k.c);
     } else if (op == kOpCurvature) {
