@@ -5,7 +5,6 @@
 // swapchain format does the sRGB encode), the UI pass on top, and the present transition. Nothing is read
 // back per frame; the shading-event count (for the stats) and a screenshot only when asked for.
 
-#include "tools/harness/frame_renderer.h"
 #include "agaa/common/technique.h"
 #include "engine/frame/frame_runner.h"
 #include "engine/frame/gpu_scene.h"
@@ -16,6 +15,7 @@
 #include "engine/vk/resources.h"
 #include "samples/viewer/controls.h"
 #include "samples/viewer/swapchain.h"
+#include "tools/harness/frame_renderer.h"
 
 #include <functional>
 #include <map>

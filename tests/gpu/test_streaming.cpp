@@ -4,7 +4,6 @@
 // each surface's shade is its emissive), the lost coverage and memory the stats report, reruns,
 // and the settings refused.
 
-#include "tools/harness/frame_renderer.h"
 #include "agaa/streaming/streaming.h"
 #include "agaa/streaming/streaming_compression.h"
 #include "engine/frame/frame_constants.h"
@@ -14,6 +13,7 @@
 #include "engine/scene/scenegen.h"
 #include "gpu_test_support.h"
 #include "shared/streaming.h"
+#include "tools/harness/frame_renderer.h"
 
 #include <glm/gtc/packing.hpp>
 #include <gtest/gtest.h>
