@@ -14,7 +14,7 @@ cmake --build "$build" -j"$(nproc)"
 render="$build/tools/agaa_render/agaa-render"
 mkdir -p out
 # Every method at its paper setting (n = 8; AGAA c = 2), validation layer on.
-for job in "reference 8 1" "noaa 1 1" "simple-complex 8 1" "fxaa 1 1" "agaa 8 2"; do
+for job in "reference 8 1" "noaa 1 1" "simple-complex 8 1" "fxaa 1 1" "sbaa 8 1" "streaming 8 1" "agaa 8 2"; do
   set -- $job
   name="default_$1"
   "$render" --builtin default --method "$1" --samples "$2" --aggregates "$3" --width 640 --height 360 \
@@ -29,7 +29,7 @@ done
 # every method.
 scenes="${AGAA_SHARED_SCENES:-$root/../shared/scenes}"
 if [ -f "$scenes/dutch_ship_medium/dutch_ship_medium_1k.gltf" ]; then
-  for job in "reference 8 1" "noaa 1 1" "simple-complex 8 1" "fxaa 1 1" "agaa 8 2"; do
+  for job in "reference 8 1" "noaa 1 1" "simple-complex 8 1" "fxaa 1 1" "sbaa 8 1" "streaming 8 1" "agaa 8 2"; do
     set -- $job
     "$render" --scene "$scenes/dutch_ship_medium/dutch_ship_medium_1k.gltf" --method "$1" --samples "$2" \
       --aggregates "$3" --width 640 --height 360 --validate --out "out/ship_$1" --stats "out/ship_$1.json" \
