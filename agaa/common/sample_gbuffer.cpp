@@ -163,4 +163,22 @@ std::vector<eng::vk::Binding> SampleGBufferPass::lightingBindings() {
             {17, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, cs}};
 }
 
+void pushSampleGBuffer(eng::vk::PushDescriptors& pd, const eng::rg::Context& ctx, VkSampler sampler,
+                       const SampleGBuffer& g) {
+    pd.sampled(2, sampler, ctx.texture(g.depth).sampledView)
+        .sampled(3, sampler, ctx.texture(g.normal).sampledView)
+        .sampled(4, sampler, ctx.texture(g.albedoMetal).sampledView)
+        .sampled(5, sampler, ctx.texture(g.emissiveRoughness).sampledView);
+}
+
+std::vector<eng::vk::Binding> sampleGBufferFetchBindings() {
+    constexpr VkShaderStageFlags kCompute = VK_SHADER_STAGE_COMPUTE_BIT;
+    return {{0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, kCompute},
+            {2, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, kCompute},
+            {3, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, kCompute},
+            {4, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, kCompute},
+            {5, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, kCompute},
+            {11, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, kCompute}};
+}
+
 } // namespace agaa

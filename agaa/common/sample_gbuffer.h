@@ -6,6 +6,8 @@
 // see exactly the same samples.
 
 #include "agaa/common/technique.h"
+#include "engine/graph/graph.h"
+#include "engine/vk/descriptors.h"
 #include "engine/vk/device.h"
 #include "engine/vk/pipeline.h"
 
@@ -22,6 +24,15 @@ struct SampleGBuffer {
     eng::rg::Texture emissiveRoughness; // RGBA16F
     eng::rg::Texture primitive;         // R32_SFLOAT triangle number + 1 (GBufferOptions::primitiveIds only)
 };
+
+// Bindings 2..5 of every compute pass that fetches the per-sample G-buffer (the lighting passes
+// of the reference, Simple/Complex, SBAA and streaming, and their surface and export passes):
+// depth, normal, albedo + metallic, emissive + roughness, each through `sampler`.
+void pushSampleGBuffer(eng::vk::PushDescriptors& pd, const eng::rg::Context& ctx, VkSampler sampler,
+                       const SampleGBuffer& g);
+// The push bindings of a compute pass that reads the frame constants (0), the G-buffer (2..5)
+// and the primitive ids (11): SBAA's surface selection and streaming's replay, and their exports.
+std::vector<eng::vk::Binding> sampleGBufferFetchBindings();
 
 // How the fill pass runs. The defaults are the reference's: one material evaluation per pixel
 // written to every covered sample, and the material's own roughness.

@@ -123,13 +123,9 @@ FrameTargets SimpleComplex::addLighting(rg::Graph& graph, const FrameInputs& in,
             if (shadows)
                 pd.sampled(9, m_shadow.sampler(), ctx.texture(d.shadowMap).sampledView)
                     .uniform(10, ctx.buffer(d.shadowConstants).buffer);
-            pd.uniform(0, ctx.buffer(d.frame).buffer)
-                .storage(1, ctx.buffer(d.lights).buffer)
-                .sampled(2, m_fetchSampler, ctx.texture(d.g.depth).sampledView)
-                .sampled(3, m_fetchSampler, ctx.texture(d.g.normal).sampledView)
-                .sampled(4, m_fetchSampler, ctx.texture(d.g.albedoMetal).sampledView)
-                .sampled(5, m_fetchSampler, ctx.texture(d.g.emissiveRoughness).sampledView)
-                .storageImage(6, ctx.texture(d.hdr).view)
+            pd.uniform(0, ctx.buffer(d.frame).buffer).storage(1, ctx.buffer(d.lights).buffer);
+            pushSampleGBuffer(pd, ctx, m_fetchSampler, d.g);
+            pd.storageImage(6, ctx.texture(d.hdr).view)
                 .storageImage(7, ctx.texture(d.display).view)
                 .storageImage(8, ctx.texture(d.events).view)
                 .push(m_device, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, m_lightingLayout.layout);

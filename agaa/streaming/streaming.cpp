@@ -45,15 +45,6 @@ shared::StreamingParams params(const StreamingSettings& s) {
     return p;
 }
 
-std::vector<vk::Binding> gbufferBindings() {
-    return {{0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, kCompute},
-            {2, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, kCompute},
-            {3, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, kCompute},
-            {4, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, kCompute},
-            {5, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, kCompute},
-            {11, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, kCompute}};
-}
-
 } // namespace
 
 StreamingCompression::StreamingCompression(vk::Device& device, const eng::frame::GpuScene& scene,
@@ -64,7 +55,7 @@ StreamingCompression::StreamingCompression(vk::Device& device, const eng::frame:
                 GBufferOptions{.sampleRateShading = settings.sampleRateShading, .primitiveIds = true}),
       m_shadow(device, scene, m_features, settings.effects, "streaming") {
     vk::LayoutDesc compress;
-    compress.pushBindings = gbufferBindings();
+    compress.pushBindings = sampleGBufferFetchBindings();
     compress.pushBindings.push_back({12, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kCompute});
     compress.pushBindings.push_back({13, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, kCompute});
     compress.pushConstantBytes = sizeof(shared::StreamingParams);
@@ -162,13 +153,10 @@ StreamingCompression::Surfaces StreamingCompression::addCompression(rg::Graph& g
         [this, p, w = in.width, h = in.height](const rg::Context& ctx, const Data& d) {
             VkCommandBuffer cmd = ctx.cmd();
             vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, m_compressPipeline);
-            vk::PushDescriptors()
-                .uniform(0, ctx.buffer(d.frame).buffer)
-                .sampled(2, m_fetchSampler, ctx.texture(d.g.depth).sampledView)
-                .sampled(3, m_fetchSampler, ctx.texture(d.g.normal).sampledView)
-                .sampled(4, m_fetchSampler, ctx.texture(d.g.albedoMetal).sampledView)
-                .sampled(5, m_fetchSampler, ctx.texture(d.g.emissiveRoughness).sampledView)
-                .sampled(11, m_fetchSampler, ctx.texture(d.g.primitive).sampledView)
+            vk::PushDescriptors pd;
+            pd.uniform(0, ctx.buffer(d.frame).buffer);
+            pushSampleGBuffer(pd, ctx, m_fetchSampler, d.g);
+            pd.sampled(11, m_fetchSampler, ctx.texture(d.g.primitive).sampledView)
                 .storage(12, ctx.buffer(d.surfaces).buffer)
                 .storageImage(13, ctx.texture(d.lost).view)
                 .push(m_device, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, m_compressLayout.layout);
@@ -220,13 +208,9 @@ FrameTargets StreamingCompression::addLighting(rg::Graph& graph, const FrameInpu
             if (shadows)
                 pd.sampled(9, m_shadow.sampler(), ctx.texture(d.shadowMap).sampledView)
                     .uniform(10, ctx.buffer(d.shadowConstants).buffer);
-            pd.uniform(0, ctx.buffer(d.frame).buffer)
-                .storage(1, ctx.buffer(d.lights).buffer)
-                .sampled(2, m_fetchSampler, ctx.texture(d.g.depth).sampledView)
-                .sampled(3, m_fetchSampler, ctx.texture(d.g.normal).sampledView)
-                .sampled(4, m_fetchSampler, ctx.texture(d.g.albedoMetal).sampledView)
-                .sampled(5, m_fetchSampler, ctx.texture(d.g.emissiveRoughness).sampledView)
-                .storageImage(6, ctx.texture(d.hdr).view)
+            pd.uniform(0, ctx.buffer(d.frame).buffer).storage(1, ctx.buffer(d.lights).buffer);
+            pushSampleGBuffer(pd, ctx, m_fetchSampler, d.g);
+            pd.storageImage(6, ctx.texture(d.hdr).view)
                 .storageImage(7, ctx.texture(d.display).view)
                 .storageImage(8, ctx.texture(d.events).view)
                 .storage(12, ctx.buffer(d.surfaces).buffer)
@@ -244,7 +228,7 @@ void StreamingCompression::addSampleExport(rg::Graph& graph, const FrameInputs& 
                                            rg::Buffer target) {
     if (!m_exportPipeline) {
         vk::LayoutDesc layout;
-        layout.pushBindings = gbufferBindings();
+        layout.pushBindings = sampleGBufferFetchBindings();
         layout.pushBindings.push_back({14, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kCompute});
         m_exportLayout = vk::createPipelineLayout(m_device, layout, "streaming.export.layout");
         m_exportPipeline = vk::createComputePipeline(m_device, kStreamingExportComp, m_exportLayout.layout,
@@ -268,13 +252,10 @@ void StreamingCompression::addSampleExport(rg::Graph& graph, const FrameInputs& 
         [this, w = in.width, h = in.height](const rg::Context& ctx, const Export& d) {
             VkCommandBuffer cmd = ctx.cmd();
             vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, m_exportPipeline);
-            vk::PushDescriptors()
-                .uniform(0, ctx.buffer(d.frame).buffer)
-                .sampled(2, m_fetchSampler, ctx.texture(d.g.depth).sampledView)
-                .sampled(3, m_fetchSampler, ctx.texture(d.g.normal).sampledView)
-                .sampled(4, m_fetchSampler, ctx.texture(d.g.albedoMetal).sampledView)
-                .sampled(5, m_fetchSampler, ctx.texture(d.g.emissiveRoughness).sampledView)
-                .sampled(11, m_fetchSampler, ctx.texture(d.g.primitive).sampledView)
+            vk::PushDescriptors pd;
+            pd.uniform(0, ctx.buffer(d.frame).buffer);
+            pushSampleGBuffer(pd, ctx, m_fetchSampler, d.g);
+            pd.sampled(11, m_fetchSampler, ctx.texture(d.g.primitive).sampledView)
                 .storage(14, ctx.buffer(d.target).buffer)
                 .push(m_device, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, m_exportLayout.layout);
             vkCmdDispatch(cmd, (w + 7) / 8, (h + 7) / 8, 1);
