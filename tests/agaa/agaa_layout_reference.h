@@ -10,12 +10,13 @@
 namespace agaa::test::layout {
 
 // ---- Metadata (DESIGN 4.2, figure 5), decoded without shared/clustering.h ----------------------
-// b = ceil(log2 c) bits per sample; sample s's id in bits [s b, s b + b) of the pixel's 32-bit words.
+// b = ceil(log2 c) bits per sample, and 1 at c = 1 (the layer bit: 1 when the sample is off the
+// aggregate's layer); sample s's id in bits [s b, s b + b) of the pixel's 32-bit words.
 inline uint32_t bitsPerSample(uint32_t c) {
     uint32_t b = 0;
     while ((1u << b) < c)
         ++b;
-    return b;
+    return std::max(b, 1u);
 }
 inline uint32_t wordsPerPixel(uint32_t n, uint32_t c) {
     return (n * bitsPerSample(c) + 31) / 32;

@@ -178,7 +178,137 @@ inline void nextSeed(const Context& ctx, std::vector<int>& seeds) {
     }
 }
 
+// c = 1's layer split (DESIGN section 4.2): how far apart two samples' surfaces lie, the mean
+// of the squared distances of each to the other's tangent plane, and a bound on the float
+// evaluation's error (the inputs' errors through both dot products, 6 float roundings).
+inline Distance layerDistance(const double* pa, const double* na, double ea, double ena, const double* pb,
+                              const double* nb, double eb, double enb) {
+    double da = 0.0, db = 0.0, errA = 0.0, errB = 0.0, dpSum = 0.0;
+    for (int i = 0; i < 3; ++i) {
+        const double dp = pa[i] - pb[i];
+        da += dp * na[i];
+        db += dp * nb[i];
+        dpSum += std::abs(dp);
+        errA += std::abs(na[i]) * (ea + eb) + std::abs(dp) * ena;
+        errB += std::abs(nb[i]) * (ea + eb) + std::abs(dp) * enb;
+    }
+    errA += 4.0 * 0x1p-24 * (dpSum + 1e-30);
+    errB += 4.0 * 0x1p-24 * (dpSum + 1e-30);
+    const double value = 0.5 * (da * da + db * db);
+    const double bound = std::abs(da) * errA + std::abs(db) * errB + 0.5 * (errA * errA + errB * errB) +
+                         6.0 * 0x1p-24 * (value + 1e-30);
+    return {value, bound};
+}
+
+inline Distance layerBetween(const Sample& a, const Sample& b) {
+    return layerDistance(a.p, a.n, a.positionError, a.normalError, b.p, b.n, b.positionError, b.normalError);
+}
+
+// The layers from seeds 0 and (if any) 1: every sample to its nearer seed, the larger layer on
+// (bit 0 of allowed), the other off (bit 1); equal layers keep seed 0's on. Samples within
+// rounding of both seeds, and counts that such samples could tip, give every outcome.
+inline void assignLayers(const Context& ctx, int seed0, int seed1) {
+    const std::vector<Sample>& s = *ctx.s;
+    std::vector<uint32_t> may(s.size(), 0u); // bit j: the sample may join seed j
+    uint32_t certain0 = 0, certain1 = 0, either = 0;
+    for (size_t i = 0; i < s.size(); ++i) {
+        if (!s[i].valid) continue;
+        if (seed1 < 0) {
+            may[i] = 1u;
+            ++certain0;
+            continue;
+        }
+        const Distance d0 = layerBetween(s[i], s[seed0]), d1 = layerBetween(s[i], s[seed1]);
+        ctx.result->exactTie |= d0.value == d1.value;
+        // The float version joins seed 1 only when strictly nearer.
+        if (d1.value + d1.bound < d0.value - d0.bound)
+            may[i] = 2u;
+        else if (d0.value + d0.bound <= d1.value - d1.bound)
+            may[i] = 1u;
+        else
+            may[i] = 3u;
+        certain0 += may[i] == 1u;
+        certain1 += may[i] == 2u;
+        either += may[i] == 3u;
+    }
+    // Whether the layer of seed 1 may be (strictly) the larger, and whether seed 0's may.
+    const bool swapPossible = certain1 + either > certain0;
+    const bool keepPossible = certain0 + either >= certain1;
+    for (int swap = 0; swap < 2; ++swap) {
+        if ((swap && !swapPossible) || (!swap && !keepPossible)) continue;
+        Outcome o;
+        o.count = 1;
+        o.allowed.assign(s.size(), 0u);
+        for (size_t i = 0; i < s.size(); ++i) {
+            if (!s[i].valid) continue;
+            const uint32_t on = swap ? 2u : 1u; // the seed whose layer is the aggregate
+            o.allowed[i] = ((may[i] & on) ? 1u : 0u) | ((may[i] & ~on & 3u) ? 2u : 0u);
+        }
+        if (ctx.result->outcomes.size() >= kMaxBranches) {
+            ctx.result->truncated = true;
+            return;
+        }
+        ctx.result->outcomes.push_back(std::move(o));
+    }
+}
+
+// Seed 1 of the layer split: the sample farthest from seed 0 beyond t, branching as nextSeed does.
+inline void layerSeed(const Context& ctx, int seed0) {
+    const std::vector<Sample>& s = *ctx.s;
+    std::vector<std::pair<int, Distance>> candidates;
+    double certainLower = -INFINITY, certainBest = -INFINITY;
+    uint32_t atCertainBest = 0;
+    for (int i = 0; i < int(s.size()); ++i) {
+        if (!s[i].valid) continue;
+        const Distance d = layerBetween(s[i], s[seed0]);
+        if (d.value + d.bound <= ctx.t) continue; // certainly on seed 0's layer
+        candidates.push_back({i, d});
+        if (d.value - d.bound > ctx.t) {
+            certainLower = std::max(certainLower, d.value - d.bound);
+            if (d.value > certainBest) {
+                certainBest = d.value;
+                atCertainBest = 0;
+            }
+            atCertainBest += d.value == certainBest;
+        }
+    }
+    ctx.result->exactTie |= atCertainBest > 1;
+    if (certainLower == -INFINITY) assignLayers(ctx, seed0, -1); // may find no second layer
+    for (const auto& [index, d] : candidates) {
+        if (ctx.result->truncated) return;
+        if (d.value + d.bound < certainLower) continue;
+        assignLayers(ctx, seed0, index);
+    }
+}
+
 } // namespace detail
+
+// c = 1 (DESIGN section 4.2): one aggregate, on the larger of the pixel's two layers. Seeds as
+// Algorithm 1's first two, on the layer distance: seed 0 the sample farthest from the mean, seed 1
+// the one farthest from seed 0 if beyond t; the other layer's samples keep only their coverage.
+inline Result layers(const std::vector<Sample>& s, double t, const double* mp, const double* mn,
+                     double meanErrP, double meanErrN) {
+    Result result;
+    detail::Context ctx{&s, 1, t, &result};
+    std::vector<Distance> d(s.size(), Distance{-1.0, 0.0});
+    double lower = -INFINITY, best = -INFINITY;
+    for (size_t i = 0; i < s.size(); ++i) {
+        if (!s[i].valid) continue;
+        d[i] = detail::layerDistance(s[i].p, s[i].n, s[i].positionError, s[i].normalError, mp, mn, meanErrP,
+                                     meanErrN);
+        lower = std::max(lower, d[i].value - d[i].bound);
+        best = std::max(best, d[i].value);
+    }
+    uint32_t atBest = 0;
+    for (size_t i = 0; i < s.size(); ++i)
+        atBest += s[i].valid && d[i].value == best;
+    result.exactTie |= atBest > 1;
+    for (size_t i = 0; i < s.size() && !result.truncated; ++i) {
+        if (!s[i].valid || d[i].value + d[i].bound < lower) continue;
+        detail::layerSeed(ctx, int(i));
+    }
+    return result;
+}
 
 // Algorithm 1 on one pixel's samples, c aggregates at most, seed threshold t.
 inline Result cluster(const std::vector<Sample>& s, uint32_t c, double t) {
@@ -209,6 +339,7 @@ inline Result cluster(const std::vector<Sample>& s, uint32_t c, double t) {
     }
     const double meanErrP = errP + double(visible + 1) * 0x1p-24 * scaleP;
     const double meanErrN = errN + double(visible + 1) * 0x1p-24;
+    if (c == 1) return layers(s, t, mp, mn, meanErrP, meanErrN);
     // 1(c) the first seed: farthest from the mean (every candidate within the bounds of the best).
     std::vector<Distance> d(s.size(), Distance{-1.0, 0.0});
     double lower = -INFINITY, best = -INFINITY;

@@ -253,7 +253,8 @@ TEST(AgaaAccumulationReferenceGpu, AgBufferMatchesDoubleSumsOfTheMaterialInputs)
     constexpr uint32_t kQuantized = 11, kRecordWords = 3 + kQuantized + 8; // generation.glsl AGAA_RECORD
     const Case cases[] = {{"furball", 8, 2, "toksvig"}, {"foliage", 32, 4, "toksvig"},
                           {"spikes", 16, 2, "toksvig"}, {"railings", 16, 3, "sggx"},
-                          {"metal", 8, 2, "sggx"},      {"furball", 32, 4, "sggx"}};
+                          {"metal", 8, 2, "sggx"},      {"furball", 32, 4, "sggx"},
+                          {"furball", 8, 1, "toksvig"}, {"railings", 16, 1, "sggx"}};
     const uint32_t size = 64, window = 16, capacity = 400000;
     for (const Case& k : cases) {
         eng::scene::Scene scene = eng::scene::loadTestScene(k.scene);
@@ -304,11 +305,16 @@ TEST(AgaaAccumulationReferenceGpu, AgBufferMatchesDoubleSumsOfTheMaterialInputs)
             const uint32_t pixel = f[0], layer = f[1], mask = f[2];
             for (uint32_t hw = 0; hw < 4; ++hw) {
                 if (!(mask & (1u << hw))) continue;
-                const uint32_t a = decodeId(meta + size_t(pixel) * words, layer * 4 + hw, k.c);
+                const uint32_t id = decodeId(meta + size_t(pixel) * words, layer * 4 + hw, k.c);
+                // c = 1: a sample off the aggregate's layer (id 1) adds its albedo and metallic only.
+                const bool offLayer = k.c == 1 && id == 1;
+                const uint32_t a = offLayer ? 0 : id;
                 ASSERT_LT(a, k.c);
                 const size_t slot = size_t(pixel) * k.c + a;
-                ++count[slot];
+                count[slot] += offLayer ? 0 : 1;
                 for (uint32_t j = 0; j < fields; ++j) {
+                    const bool colourField = j >= lay.normalFields && j < lay.normalFields + 4;
+                    if (offLayer && !colourField) continue;
                     const Field& fd = j < lay.normalFields        ? lay.normal[j]
                                       : j < lay.normalFields + 3  ? lay.albedo[j - lay.normalFields]
                                       : j == lay.normalFields + 3 ? lay.metallic

@@ -111,17 +111,89 @@ TEST(Clustering, FourSeparateSurfacesGiveFourAggregatesWithCFour) {
         EXPECT_EQ(r.ids[s], r.ids[s % 4]) << "same depth, same aggregate";
 }
 
+// c = 1 (shared/clustering.h splitLayers): a pixel over two surfaces far apart keeps the larger
+// one as its aggregate and flags the other's samples kOffLayer (their coverage only).
+TEST(ClusteringLayers, OneAggregateKeepsTheLargerOfTwoLayers) {
+    for (uint32_t n : {4u, 8u, 16u, 32u}) {
+        auto k = kernelConstants(n, 1);
+        for (uint32_t front : {1u, n / 4, n / 2 + 1, n - 1}) { // samples on the near plane
+            PixelSamples p;
+            for (uint32_t s = 0; s < n; ++s)
+                p.depth[s] = depthAt(s < front ? 0.5f : 0.9f, k.frame); // 40 cm apart: d = 16 >> t
+            auto r = agaa::clusterPixel(31, 31, p, k.frame, k.agaa);
+            EXPECT_EQ(r.count, 1u) << "n=" << n << ": c = 1 is one aggregate";
+            const bool nearKept = front > n - front;
+            for (uint32_t s = 0; s < n; ++s)
+                EXPECT_EQ(r.ids[s], (s < front) == nearKept ? 0u : shared::kOffLayer)
+                    << "n=" << n << " front=" << front << " s=" << s;
+        }
+    }
+}
+
+// Equal layers: seed 0's (the sample farthest from the mean, the lowest index among equals) stays.
+TEST(ClusteringLayers, EqualLayersKeepSeedZerosLayer) {
+    auto k = kernelConstants(8, 1);
+    PixelSamples p;
+    for (uint32_t s = 0; s < 8; ++s)
+        p.depth[s] = depthAt(s % 2 ? 0.9f : 0.5f, k.frame);
+    auto r = agaa::clusterPixel(31, 31, p, k.frame, k.agaa);
+    uint32_t on = 0;
+    for (uint32_t s = 0; s < 8; ++s)
+        on += r.ids[s] == 0u;
+    EXPECT_EQ(on, 4u) << "four samples on the aggregate's layer, four off it";
+    for (uint32_t s = 2; s < 8; ++s)
+        EXPECT_EQ(r.ids[s], r.ids[s % 2]) << "one layer, one flag";
+}
+
+// The layer distance ignores normals and distances along one surface: a face-on pixel whose
+// samples lie farther apart than sqrt(t) k (which splits it at c >= 2), a convex edge at 90
+// degrees, and a plane at grazing incidence stay one layer at c = 1.
+TEST(ClusteringLayers, OneSurfaceIsOneLayerWhateverItsNormalsAndFootprint) {
+    for (uint32_t n : {8u, 16u}) {
+        auto k = kernelConstants(n, 1);
+        PixelSamples p;
+        for (uint32_t s = 0; s < n; ++s) {
+            p.depth[s] = depthAt(0.5f, k.frame);
+            p.theta[s] = k.frame.samplePositions[s].x < 0.5f ? kFacing : kPerpendicular;
+        }
+        auto r = agaa::clusterPixel(31, 31, p, k.frame, k.agaa);
+        for (uint32_t s = 0; s < n; ++s)
+            EXPECT_EQ(r.ids[s], 0u) << "n=" << n << ": an edge between two orientations is one layer";
+        // Scaled positions 10 k apart on one face-on plane (Equation 1's d = 100 >> t).
+        float px[32], py[32], pz[32], nx[32], ny[32], nz[32];
+        uint32_t model[32] = {}, ids[32] = {};
+        bool valid[32] = {};
+        for (uint32_t s = 0; s < n; ++s) {
+            px[s] = 10.0f * float(s % 4);
+            py[s] = 10.0f * float(s / 4);
+            pz[s] = -50.0f;
+            nx[s] = ny[s] = 0.0f;
+            nz[s] = 1.0f;
+            valid[s] = true;
+        }
+        EXPECT_EQ(shared::clusterSamples(n, 1, shared::kDistancePosition, 0.05f, px, py, pz, nx, ny, nz,
+                                         model, valid, ids),
+                  1u);
+        for (uint32_t s = 0; s < n; ++s)
+            EXPECT_EQ(ids[s], 0u) << "n=" << n << ": a wide face-on footprint is one layer";
+        EXPECT_EQ(shared::clusterSamples(n, 2, shared::kDistancePosition, 0.05f, px, py, pz, nx, ny, nz,
+                                         model, valid, ids),
+                  2u)
+            << "while Equation 1 splits it at c = 2";
+    }
+}
+
 TEST(MetadataPacking, RoundTripForEveryRateAndAggregateCount) {
     std::mt19937 rng(7);
     for (uint32_t n : {4u, 8u, 16u, 32u}) {
         for (uint32_t c : {1u, 2u, 3u, 4u}) {
             uint32_t b = shared::metadataBits(c);
-            EXPECT_EQ(b, c == 1 ? 0u : c == 2 ? 1u : 2u) << "b = ceil(log2 c)";
+            EXPECT_EQ(b, c <= 2 ? 1u : 2u) << "b = ceil(log2 c), and c = 1's layer bit";
             EXPECT_EQ(shared::metadataWords(n, c), (n * b + 31) / 32);
             for (int trial = 0; trial < 50; ++trial) {
                 uint32_t ids[shared::kMaxSamples] = {};
                 for (uint32_t s = 0; s < n; ++s)
-                    ids[s] = rng() % c;
+                    ids[s] = rng() % std::max(c, 2u); // c = 1: 0 on the layer, kOffLayer off it
                 uint32_t words[4] = {};
                 for (uint32_t w = 0; w < shared::metadataWords(n, c); ++w)
                     words[w] = shared::packMetadataWord(w, n, c, ids);

@@ -93,10 +93,12 @@ layout(location = 0) out vec4 outEmissive;
 #endif
 
 // Adds k samples of the fragment's values to aggregate slot `slot` (pixel * c + aggregate).
-void addToAggregate(uint slot, uint k, uint ndf, AgQuantized f) {
+// k samples on the aggregate, and kColour more that add only their colour (c = 1: off its layer).
+void addToAggregate(uint slot, uint k, uint kColour, uint ndf, AgQuantized f) {
     uint base = slot * kAggregateWords;
     uint inc[kAggregateWords];
-    for (uint w = 0u; w < kAggregateWords; ++w) inc[w] = aggregateIncrement(ndf, w, k, f);
+    for (uint w = 0u; w < kAggregateWords; ++w)
+        inc[w] = aggregateIncrement(ndf, w, k, f) + colourIncrement(w, kColour, f);
 #if AGAA_SUBGROUP
     // Lanes with the same slot sum their increments; the lowest of them adds the sum. Each pass
     // of the loop retires the lanes of the first remaining lane's slot.
@@ -206,7 +208,9 @@ void main() {
         // Algorithm 2: the first visible sample's aggregate takes the whole fragment.
         uint s = inLayer * 4u + uint(findLSB(mask));
         uint id = words > 0u ? unpackMetadata(metadata[pixelIndex * words + (s * b) / 32u], s, c) : 0u;
-        addToAggregate(pixelIndex * c + id, uint(bitCount(mask)), ndf, f);
+        // c = 1: whole fragments cannot follow the per-sample layer flag; everything to aggregate 0
+        // (the lighting pass still takes the aggregate's position from its layer's samples).
+        addToAggregate(pixelIndex * c + min(id, c - 1u), uint(bitCount(mask)), 0u, ndf, f);
         return;
     }
     for (uint hw = 0u; hw < 4u; ++hw) {
@@ -214,15 +218,19 @@ void main() {
         uint id = words > 0u ? unpackMetadata(metadata[pixelIndex * words + (s * b) / 32u], s, c) : 0u;
         perAggregate[id] += (mask >> hw) & 1u;
     }
+    // c = 1: the samples off the aggregate's layer (shared/clustering.h kOffLayer) count in
+    // perAggregate[1] and add their colour to aggregate 0.
+    uint colour = c == 1u ? perAggregate[1] : 0u;
     // Only the aggregates the fragment touches: a loop over their bits ends for a SIMD group
     // once every lane's are done (most fragments touch one), where a loop over all c with a
     // per-aggregate test would issue every aggregate's atomics masked (lavapipe runs both sides
     // of a branch, and a masked atomic still walks its lanes).
     uint touched = 0u;
     for (uint a = 0u; a < c; ++a) touched |= perAggregate[a] > 0u ? 1u << a : 0u;
+    touched |= colour > 0u ? 1u : 0u;
     while (touched != 0u) {
         uint a = uint(findLSB(touched));
         touched &= touched - 1u;
-        addToAggregate(pixelIndex * c + a, perAggregate[a], ndf, f);
+        addToAggregate(pixelIndex * c + a, perAggregate[a], a == 0u ? colour : 0u, ndf, f);
     }
 }

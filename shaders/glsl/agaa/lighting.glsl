@@ -105,7 +105,6 @@ layout(set = 0, binding = 10) uniform sampler2DMSArray emissiveSamples;
 
 uint sampleAggregate(uint s, uint pixelIndex) {
     const uint words = (kSamples * metadataBits(kAggregates) + 31u) / 32u;
-    if (words == 0u) return 0u;
     const uint c = kAggregates;
     return unpackMetadata(metadata[pixelIndex * words + (s * metadataBits(c)) / 32u], s, c);
 }
@@ -258,6 +257,7 @@ void main() {
     vec3 positionSum[kMaxAggregates] = vec3[](vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0));
     uint samplesIn[kMaxAggregates] = uint[](0u, 0u, 0u, 0u);
     uint skySamples = 0u;
+    uint offLayerSamples = 0u; // c = 1: samples resolved with aggregate 0's radiance, not in its statistics
     float tmin = 1e30, tmax = -1e30;
     const bool sggx = kNdf == kNdfSggx;
 #if AGAA_GBUFFER
@@ -283,11 +283,28 @@ void main() {
             uint a = sampleAggregate(s, pixelIndex);
             vec3 P = viewPositionFromDepth(vec2(pixel) + frame.samplePositions[s].xy, d, frame.extent,
                                            frame.depthParams, frame.projParams);
+            tmin = min(tmin, -P.z);
+            tmax = max(tmax, -P.z);
+            // c = 1, off the aggregate's layer (shared/clustering.h kOffLayer): the sample's
+            // coverage and colour join aggregate 0, its position and normal distribution do not.
+            bool offLayer = a >= c;
+            if (offLayer) {
+                offLayerSamples += 1u;
+                a = 0u;
+            }
 #if AGAA_GBUFFER
             vec3 N = decodeOctahedral(texelFetch(gNormal, at, int(s % 4u)).rg);
             vec4 albedoMetal = texelFetch(gAlbedoMetal, at, int(s % 4u));
             float roughness = texelFetch(gEmissiveRoughness, at, int(s % 4u)).a;
             float alpha = roughness * roughness;
+            albedoMetalSum[a] += albedoMetal;
+#if AGAA_EXPORT
+            exportRecord(pixelIndex * n + s, vec4(N, roughness), albedoMetal, vec4(P, offLayer ? float(c) : float(a)),
+                         vec4(1.0, 0.0, 0.0, 0.0));
+#endif
+#endif
+            if (offLayer) continue;
+#if AGAA_GBUFFER
             if (sggx) {
                 // The sample's GGX lobe as an SGGX matrix, S = (1 - a^2) N N^T + a^2 I (shared/sggx.h).
                 float ca = clamp(alpha, kMinGgxAlpha, kMaxGgxAlpha);
@@ -299,12 +316,7 @@ void main() {
                 // Roughness as normal variance: the Toksvig length of the sample's alpha.
                 moment0[a] += N * toksvigLength(alpha, agaa.toksvig.x, agaa.toksvig.y, agaa.toksvig.z);
             }
-            albedoMetalSum[a] += albedoMetal;
             materialAlphaSum[a] += clamp(alpha, kMinGgxAlpha, kMaxGgxAlpha);
-#if AGAA_EXPORT
-            exportRecord(pixelIndex * n + s, vec4(N, roughness), albedoMetal, vec4(P, float(a)),
-                         vec4(1.0, 0.0, 0.0, 0.0));
-#endif
 #endif
             float t = -P.z;
             depthSum[a] += t;
@@ -313,8 +325,6 @@ void main() {
             depthSquares[a] += (t - depthOrigin) * (t - depthOrigin);
             positionSum[a] += P;
             samplesIn[a] += 1u;
-            tmin = min(tmin, t);
-            tmax = max(tmax, t);
         }
     }
     SurfaceInputs surfaces[kMaxAggregates];
@@ -362,9 +372,13 @@ void main() {
         materialAlpha = materialAlphaSum[a] / fs;
         mean0 = moment0[a] / fs;
         mean1 = moment1[a] / fs;
-        albedo = albedoMetalSum[a].rgb / fs;
-        metallic = albedoMetalSum[a].a / fs;
+        float coloured = fs + (a == 0u ? float(offLayerSamples) : 0.0); // c = 1: the layer's and the others'
+        albedo = albedoMetalSum[a].rgb / coloured;
+        metallic = albedoMetalSum[a].a / coloured;
 #else
+        // c = 1: the colour fields hold the layer's samples and those off it (generation.glsl
+        // colourIncrement); whole-fragment routing adds every sample in full.
+        uint kColour = k + (kRouteFragment == 0u && a == 0u ? offLayerSamples : 0u);
         if (sggx) {
             uint scale = unitScale(kSggxFieldBits, n);
             mean0 = vec3(meanUnit(w[0] & 0xFFFFu, k, scale), meanUnit(w[0] >> 16u, k, scale),
@@ -372,18 +386,18 @@ void main() {
             // Off-diagonal entries are stored offset by 1/2 (generation.glsl).
             mean1 = vec3(meanUnit(w[1] >> 16u, k, scale) - 0.5, meanUnit(w[2] & 0xFFFFu, k, scale) - 0.5,
                          meanUnit(w[2] >> 16u, k, scale) - 0.5);
-            albedo = vec3(meanUnit(w[3] & 0xFFFFu, k, scale), meanUnit(w[3] >> 16u, k, scale),
-                          meanUnit(w[4] & 0xFFFFu, k, scale));
-            metallic =
-                meanUnit((w[4] >> 16u) & ((1u << kSggxMetallicBits) - 1u), k, unitScale(kSggxMetallicBits, n));
+            albedo = vec3(meanUnit(w[3] & 0xFFFFu, kColour, scale), meanUnit(w[3] >> 16u, kColour, scale),
+                          meanUnit(w[4] & 0xFFFFu, kColour, scale));
+            metallic = meanUnit((w[4] >> 16u) & ((1u << kSggxMetallicBits) - 1u), kColour,
+                                unitScale(kSggxMetallicBits, n));
         } else {
             const uint sx = toksvigScaleX(n), syz = toksvigScaleYZ(n);
             mean0 = vec3(meanSigned(w[0] & kNormalFieldMask, k, sx), meanSigned(w[1], k, syz),
                          meanSigned(w[2], k, syz));
             mean1 = vec3(0.0);
-            albedo = vec3(meanUnit(w[3] & 0xFFFFu, k, kUnormScale), meanUnit(w[3] >> 16u, k, kUnormScale),
-                          meanUnit(w[4] & 0xFFFFu, k, kUnormScale));
-            metallic = meanUnit(w[4] >> 16u, k, kUnormScale);
+            albedo = vec3(meanUnit(w[3] & 0xFFFFu, kColour, kUnormScale),
+                          meanUnit(w[3] >> 16u, kColour, kUnormScale), meanUnit(w[4] & 0xFFFFu, kColour, kUnormScale));
+            metallic = meanUnit(w[4] >> 16u, kColour, kUnormScale);
         }
         materialAlpha = meanUnit(w[5], k, kMaterialAlphaScale);
 #endif
@@ -541,7 +555,7 @@ void main() {
             hdr += weight * sky;
             continue;
         }
-        uint a = sampleAggregate(s, pixelIndex);
+        uint a = min(sampleAggregate(s, pixelIndex), c - 1u); // c = 1: off-layer samples take aggregate 0's
         // Fragment routing: a sample whose aggregate received no fragment takes aggregate 0's.
         if (kRouteFragment != 0u && !present[a]) a = 0u;
         vec3 L = present[a] ? radiance[a] : vec3(0.0);
@@ -559,7 +573,9 @@ void main() {
     display += skyWeight * toneMapAces(sky);
     hdr += skyWeight * sky;
     for (uint a = 0u; a < c; ++a) {
-        uint stands = kRouteFragment != 0u ? accumulated[a] : samplesIn[a];
+        // c = 1: the aggregate stands for every covered sample, the off-layer ones too (with fragment
+        // routing the fragments whose first sample is off the layer fed it nothing).
+        uint stands = kRouteFragment != 0u && c > 1u ? accumulated[a] : samplesIn[a] + (a == 0u ? offLayerSamples : 0u);
         if (stands == 0u) continue;
         vec3 L = present[a] ? min(radiance[a] * exposure, vec3(kMaxRadiance)) : vec3(0.0);
         float w = weight * float(stands);

@@ -87,6 +87,16 @@ inline_fn uint aggregateIncrement(uint ndf, uint w, uint k, AgQuantized f) {
     return k * f.q[8] + ((k * f.q[9]) << 16u);
 }
 
+// What k samples off the aggregate's layer add (c = 1, shared/clustering.h kOffLayer): their
+// colour only, albedo and metallic, which lie in words 3 and 4 below the count in both layouts;
+// no normal distribution, material alpha or count. The lighting pass divides these fields by the
+// samples on the layer plus those off it.
+inline_fn uint colourIncrement(uint w, uint k, AgQuantized f) {
+    if (w == 3u) return k * f.q[6] + ((k * f.q[7]) << 16u);
+    if (w == 4u) return k * f.q[8] + ((k * f.q[9]) << 16u);
+    return 0u;
+}
+
 // Samples accumulated into an aggregate, from its first and last words.
 inline_fn uint aggregateSampleCount(uint ndf, uint w0, uint w4) {
     return (ndf == kNdfSggx ? w4 : w0) >> kCountShift;

@@ -24,10 +24,17 @@
 
 SHARED_BEGIN
 
-// b = ceil(log2 c) bits per sample (figure 5); c = 1 needs none.
-inline_fn uint metadataBits(uint c) { return c <= 1u ? 0u : (c <= 2u ? 1u : 2u); }
+// b = ceil(log2 c) bits per sample (figure 5), and one at c = 1: its layer flag (kOffLayer).
+inline_fn uint metadataBits(uint c) {
+    return c <= 2u ? 1u : 2u;
+}
+// At c = 1 a sample's bit is 1 when it lies off the aggregate's layer (clusterSamples): it takes
+// the aggregate's radiance in the resolve but none of its statistics. At c >= 2 no id reaches c.
+SHARED_CONST kOffLayer = 1u;
 // ceil(n b / 32) words per pixel. 32 is a multiple of b, so no sample's bits straddle two words.
-inline_fn uint metadataWords(uint n, uint c) { return (n * metadataBits(c) + 31u) / 32u; }
+inline_fn uint metadataWords(uint n, uint c) {
+    return (n * metadataBits(c) + 31u) / 32u;
+}
 
 // Unit direction from the pixel centre's view ray to the camera (the hemisphere's pole).
 inline_fn void pixelCentreToCamera(uint px, uint py, float ndcScaleX, float ndcScaleY, float p00, float p11,
@@ -61,8 +68,8 @@ inline_fn void hemisphereBasis(float vx, float vy, float vz, OUT(float) tx, OUT(
 }
 
 // Decodes the two angles through the tables (cos/sin of each level), around V.
-inline_fn void decodeFaceNormal(float cosTheta, float sinTheta, float cosPhi, float sinPhi, float vx, float vy,
-                                float vz, OUT(float) nx, OUT(float) ny, OUT(float) nz) {
+inline_fn void decodeFaceNormal(float cosTheta, float sinTheta, float cosPhi, float sinPhi, float vx,
+                                float vy, float vz, OUT(float) nx, OUT(float) ny, OUT(float) nz) {
     float tx, ty, tz, bx, by, bz;
     hemisphereBasis(vx, vy, vz, tx, ty, tz, bx, by, bz);
     PRECISE float a = sinTheta * cosPhi;
@@ -77,9 +84,9 @@ inline_fn void decodeFaceNormal(float cosTheta, float sinTheta, float cosPhi, fl
 
 // View-space position of a sample from its depth (reversed Z, see common/depth.glsl) and its
 // sub-pixel position, divided by the characteristic length k (Equation 1 works in units of k).
-inline_fn void sampleScaledPosition(uint px, uint py, float sx, float sy, float d, float ndcScaleX, float ndcScaleY,
-                                    float p00, float p11, float znear, float nf, float fmn, float invK,
-                                    OUT(float) x, OUT(float) y, OUT(float) z) {
+inline_fn void sampleScaledPosition(uint px, uint py, float sx, float sy, float d, float ndcScaleX,
+                                    float ndcScaleY, float p00, float p11, float znear, float nf, float fmn,
+                                    float invK, OUT(float) x, OUT(float) y, OUT(float) z) {
     PRECISE float t = nf / (d * fmn + znear); // denominator >= znear > 0
     PRECISE float ndcX = (float(px) + sx) * ndcScaleX - 1.0f;
     PRECISE float ndcY = (float(py) + sy) * ndcScaleY - 1.0f;
@@ -94,8 +101,8 @@ inline_fn void sampleScaledPosition(uint px, uint py, float sx, float sy, float 
 }
 
 // Equation 1: d(a, b) = |(p_a - p_b)/k|^2 + (1 - n_a . n_b)^2, positions already divided by k.
-inline_fn float aggregateDistance(float ax, float ay, float az, float anx, float any, float anz, float bx, float by,
-                                  float bz, float bnx, float bny, float bnz) {
+inline_fn float aggregateDistance(float ax, float ay, float az, float anx, float any, float anz, float bx,
+                                  float by, float bz, float bnx, float bny, float bnz) {
     PRECISE float dx = ax - bx;
     PRECISE float dy = ay - by;
     PRECISE float dz = az - bz;
@@ -111,8 +118,8 @@ inline_fn float aggregateDistance(float ax, float ay, float az, float anx, float
 // of k, so samples of one plane are 0 apart however far apart they lie on it (a flat floor at
 // grazing angles spreads a pixel's samples over more than k in depth); the normal term is
 // Equation 1's.
-inline_fn float aggregatePlaneDistance(float ax, float ay, float az, float anx, float any, float anz, float bx,
-                                       float by, float bz, float bnx, float bny, float bnz) {
+inline_fn float aggregatePlaneDistance(float ax, float ay, float az, float anx, float any, float anz,
+                                       float bx, float by, float bz, float bnx, float bny, float bnz) {
     PRECISE float dx = ax - bx;
     PRECISE float dy = ay - by;
     PRECISE float dz = az - bz;
@@ -128,10 +135,26 @@ inline_fn float aggregatePlaneDistance(float ax, float ay, float az, float anx, 
 SHARED_CONST kDistancePosition = 0u;
 SHARED_CONST kDistancePlane = 1u;
 
-inline_fn float clusterDistance(uint mode, float ax, float ay, float az, float anx, float any, float anz, float bx,
-                                float by, float bz, float bnx, float bny, float bnz) {
-    if (mode == kDistancePlane) return aggregatePlaneDistance(ax, ay, az, anx, any, anz, bx, by, bz, bnx, bny, bnz);
+inline_fn float clusterDistance(uint mode, float ax, float ay, float az, float anx, float any, float anz,
+                                float bx, float by, float bz, float bnx, float bny, float bnz) {
+    if (mode == kDistancePlane)
+        return aggregatePlaneDistance(ax, ay, az, anx, any, anz, bx, by, bz, bnx, bny, bnz);
     return aggregateDistance(ax, ay, az, anx, any, anz, bx, by, bz, bnx, bny, bnz);
+}
+
+// How far apart two samples' surfaces lie, whatever their normals: the position term of the
+// plane variant (the mean of the squared distances of each sample to the other's tangent plane,
+// in units of k). Samples of one surface are close however far apart they lie on it, so a face-on
+// pixel near a light stays one layer; a sphere's edge over the wall behind it does not.
+inline_fn float layerDistance(float ax, float ay, float az, float anx, float any, float anz, float bx,
+                              float by, float bz, float bnx, float bny, float bnz) {
+    PRECISE float dx = ax - bx;
+    PRECISE float dy = ay - by;
+    PRECISE float dz = az - bz;
+    PRECISE float da = (dx * anx + dy * any) + dz * anz;
+    PRECISE float db = (dx * bnx + dy * bny) + dz * bnz;
+    PRECISE float r = (da * da + db * db) * 0.5f;
+    return r;
 }
 
 // Samples of different shading models (metal against dielectric; the samples path reads it from
@@ -143,9 +166,68 @@ SHARED_CONST_FLOAT kShadingModelDistance = 1.0e6f;
 // The G-buffer's metallic at or above which a sample is shaded as a metal.
 SHARED_CONST_FLOAT kMetalModelThreshold = 0.5f;
 
-#define AGAA_DIST(a, b)                                                                                            \
-    (clusterDistance(mode, px[a], py[a], pz[a], nx[a], ny[a], nz[a], px[b], py[b], pz[b], nx[b], ny[b], nz[b]) + \
+#define AGAA_DIST(a, b)                                                                                      \
+    (clusterDistance(mode, px[a], py[a], pz[a], nx[a], ny[a], nz[a], px[b], py[b], pz[b], nx[b], ny[b],      \
+                     nz[b]) +                                                                                \
      (model[a] != model[b] ? kShadingModelDistance : 0.0f))
+
+// c = 1: one aggregate cannot hold two surfaces apart, and their mean would be shaded at a
+// point between them, in empty space, with a normal neither has (a sphere's silhouette over a
+// wall: lights between them light the mean as if it touched them). So the pixel's samples are
+// split into two layers as Algorithm 1 would split them into two seeds, but on the distance
+// between their surfaces alone (layerDistance: normals spread inside a layer are what the
+// aggregate's filtered lobe is for): seed 0 the sample farthest from the mean, seed 1 the one farthest from
+// seed 0 if beyond `threshold`, every sample to its nearer seed. The larger layer is the aggregate (ties:
+// seed 0's); the other's samples get kOffLayer and keep only their coverage (they resolve to the aggregate's
+// radiance): where no-AA shades the one surface its centre sample hits, c = 1 shades the surface
+// most of the pixel's samples hit, pre-filtered.
+inline_fn void splitLayers(uint n, float threshold, IN_ARRAY(float) px[kMaxSamples],
+                           IN_ARRAY(float) py[kMaxSamples], IN_ARRAY(float) pz[kMaxSamples],
+                           IN_ARRAY(float) nx[kMaxSamples], IN_ARRAY(float) ny[kMaxSamples],
+                           IN_ARRAY(float) nz[kMaxSamples], IN_ARRAY(bool) valid[kMaxSamples], float mx,
+                           float my, float mz, float mnx, float mny, float mnz,
+                           OUT_ARRAY(uint) ids[kMaxSamples]) {
+    uint seed0 = 0u;
+    PRECISE float best = -1.0f;
+    for (uint s = 0u; s < n; ++s) {
+        if (!valid[s]) continue;
+        PRECISE float dm = layerDistance(px[s], py[s], pz[s], nx[s], ny[s], nz[s], mx, my, mz, mnx, mny, mnz);
+        if (dm > best) {
+            best = dm;
+            seed0 = s;
+        }
+    }
+    int seed1 = -1;
+    best = threshold;
+    for (uint s = 0u; s < n; ++s) {
+        if (!valid[s]) continue;
+        PRECISE float d = layerDistance(px[s], py[s], pz[s], nx[s], ny[s], nz[s], px[seed0], py[seed0],
+                                        pz[seed0], nx[seed0], ny[seed0], nz[seed0]);
+        if (d > best) {
+            best = d;
+            seed1 = int(s);
+        }
+    }
+    uint inSeed0 = 0u, inSeed1 = 0u;
+    for (uint s = 0u; s < n; ++s) {
+        ids[s] = 0u;
+        if (!valid[s] || seed1 < 0) continue;
+        uint t = uint(seed1);
+        PRECISE float d0 = layerDistance(px[s], py[s], pz[s], nx[s], ny[s], nz[s], px[seed0], py[seed0],
+                                         pz[seed0], nx[seed0], ny[seed0], nz[seed0]);
+        PRECISE float d1 =
+            layerDistance(px[s], py[s], pz[s], nx[s], ny[s], nz[s], px[t], py[t], pz[t], nx[t], ny[t], nz[t]);
+        ids[s] = d1 < d0 ? 1u : 0u;
+        if (ids[s] == 1u)
+            inSeed1 = inSeed1 + 1u;
+        else
+            inSeed0 = inSeed0 + 1u;
+    }
+    // ids hold the seed: 0 for seed 0's layer. The larger layer becomes the aggregate (id 0).
+    bool swap = inSeed1 > inSeed0;
+    for (uint s = 0u; s < n; ++s)
+        if (valid[s]) ids[s] = (ids[s] == 1u) != swap ? kOffLayer : 0u;
+}
 
 // Algorithm 1. Inputs: n samples (valid = not sky), positions divided by k, unit normals, shading
 // models (all 0 when there is no model to separate).
@@ -165,8 +247,7 @@ inline_fn uint clusterSamples(uint n, uint c, uint mode, float threshold, IN_ARR
                               IN_ARRAY(float) py[kMaxSamples], IN_ARRAY(float) pz[kMaxSamples],
                               IN_ARRAY(float) nx[kMaxSamples], IN_ARRAY(float) ny[kMaxSamples],
                               IN_ARRAY(float) nz[kMaxSamples], IN_ARRAY(uint) model[kMaxSamples],
-                              IN_ARRAY(bool) valid[kMaxSamples],
-                              OUT_ARRAY(uint) ids[kMaxSamples]) {
+                              IN_ARRAY(bool) valid[kMaxSamples], OUT_ARRAY(uint) ids[kMaxSamples]) {
     uint count = 0u;
     PRECISE float mx = 0.0f, my = 0.0f, mz = 0.0f, mnx = 0.0f, mny = 0.0f, mnz = 0.0f;
     for (uint s = 0u; s < n; ++s) {
@@ -188,13 +269,19 @@ inline_fn uint clusterSamples(uint n, uint c, uint mode, float threshold, IN_ARR
     mnx = mnx / fc;
     mny = mny / fc;
     mnz = mnz / fc;
+    if (c == 1u) {
+        splitLayers(n, threshold, px, py, pz, nx, ny, nz, valid, mx, my, mz, mnx, mny, mnz, ids);
+        return 1u;
+    }
 
     uint seeds[kMaxAggregates];
-    seeds[0] = 0u;
+    for (uint k = 0u; k < kMaxAggregates; ++k)
+        seeds[k] = 0u;
     PRECISE float best = -1.0f;
     for (uint s = 0u; s < n; ++s) {
         if (!valid[s]) continue;
-        PRECISE float dm = clusterDistance(mode, px[s], py[s], pz[s], nx[s], ny[s], nz[s], mx, my, mz, mnx, mny, mnz);
+        PRECISE float dm =
+            clusterDistance(mode, px[s], py[s], pz[s], nx[s], ny[s], nz[s], mx, my, mz, mnx, mny, mnz);
         if (dm > best) {
             best = dm;
             seeds[0] = s;
@@ -247,7 +334,6 @@ inline_fn uint clusterSamples(uint n, uint c, uint mode, float threshold, IN_ARR
 inline_fn uint packMetadataWord(uint word, uint n, uint c, IN_ARRAY(uint) ids[kMaxSamples]) {
     uint b = metadataBits(c);
     uint bits = 0u;
-    if (b == 0u) return 0u;
     for (uint s = 0u; s < n; ++s) {
         uint first = s * b;
         if (first / 32u == word) bits = bits | (ids[s] << (first % 32u));
@@ -257,7 +343,6 @@ inline_fn uint packMetadataWord(uint word, uint n, uint c, IN_ARRAY(uint) ids[kM
 
 inline_fn uint unpackMetadata(uint wordValue, uint s, uint c) {
     uint b = metadataBits(c);
-    if (b == 0u) return 0u;
     return (wordValue >> ((s * b) % 32u)) & ((1u << b) - 1u);
 }
 

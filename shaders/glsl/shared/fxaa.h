@@ -11,7 +11,8 @@ SHARED_BEGIN
 SHARED_CONST kFxaaMaxSteps = 12u;
 
 struct FxaaParams {
-    vec4 thresholds; // x: subpixel blend amount, y: edge threshold (relative), z: edge threshold min (absolute luma), w unused
+    vec4 thresholds; // x: subpixel blend amount, y: edge threshold (relative), z: edge threshold min
+                     // (absolute luma), w unused
 };
 
 SHARED_END
