@@ -10,9 +10,9 @@ void validate(const EffectSettings& s) {
     if (s.shadowMapSize < 64 || s.shadowMapSize > 4096)
         throw std::invalid_argument("--shadow-map-size " + std::to_string(s.shadowMapSize) +
                                     " is out of range (64..4096)");
-    if (s.shadowTaps < 1 || s.shadowTaps > 4)
+    if (s.shadowTaps < 1 || s.shadowTaps > 8)
         throw std::invalid_argument("--shadow-taps " + std::to_string(s.shadowTaps) +
-                                    " is out of range (1..4)");
+                                    " is out of range (1..8)");
 }
 
 eng::scene::SceneFeatures effectiveFeatures(const eng::scene::Scene& scene, const EffectSettings& settings) {

@@ -18,7 +18,7 @@ namespace agaa {
 struct EffectSettings {
     bool forceAll = false;         // every effect on, whatever the scene holds (benchmark baseline)
     uint32_t shadowMapSize = 1024; // texels per side of each shadow map, 64..4096
-    // AGAA: taps inside the aggregate's footprint (paper section 3.5.3), 1..4. The per-sample
+    // AGAA: taps inside the aggregate's footprint (paper section 3.5.3), 1..8. The per-sample
     // methods take one tap per shading event (their samples are points).
     uint32_t shadowTaps = 4;
     // AGAA: where the taps go. Statistics: along the aggregate's variance vector from its mean

@@ -110,12 +110,13 @@ TEST(GoalP8, MoreGeometrySamplesBeatMoreShadingSamples) {
                         split(display).c_str());
         }
     }
-    // Goal P8 is not met at the default settings (the README gives the split): c = 2 must merge
+    // Goal P8 is not met at the default settings (the README gives the split): the statistical
+    // shadow footprint's 4 taps per aggregate against per-sample shading's 8 per pixel leave the
+    // one-surface pixels with about twice its error (0.0027 against 0.0015), and c = 2 must merge
     // the third and fourth surfaces of the 18 % of pixels that have them (fur behind railings in
-    // front of foliage), and the statistical shadow footprint adds error on one-surface pixels
-    // (AGAA_P8_SHADOW_SAMPLES=1: 1.02x). The test guards the measured level (1.05x; 1.34x before
-    // the filtered diffuse and the NDF rule) and fails when the goal is reached, so that this
-    // becomes the assertion the goal asks for.
+    // front of foliage). The test guards the measured level (1.04x; 1.34x before the filtered
+    // diffuse and the NDF rule, 1.05x before the footprint's own width) and fails when the goal is
+    // reached at the defaults, so that this becomes the assertion the goal asks for.
     const bool measuredSetting = !std::getenv("AGAA_P8_NDF") && !std::getenv("AGAA_P8_NO_SHADOWS") &&
                                  !std::getenv("AGAA_P8_DIFFUSE") && !std::getenv("AGAA_P8_SHADOW_SAMPLES") &&
                                  !std::getenv("AGAA_P8_SHADOW_TAPS");
@@ -123,6 +124,21 @@ TEST(GoalP8, MoreGeometrySamplesBeatMoreShadingSamples) {
         EXPECT_LE(agaaError, 1.1 * perSampleError) << "AGAA (32, 2) got worse against per-sample (8)";
         EXPECT_GT(agaaError, perSampleError)
             << "goal P8 holds now: make this test assert it (agaaError <= perSampleError)";
+        // The goal is met with the paper's "more precise" shadow filtering: 8 taps at the
+        // aggregate's own samples (measured 0.98x accumulate, 0.96x samples path; the lighting
+        // pass about 1.2x the default's on lavapipe, README).
+        for (const char* method : {"agaa-accumulate", "agaa-samples"}) {
+            agaa::RenderRequest precise = request(method, 32, 2);
+            precise.settings.effects.shadowFootprint = agaa::EffectSettings::ShadowFootprint::Samples;
+            precise.settings.effects.shadowTaps = 8;
+            const agaa::RenderResult ag = renderer.render(precise);
+            const eng::io::ImageF display = eng::io::srgbEncoded(ag.display);
+            const double error = eng::io::rmse(display, truthDisplay);
+            std::printf("[ measured ] %s (32, 2), 8 shadow taps at its samples: display RMSE %.4f (%.2fx "
+                        "per-sample (8))%s\n",
+                        method, error, error / perSampleError, split(display).c_str());
+            EXPECT_LE(error, perSampleError) << method << ": goal P8 with the precise shadow footprint";
+        }
     }
     agaa::test::expectNoValidationErrors(*device);
 }

@@ -74,7 +74,7 @@ struct KnownGap {
 // neighbours of the sub-pixel glints the references show (at n = 8 and 32), which c = 1 has no
 // silhouette to win back from (c = 2: 0.61x).
 constexpr KnownGap kDisplayGaps[] = {
-    {"hard-mirror", 1, "1.14x no-AA"},
+    {"hard-mirror", 1, "1.13x no-AA"},
 };
 // The energy bound at c = 2, AGAA's default: spikes breaks it against the 8-sample reference, whose
 // mean is not converged there (a few mirror sparkles carry it: 0.118 at 64x64 n = 8, 0.200 at

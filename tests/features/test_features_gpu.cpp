@@ -165,7 +165,7 @@ TEST(FeaturesGpu, AgaaShadowFootprintsAndTapCountsAllShadeTheOccluderScene) {
                      inLight = pixelOf({-3.0f, -3.0f, -10.0f}, size);
     for (auto footprint :
          {agaa::EffectSettings::ShadowFootprint::Statistics, agaa::EffectSettings::ShadowFootprint::Samples})
-        for (uint32_t taps = 1; taps <= 4; ++taps) {
+        for (uint32_t taps : {1u, 2u, 3u, 4u, 5u, 8u}) {
             agaa::RenderRequest r;
             r.method = "agaa";
             r.settings.samples = 8;

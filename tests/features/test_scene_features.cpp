@@ -158,7 +158,7 @@ TEST(EffectSettings, OutOfRangeSettingsAreRefused) {
     agaa::EffectSettings s;
     s.shadowTaps = 0;
     EXPECT_THROW(agaa::validate(s), std::invalid_argument);
-    s.shadowTaps = 5;
+    s.shadowTaps = 9;
     EXPECT_THROW(agaa::validate(s), std::invalid_argument);
     s = {};
     s.shadowMapSize = 32;

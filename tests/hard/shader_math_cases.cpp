@@ -776,6 +776,46 @@ std::vector<EdgeCase> shaderMathCases() {
                 });
     }
 
+    // The shadow footprint's width along a tangent direction (common/depth.glsl aggregateWidth,
+    // issue 14), against the variance of the samples' screen positions along the direction's
+    // screen projection, in double: sqrt(12 v) pixels, 1 for a uniform whole pixel.
+    {
+        struct WidthIn {
+            const char* what;
+            glm::dvec3 d, S; // direction (view space), covariance (sxx, sxy, syy) in pixel^2
+        };
+        const double w = 1.0 / 12.0; // a uniform pixel's variance per axis
+        const WidthIn widths[] = {
+            {"whole pixel, along x", {1, 0, 0}, {w, 0, w}},
+            {"whole pixel, diagonal and tilted out of the screen", {0.6, 0.6, 0.52915}, {w, 0, w}},
+            {"left half (split along x), across the split", {1, 0, 0}, {w / 4, 0, w}},
+            {"left half, along the split", {0, -1, 0}, {w / 4, 0, w}},
+            {"a diagonal strip, along it", {0.70710678, 0.70710678, 0}, {w, 0.9 * w, w}},
+            {"a diagonal strip, across it", {0.70710678, -0.70710678, 0}, {w, 0.9 * w, w}},
+            {"one sample: no spread", {0.3, 0.8, 0.1}, {0, 0, 0}},
+            {"cancellation: a slightly negative variance", {1, 0, 0}, {-1e-9, 0, w}},
+        };
+        for (const WidthIn& k : widths)
+            add(std::string("aggregateWidth ") + k.what, {},
+                op(kOpAggregateWidth, glm::vec4(glm::vec3(k.d), 0), glm::vec4(glm::vec3(k.S), 0)),
+                [k](const MathResult& r) {
+                    const double l2 = k.d.x * k.d.x + k.d.y * k.d.y;
+                    const double v =
+                        (k.d.x * k.d.x * k.S.x + 2.0 * k.d.x * k.d.y * k.S.y + k.d.y * k.d.y * k.S.z) / l2;
+                    return near("width", r.r0.x, std::sqrt(12.0 * std::max(v, 0.0)), 1e-5, 1e-6);
+                });
+        // Guard: a direction along the view ray has no screen direction; the whole pixel.
+        for (double xy : {0.0, 0.5e-3, 0.9e-3})
+            add("aggregateWidth along the view ray, |xy| = " + fmt(float(xy)), {"kMinScreenDirection2"},
+                op(kOpAggregateWidth, glm::vec4(float(xy), 0, 1, 0), glm::vec4(0.001f, 0, 0.001f, 0)),
+                [](const MathResult& r) { return near("width", r.r0.x, 1.0, 0.0, 0.0); });
+        // Just past the guard: measured along x (|xy|^2 = 1.1e-6 > 1e-6).
+        add("aggregateWidth just off the view ray", {"kMinScreenDirection2"},
+            op(kOpAggregateWidth, glm::vec4(1.0488e-3f, 0, 1, 0),
+               glm::vec4(1.0f / 48.0f, 0, 1.0f / 12.0f, 0)),
+            [](const MathResult& r) { return near("width", r.r0.x, 0.5, 1e-4, 0.0); });
+    }
+
     // Filtered Lambert (common/brdf.glsl filteredClampedCosine, issue 14): the shader against the
     // expansion in double, and the expansion against the vMF integral it stands for; r = 1 is the
     // clamped cosine exactly (a single normal shades as before), r = 0 about the sphere's mean 1/4.

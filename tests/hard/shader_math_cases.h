@@ -49,6 +49,7 @@ enum MathOp : uint32_t {
     kOpPixelFootprint = 22,
     kOpFaceNormal = 23,
     kOpFilteredCosine = 24,
+    kOpAggregateWidth = 25,
 };
 
 struct EdgeCase {

@@ -133,7 +133,7 @@ const char* kUsage =
     "  --effects scene|all  passes and shader variants from the scene's features (default), or every\n"
     "                    effect forced on (shadows, alpha-to-coverage, emissive, normal maps, light "
     "culling)\n"
-    "  --shadow-taps N   AGAA shadow taps inside each aggregate's footprint, 1..4 (default 4)\n"
+    "  --shadow-taps N   AGAA shadow taps inside each aggregate's footprint, 1..8 (default 4)\n"
     "  --shadow-footprint statistics|samples  AGAA shadow taps along the aggregate's depth variance\n"
     "                    (default) or at its own sample positions\n"
     "  --shadow-map-size N  texels per side of each shadow map, 64..4096 (default 1024)\n"
@@ -245,7 +245,7 @@ Options parse(int argc, char** argv) {
                 throw BadArgument("--effects '" + v + "' is not one of: scene, all");
             r.settings.effects.forceAll = v == "all";
         } else if (a == "--shadow-taps")
-            r.settings.effects.shadowTaps = parseUint(a, value(), 1, 4);
+            r.settings.effects.shadowTaps = parseUint(a, value(), 1, 8);
         else if (a == "--shadow-footprint") {
             std::string v = value();
             if (v != "statistics" && v != "samples")

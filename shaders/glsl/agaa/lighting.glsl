@@ -178,6 +178,7 @@ shared vec4 sTangent[kListRound];
 shared vec4 sBitangent[kListRound];
 shared uint sOwner[kListRound];
 shared float sSpread[kListRound];
+shared vec3 sScreenSpread[kListRound];
 shared uint sEntryCount;
 
 // One light's contribution to an aggregate: its radiance, its specular part, and the square of
@@ -197,7 +198,7 @@ void addLight(SurfaceInputs surface, vec3 T, vec3 B, vec2 alphas, float spread, 
 // One shading event: the aggregate `a` of `pixel` (k samples), seen at P, lit by every light of
 // the tile. radiance: its linear radiance before exposure, with its specular part and the
 // variance of the specular radiance over the aggregate's samples (the two-point resolve's).
-void shadeAggregate(SurfaceInputs surface, vec3 T, vec3 B, vec2 alphas, float spread, vec3 P, float sigma, ivec2 pixel,
+void shadeAggregate(SurfaceInputs surface, vec3 T, vec3 B, vec2 alphas, float spread, vec3 P, float sigma, vec3 screenSpread, ivec2 pixel,
                     uint pixelIndex, uint a, uint k, bool sggx, out vec3 radiance, out vec3 specular,
                     out vec3 specularVariance) {
     radiance = vec3(0.0);
@@ -225,7 +226,7 @@ void shadeAggregate(SurfaceInputs surface, vec3 T, vec3 B, vec2 alphas, float sp
         vec3 L, irradiance;
         if (!lightIncidence(lights[i], P, L, irradiance)) continue;
         irradiance *= kShadowFootprint == 1u ? shadowVisibilityAggregateSamples(i, pixel, pixelIndex, a, k, surface.normal)
-                                             : shadowVisibilityAggregate(i, P, surface.normal, sigma, pixelSize);
+                                             : shadowVisibilityAggregate(i, P, surface.normal, sigma, pixelSize, screenSpread);
         addLight(surface, T, B, alphas, spread, V, L, irradiance, sggx, radiance, specular, specularSquares);
     }
 #endif
@@ -256,6 +257,8 @@ void main() {
     float depthOrigin = -1.0;
     vec3 positionSum[kMaxAggregates] = vec3[](vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0));
     uint samplesIn[kMaxAggregates] = uint[](0u, 0u, 0u, 0u);
+    vec2 screenSum[kMaxAggregates] = vec2[](vec2(0.0), vec2(0.0), vec2(0.0), vec2(0.0));
+    vec3 screenSquares[kMaxAggregates] = vec3[](vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0));
     uint skySamples = 0u;
     uint offLayerSamples = 0u; // c = 1: samples resolved with aggregate 0's radiance, not in its statistics
     float tmin = 1e30, tmax = -1e30;
@@ -325,11 +328,15 @@ void main() {
             depthSquares[a] += (t - depthOrigin) * (t - depthOrigin);
             positionSum[a] += P;
             samplesIn[a] += 1u;
+            vec2 sp = frame.samplePositions[s].xy;
+            screenSum[a] += sp;
+            screenSquares[a] += vec3(sp.x * sp.x, sp.x * sp.y, sp.y * sp.y);
         }
     }
     SurfaceInputs surfaces[kMaxAggregates];
     vec3 positions[kMaxAggregates];
     float depthSigma[kMaxAggregates] = float[](0.0, 0.0, 0.0, 0.0);
+    vec3 screenSpreads[kMaxAggregates] = vec3[](vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0));
     bool present[kMaxAggregates] = bool[](false, false, false, false);
     vec3 tangents[kMaxAggregates], bitangents[kMaxAggregates];
     vec2 alphas[kMaxAggregates]; // SGGX: (alphaT, alphaB), clamped to the BRDF's range
@@ -451,6 +458,8 @@ void main() {
         // the aggregate's extent along the view ray, the footprint shadow filtering samples in.
         float meanShifted = depthShifted[a] / fs;
         depthSigma[a] = sqrt(max(depthSquares[a] / fs - meanShifted * meanShifted, 0.0));
+        vec2 ms = screenSum[a] / fs;
+        screenSpreads[a] = screenSquares[a] / fs - vec3(ms.x * ms.x, ms.x * ms.y, ms.y * ms.y);
     }
 
     // ---- 2. tile depth bounds and light culling; the pixel's place in the tile's list -------
@@ -489,6 +498,7 @@ void main() {
                     sBitangent[e] = vec4(bitangents[a], alphas[a].y);
                     sOwner[e] = self | (a << 8u) | (samplesIn[a] << 10u);
                     sSpread[e] = spreads[a];
+                    sScreenSpread[e] = screenSpreads[a];
                 }
                 slot += 1u;
             }
@@ -506,7 +516,7 @@ void main() {
                 vec4 B = sBitangent[self];
                 vec3 lit, spec, variance;
                 shadeAggregate(surface, T.xyz, B.xyz, vec2(T.w, B.w), sSpread[self], sPosition[self].xyz,
-                               sPosition[self].w,
+                               sPosition[self].w, sScreenSpread[self],
                                ownerPixel, uint(ownerPixel.y * size.x + ownerPixel.x), (owner >> 8u) & 3u,
                                owner >> 10u, sggx, lit, spec, variance);
                 sPosition[self].xyz = lit;
@@ -531,12 +541,12 @@ void main() {
         // After the list's rounds: no barrier follows it, so lavapipe (whose compute barriers
         // split the shader into coroutine segments) keeps its loop free of frame spills.
         if (inside && present[0])
-            shadeAggregate(surfaces[0], tangents[0], bitangents[0], alphas[0], spreads[0], positions[0], depthSigma[0],
+            shadeAggregate(surfaces[0], tangents[0], bitangents[0], alphas[0], spreads[0], positions[0], depthSigma[0], screenSpreads[0],
                            pixel, pixelIndex, 0u, samplesIn[0], sggx, radiance[0], specular[0], specularVariance[0]);
     } else if (inside) {
         for (uint a = 0u; a < c; ++a) {
             if (!present[a]) continue;
-            shadeAggregate(surfaces[a], tangents[a], bitangents[a], alphas[a], spreads[a], positions[a], depthSigma[a],
+            shadeAggregate(surfaces[a], tangents[a], bitangents[a], alphas[a], spreads[a], positions[a], depthSigma[a], screenSpreads[a],
                            pixel, pixelIndex, a, samplesIn[a], sggx, radiance[a], specular[a], specularVariance[a]);
         }
     }

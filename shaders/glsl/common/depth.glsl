@@ -1,5 +1,6 @@
 #ifndef AGAA_DEPTH_GLSL
 #define AGAA_DEPTH_GLSL
+#include "common/epsilon.glsl"
 // Reversed Z with a finite far plane: d(t) = n (f - t) / (t (f - n)) maps view
 // distance t in [n, f] to depth d in [1, 0]. Cleared depth 0 is the far plane:
 // such a sample is sky. Inverse: t = n f / (d (f - n) + n); the denominator is
@@ -15,6 +16,19 @@ bool isSky(float d) { return d <= 0.0; }
 // abs() the shadow footprint's pixel offsets pointed the other way, 1/8 px off centre).
 float pixelFootprint(float t, vec4 extent, vec4 projParams) {
     return t * 2.0 * extent.w / abs(projParams.y);
+}
+
+// An aggregate's extent along the view-space direction d, in pixels (the shadow footprint's,
+// common/shadow.glsl): its samples' sub-pixel positions have covariance S = (sxx, sxy, syy) in
+// pixel^2, and a uniform spread of variance v spans sqrt(12 v): 1 for a whole pixel, 1/2 across
+// a pixel its clustering split in two. d's screen direction is its xy (the footprint's
+// directions lie in the tangent plane, off the view ray); guard kMinScreenDirection2: d along the
+// ray has none, and the whole pixel is used. Cancellation in S (v < 0) gives 0.
+float aggregateWidth(vec3 d, vec3 S) {
+    float l2 = dot(d.xy, d.xy);
+    if (l2 <= kMinScreenDirection2) return 1.0;
+    float v = (d.x * d.x * S.x + 2.0 * d.x * d.y * S.y + d.y * d.y * S.z) / l2;
+    return sqrt(12.0 * max(v, 0.0));
 }
 
 // View-space point at view distance t on the ray through pixel-space position pixelPos.

@@ -35,6 +35,10 @@ const float kSggxOffDiagonal = 1.0e-8;
 // Floor of the SGGX normal's eigenvalue (the alphas divide by it). Any mean of sample matrices
 // has trace >= 1 and so a largest eigenvalue >= 1/3; only corrupt input reaches the floor.
 const float kMinSggxEigenvalue = 0.25;
+// AGAA shadow footprint (common/depth.glsl aggregateWidth): a tangent direction whose screen
+// projection (its view-space xy, squared length) is at or below this runs along the view ray and
+// has no screen direction to measure the aggregate's samples along; the whole pixel is used.
+const float kMinScreenDirection2 = 1.0e-6;
 // Two-point tone mapping (agaa/lighting.glsl): below this specular radiance an aggregate has no
 // highlight to spread, and the spike (S^2 + var) / S would divide by ~0.
 const float kMinSpikeRadiance = 1.0e-8;

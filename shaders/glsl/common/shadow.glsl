@@ -4,13 +4,14 @@
 // Requires, defined by the includer: SHADOW_MAP_BINDING, SHADOW_CONSTANTS_BINDING (set 0).
 // The map is an array with one D32 layer per shadowed light (shared/shadow.h); a tap is a
 // depth comparison with the nearest texel (no hardware PCF: a tap is one binary visibility).
+#include "common/depth.glsl"
 #include "shared/shadow.h"
 
 layout(set = 0, binding = SHADOW_MAP_BINDING) uniform sampler2DArray shadowMap;
 layout(set = 0, binding = SHADOW_CONSTANTS_BINDING) uniform Shadow { ShadowConstants shadow; };
 const float kMinTangentLength = 1.0e-3; // view ray along the normal: no depth gradient in the plane
 const float kMaxFootprintStretch = 16.0; // grazing surfaces: at most 16 m along g per metre of depth
-// Taps per shading event (specialisation id 5, agaa/common/effects.h): 1..4.
+// Taps per shading event (specialisation id 5, agaa/common/effects.h): 1..8.
 layout(constant_id = 5) const uint kShadowTaps = 4u;
 
 // The shadow-map layer of light i, or -1 when it casts none.
@@ -48,12 +49,16 @@ float shadowVisibilityPoint(uint light, vec3 P, vec3 N) {
 // position P and depth standard deviation sigma give the "variance vector": the direction g in
 // the aggregate's mean tangent plane (normal N) along which view depth changes fastest, scaled
 // so the taps' depths have the aggregate's variance. Staying in the tangent plane keeps the taps
-// on the surface (taps along the view ray would go under a slanted plane and shadow it). Tap j
-// sits at u_j * a along g with u = {-1, -1/3, 1/3, 1}, a = 3 sigma / sqrt(5) for 4 taps
-// ({-1, 0, 1}, a = sqrt(3/2) sigma for 3; {-1, 1}, a = sigma for 2: equal weights, the taps'
-// depth variance is sigma^2), and at a rotated-grid offset across the pixel (`pixelSize`
-// metres at P) along b = N x g, the tangent direction of constant depth.
-float shadowVisibilityAggregate(uint light, vec3 P, vec3 N, float sigma, float pixelSize) {
+// on the surface (taps along the view ray would go under a slanted plane and shadow it). The T
+// taps sit evenly along g over [-a, a], a = sigma_g sqrt(3 (T - 1) / (T + 1)), so that their
+// spread along g has the aggregate's variance (sigma_g: the depth spread's, or, where the plane
+// faces the camera and depth barely varies, the samples' own spread across the screen), and in
+// an N-rooks pattern across it along b = N x g (the tangent direction of constant depth), over
+// the aggregate's own width: `pixelSize` metres at P times aggregateWidth (common/depth.glsl), a
+// whole pixel for an aggregate that covers one, half for one its clustering split in two
+// (issue 14: across a whole pixel for every aggregate, and a footprint on a line where depth is
+// flat, goal P8's one-surface pixels had 3x per-sample shading's error).
+float shadowVisibilityAggregate(uint light, vec3 P, vec3 N, float sigma, float pixelSize, vec3 screenSpread) {
     int layer = shadowLayer(light);
     if (layer < 0) return 1.0;
     vec3 base = shadowReceiver(layer, P, N);
@@ -65,12 +70,22 @@ float shadowVisibilityAggregate(uint light, vec3 P, vec3 N, float sigma, float p
     vec3 bdir = glen > kMinTangentLength ? cross(N, gdir) : vec3(0.0);
     // Metres along g per metre of depth, bounded: a surface seen edge-on has an unbounded footprint.
     float stretch = glen > kMinTangentLength ? min(1.0 / glen, kMaxFootprintStretch) : 0.0;
-    const vec2 grid[4] = vec2[](vec2(-0.125, -0.375), vec2(0.375, -0.125), vec2(0.125, 0.375), vec2(-0.375, 0.125));
-    float spread = kShadowTaps == 2u ? sigma : (kShadowTaps == 3u ? sqrt(1.5) * sigma : 3.0 * sigma / sqrt(5.0));
+    float width = pixelSize * aggregateWidth(bdir, screenSpread);
+    // Along g: the depth spread in the tangent plane (a slanted plane's), or the samples' own
+    // spread across the screen (a face-on plane has no depth spread), whichever is wider.
+    float sigmaG = max(sigma * stretch, pixelSize * aggregateWidth(gdir, screenSpread) / sqrt(12.0));
+    // T taps evenly over [-a, a] along g have variance a^2 (T + 1) / (3 (T - 1)): a sets it to sigmaG^2.
+    const float T = float(kShadowTaps);
+    float spread = sigmaG * sqrt(3.0 * (T - 1.0) / (T + 1.0));
+    // Across, an N-rooks pattern: tap j in column (j step + 1) mod T, one tap per column of the
+    // width (step coprime with T, near T / golden ratio, so neighbours along g sit apart across).
+    const uint kRookStep[9] = uint[](1u, 1u, 1u, 2u, 3u, 3u, 5u, 4u, 5u);
+    uint step = kRookStep[min(kShadowTaps, 8u)];
     float sum = 0.0;
     for (uint j = 0u; j < kShadowTaps; ++j) {
-        float u = -1.0 + 2.0 * float(j) / float(kShadowTaps - 1u);
-        vec3 q = base + gdir * (u * spread * stretch) + bdir * (grid[j].x * pixelSize);
+        float u = -1.0 + 2.0 * float(j) / (T - 1.0);
+        float across = (float((j * step + 1u) % kShadowTaps) + 0.5) / T - 0.5;
+        vec3 q = base + gdir * (u * spread) + bdir * (across * width);
         sum += shadowTap(layer, q);
     }
     return sum / float(kShadowTaps);
