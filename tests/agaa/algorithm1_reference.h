@@ -131,6 +131,22 @@ inline void assign(const Context& ctx, const std::vector<int>& seeds) {
     ctx.result->outcomes.push_back(std::move(o));
 }
 
+// The candidates certainly beyond t: the lowest score any of them may have (a candidate whose
+// score cannot reach it is certainly beaten), and how many share the best score exactly.
+struct CertainCandidates {
+    double lower = -INFINITY, best = -INFINITY;
+    uint32_t atBest = 0;
+    void add(const Distance& score) {
+        lower = std::max(lower, score.value - score.bound);
+        if (score.value > best) {
+            best = score.value;
+            atBest = 0;
+        }
+        atBest += score.value == best;
+    }
+    bool none() const { return lower == -INFINITY; }
+};
+
 // 1(d), 1(e): the next seed, branching over every candidate that may win in float, and over
 // stopping when no candidate is certainly farther than t from every seed.
 inline void nextSeed(const Context& ctx, std::vector<int>& seeds) {
@@ -142,8 +158,7 @@ inline void nextSeed(const Context& ctx, std::vector<int>& seeds) {
         bool certain;
     };
     std::vector<Candidate> candidates;
-    double certainLower = -INFINITY, certainBest = -INFINITY;
-    uint32_t atCertainBest = 0;
+    CertainCandidates certainOnes;
     for (int i = 0; i < int(s.size()); ++i) {
         if (!s[i].valid) continue;
         Distance nearest{INFINITY, 0.0}, sum{0.0, 0.0};
@@ -157,21 +172,13 @@ inline void nextSeed(const Context& ctx, std::vector<int>& seeds) {
         const bool certain = nearest.value - nearest.bound > ctx.t;
         const Distance score = seeds.size() == 1 ? nearest : sum;
         candidates.push_back({i, score, certain});
-        if (certain) {
-            certainLower = std::max(certainLower, score.value - score.bound);
-            if (score.value > certainBest) {
-                certainBest = score.value;
-                atCertainBest = 0;
-            }
-            atCertainBest += score.value == certainBest;
-        }
+        if (certain) certainOnes.add(score);
     }
-    ctx.result->exactTie |= atCertainBest > 1;
-    const bool mayStop = certainLower == -INFINITY; // no candidate is certainly eligible
-    if (mayStop) assign(ctx, seeds);
+    ctx.result->exactTie |= certainOnes.atBest > 1;
+    if (certainOnes.none()) assign(ctx, seeds); // no candidate is certainly eligible: may stop
     for (const Candidate& k : candidates) {
         if (ctx.result->truncated) return;
-        if (k.score.value + k.score.bound < certainLower) continue; // certainly beaten
+        if (k.score.value + k.score.bound < certainOnes.lower) continue; // certainly beaten
         seeds.push_back(k.index);
         nextSeed(ctx, seeds);
         seeds.pop_back();
@@ -256,27 +263,19 @@ inline void assignLayers(const Context& ctx, int seed0, int seed1) {
 inline void layerSeed(const Context& ctx, int seed0) {
     const std::vector<Sample>& s = *ctx.s;
     std::vector<std::pair<int, Distance>> candidates;
-    double certainLower = -INFINITY, certainBest = -INFINITY;
-    uint32_t atCertainBest = 0;
+    CertainCandidates certainOnes;
     for (int i = 0; i < int(s.size()); ++i) {
         if (!s[i].valid) continue;
         const Distance d = layerBetween(s[i], s[seed0]);
         if (d.value + d.bound <= ctx.t) continue; // certainly on seed 0's layer
         candidates.push_back({i, d});
-        if (d.value - d.bound > ctx.t) {
-            certainLower = std::max(certainLower, d.value - d.bound);
-            if (d.value > certainBest) {
-                certainBest = d.value;
-                atCertainBest = 0;
-            }
-            atCertainBest += d.value == certainBest;
-        }
+        if (d.value - d.bound > ctx.t) certainOnes.add(d);
     }
-    ctx.result->exactTie |= atCertainBest > 1;
-    if (certainLower == -INFINITY) assignLayers(ctx, seed0, -1); // may find no second layer
+    ctx.result->exactTie |= certainOnes.atBest > 1;
+    if (certainOnes.none()) assignLayers(ctx, seed0, -1); // may find no second layer
     for (const auto& [index, d] : candidates) {
         if (ctx.result->truncated) return;
-        if (d.value + d.bound < certainLower) continue;
+        if (d.value + d.bound < certainOnes.lower) continue;
         assignLayers(ctx, seed0, index);
     }
 }

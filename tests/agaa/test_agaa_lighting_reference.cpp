@@ -273,12 +273,11 @@ TEST(AgaaLightingReference, AggregateShadingMatchesADoublePrecisionCpuShading) {
         uint32_t n, c;
         const char* ndf = "toksvig";
     };
-    const Case cases[] = {{"furball", 8, 2},          {"railings", 4, 4},
-                          {"foliage", 16, 2},         {"metal", 8, 3},
-                          {"metal", 8, 2, "sggx"},    {"railings", 16, 3, "sggx"},
-                          {"furball", 8, 4, "sggx"},  {"spikes", 32, 2, "sggx"},
-                          {"furball", 8, 1},          {"hard-many-lights", 8, 1},
-                          {"railings", 16, 1, "sggx"}};
+    const Case cases[] = {{"furball", 8, 2},         {"railings", 4, 4},
+                          {"foliage", 16, 2},        {"metal", 8, 3},
+                          {"metal", 8, 2, "sggx"},   {"railings", 16, 3, "sggx"},
+                          {"furball", 8, 4, "sggx"}, {"spikes", 32, 2, "sggx"},
+                          {"furball", 8, 1},         {"railings", 16, 1, "sggx"}};
     const uint32_t size = 64, pixels = size * size;
     for (const Case& k : cases) {
         eng::scene::Scene scene = eng::scene::loadTestScene(k.scene);

@@ -113,19 +113,28 @@ inline_fn float aggregateDistance(float ax, float ay, float az, float anx, float
     return r;
 }
 
-// The plane variant (AggregateDistance::Plane, agaa/aggregate/agaa_constants.h): the position
-// term is the mean of the squared distances of each sample to the other's tangent plane, in units
-// of k, so samples of one plane are 0 apart however far apart they lie on it (a flat floor at
-// grazing angles spreads a pixel's samples over more than k in depth); the normal term is
-// Equation 1's.
-inline_fn float aggregatePlaneDistance(float ax, float ay, float az, float anx, float any, float anz,
-                                       float bx, float by, float bz, float bnx, float bny, float bnz) {
+// How far apart two samples' surfaces lie, whatever their normals: the position term of the
+// plane variant (the mean of the squared distances of each sample to the other's tangent plane,
+// in units of k). Samples of one surface are close however far apart they lie on it, so a face-on
+// pixel near a light stays one layer; a sphere's edge over the wall behind it does not.
+inline_fn float layerDistance(float ax, float ay, float az, float anx, float any, float anz, float bx,
+                              float by, float bz, float bnx, float bny, float bnz) {
     PRECISE float dx = ax - bx;
     PRECISE float dy = ay - by;
     PRECISE float dz = az - bz;
     PRECISE float da = (dx * anx + dy * any) + dz * anz;
     PRECISE float db = (dx * bnx + dy * bny) + dz * bnz;
-    PRECISE float position = (da * da + db * db) * 0.5f;
+    PRECISE float r = (da * da + db * db) * 0.5f;
+    return r;
+}
+
+// The plane variant (AggregateDistance::Plane, agaa/aggregate/agaa_constants.h): the position
+// term is layerDistance (above), so samples of one plane are 0 apart however far apart they lie
+// on it (a flat floor at grazing angles spreads a pixel's samples over more than k in depth); the
+// normal term is Equation 1's.
+inline_fn float aggregatePlaneDistance(float ax, float ay, float az, float anx, float any, float anz,
+                                       float bx, float by, float bz, float bnx, float bny, float bnz) {
+    PRECISE float position = layerDistance(ax, ay, az, anx, any, anz, bx, by, bz, bnx, bny, bnz);
     PRECISE float cosine = (anx * bnx + any * bny) + anz * bnz;
     PRECISE float o = 1.0f - cosine;
     PRECISE float r = position + o * o;
@@ -140,21 +149,6 @@ inline_fn float clusterDistance(uint mode, float ax, float ay, float az, float a
     if (mode == kDistancePlane)
         return aggregatePlaneDistance(ax, ay, az, anx, any, anz, bx, by, bz, bnx, bny, bnz);
     return aggregateDistance(ax, ay, az, anx, any, anz, bx, by, bz, bnx, bny, bnz);
-}
-
-// How far apart two samples' surfaces lie, whatever their normals: the position term of the
-// plane variant (the mean of the squared distances of each sample to the other's tangent plane,
-// in units of k). Samples of one surface are close however far apart they lie on it, so a face-on
-// pixel near a light stays one layer; a sphere's edge over the wall behind it does not.
-inline_fn float layerDistance(float ax, float ay, float az, float anx, float any, float anz, float bx,
-                              float by, float bz, float bnx, float bny, float bnz) {
-    PRECISE float dx = ax - bx;
-    PRECISE float dy = ay - by;
-    PRECISE float dz = az - bz;
-    PRECISE float da = (dx * anx + dy * any) + dz * anz;
-    PRECISE float db = (dx * bnx + dy * bny) + dz * bnz;
-    PRECISE float r = (da * da + db * db) * 0.5f;
-    return r;
 }
 
 // Samples of different shading models (metal against dielectric; the samples path reads it from
