@@ -159,7 +159,7 @@ layout(constant_id = 10) const uint kRouteFragment = 0u;
 const uint kTilePixels = kTileSize * kTileSize;
 // Entries of the per-tile list shaded per round: one per invocation. c = 4 can append up to
 // 4 x 256; the list is then shaded in up to 4 rounds through the same 256-entry storage, which
-// keeps the tile's shared memory at 21.5 KB (lavapipe offers 32 KB).
+// keeps the tile's shared memory at 25.5 KB (lavapipe offers 32 KB).
 const uint kListRound = kTilePixels;
 
 // One round of the per-tile list, struct-of-arrays. Inputs, written by the aggregate's pixel:
@@ -169,6 +169,7 @@ const uint kListRound = kTilePixels;
 //   sTangent   xyz tangent (SGGX), w alphas.x;  sBitangent: xyz bitangent (SGGX), w alphas.y
 //   sOwner     tile pixel index | aggregate id << 8 | the aggregate's sample count << 10
 //   sSpread    the mean length of the aggregate's normals (Toksvig's filtered diffuse; 1: none)
+//   sScreenSpread  the covariance (xx, xy, yy) of its samples' sub-pixel positions, pixel^2
 // Outputs, written in place by the invocation that shades the entry: sPosition.xyz radiance,
 // sNormal.xyz specular part, sAlbedo.xyz its variance over the aggregate's samples.
 shared vec4 sPosition[kListRound];
@@ -198,9 +199,11 @@ void addLight(SurfaceInputs surface, vec3 T, vec3 B, vec2 alphas, float spread, 
 // One shading event: the aggregate `a` of `pixel` (k samples), seen at P, lit by every light of
 // the tile. radiance: its linear radiance before exposure, with its specular part and the
 // variance of the specular radiance over the aggregate's samples (the two-point resolve's).
-void shadeAggregate(SurfaceInputs surface, vec3 T, vec3 B, vec2 alphas, float spread, vec3 P, float sigma, vec3 screenSpread, ivec2 pixel,
-                    uint pixelIndex, uint a, uint k, bool sggx, out vec3 radiance, out vec3 specular,
-                    out vec3 specularVariance) {
+// screenSpread: the covariance of the aggregate's sub-pixel sample positions (the statistical
+// shadow footprint's width, common/depth.glsl aggregateWidth).
+void shadeAggregate(SurfaceInputs surface, vec3 T, vec3 B, vec2 alphas, float spread, vec3 P, float sigma,
+                    vec3 screenSpread, ivec2 pixel, uint pixelIndex, uint a, uint k, bool sggx, out vec3 radiance,
+                    out vec3 specular, out vec3 specularVariance) {
     radiance = vec3(0.0);
     specular = vec3(0.0);
     specularVariance = vec3(0.0);
@@ -260,7 +263,7 @@ void main() {
     vec2 screenSum[kMaxAggregates] = vec2[](vec2(0.0), vec2(0.0), vec2(0.0), vec2(0.0));
     vec3 screenSquares[kMaxAggregates] = vec3[](vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0));
     uint skySamples = 0u;
-    uint offLayerSamples = 0u; // c = 1: samples resolved with aggregate 0's radiance, not in its statistics
+    uint offLayerSamples = 0u; // c = 1: samples with aggregate 0's radiance and colour, not its geometry
     float tmin = 1e30, tmax = -1e30;
     const bool sggx = kNdf == kNdfSggx;
 #if AGAA_GBUFFER
