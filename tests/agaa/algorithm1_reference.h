@@ -280,6 +280,28 @@ inline void layerSeed(const Context& ctx, int seed0) {
     }
 }
 
+// 1(c) the first seed: the samples farthest from the mean, every candidate within the bounds of
+// the best (distanceToMean(i): a sample's distance to the mean, with its bound).
+template <class DistanceToMean>
+std::vector<int> firstSeeds(const std::vector<Sample>& s, DistanceToMean distanceToMean, Result& result) {
+    std::vector<Distance> d(s.size(), Distance{-1.0, 0.0});
+    double lower = -INFINITY, best = -INFINITY;
+    for (size_t i = 0; i < s.size(); ++i) {
+        if (!s[i].valid) continue;
+        d[i] = distanceToMean(s[i]);
+        lower = std::max(lower, d[i].value - d[i].bound);
+        best = std::max(best, d[i].value);
+    }
+    uint32_t atBest = 0;
+    for (size_t i = 0; i < s.size(); ++i)
+        atBest += s[i].valid && d[i].value == best;
+    result.exactTie |= atBest > 1;
+    std::vector<int> out;
+    for (size_t i = 0; i < s.size(); ++i)
+        if (s[i].valid && d[i].value + d[i].bound >= lower) out.push_back(int(i));
+    return out;
+}
+
 } // namespace detail
 
 // c = 1 (DESIGN section 4.2): one aggregate, on the larger of the pixel's two layers. Seeds as
@@ -289,22 +311,12 @@ inline Result layers(const std::vector<Sample>& s, double t, const double* mp, c
                      double meanErrP, double meanErrN) {
     Result result;
     detail::Context ctx{&s, 1, t, &result};
-    std::vector<Distance> d(s.size(), Distance{-1.0, 0.0});
-    double lower = -INFINITY, best = -INFINITY;
-    for (size_t i = 0; i < s.size(); ++i) {
-        if (!s[i].valid) continue;
-        d[i] = detail::layerDistance(s[i].p, s[i].n, s[i].positionError, s[i].normalError, mp, mn, meanErrP,
-                                     meanErrN);
-        lower = std::max(lower, d[i].value - d[i].bound);
-        best = std::max(best, d[i].value);
-    }
-    uint32_t atBest = 0;
-    for (size_t i = 0; i < s.size(); ++i)
-        atBest += s[i].valid && d[i].value == best;
-    result.exactTie |= atBest > 1;
-    for (size_t i = 0; i < s.size() && !result.truncated; ++i) {
-        if (!s[i].valid || d[i].value + d[i].bound < lower) continue;
-        detail::layerSeed(ctx, int(i));
+    const auto toMean = [&](const Sample& x) {
+        return detail::layerDistance(x.p, x.n, x.positionError, x.normalError, mp, mn, meanErrP, meanErrN);
+    };
+    for (int seed0 : detail::firstSeeds(s, toMean, result)) {
+        if (result.truncated) break;
+        detail::layerSeed(ctx, seed0);
     }
     return result;
 }
@@ -340,22 +352,13 @@ inline Result cluster(const std::vector<Sample>& s, uint32_t c, double t) {
     const double meanErrN = errN + double(visible + 1) * 0x1p-24;
     if (c == 1) return layers(s, t, mp, mn, meanErrP, meanErrN);
     // 1(c) the first seed: farthest from the mean (every candidate within the bounds of the best).
-    std::vector<Distance> d(s.size(), Distance{-1.0, 0.0});
-    double lower = -INFINITY, best = -INFINITY;
-    for (size_t i = 0; i < s.size(); ++i) {
-        if (!s[i].valid) continue;
-        d[i] = equation1(s[i].p, s[i].n, s[i].positionError, s[i].normalError, mp, mn, meanErrP, meanErrN);
-        lower = std::max(lower, d[i].value - d[i].bound);
-        best = std::max(best, d[i].value);
-    }
-    uint32_t atBest = 0;
-    for (size_t i = 0; i < s.size(); ++i)
-        atBest += s[i].valid && d[i].value == best;
-    result.exactTie |= atBest > 1;
+    const auto toMean = [&](const Sample& x) {
+        return equation1(x.p, x.n, x.positionError, x.normalError, mp, mn, meanErrP, meanErrN);
+    };
     std::vector<int> seeds;
-    for (size_t i = 0; i < s.size() && !result.truncated; ++i) {
-        if (!s[i].valid || d[i].value + d[i].bound < lower) continue;
-        seeds = {int(i)};
+    for (int seed0 : detail::firstSeeds(s, toMean, result)) {
+        if (result.truncated) break;
+        seeds = {seed0};
         detail::nextSeed(ctx, seeds);
     }
     return result;

@@ -1,5 +1,7 @@
 #include "shader_math_cases.h"
 
+#include "shader_math_checks.h"
+
 #include "../agaa/filtered_diffuse_reference.h"
 
 #include "engine/frame/frame_constants.h"
@@ -18,6 +20,8 @@ namespace agaa::hard {
 
 namespace {
 
+using namespace checks;
+
 // The guard values of epsilon.glsl, restated: the twins below implement the documented
 // behaviour (guards included) in double precision.
 constexpr double kMinGgxAlpha = 1.0e-3, kMaxGgxAlpha = 0.9, kMinCosine = 1.0e-4, kMinLightDistance2 = 1.0e-4,
@@ -26,45 +30,6 @@ constexpr double kPi = 3.14159265358979323846;
 constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
 constexpr float kInf = std::numeric_limits<float>::infinity();
 constexpr float kDenormal = 1.0e-40f;
-
-using D3 = glm::dvec3;
-
-// Default tolerance of one fp32 expression chain against double.
-constexpr double kRel = 2.0e-5, kAbs = 1.0e-6;
-
-std::string fmt(double v) {
-    std::ostringstream s;
-    s.precision(9);
-    s << v;
-    return s.str();
-}
-
-std::string near(const std::string& what, double got, double want, double rel = kRel, double abs = kAbs) {
-    if (!std::isfinite(got)) return what + " = " + fmt(got) + " is not finite (expected " + fmt(want) + ")";
-    if (std::abs(got - want) > abs + rel * std::abs(want))
-        return what + " = " + fmt(got) + ", expected " + fmt(want) + " (tolerance " + fmt(abs) + " + " +
-               fmt(rel) + " relative)";
-    return {};
-}
-
-std::string near3(const std::string& what, glm::vec3 got, D3 want, double rel = kRel, double abs = kAbs) {
-    for (int i = 0; i < 3; ++i)
-        if (std::string e = near(what + "[" + std::to_string(i) + "]", got[i], want[i], rel, abs); !e.empty())
-            return e;
-    return {};
-}
-
-std::string finite3(const std::string& what, glm::vec3 v) {
-    for (int i = 0; i < 3; ++i)
-        if (!std::isfinite(v[i]))
-            return what + "[" + std::to_string(i) + "] = " + fmt(v[i]) + " is not finite";
-    return {};
-}
-
-std::string unitLength(const std::string& what, glm::vec3 v) {
-    if (std::string e = finite3(what, v); !e.empty()) return e;
-    return near("|" + what + "|", glm::length(glm::dvec3(v)), 1.0, 1e-5, 0.0);
-}
 
 // ---- double twins --------------------------------------------------------------------
 double ggxD(double NoH, double alpha) {
@@ -163,18 +128,6 @@ uint32_t quantize(double v, uint32_t scale) {
 }
 
 const double kSmax = 2.0 / (kMinGgxAlpha * kMinGgxAlpha) - 2.0;
-
-MathCase op(uint32_t o, glm::vec4 a = {}, glm::vec4 b = {}, glm::vec4 c = {}, glm::vec4 d = {},
-            glm::vec4 e = {}) {
-    MathCase m;
-    m.op = {o, 0u, 0u, 0u};
-    m.a = a;
-    m.b = b;
-    m.c = c;
-    m.d = d;
-    m.e = e;
-    return m;
-}
 
 glm::vec4 v4(D3 v, double w = 0.0) {
     return glm::vec4(glm::vec3(v), float(w));
@@ -754,67 +707,7 @@ std::vector<EdgeCase> shaderMathCases() {
             });
     }
 
-    // Pixel footprint (common/depth.glsl) with the projection the frame really uses: its
-    // proj[1][1] is negative (Vulkan's y flip), and the footprint must not be (issue 14).
-    {
-        eng::scene::Scene scene;
-        eng::scene::Camera camera;
-        camera.view = glm::mat4(1.0f);
-        camera.yfov = 0.8f;
-        scene.cameras.push_back(camera);
-        eng::frame::ViewSettings view;
-        view.width = 96;
-        view.height = 64;
-        const shared::FrameConstants f =
-            eng::frame::makeFrameConstants(scene, view, eng::frame::makeSamplePattern(1));
-        for (float t : {0.1f, 2.0f, 500.0f})
-            add("pixelFootprint t=" + fmt(t) + " (projParams.y = " + fmt(f.projParams.y) + ")", {},
-                op(kOpPixelFootprint, glm::vec4(t, 0, 0, 0), f.extent, f.projParams),
-                [t](const MathResult& r) {
-                    // One pixel of 64 rows across a 0.8 rad vertical field of view.
-                    return near("footprint", r.r0.x, 2.0 * t * std::tan(0.4) / 64.0, 1e-5);
-                });
-    }
-
-    // The shadow footprint's width along a tangent direction (common/depth.glsl aggregateWidth,
-    // issue 14), against the variance of the samples' screen positions along the direction's
-    // screen projection, in double: sqrt(12 v) pixels, 1 for a uniform whole pixel.
-    {
-        struct WidthIn {
-            const char* what;
-            glm::dvec3 d, S; // direction (view space), covariance (sxx, sxy, syy) in pixel^2
-        };
-        const double w = 1.0 / 12.0; // a uniform pixel's variance per axis
-        const WidthIn widths[] = {
-            {"whole pixel, along x", {1, 0, 0}, {w, 0, w}},
-            {"whole pixel, diagonal and tilted out of the screen", {0.6, 0.6, 0.52915}, {w, 0, w}},
-            {"left half (split along x), across the split", {1, 0, 0}, {w / 4, 0, w}},
-            {"left half, along the split", {0, -1, 0}, {w / 4, 0, w}},
-            {"a diagonal strip, along it", {0.70710678, 0.70710678, 0}, {w, 0.9 * w, w}},
-            {"a diagonal strip, across it", {0.70710678, -0.70710678, 0}, {w, 0.9 * w, w}},
-            {"one sample: no spread", {0.3, 0.8, 0.1}, {0, 0, 0}},
-            {"cancellation: a slightly negative variance", {1, 0, 0}, {-1e-9, 0, w}},
-        };
-        for (const WidthIn& k : widths)
-            add(std::string("aggregateWidth ") + k.what, {},
-                op(kOpAggregateWidth, glm::vec4(glm::vec3(k.d), 0), glm::vec4(glm::vec3(k.S), 0)),
-                [k](const MathResult& r) {
-                    const double l2 = k.d.x * k.d.x + k.d.y * k.d.y;
-                    const double v =
-                        (k.d.x * k.d.x * k.S.x + 2.0 * k.d.x * k.d.y * k.S.y + k.d.y * k.d.y * k.S.z) / l2;
-                    return near("width", r.r0.x, std::sqrt(12.0 * std::max(v, 0.0)), 1e-5, 1e-6);
-                });
-        // Guard: a direction along the view ray has no screen direction; the whole pixel.
-        for (double xy : {0.0, 0.5e-3, 0.9e-3})
-            add("aggregateWidth along the view ray, |xy| = " + fmt(float(xy)), {"kMinScreenDirection2"},
-                op(kOpAggregateWidth, glm::vec4(float(xy), 0, 1, 0), glm::vec4(0.001f, 0, 0.001f, 0)),
-                [](const MathResult& r) { return near("width", r.r0.x, 1.0, 0.0, 0.0); });
-        // Just past the guard: measured along x (|xy|^2 = 1.1e-6 > 1e-6).
-        add("aggregateWidth just off the view ray", {"kMinScreenDirection2"},
-            op(kOpAggregateWidth, glm::vec4(1.0488e-3f, 0, 1, 0),
-               glm::vec4(1.0f / 48.0f, 0, 1.0f / 12.0f, 0)),
-            [](const MathResult& r) { return near("width", r.r0.x, 0.5, 1e-4, 0.0); });
-    }
+    addFootprintCases(cases); // shader_math_footprint_cases.cpp
 
     // Filtered Lambert (common/brdf.glsl filteredClampedCosine, issue 14): the shader against the
     // expansion in double, and the expansion against the vMF integral it stands for; r = 1 is the
@@ -831,34 +724,6 @@ std::vector<EdgeCase> shaderMathCases() {
                     return near("vMF integral", got.r0.x, agaa::test::vmfClampedCosine(x, r), 0.0,
                                 agaa::test::kFilteredCosineModelError);
                 });
-
-    // Face normal from derivatives (common/face_normal.glsl): the guard is on the sine of the angle
-    // between dP/dx and dP/dy, so micrometre footprints keep their plane (issue 14) and only
-    // parallel derivatives fall back to the camera direction.
-    {
-        struct FaceIn {
-            const char* what;
-            glm::vec3 dx, dy, towards;
-            bool fallback;
-        };
-        const glm::vec3 towards(0.6f, 0.0f, 0.8f);
-        for (const FaceIn& f : std::vector<FaceIn>{
-                 {"a 1 cm footprint", {0.01f, 0, 0}, {0, 0.01f, 0}, towards, false},
-                 {"a micrometre footprint (near plane)", {1e-6f, 0, 0}, {0, 1e-6f, 0}, towards, false},
-                 {"a 10 nm footprint", {1e-8f, 0, 0}, {0, 0, -1e-8f}, towards, false},
-                 {"parallel derivatives (edge-on sliver)", {1e-3f, 0, 0}, {2e-3f, 0, 0}, towards, true},
-                 {"nearly parallel, sine 1e-7", {1.0f, 0, 0}, {1.0f, 1e-7f, 0}, towards, true},
-                 {"nearly parallel, sine 1e-5", {1.0f, 0, 0}, {1.0f, 1e-5f, 0}, towards, false},
-                 {"zero derivatives", {0, 0, 0}, {0, 0, 0}, towards, true},
-             })
-            add("faceNormal " + std::string(f.what), {"kMinFaceNormalSine"},
-                op(kOpFaceNormal, glm::vec4(f.dx, 0), glm::vec4(f.dy, 0), glm::vec4(f.towards, 0)),
-                [f](const MathResult& r) -> std::string {
-                    D3 n = f.fallback ? D3(f.towards) : glm::normalize(glm::cross(D3(f.dx), D3(f.dy)));
-                    if (glm::dot(n, D3(f.towards)) < 0.0) n = -n;
-                    return near3("N", glm::vec3(r.r0), n, 1e-5, 1e-5);
-                });
-    }
 
     // Curvature roughness (common/curvature_roughness.glsl), twin in double: Kaplanyan's kernel
     // min(boost 1/4 (|dN/dx|^2 + |dN/dy|^2), max footprint) added to alpha^2, unchanged below the
