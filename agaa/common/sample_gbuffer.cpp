@@ -8,6 +8,8 @@
 #include "shaders/reference/gbuffer_primitive_sample_rate_frag.h"
 #include "shaders/reference/gbuffer_sample_rate_frag.h"
 #include "shaders/reference/gbuffer_vert.h"
+#include "shaders/sbaa/prepass_frag.h"
+#include "shaders/sbaa/prepass_sample_rate_frag.h"
 
 #include <bit>
 #include <stdexcept>
@@ -21,6 +23,7 @@ SampleGBufferPass::SampleGBufferPass(vk::Device& device, const eng::frame::GpuSc
                                      const GBufferOptions& options)
     : m_device(device), m_samples(samples), m_name(std::move(name)), m_features(features),
       m_options(options) {
+    if (m_options.visibilityOnly) m_options.primitiveIds = true;
     if (!eng::frame::isSupportedSampleCount(samples))
         throw std::invalid_argument("--samples " + std::to_string(samples) + " is not supported (allowed: " +
                                     eng::frame::supportedSampleCounts() + ")");
@@ -31,11 +34,11 @@ SampleGBufferPass::SampleGBufferPass(vk::Device& device, const eng::frame::GpuSc
     if (options.sampleRateShading && !device.caps().sampleRateShading)
         throw vk::MissingCapability(device.caps().deviceName +
                                     " lacks sampleRateShading (--sample-rate-shading on; allowed here: off)");
-    if (options.primitiveIds && !device.caps().fragmentPrimitiveId)
+    if (m_options.primitiveIds && !device.caps().fragmentPrimitiveId)
         throw vk::MissingCapability(device.caps().deviceName +
                                     " lacks geometryShader (gl_PrimitiveID in a fragment shader: the "
                                     "primitive id per sample)");
-    if (options.primitiveIds && scene.scene().triangleCount() >= (1u << 24) - 1u)
+    if (m_options.primitiveIds && scene.scene().triangleCount() >= (1u << 24) - 1u)
         throw std::invalid_argument(scene.scene().source + ": " +
                                     std::to_string(scene.scene().triangleCount()) +
                                     " triangles; primitive ids per sample are exact below 2^24 - 1");
@@ -44,7 +47,7 @@ SampleGBufferPass::SampleGBufferPass(vk::Device& device, const eng::frame::GpuSc
         {0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT},
         {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_FRAGMENT_BIT}};
     layout.extraSets = {scene.textureSetLayout()};
-    layout.pushConstantBytes = options.primitiveIds ? 8 : 4; // material index (, first triangle)
+    layout.pushConstantBytes = m_options.primitiveIds ? 8 : 4; // material index (, first triangle)
     m_layout = vk::createPipelineLayout(device, layout, m_name + ".gbuffer.layout");
 }
 
@@ -62,7 +65,10 @@ VkPipeline SampleGBufferPass::pipeline(AlphaPath alpha, bool doubleSided) {
     vk::GraphicsPipelineDesc d;
     d.vertex = kReferenceGbufferVert;
     const bool sampleRate = m_options.sampleRateShading && m_samples > 1;
-    d.fragment = m_options.primitiveIds
+    d.fragment = m_options.visibilityOnly
+                     ? (sampleRate ? std::span<const uint32_t>(kSbaaPrepassSampleRateFrag)
+                                   : std::span<const uint32_t>(kSbaaPrepassFrag))
+                 : m_options.primitiveIds
                      ? (sampleRate ? std::span<const uint32_t>(kReferenceGbufferPrimitiveSampleRateFrag)
                                    : std::span<const uint32_t>(kReferenceGbufferPrimitiveFrag))
                      : (sampleRate ? std::span<const uint32_t>(kReferenceGbufferSampleRateFrag)
@@ -76,8 +82,11 @@ VkPipeline SampleGBufferPass::pipeline(AlphaPath alpha, bool doubleSided) {
     addMaterialSpecialization(d.specialization, m_features);
     d.sampleShading = sampleRate; // minSampleShading 1: one invocation per sample
     d.alphaToCoverage = usesAlphaToCoverage(alpha);
-    d.colorFormats = {kNormalFormat, kAlbedoMetalFormat, kEmissiveRoughnessFormat};
-    if (m_options.primitiveIds) d.colorFormats.push_back(kPrimitiveFormat);
+    if (m_options.visibilityOnly)
+        d.colorFormats = {kGeometricNormalFormat, kPrimitiveFormat};
+    else
+        d.colorFormats = {kNormalFormat, kAlbedoMetalFormat, kEmissiveRoughnessFormat};
+    if (m_options.primitiveIds && !m_options.visibilityOnly) d.colorFormats.push_back(kPrimitiveFormat);
     d.depthFormat = kDepthFormat;
     d.samples = m_samples > 1 ? VK_SAMPLE_COUNT_4_BIT : VK_SAMPLE_COUNT_1_BIT;
     d.cullMode = doubleSided ? VK_CULL_MODE_NONE : VK_CULL_MODE_BACK_BIT;
@@ -124,7 +133,14 @@ SampleGBuffer SampleGBufferPass::add(rg::Graph& graph, const FrameInputs& in) {
             clearDepth.clear.depthStencil = {0.0f, 0}; // reversed Z: 0 is the far plane (sky)
             d.g.depth = b.depthStencil(b.create(m_name + ".gbuffer.depth", desc(kDepthFormat)),
                                        rg::Use::DepthStencilWrite, clearDepth);
-            // Colour locations in declaration order: normal, albedoMetal, emissiveRoughness, primitive.
+            // Colour locations in declaration order: normal, albedoMetal, emissiveRoughness, primitive;
+            // the visibility prepass: geometricNormal, primitive.
+            if (m_options.visibilityOnly) {
+                d.g.geometricNormal =
+                    b.color(b.create(m_name + ".gbuffer.geometricNormal", desc(kGeometricNormalFormat)));
+                d.g.primitive = b.color(b.create(m_name + ".gbuffer.primitive", desc(kPrimitiveFormat)));
+                return;
+            }
             d.g.normal = b.color(b.create(m_name + ".gbuffer.normal", desc(kNormalFormat)));
             d.g.albedoMetal = b.color(b.create(m_name + ".gbuffer.albedoMetal", desc(kAlbedoMetalFormat)));
             d.g.emissiveRoughness =

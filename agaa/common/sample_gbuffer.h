@@ -3,7 +3,8 @@
 // 4 bytes depth, at n = 1, 4 natively and 8, 16, 32 by layered 4x emulation, drawn
 // with the reference's shaders (reference/gbuffer.vert, .frag). Shared by the methods
 // that light a per-sample G-buffer (the reference, no-AA, Simple/Complex), so they all
-// see exactly the same samples.
+// see exactly the same samples; SBAA's visibility prepass is its material-free variant
+// (GBufferOptions::visibilityOnly), rasterised by the same vertex shader.
 
 #include "agaa/common/technique.h"
 #include "engine/graph/graph.h"
@@ -23,6 +24,8 @@ struct SampleGBuffer {
     eng::rg::Texture albedoMetal;       // RGBA8_SRGB
     eng::rg::Texture emissiveRoughness; // RGBA16F
     eng::rg::Texture primitive;         // R32_SFLOAT triangle number + 1 (GBufferOptions::primitiveIds only)
+    eng::rg::Texture
+        geometricNormal; // RG8_UNORM octahedral geometric normal (GBufferOptions::visibilityOnly only)
 };
 
 // Bindings 2..5 of every compute pass that fetches the per-sample G-buffer (the lighting passes
@@ -49,6 +52,10 @@ struct GBufferOptions {
     // float (SBAA's prepass; integer MSAA colour is 1x only on lavapipe). Needs the geometryShader
     // feature (gl_PrimitiveID in a fragment shader) and fewer than 2^24 triangles.
     bool primitiveIds = false;
+    // SBAA's visibility prepass (sbaa/prepass.glsl): depth, the geometric normal and the primitive id,
+    // no material (the targets normal, albedoMetal and emissiveRoughness are not made). Implies
+    // primitiveIds; sampleRateShading runs the alpha test per sample.
+    bool visibilityOnly = false;
 };
 
 class SampleGBufferPass {
@@ -58,6 +65,7 @@ class SampleGBufferPass {
     static constexpr VkFormat kAlbedoMetalFormat = VK_FORMAT_R8G8B8A8_SRGB;
     static constexpr VkFormat kEmissiveRoughnessFormat = VK_FORMAT_R16G16B16A16_SFLOAT;
     static constexpr VkFormat kPrimitiveFormat = VK_FORMAT_R32_SFLOAT;
+    static constexpr VkFormat kGeometricNormalFormat = VK_FORMAT_R8G8_UNORM;
 
     // Throws std::invalid_argument for an unsupported n, MissingCapability without 4x MSAA or,
     // when options.sampleRateShading asks for it, without sampleRateShading.

@@ -35,6 +35,20 @@ const SbaaSettings& checked(const SbaaSettings& s) {
     return s;
 }
 
+// sbaa/gbuffer_fetch.glsl: the frame (0), the prepass's depth (2), geometric normal (3) and primitive (11).
+std::vector<vk::Binding> prepassFetchBindings() {
+    return {{0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, kCompute},
+            {2, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, kCompute},
+            {3, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, kCompute},
+            {11, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, kCompute}};
+}
+
+void pushPrepass(vk::PushDescriptors& pd, const rg::Context& ctx, VkSampler sampler, const SampleGBuffer& g) {
+    pd.sampled(2, sampler, ctx.texture(g.depth).sampledView)
+        .sampled(3, sampler, ctx.texture(g.geometricNormal).sampledView)
+        .sampled(11, sampler, ctx.texture(g.primitive).sampledView);
+}
+
 shared::SbaaParams params(const SbaaSettings& s) {
     shared::SbaaParams p{};
     p.merge = {s.merge.minNormalCos, s.merge.depthSlopeScale, 0.0f, 0.0f};
@@ -48,10 +62,11 @@ Sbaa::Sbaa(vk::Device& device, const eng::frame::GpuScene& scene, const SbaaSett
     : m_device(device), m_settings(checked(settings)), m_scene(scene.scene()),
       m_features(effectiveFeatures(scene.scene(), settings.effects)),
       m_gbuffer(device, scene, settings.samples, "sbaa", m_features,
-                GBufferOptions{.sampleRateShading = settings.sampleRateShading, .primitiveIds = true}),
+                GBufferOptions{.sampleRateShading = settings.sampleRateShading, .visibilityOnly = true}),
+      m_fill(device, scene, settings.samples, settings.surfaces, m_features, settings.sampleRateShading),
       m_shadow(device, scene, m_features, settings.effects, "sbaa") {
     vk::LayoutDesc surfaces;
-    surfaces.pushBindings = sampleGBufferFetchBindings();
+    surfaces.pushBindings = prepassFetchBindings();
     surfaces.pushBindings.push_back({12, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kCompute});
     surfaces.pushBindings.push_back({13, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, kCompute});
     surfaces.pushConstantBytes = sizeof(shared::SbaaParams);
@@ -100,15 +115,15 @@ std::vector<VariantChoice> Sbaa::variants() const {
     v.push_back({"surfaces", std::to_string(m_settings.surfaces) + (m_settings.merge.merge ? ", merge" : ""),
                  "setting --surfaces"});
     v.push_back({"fill-shading",
-                 m_settings.sampleRateShading ? "sample rate (supersampled materials)"
-                                              : "pixel rate, per-sample coverage",
+                 m_settings.sampleRateShading ? "sample rate (the material at each surface's sample)"
+                                              : "pixel rate (the material at the pixel's centre)",
                  "setting --sample-rate-shading"});
     return v;
 }
 
 FrameTargets Sbaa::addPasses(rg::Graph& graph, const FrameInputs& in) {
     const SampleGBuffer g = addGBuffer(graph, in);
-    return addLighting(graph, in, g, addSurfaces(graph, in, g));
+    return addLighting(graph, in, g, addFill(graph, in, g, addSurfaces(graph, in, g)));
 }
 
 Sbaa::Surfaces Sbaa::addSurfaces(rg::Graph& graph, const FrameInputs& in, const SampleGBuffer& g) {
@@ -127,9 +142,7 @@ Sbaa::Surfaces Sbaa::addSurfaces(rg::Graph& graph, const FrameInputs& in, const 
         [&](rg::Builder& b, Data& d) {
             d.frame = b.read(in.frameConstants, rg::Use::UniformRead);
             d.g.depth = b.read(g.depth, rg::Use::SampledCompute);
-            d.g.normal = b.read(g.normal, rg::Use::SampledCompute);
-            d.g.albedoMetal = b.read(g.albedoMetal, rg::Use::SampledCompute);
-            d.g.emissiveRoughness = b.read(g.emissiveRoughness, rg::Use::SampledCompute);
+            d.g.geometricNormal = b.read(g.geometricNormal, rg::Use::SampledCompute);
             d.g.primitive = b.read(g.primitive, rg::Use::SampledCompute);
             d.surfaces =
                 b.write(b.create("sbaa.surfaces", rg::BufferDesc{bytes}), rg::Use::StorageWriteCompute);
@@ -140,9 +153,8 @@ Sbaa::Surfaces Sbaa::addSurfaces(rg::Graph& graph, const FrameInputs& in, const 
             vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, m_surfacesPipeline);
             vk::PushDescriptors pd;
             pd.uniform(0, ctx.buffer(d.frame).buffer);
-            pushSampleGBuffer(pd, ctx, m_fetchSampler, d.g);
-            pd.sampled(11, m_fetchSampler, ctx.texture(d.g.primitive).sampledView)
-                .storage(12, ctx.buffer(d.surfaces).buffer)
+            pushPrepass(pd, ctx, m_fetchSampler, d.g);
+            pd.storage(12, ctx.buffer(d.surfaces).buffer)
                 .storageImage(13, ctx.texture(d.lost).view)
                 .push(m_device, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, m_surfacesLayout.layout);
             vkCmdPushConstants(cmd, m_surfacesLayout.layout, VK_SHADER_STAGE_ALL, 0, sizeof(p), &p);
@@ -171,10 +183,7 @@ FrameTargets Sbaa::addLighting(rg::Graph& graph, const FrameInputs& in, const Sa
             d.frame = b.read(in.frameConstants, rg::Use::UniformRead);
             d.lights = b.read(in.lights, rg::Use::StorageReadCompute);
             d.surfaces = b.read(surfaces.surfaces, rg::Use::StorageReadCompute);
-            d.g.depth = b.read(g.depth, rg::Use::SampledCompute);
-            d.g.normal = b.read(g.normal, rg::Use::SampledCompute);
-            d.g.albedoMetal = b.read(g.albedoMetal, rg::Use::SampledCompute);
-            d.g.emissiveRoughness = b.read(g.emissiveRoughness, rg::Use::SampledCompute);
+            d.g.depth = b.read(g.depth, rg::Use::SampledCompute); // the sky and the tile's depth bounds
             if (shadows) {
                 d.shadowMap = b.read(shadowMaps.map, rg::Use::SampledCompute);
                 d.shadowConstants = b.read(shadowMaps.constants, rg::Use::UniformRead);
@@ -193,7 +202,7 @@ FrameTargets Sbaa::addLighting(rg::Graph& graph, const FrameInputs& in, const Sa
                 pd.sampled(9, m_shadow.sampler(), ctx.texture(d.shadowMap).sampledView)
                     .uniform(10, ctx.buffer(d.shadowConstants).buffer);
             pd.uniform(0, ctx.buffer(d.frame).buffer).storage(1, ctx.buffer(d.lights).buffer);
-            pushSampleGBuffer(pd, ctx, m_fetchSampler, d.g);
+            pd.sampled(2, m_fetchSampler, ctx.texture(d.g.depth).sampledView);
             pd.storageImage(6, ctx.texture(d.hdr).view)
                 .storageImage(7, ctx.texture(d.display).view)
                 .storageImage(8, ctx.texture(d.events).view)
@@ -213,7 +222,7 @@ void Sbaa::addSampleExport(rg::Graph& graph, const FrameInputs& in, const Sample
                            rg::Buffer target) {
     if (!m_exportPipeline) {
         vk::LayoutDesc layout;
-        layout.pushBindings = sampleGBufferFetchBindings();
+        layout.pushBindings = prepassFetchBindings();
         layout.pushBindings.push_back({14, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kCompute});
         m_exportLayout = vk::createPipelineLayout(m_device, layout, "sbaa.export.layout");
         m_exportPipeline =
@@ -228,9 +237,7 @@ void Sbaa::addSampleExport(rg::Graph& graph, const FrameInputs& in, const Sample
         [&](rg::Builder& b, Export& d) {
             d.frame = b.read(in.frameConstants, rg::Use::UniformRead);
             d.g.depth = b.read(g.depth, rg::Use::SampledCompute);
-            d.g.normal = b.read(g.normal, rg::Use::SampledCompute);
-            d.g.albedoMetal = b.read(g.albedoMetal, rg::Use::SampledCompute);
-            d.g.emissiveRoughness = b.read(g.emissiveRoughness, rg::Use::SampledCompute);
+            d.g.geometricNormal = b.read(g.geometricNormal, rg::Use::SampledCompute);
             d.g.primitive = b.read(g.primitive, rg::Use::SampledCompute);
             d.target = b.write(target, rg::Use::StorageWriteCompute);
         },
@@ -239,9 +246,8 @@ void Sbaa::addSampleExport(rg::Graph& graph, const FrameInputs& in, const Sample
             vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, m_exportPipeline);
             vk::PushDescriptors pd;
             pd.uniform(0, ctx.buffer(d.frame).buffer);
-            pushSampleGBuffer(pd, ctx, m_fetchSampler, d.g);
-            pd.sampled(11, m_fetchSampler, ctx.texture(d.g.primitive).sampledView)
-                .storage(14, ctx.buffer(d.target).buffer)
+            pushPrepass(pd, ctx, m_fetchSampler, d.g);
+            pd.storage(14, ctx.buffer(d.target).buffer)
                 .push(m_device, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, m_exportLayout.layout);
             vkCmdDispatch(cmd, (w + 7) / 8, (h + 7) / 8, 1);
         });

@@ -5,14 +5,16 @@
 // light and resolved by their coverage. The coverage of the surfaces not kept is lost, as in the
 // paper; FrameTargets::lostSamples reports it per pixel.
 //
-// Passes: "sbaa.gbuffer" (the per-sample G-buffer with a primitive-id target: this prepass is a
-// full G-buffer rather than the paper's depth + id, so SBAA's memory saving is not realised here
-// and the bytes per pixel say so), "sbaa.surfaces" (selection into the per-surface G-buffer,
-// 32 bytes per surface), "sbaa.lighting" (tiled deferred over the surfaces).
+// Passes, the paper's four: "sbaa.gbuffer" (the visibility prepass: depth, geometric normal and
+// primitive id per sample, no material; sbaa/prepass.glsl), "sbaa.surfaces" (the selection:
+// coverage, representative sample and primitive of the kept surfaces), "sbaa.fill" (the second
+// geometry pass: the material of each kept surface into the per-surface G-buffer, 32 bytes per
+// surface; surface_fill.h), "sbaa.lighting" (tiled deferred over the surfaces).
 
 #include "agaa/common/sample_gbuffer.h"
 #include "agaa/common/shadow_map.h"
 #include "agaa/common/technique.h"
+#include "agaa/sbaa/surface_fill.h"
 #include "agaa/sbaa/surface_selection.h"
 #include "engine/vk/device.h"
 #include "engine/vk/pipeline.h"
@@ -26,8 +28,10 @@ struct SbaaSettings {
     // depths lie within one plane slope |dz/dx| + |dz/dy| of each other are one surface (a
     // tessellated surface is not split by its triangle edges).
     SbaaMergeTest merge;
-    EffectSettings effects;         // scene-driven shadows, alpha-to-coverage, emissive, normal maps
-    bool sampleRateShading = false; // the prepass fill at sample rate (agaa/common/sample_gbuffer.h)
+    EffectSettings effects; // scene-driven shadows, alpha-to-coverage, emissive, normal maps
+    // The fill's material at its representative sample's own position, and the prepass's alpha per
+    // sample (agaa/common/sample_gbuffer.h); off: at the pixel's, as the per-sample G-buffer's.
+    bool sampleRateShading = false;
 };
 
 class Sbaa final : public Technique {
@@ -46,7 +50,8 @@ class Sbaa final : public Technique {
     const SbaaSettings& settings() const { return m_settings; }
 
     // The passes one by one, for tests: the prepass, the selection (writes `surfaces`, the
-    // per-surface G-buffer, and `lostSamples`), the lighting.
+    // per-surface G-buffer without its material, and `lostSamples`), the fill (the material), the
+    // lighting.
     SampleGBuffer addGBuffer(eng::rg::Graph& graph, const FrameInputs& inputs) {
         return m_gbuffer.add(graph, inputs);
     }
@@ -55,6 +60,10 @@ class Sbaa final : public Technique {
         eng::rg::Texture lostSamples; // R32_UINT
     };
     Surfaces addSurfaces(eng::rg::Graph& graph, const FrameInputs& inputs, const SampleGBuffer& gbuffer);
+    Surfaces addFill(eng::rg::Graph& graph, const FrameInputs& inputs, const SampleGBuffer& gbuffer,
+                     const Surfaces& surfaces) {
+        return {m_fill.add(graph, inputs, gbuffer.depth, surfaces.surfaces), surfaces.lostSamples};
+    }
     FrameTargets addLighting(eng::rg::Graph& graph, const FrameInputs& inputs, const SampleGBuffer& gbuffer,
                              const Surfaces& surfaces);
     // Test path: copies what the selection reads (SbaaSample per sample, pixel-major) into `target`.
@@ -67,6 +76,7 @@ class Sbaa final : public Technique {
     const eng::scene::Scene& m_scene;
     eng::scene::SceneFeatures m_features; // before the passes built from it
     SampleGBufferPass m_gbuffer;
+    SurfaceFillPass m_fill;
     ShadowMapPass m_shadow;
     eng::vk::PipelineLayout m_surfacesLayout, m_lightingLayout, m_exportLayout;
     VkPipeline m_surfacesPipeline = VK_NULL_HANDLE, m_lightingPipeline = VK_NULL_HANDLE;

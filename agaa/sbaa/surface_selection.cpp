@@ -1,7 +1,5 @@
 #include "agaa/sbaa/surface_selection.h"
 
-#include <glm/gtc/packing.hpp>
-
 #include <algorithm>
 #include <bit>
 #include <cmath>
@@ -18,17 +16,6 @@ constexpr float kMinNormalLength = 1.0e-6f;
 float viewDistance(float d, const shared::FrameConstants& frame) {
     const float znear = frame.depthParams.x, zfar = frame.depthParams.y;
     return znear * zfar / (d * (zfar - znear) + znear);
-}
-
-glm::vec3 octahedralNormal(float x, float y) {
-    glm::vec3 n(x, y, 1.0f - std::abs(x) - std::abs(y));
-    if (n.z < 0.0f) {
-        const float wx = (1.0f - std::abs(n.y)) * (n.x >= 0.0f ? 1.0f : -1.0f);
-        const float wy = (1.0f - std::abs(n.x)) * (n.y >= 0.0f ? 1.0f : -1.0f);
-        n.x = wx;
-        n.y = wy;
-    }
-    return n / std::max(glm::length(n), kMinNormalLength);
 }
 
 // How far the plane through a point at view distance t0 with normal n0, seen at pixel position
@@ -50,6 +37,19 @@ struct Candidate {
 
 } // namespace
 
+// RG8_UNORM octahedral, v * 0.5 + 0.5.
+glm::vec3 storedGeometricNormal(const SbaaSample& sample) {
+    const float x = sample.y * 2.0f - 1.0f, y = sample.z * 2.0f - 1.0f;
+    glm::vec3 n(x, y, 1.0f - std::abs(x) - std::abs(y));
+    if (n.z < 0.0f) {
+        const float wx = (1.0f - std::abs(n.y)) * (n.x >= 0.0f ? 1.0f : -1.0f);
+        const float wy = (1.0f - std::abs(n.x)) * (n.y >= 0.0f ? 1.0f : -1.0f);
+        n.x = wx;
+        n.y = wy;
+    }
+    return n / std::max(glm::length(n), kMinNormalLength);
+}
+
 SbaaSelection selectSurfaces(const shared::FrameConstants& frame, const SbaaSample* samples, int px, int py,
                              uint32_t surfaces, const SbaaMergeTest& test) {
     const uint32_t n = frame.counts.x;
@@ -58,11 +58,11 @@ SbaaSelection selectSurfaces(const shared::FrameConstants& frame, const SbaaSamp
     // Primitives, in the order of their first covered sample.
     std::vector<Candidate> primitives;
     for (uint32_t s = 0; s < n; ++s) {
-        if (samples[s][0].x <= 0.0f) {
+        if (samples[s].x <= 0.0f) {
             ++out.skySamples;
             continue;
         }
-        const uint32_t id = uint32_t(samples[s][0].w);
+        const uint32_t id = uint32_t(samples[s].w);
         auto it = std::find_if(primitives.begin(), primitives.end(),
                                [&](const Candidate& c) { return c.primitive == id; });
         if (it == primitives.end()) it = primitives.insert(primitives.end(), Candidate{0, s, id});
@@ -74,12 +74,12 @@ SbaaSelection selectSurfaces(const shared::FrameConstants& frame, const SbaaSamp
         Candidate* into = nullptr;
         if (test.merge) {
             const SbaaSample& b = samples[p.representative];
-            const float tb = viewDistance(b[0].x, frame);
-            const glm::vec3 nb = octahedralNormal(b[0].y, b[0].z);
+            const float tb = viewDistance(b.x, frame);
+            const glm::vec3 nb = storedGeometricNormal(b);
             for (Candidate& f : found) {
                 const SbaaSample& a = samples[f.representative];
-                const float ta = viewDistance(a[0].x, frame);
-                const glm::vec3 na = octahedralNormal(a[0].y, a[0].z);
+                const float ta = viewDistance(a.x, frame);
+                const glm::vec3 na = storedGeometricNormal(a);
                 const glm::vec2 qa =
                     glm::vec2(float(px), float(py)) + glm::vec2(frame.samplePositions[f.representative]);
                 const float tolerance = planeTolerance(frame, qa, ta, na, test.depthSlopeScale);
@@ -124,19 +124,8 @@ std::vector<float> resolveWeights(const SbaaSelection& selection) {
 }
 
 std::array<uint32_t, 8> surfaceRecord(const SbaaSurfaceChoice& surface, const SbaaSample* samples) {
-    const SbaaSample& r = samples[surface.representative];
-    auto snorm16 = [](float v) {
-        return uint32_t(uint16_t(int16_t(std::lround(std::clamp(v, -1.0f, 1.0f) * 32767.0f))));
-    };
-    auto half2 = [](float a, float b) { return glm::packHalf2x16(glm::vec2(a, b)); };
-    return {surface.mask,
-            std::bit_cast<uint32_t>(r[0].x),
-            snorm16(r[0].y) | (snorm16(r[0].z) << 16),
-            half2(r[1].x, r[1].y),
-            half2(r[1].z, r[1].w),
-            half2(r[2].x, r[2].y),
-            half2(r[2].z, r[2].w),
-            surface.representative | (surface.primitive << 8)};
+    return {surface.mask, std::bit_cast<uint32_t>(samples[surface.representative].x), 0u, 0u, 0u, 0u,
+            0u,           surface.representative | (surface.primitive << 8)};
 }
 
 } // namespace agaa

@@ -13,10 +13,10 @@
 
 namespace agaa {
 
-// What the selection reads per sample, as sbaa/export.comp writes it: [0] (raw depth, reversed
-// Z, 0 = sky; octahedral normal x, y as fetched; primitive id as an exact float, 0 = none),
-// [1] albedo, metallic, [2] emissive, roughness.
-using SbaaSample = std::array<glm::vec4, 3>;
+// What the selection reads per sample, as sbaa/export.comp writes it from the prepass: raw depth
+// (reversed Z, 0 = sky); the geometric normal as stored (RG8_UNORM octahedral, v * 0.5 + 0.5) x, y;
+// the primitive id as an exact float (0 = none).
+using SbaaSample = glm::vec4;
 
 struct SbaaMergeTest {
     bool merge = true;            // the paper's MERGE mode; off: one surface per primitive
@@ -26,7 +26,7 @@ struct SbaaMergeTest {
 
 struct SbaaSurfaceChoice {
     uint32_t mask = 0;           // the samples it covers
-    uint32_t representative = 0; // its first sample: where it is shaded, whose G-buffer it keeps
+    uint32_t representative = 0; // its first sample: where it is shaded and its material evaluated
     uint32_t primitive = 0;      // the representative's primitive id
 };
 
@@ -39,6 +39,9 @@ struct SbaaSelection {
     float margin = 0.0f;
 };
 
+// The sample's geometric normal (view space, unit), decoded from its stored RG8 octahedral form.
+glm::vec3 storedGeometricNormal(const SbaaSample& sample);
+
 // Selects the pixel's surfaces from its n = frame.counts.x samples (in sample order).
 SbaaSelection selectSurfaces(const shared::FrameConstants& frame, const SbaaSample* samples, int px, int py,
                              uint32_t surfaces, const SbaaMergeTest& test);
@@ -47,8 +50,9 @@ SbaaSelection selectSurfaces(const shared::FrameConstants& frame, const SbaaSamp
 // and the sky's, then the sky's weight last. The lost coverage is not in the denominator.
 std::vector<float> resolveWeights(const SbaaSelection& selection);
 
-// The 8-word record the surface pass writes for a kept surface (shared/sbaa.h), from its
-// representative sample; words 3..6 are half floats, compared by value by the test.
+// The words of the 8-word record (shared/sbaa.h) the surface pass writes for a kept surface:
+// coverage, representative depth, representative sample and primitive. Words 2..6 (the material)
+// are the fill pass's and 0 here.
 std::array<uint32_t, 8> surfaceRecord(const SbaaSurfaceChoice& surface, const SbaaSample* samples);
 
 } // namespace agaa

@@ -1,7 +1,8 @@
 // SBAA (Salvi and Vidimce 2012) on lavapipe, validation on: the GPU surface selection against its
-// CPU twin (agaa/sbaa/surface_selection.cpp) on the same exported prepass, the resolve against the
-// CPU weights on an emissive-only scene (no lights: each surface's shade is its emissive), the lost
-// coverage the stats report, and reruns.
+// CPU twin (agaa/sbaa/surface_selection.cpp) on the same exported prepass, the fill pass's material
+// per kept surface against the material of its primitive, the resolve against the CPU weights on
+// an emissive-only scene (no lights: each surface's shade is its emissive), the lost coverage the
+// stats report, and reruns.
 
 #include "agaa/sbaa/sbaa.h"
 #include "agaa/sbaa/surface_selection.h"
@@ -21,13 +22,15 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <stdexcept>
+#include <string>
 
 namespace {
 
 namespace vk = eng::vk;
 
-// One frame of SBAA's passes with the prepass exported, the per-surface G-buffer, the lost
-// samples and the display read back.
+// One frame of SBAA's passes with the prepass exported, the per-surface G-buffer (after the fill),
+// the lost samples and the display read back.
 struct SbaaFrame {
     shared::FrameConstants constants{};
     std::vector<agaa::SbaaSample> samples;
@@ -76,7 +79,7 @@ SbaaFrame renderSbaa(vk::Device& device, const eng::scene::Scene& scene, const a
         eng::rg::Buffer target =
             graph.importBuffer("export", {exportBuf.buffer, exportBuf.size}, std::nullopt, std::nullopt);
         const agaa::SampleGBuffer g = sbaa.addGBuffer(graph, in);
-        const agaa::Sbaa::Surfaces s = sbaa.addSurfaces(graph, in, g);
+        const agaa::Sbaa::Surfaces s = sbaa.addFill(graph, in, g, sbaa.addSurfaces(graph, in, g));
         const agaa::FrameTargets t = sbaa.addLighting(graph, in, g, s);
         sbaa.addSampleExport(graph, in, g, target);
         eng::frame::addBufferReadbackPass(graph, s.surfaces, surfacesHost, "readback.surfaces");
@@ -131,13 +134,22 @@ eng::scene::Scene emissiveBars() {
     return s;
 }
 
+// The material of primitive `id` (scene-wide triangle number + 1), from the scene's draws.
+const eng::scene::Material& primitiveMaterial(const eng::scene::Scene& scene, uint32_t id) {
+    const uint32_t triangle = id - 1;
+    for (const eng::scene::Draw& d : scene.draws)
+        if (triangle >= d.firstIndex / 3 && triangle < (d.firstIndex + d.indexCount) / 3)
+            return scene.materials.at(d.material);
+    throw std::out_of_range("primitive " + std::to_string(id) + " is in no draw");
+}
+
 } // namespace
 
 // The selection on the GPU equals its CPU twin on the exported prepass: the kept surfaces'
-// coverage masks, representative samples, primitive ids, depths and normals bit for bit, their
-// material values as the half floats they are stored in, and the lost samples. Foliage at n = 8
-// and S = 2: many pixels have more surfaces than they keep. Pixels where a merge test sits within
-// 1e-4 of its threshold may differ by fp32 rounding; those are counted, not compared.
+// coverage masks, representative samples, primitive ids and depths bit for bit, and the lost
+// samples (the material words are the fill's, tested below). Foliage at n = 8 and S = 2: many
+// pixels have more surfaces than they keep. Pixels where a merge test sits within 1e-4 of its
+// threshold may differ by fp32 rounding; those are counted, not compared.
 TEST(SbaaGpu, SurfaceSelectionMatchesTheCpuTwin) {
     auto device = agaa::test::makeValidatedDevice();
     const eng::scene::Scene scene = eng::scene::loadTestScene("foliage");
@@ -163,15 +175,9 @@ TEST(SbaaGpu, SurfaceSelectionMatchesTheCpuTwin) {
                     continue;
                 }
                 const std::array<uint32_t, 8> want = agaa::surfaceRecord(cpu.kept[k], px);
-                for (uint32_t word : {shared::kSbaaWordMask, shared::kSbaaWordDepth, shared::kSbaaWordNormal,
-                                      shared::kSbaaWordSampleAndPrimitive})
+                for (uint32_t word :
+                     {shared::kSbaaWordMask, shared::kSbaaWordDepth, shared::kSbaaWordSampleAndPrimitive})
                     same = same && gpu[word] == want[word];
-                for (uint32_t word = shared::kSbaaWordAlbedoRg; word <= shared::kSbaaWordEmissiveBRoughness;
-                     ++word)
-                    for (int c = 0; c < 2; ++c) {
-                        const float a = halfValue(gpu[word], c), b = halfValue(want[word], c);
-                        same = same && std::abs(a - b) <= 1e-3f * std::max(1.0f, std::abs(b));
-                    }
             }
             if (same) continue;
             if (cpu.margin < 1e-4f)
@@ -190,21 +196,24 @@ TEST(SbaaGpu, SurfaceSelectionMatchesTheCpuTwin) {
     agaa::test::expectNoValidationErrors(*device);
 }
 
-// The resolve: with no light and no environment each surface's shade is its emissive, so the
+// The fill and the resolve, at pixel and at sample rate. Each kept surface's material words are
+// its representative primitive's material (found from the scene's draws, not from the GPU): black,
+// non-metallic, roughness 1, its emissive, so a slot the fill missed (zeros) or filled from another
+// primitive fails. With no light and no environment each surface's shade is its emissive, so the
 // display is sum_k w_k ACES(e_k), the weights from the CPU selection (kept coverage over kept +
-// sky; lost coverage out of the denominator), e_k its representative sample's emissive (RGBA16F:
-// exact halves). Compared to 1e-5 (fp32 order of additions).
-TEST(SbaaGpu, ResolveIsTheCoverageWeightedSumOfTheKeptSurfaces) {
+// sky; lost coverage out of the denominator). Compared to 1e-5 (fp32 order of additions).
+TEST(SbaaGpu, FillWritesEachSurfacesMaterialAndTheResolveWeighsThemByCoverage) {
     auto device = agaa::test::makeValidatedDevice();
     const eng::scene::Scene scene = emissiveBars();
-    for (uint32_t S : {1u, 4u}) {
+    for (auto [S, sampleRate] : {std::pair{1u, false}, std::pair{4u, false}, std::pair{4u, true}}) {
         agaa::SbaaSettings settings;
         settings.samples = 8;
         settings.surfaces = S;
+        settings.sampleRateShading = sampleRate;
         const uint32_t w = 32, h = 32, n = settings.samples;
         const SbaaFrame f = renderSbaa(*device, scene, settings, w, h);
         float worst = 0.0f;
-        uint32_t losing = 0, multi = 0;
+        uint32_t losing = 0, multi = 0, wrongMaterial = 0;
         for (uint32_t p = 0; p < w * h; ++p) {
             const agaa::SbaaSample* px = &f.samples[size_t(p) * n];
             const agaa::SbaaSelection sel =
@@ -213,15 +222,40 @@ TEST(SbaaGpu, ResolveIsTheCoverageWeightedSumOfTheKeptSurfaces) {
             const std::vector<float> weights = agaa::resolveWeights(sel);
             losing += sel.lostSamples > 0 ? 1 : 0;
             multi += sel.kept.size() > 1 ? 1 : 0;
-            for (int c = 0; c < 3; ++c) {
-                float want = 0.0f;
-                for (size_t k = 0; k < sel.kept.size(); ++k)
-                    want += weights[k] * eng::io::toneMapAces(px[sel.kept[k].representative][2][c]);
-                worst = std::max(worst, std::abs(f.display[size_t(p) * 4 + c] - want));
+            glm::vec3 want(0.0f);
+            for (size_t k = 0; k < sel.kept.size(); ++k) {
+                const eng::scene::Material& m = primitiveMaterial(scene, sel.kept[k].primitive);
+                const glm::vec3 e = m.emissiveFactor * m.emissiveStrength;
+                const uint32_t* rec = &f.surfaces[(size_t(p) * S + k) * shared::kSbaaSurfaceWords];
+                const float stored[8] = {halfValue(rec[shared::kSbaaWordAlbedoRg], 0),
+                                         halfValue(rec[shared::kSbaaWordAlbedoRg], 1),
+                                         halfValue(rec[shared::kSbaaWordAlbedoBMetal], 0),
+                                         halfValue(rec[shared::kSbaaWordAlbedoBMetal], 1),
+                                         halfValue(rec[shared::kSbaaWordEmissiveRg], 0),
+                                         halfValue(rec[shared::kSbaaWordEmissiveRg], 1),
+                                         halfValue(rec[shared::kSbaaWordEmissiveBRoughness], 0),
+                                         halfValue(rec[shared::kSbaaWordEmissiveBRoughness], 1)};
+                const float expected[8] = {0.0f, 0.0f, 0.0f, 0.0f, e.r, e.g, e.b, 1.0f};
+                bool ok = true;
+                for (int c = 0; c < 8; ++c)
+                    ok = ok && std::abs(stored[c] - expected[c]) <= 1e-3f * std::max(1.0f, expected[c]);
+                if (!ok && ++wrongMaterial <= 5)
+                    ADD_FAILURE() << "S=" << S << " sample rate " << sampleRate << ": pixel " << p
+                                  << " surface " << k << " holds emissive " << stored[4] << ", " << stored[5]
+                                  << ", " << stored[6] << " roughness " << stored[7] << ", its primitive's "
+                                  << e.r << ", " << e.g << ", " << e.b;
+                // The shade from the stored (half) emissive, as the lighting pass reads it.
+                for (int c = 0; c < 3; ++c)
+                    want[c] += weights[k] * eng::io::toneMapAces(stored[4 + c]);
             }
+            for (int c = 0; c < 3; ++c)
+                worst = std::max(worst, std::abs(f.display[size_t(p) * 4 + c] - want[c]));
         }
-        std::printf("[ measured ] resolve S=%u: max |GPU - CPU| %.3g, %u pixels lose coverage, %u keep >1\n",
-                    S, worst, losing, multi);
+        std::printf(
+            "[ measured ] fill and resolve S=%u, sample rate %d: max |GPU - CPU| %.3g, %u pixels lose "
+            "coverage, %u keep >1, %u wrong materials\n",
+            S, int(sampleRate), worst, losing, multi, wrongMaterial);
+        EXPECT_EQ(wrongMaterial, 0u);
         EXPECT_LT(worst, 1e-5f) << "S = " << S;
         if (S == 1) {
             EXPECT_GT(losing, 30u) << "one surface per pixel drops the others' coverage";
@@ -273,43 +307,69 @@ TEST(SbaaGpu, LostCoverageStatsShadingEventsAndReruns) {
 // MERGE mode: a tilted plane tessellated into triangles about 2 px across. With merge every pixel
 // is one surface (its triangles lie on one plane: same normal, depths within the plane's slope),
 // so S = 1 loses nothing; without merge each triangle is a surface and pixels on the triangle edges
-// lose the coverage of all but one.
+// lose the coverage of all but one. The same plane without vertex normals (all zero: the prepass's
+// kMinNormalLength guard hands over to the face normal) is one surface too.
 TEST(SbaaGpu, MergeKeepsATessellatedPlaneOneSurface) {
     auto device = agaa::test::makeValidatedDevice();
-    eng::scene::Scene scene = agaa::test::emptyScene("sbaa-tessellated-plane");
-    const int cells = 24;
-    for (int j = 0; j <= cells; ++j)
-        for (int i = 0; i <= cells; ++i) {
-            eng::scene::Vertex v;
-            const float x = -1.2f + 2.4f * float(i) / cells, y = -1.2f + 2.4f * float(j) / cells;
-            v.position = {x, y, -2.0f - 0.6f * x}; // tilted: the depth changes along x
-            v.normal = glm::normalize(glm::vec3(0.6f, 0.0f, 1.0f));
-            scene.vertices.push_back(v);
-        }
-    for (int j = 0; j < cells; ++j)
-        for (int i = 0; i < cells; ++i) {
-            const uint32_t a = uint32_t(j * (cells + 1) + i), b = a + 1, c = a + cells + 1, d = c + 1;
-            for (uint32_t k : {a, b, d, a, d, c})
-                scene.indices.push_back(k);
-        }
-    scene.draws.push_back({0, uint32_t(scene.indices.size()), 0});
+    const glm::vec3 planeNormal = glm::normalize(glm::vec3(0.6f, 0.0f, 1.0f));
+    auto tessellatedPlane = [&](glm::vec3 vertexNormal) {
+        eng::scene::Scene scene = agaa::test::emptyScene("sbaa-tessellated-plane");
+        const int cells = 24;
+        for (int j = 0; j <= cells; ++j)
+            for (int i = 0; i <= cells; ++i) {
+                eng::scene::Vertex v;
+                const float x = -1.2f + 2.4f * float(i) / cells, y = -1.2f + 2.4f * float(j) / cells;
+                v.position = {x, y, -2.0f - 0.6f * x}; // tilted: the depth changes along x
+                v.normal = vertexNormal;
+                scene.vertices.push_back(v);
+            }
+        for (int j = 0; j < cells; ++j)
+            for (int i = 0; i < cells; ++i) {
+                const uint32_t a = uint32_t(j * (cells + 1) + i), b = a + 1, c = a + cells + 1, d = c + 1;
+                for (uint32_t k : {a, b, d, a, d, c})
+                    scene.indices.push_back(k);
+            }
+        scene.draws.push_back({0, uint32_t(scene.indices.size()), 0});
+        return scene;
+    };
     const uint32_t w = 32, h = 32;
-    uint32_t lostWith = 0, lostWithout = 0, pixelsWithout = 0;
-    for (bool merge : {true, false}) {
-        agaa::SbaaSettings settings;
-        settings.samples = 8;
-        settings.surfaces = 1;
-        settings.merge.merge = merge;
-        const SbaaFrame f = renderSbaa(*device, scene, settings, w, h);
-        for (uint32_t l : f.lost) {
-            (merge ? lostWith : lostWithout) += l;
-            if (!merge) pixelsWithout += l > 0 ? 1 : 0;
+    std::vector<agaa::SbaaSample> withNormals;
+    for (glm::vec3 vertexNormal : {planeNormal, glm::vec3(0.0f)}) {
+        const eng::scene::Scene scene = tessellatedPlane(vertexNormal);
+        uint32_t lostWith = 0, lostWithout = 0, pixelsWithout = 0;
+        for (bool merge : {true, false}) {
+            agaa::SbaaSettings settings;
+            settings.samples = 8;
+            settings.surfaces = 1;
+            settings.merge.merge = merge;
+            const SbaaFrame f = renderSbaa(*device, scene, settings, w, h);
+            for (uint32_t l : f.lost) {
+                (merge ? lostWith : lostWithout) += l;
+                if (!merge) pixelsWithout += l > 0 ? 1 : 0;
+            }
+            for (float v : f.display)
+                ASSERT_TRUE(std::isfinite(v));
+            if (!merge) continue;
+            if (vertexNormal == planeNormal) {
+                withNormals = f.samples;
+                continue;
+            }
+            // Without vertex normals the stored normal is the face normal: the plane's, as its
+            // vertex normals gave it (8-bit octahedral: within about 1 degree).
+            float worst = 1.0f;
+            for (size_t i = 0; i < f.samples.size(); ++i)
+                if (f.samples[i].x > 0.0f)
+                    worst = std::min(worst, glm::dot(agaa::storedGeometricNormal(f.samples[i]),
+                                                     agaa::storedGeometricNormal(withNormals[i])));
+            EXPECT_GT(worst, 0.999f) << "the face normal stands in for a zero vertex normal";
         }
+        const bool zero = vertexNormal == glm::vec3(0.0f);
+        std::printf("[ measured ] tessellated plane%s, S=1: lost samples %u with merge, %u in %u pixels "
+                    "without\n",
+                    zero ? " without vertex normals" : "", lostWith, lostWithout, pixelsWithout);
+        EXPECT_EQ(lostWith, 0u) << "one plane is one surface under MERGE" << (zero ? " (face normals)" : "");
+        EXPECT_GT(pixelsWithout, 50u) << "without MERGE the triangle edges split pixels into surfaces";
     }
-    std::printf("[ measured ] tessellated plane, S=1: lost samples %u with merge, %u in %u pixels without\n",
-                lostWith, lostWithout, pixelsWithout);
-    EXPECT_EQ(lostWith, 0u) << "one plane is one surface under MERGE";
-    EXPECT_GT(pixelsWithout, 50u) << "without MERGE the triangle edges split pixels into surfaces";
     agaa::test::expectNoValidationErrors(*device);
 }
 

@@ -23,7 +23,24 @@ layout(set = 1, binding = 0) uniform sampler2D textures[kMaxSceneTextures];
 #ifndef GBUFFER_PRIMITIVE_ID
 #define GBUFFER_PRIMITIVE_ID 0
 #endif
-#if GBUFFER_PRIMITIVE_ID
+// GBUFFER_SURFACE_FILL (sbaa/fill*.frag): SBAA's second geometry pass. No colour targets: the
+// material, evaluated exactly as for the per-sample G-buffer, is stored into the per-surface
+// G-buffer record (shared/sbaa.h words 2..6) of each kept surface this fragment represents: its
+// representative primitive is this one and its representative sample is covered here (this
+// layer, this hardware sample). A primitive is rasterised once per pixel and layer, and the
+// prepass found it visible at that sample, so exactly one invocation writes each record: no
+// race, no ordering. The prepass depth is attached read-only with an EQUAL test, early, so the
+// hidden fragments never run the material.
+#ifndef GBUFFER_SURFACE_FILL
+#define GBUFFER_SURFACE_FILL 0
+#endif
+#if GBUFFER_SURFACE_FILL
+#include "shared/sbaa.h"
+layout(early_fragment_tests) in;
+layout(constant_id = 24) const uint kSbaaSurfaces = 4u; // S
+layout(set = 0, binding = 2, std430) buffer Surfaces { uint surfaces[]; };
+#endif
+#if GBUFFER_PRIMITIVE_ID || GBUFFER_SURFACE_FILL
 layout(push_constant) uniform Push { uint material; uint firstTriangle; } pc;
 #else
 layout(push_constant) uniform Push { uint material; } pc;
@@ -51,9 +68,11 @@ layout(location = 1) INTERPOLATION in vec4 inTangent;
 layout(location = 2) INTERPOLATION in vec4 inUvs; // xy TEXCOORD_0, zw TEXCOORD_1
 layout(location = 3) INTERPOLATION in vec4 inColor;
 
+#if !GBUFFER_SURFACE_FILL
 layout(location = 0) out vec4 outNormal; // xy octahedral; w coverage alpha (alpha-to-coverage reads it)
 layout(location = 1) out vec4 outAlbedoMetal;
 layout(location = 2) out vec4 outEmissiveRoughness;
+#endif
 #if GBUFFER_PRIMITIVE_ID
 layout(location = 3) out float outPrimitive;
 #endif
@@ -70,9 +89,34 @@ void main() {
     MaterialSample s = evaluateMaterial(m, inUvs, inColor, inNormal, inTangent, gl_FrontFacing);
     if (kCurvatureRoughness != 0u)
         s.roughness = curvatureRoughness(s.roughness, dNdx, dNdy, kCurvatureMaxFootprint, kCurvatureBoost);
+#if GBUFFER_SURFACE_FILL
+    const uint primitive = pc.firstTriangle + uint(gl_PrimitiveID) + 1u;
+    const uint perLayer = frame.counts.y; // hardware samples per layer
+    const uvec2 pixel = uvec2(gl_FragCoord.xy);
+    const uint first = (pixel.y * uint(frame.extent.x) + pixel.x) * kSbaaSurfaces * kSbaaSurfaceWords;
+    const vec3 emissive = min(s.emissive, vec3(kMaxRadiance));
+    for (uint k = 0u; k < kSbaaSurfaces; ++k) {
+        const uint w = first + k * kSbaaSurfaceWords;
+        const uint key = surfaces[w + kSbaaWordSampleAndPrimitive];
+        if (surfaces[w + kSbaaWordMask] == 0u || (key >> 8u) != primitive) continue;
+        const uint rep = key & 0xFFu;
+        if (rep / perLayer != uint(gl_Layer)) continue;
+#if GBUFFER_SAMPLE_RATE
+        if (uint(gl_SampleID) != rep % perLayer) continue;
+#else
+        if ((uint(gl_SampleMaskIn[0]) & (1u << (rep % perLayer))) == 0u) continue;
+#endif
+        surfaces[w + kSbaaWordNormal] = packSnorm2x16(encodeOctahedral(s.normal));
+        surfaces[w + kSbaaWordAlbedoRg] = packHalf2x16(s.albedo.rg);
+        surfaces[w + kSbaaWordAlbedoBMetal] = packHalf2x16(vec2(s.albedo.b, s.metallic));
+        surfaces[w + kSbaaWordEmissiveRg] = packHalf2x16(emissive.rg);
+        surfaces[w + kSbaaWordEmissiveBRoughness] = packHalf2x16(vec2(emissive.b, s.roughness));
+    }
+#else
     outNormal = vec4(encodeOctahedral(s.normal), 0.0, coverage);
     outAlbedoMetal = vec4(s.albedo, s.metallic);
     outEmissiveRoughness = vec4(min(s.emissive, vec3(kMaxRadiance)), s.roughness);
+#endif
 #if GBUFFER_PRIMITIVE_ID
     outPrimitive = float(pc.firstTriangle + uint(gl_PrimitiveID) + 1u);
 #endif

@@ -3,10 +3,11 @@
 // SBAA surface selection (Salvi and Vidimce 2012, section 3): one pixel per invocation.
 //   1. The pixel's covered samples are grouped by primitive id (the prepass's per-sample id).
 //   2. MERGE mode: a primitive whose representative sample (its first) lies on the plane of an
-//      earlier surface's representative (normals within the cosine, depth within the plane's
-//      slope tolerance) joins that surface, so a tessellated surface stays one surface.
-//   3. The S surfaces of largest coverage are kept (ties: the earlier representative sample);
-//      their representative sample's G-buffer values become the pixel's per-surface G-buffer.
+//      earlier surface's representative (geometric normals within the cosine, depth within the
+//      plane's slope tolerance) joins that surface, so a tessellated surface stays one surface.
+//   3. The S surfaces of largest coverage are kept (ties: the earlier representative sample):
+//      their coverage, representative sample, primitive and depth are written; the fill pass
+//      (sbaa/fill*.frag) then writes the material of that primitive at that sample.
 //   4. The coverage of every other surface is lost (as in the paper): written per pixel.
 // The CPU twin is agaa/sbaa/surface_selection.cpp; the two must agree bit for bit.
 #include "shared/frame.h"
@@ -55,12 +56,12 @@ void main() {
         if (pc.params.counts.y != 0u) {
             float tb = viewDistanceFromDepth(SBAA_FETCH(gDepth, pixel, groupRep[g]).r, frame.depthParams.x,
                                              frame.depthParams.y);
-            vec3 nb = decodeOctahedral(SBAA_FETCH(gNormal, pixel, groupRep[g]).xy);
+            vec3 nb = sbaaGeometricNormal(pixel, groupRep[g]);
             for (uint j = 0u; j < count && target == count; ++j) {
                 uint a = surfRep[j];
                 float ta = viewDistanceFromDepth(SBAA_FETCH(gDepth, pixel, a).r, frame.depthParams.x,
                                                  frame.depthParams.y);
-                vec3 na = decodeOctahedral(SBAA_FETCH(gNormal, pixel, a).xy);
+                vec3 na = sbaaGeometricNormal(pixel, a);
                 float tolerance = sbaaPlaneDepthTolerance(vec2(pixel) + frame.samplePositions[a].xy, ta, na,
                                                           pc.params.merge.y);
                 if (dot(na, nb) >= pc.params.merge.x && abs(tb - ta) <= tolerance) target = j;
@@ -97,15 +98,10 @@ void main() {
         taken |= 1u << best;
         kept |= surfMask[best];
         uint r = surfRep[best];
-        vec4 am = SBAA_FETCH(gAlbedoMetal, pixel, r);
-        vec4 er = SBAA_FETCH(gEmissiveRoughness, pixel, r);
         surfaces[w + kSbaaWordMask] = surfMask[best];
         surfaces[w + kSbaaWordDepth] = floatBitsToUint(SBAA_FETCH(gDepth, pixel, r).r);
-        surfaces[w + kSbaaWordNormal] = packSnorm2x16(SBAA_FETCH(gNormal, pixel, r).xy);
-        surfaces[w + kSbaaWordAlbedoRg] = packHalf2x16(am.rg);
-        surfaces[w + kSbaaWordAlbedoBMetal] = packHalf2x16(am.ba);
-        surfaces[w + kSbaaWordEmissiveRg] = packHalf2x16(er.rg);
-        surfaces[w + kSbaaWordEmissiveBRoughness] = packHalf2x16(er.ba);
+        for (uint i = kSbaaWordNormal; i <= kSbaaWordEmissiveBRoughness; ++i)
+            surfaces[w + i] = 0u; // the fill pass's
         surfaces[w + kSbaaWordSampleAndPrimitive] = r | (surfPrim[best] << 8u);
     }
     // 4. Lost coverage: covered samples of the surfaces not kept.

@@ -11,8 +11,10 @@ SHARED_CONST kSbaaMaxSurfaces = 6u; // --surfaces 1..6
 // One surface of one pixel: 8 words (32 bytes), at ((y * width + x) * S + slot) * 8 in the buffer.
 SHARED_CONST kSbaaSurfaceWords = 8u;
 // word 0: coverage mask (bit s = sample s belongs to the surface; 0 = an empty slot)
+// Words 0, 1 and 7 are the surface pass's (sbaa/surfaces.comp), words 2..6 the fill pass's
+// (sbaa/fill*.frag: the material of the representative primitive at the representative sample).
 // word 1: the raw depth of the surface's representative sample (its first sample), float bits
-// word 2: its octahedral normal as fetched (RG16_SNORM), packSnorm2x16
+// word 2: its shading normal, octahedral, packSnorm2x16
 // word 3: albedo r, g (packHalf2x16); word 4: albedo b, metallic
 // word 5: emissive r, g; word 6: emissive b, roughness
 // word 7: representative sample index (bits 0..7) | primitive id (bits 8..31, 24 bits)

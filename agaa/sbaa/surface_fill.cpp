@@ -1,0 +1,96 @@
+#include "agaa/sbaa/surface_fill.h"
+
+#include "agaa/common/effects.h"
+#include "agaa/common/sample_gbuffer.h"
+#include "engine/frame/sample_pattern.h"
+#include "engine/vk/descriptors.h"
+#include "shaders/reference/gbuffer_vert.h"
+#include "shaders/sbaa/fill_frag.h"
+#include "shaders/sbaa/fill_sample_rate_frag.h"
+
+namespace agaa {
+namespace rg = eng::rg;
+namespace vk = eng::vk;
+
+namespace {
+constexpr uint32_t kSpecSurfaces = 24; // reference/gbuffer.glsl kSbaaSurfaces
+}
+
+SurfaceFillPass::SurfaceFillPass(vk::Device& device, const eng::frame::GpuScene& scene, uint32_t samples,
+                                 uint32_t surfaces, const eng::scene::SceneFeatures& features,
+                                 bool sampleRate)
+    : m_device(device), m_samples(samples) {
+    vk::LayoutDesc layout;
+    layout.pushBindings = {
+        {0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT},
+        {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_FRAGMENT_BIT},
+        {2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_FRAGMENT_BIT}};
+    layout.extraSets = {scene.textureSetLayout()};
+    layout.pushConstantBytes = 8; // material index, first triangle
+    m_layout = vk::createPipelineLayout(device, layout, "sbaa.fill.layout");
+
+    vk::GraphicsPipelineDesc d;
+    d.vertex = kReferenceGbufferVert;
+    sampleRate = sampleRate && samples > 1;
+    d.fragment = sampleRate ? std::span<const uint32_t>(kSbaaFillSampleRateFrag) : kSbaaFillFrag;
+    d.layout = m_layout.layout;
+    // Alpha path 0: the prepass already applied the alpha (its ids are what survived), and the
+    // fill must not discard. Ids 8..10 (curvature roughness) off: the material's own roughness,
+    // as the per-sample G-buffer of every peer.
+    d.specialization.values = effectSpecialization(features, uint32_t(AlphaPath::Opaque), 0, 1);
+    d.specialization.values.resize(11, 0u);
+    d.specialization.byId.push_back({kSpecSurfaces, surfaces});
+    addMaterialSpecialization(d.specialization, features);
+    d.sampleShading = sampleRate;
+    d.colorFormats = {};
+    d.depthFormat = SampleGBufferPass::kDepthFormat;
+    d.depthWrite = false;
+    d.depthCompare = VK_COMPARE_OP_EQUAL;
+    d.samples = samples > 1 ? VK_SAMPLE_COUNT_4_BIT : VK_SAMPLE_COUNT_1_BIT;
+    // No culling: only the primitive the prepass kept at a sample writes there, so a culled one
+    // never matches; one pipeline serves single- and double-sided materials.
+    d.cullMode = VK_CULL_MODE_NONE;
+    m_pipeline = vk::createGraphicsPipeline(device, d, "sbaa.fill");
+}
+
+SurfaceFillPass::~SurfaceFillPass() {
+    vkDeviceWaitIdle(m_device.device());
+    vkDestroyPipeline(m_device.device(), m_pipeline, nullptr);
+    vk::destroyPipelineLayout(m_device, m_layout);
+}
+
+rg::Buffer SurfaceFillPass::add(rg::Graph& graph, const FrameInputs& in, rg::Texture depth,
+                                rg::Buffer surfaces) {
+    const eng::frame::GpuScene* gpuScene = in.scene;
+    rg::Buffer materials =
+        graph.importBuffer("sbaa.fill.materials", {gpuScene->materials().buffer, gpuScene->materials().size},
+                           std::nullopt, std::nullopt);
+    struct Data {
+        rg::Buffer frame, materials, surfaces;
+        rg::Texture depth;
+    };
+    const uint32_t layers = eng::frame::makeSamplePattern(m_samples).layers;
+    const Data& out = graph.addGraphics<Data>(
+        "sbaa.fill",
+        [&](rg::Builder& b, Data& d) {
+            d.frame = b.read(in.frameConstants, rg::Use::UniformRead);
+            d.materials = b.read(materials, rg::Use::StorageReadFragment);
+            d.surfaces = b.readWrite(surfaces, rg::Use::StorageReadWriteFragment);
+            rg::Attachment loadDepth;
+            loadDepth.load = VK_ATTACHMENT_LOAD_OP_LOAD;
+            d.depth = b.depthStencil(depth, rg::Use::DepthReadOnly, loadDepth);
+        },
+        [this, gpuScene, layers](const rg::Context& ctx, const Data& d) {
+            VkCommandBuffer cmd = ctx.cmd();
+            vk::PushDescriptors()
+                .uniform(0, ctx.buffer(d.frame).buffer)
+                .storage(1, ctx.buffer(d.materials).buffer)
+                .storage(2, ctx.buffer(d.surfaces).buffer)
+                .push(m_device, cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, m_layout.layout);
+            const std::vector<VkPipeline> perDraw(gpuScene->scene().draws.size(), m_pipeline);
+            gpuScene->recordDraws(cmd, m_layout.layout, perDraw, layers, true);
+        });
+    return out.surfaces;
+}
+
+} // namespace agaa
