@@ -47,15 +47,19 @@ SurfaceFillPass::SurfaceFillPass(vk::Device& device, const eng::frame::GpuScene&
     d.depthWrite = false;
     d.depthCompare = VK_COMPARE_OP_EQUAL;
     d.samples = samples > 1 ? VK_SAMPLE_COUNT_4_BIT : VK_SAMPLE_COUNT_1_BIT;
-    // No culling: only the primitive the prepass kept at a sample writes there, so a culled one
-    // never matches; one pipeline serves single- and double-sided materials.
-    d.cullMode = VK_CULL_MODE_NONE;
-    m_pipeline = vk::createGraphicsPipeline(device, d, "sbaa.fill");
+    // The prepass's culling: a culled primitive never holds a sample, and rasterising it again
+    // would cost the EQUAL test of every back-facing fragment.
+    for (bool doubleSided : {false, true}) {
+        d.cullMode = doubleSided ? VK_CULL_MODE_NONE : VK_CULL_MODE_BACK_BIT;
+        m_pipelines[doubleSided ? 1 : 0] =
+            vk::createGraphicsPipeline(device, d, doubleSided ? "sbaa.fill.twoSided" : "sbaa.fill");
+    }
 }
 
 SurfaceFillPass::~SurfaceFillPass() {
     vkDeviceWaitIdle(m_device.device());
-    vkDestroyPipeline(m_device.device(), m_pipeline, nullptr);
+    for (VkPipeline p : m_pipelines)
+        vkDestroyPipeline(m_device.device(), p, nullptr);
     vk::destroyPipelineLayout(m_device, m_layout);
 }
 
@@ -87,7 +91,10 @@ rg::Buffer SurfaceFillPass::add(rg::Graph& graph, const FrameInputs& in, rg::Tex
                 .storage(1, ctx.buffer(d.materials).buffer)
                 .storage(2, ctx.buffer(d.surfaces).buffer)
                 .push(m_device, cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, m_layout.layout);
-            const std::vector<VkPipeline> perDraw(gpuScene->scene().draws.size(), m_pipeline);
+            std::vector<VkPipeline> perDraw;
+            for (const eng::scene::Draw& draw : gpuScene->scene().draws)
+                perDraw.push_back(
+                    m_pipelines[gpuScene->scene().materials.at(draw.material).doubleSided ? 1 : 0]);
             gpuScene->recordDraws(cmd, m_layout.layout, perDraw, layers, true);
         });
     return out.surfaces;

@@ -34,7 +34,7 @@ class SurfaceFillPass {
     eng::vk::Device& m_device;
     uint32_t m_samples;
     eng::vk::PipelineLayout m_layout;
-    VkPipeline m_pipeline = VK_NULL_HANDLE;
+    VkPipeline m_pipelines[2] = {}; // [double-sided]
 };
 
 } // namespace agaa

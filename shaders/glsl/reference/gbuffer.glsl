@@ -26,10 +26,10 @@ layout(set = 1, binding = 0) uniform sampler2D textures[kMaxSceneTextures];
 // GBUFFER_SURFACE_FILL (sbaa/fill*.frag): SBAA's second geometry pass. No colour targets: the
 // material, evaluated exactly as for the per-sample G-buffer, is stored into the per-surface
 // G-buffer record (shared/sbaa.h words 2..6) of each kept surface this fragment represents: its
-// representative primitive is this one and its representative sample is covered here (this
-// layer, this hardware sample). A primitive is rasterised once per pixel and layer, and the
-// prepass found it visible at that sample, so exactly one invocation writes each record: no
-// race, no ordering. The prepass depth is attached read-only with an EQUAL test, early, so the
+// representative primitive is this one and its representative sample lies in this layer. A
+// primitive is rasterised once per pixel and layer, and the prepass found it visible at that
+// sample, so this fragment covers the sample and is the only one that can: exactly one
+// invocation writes each record (at sample rate, the one at that sample), no race, no ordering. The prepass depth is attached read-only with an EQUAL test, early, so the
 // hidden fragments never run the material.
 #ifndef GBUFFER_SURFACE_FILL
 #define GBUFFER_SURFACE_FILL 0
@@ -102,9 +102,7 @@ void main() {
         const uint rep = key & 0xFFu;
         if (rep / perLayer != uint(gl_Layer)) continue;
 #if GBUFFER_SAMPLE_RATE
-        if (uint(gl_SampleID) != rep % perLayer) continue;
-#else
-        if ((uint(gl_SampleMaskIn[0]) & (1u << (rep % perLayer))) == 0u) continue;
+        if (uint(gl_SampleID) != rep % perLayer) continue; // the invocation at that sample
 #endif
         surfaces[w + kSbaaWordNormal] = packSnorm2x16(encodeOctahedral(s.normal));
         surfaces[w + kSbaaWordAlbedoRg] = packHalf2x16(s.albedo.rg);
