@@ -52,21 +52,8 @@ layout(push_constant) uniform Push { uint material; } pc;
 #include "common/curvature_roughness.glsl"
 
 // GBUFFER_SAMPLE_RATE (gbuffer_sample_rate.frag; agaa/common/sample_gbuffer.h GBufferOptions):
-// the inputs are interpolated at each sample's own position, so the material, its textures and
-// normal map run once per sample (the supersampled G-buffer). Sample shading alone would only run
-// more invocations: without the `sample` qualifier each may still read the pixel-centre values.
-#ifndef GBUFFER_SAMPLE_RATE
-#define GBUFFER_SAMPLE_RATE 0
-#endif
-#if GBUFFER_SAMPLE_RATE
-#define INTERPOLATION sample
-#else
-#define INTERPOLATION
-#endif
-layout(location = 0) INTERPOLATION in vec3 inNormal;
-layout(location = 1) INTERPOLATION in vec4 inTangent;
-layout(location = 2) INTERPOLATION in vec4 inUvs; // xy TEXCOORD_0, zw TEXCOORD_1
-layout(location = 3) INTERPOLATION in vec4 inColor;
+// the material, its textures and normal map run once per sample (the supersampled G-buffer).
+#include "reference/gbuffer_inputs.glsl"
 
 #if !GBUFFER_SURFACE_FILL
 layout(location = 0) out vec4 outNormal; // xy octahedral; w coverage alpha (alpha-to-coverage reads it)

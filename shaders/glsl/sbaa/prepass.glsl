@@ -27,19 +27,8 @@ layout(push_constant) uniform Push { uint material; uint firstTriangle; } pc;
 #include "common/depth.glsl"
 #include "common/face_normal.glsl"
 
-#ifndef SBAA_PREPASS_SAMPLE_RATE
-#define SBAA_PREPASS_SAMPLE_RATE 0
-#endif
-#if SBAA_PREPASS_SAMPLE_RATE
-#define INTERPOLATION sample
-#else
-#define INTERPOLATION
-#endif
-// reference/gbuffer.vert's outputs; the tangent is unused here.
-layout(location = 0) INTERPOLATION in vec3 inNormal;
-layout(location = 1) INTERPOLATION in vec4 inTangent;
-layout(location = 2) INTERPOLATION in vec4 inUvs; // xy TEXCOORD_0, zw TEXCOORD_1
-layout(location = 3) INTERPOLATION in vec4 inColor;
+// GBUFFER_SAMPLE_RATE 1 (prepass_sample_rate.frag): the alpha per sample.
+#include "reference/gbuffer_inputs.glsl"
 
 layout(location = 0) out vec4 outNormal;
 layout(location = 1) out float outPrimitive;

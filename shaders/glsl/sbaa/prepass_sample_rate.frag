@@ -1,4 +1,4 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
-#define SBAA_PREPASS_SAMPLE_RATE 1
+#define GBUFFER_SAMPLE_RATE 1
 #include "sbaa/prepass.glsl"
