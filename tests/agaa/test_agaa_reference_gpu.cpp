@@ -219,7 +219,9 @@ TEST(AgaaClusteringReferenceGpu, GpuMetadataMatchesAlgorithm1InDouble) {
 // variance": the Toksvig vector is N L with L the length whose Toksvig factor turns the sharpest
 // exponent s_max into the material's, f(L) s_max = s, f(L) = L / (L + s_max (1 - L)), s = 2/alpha^2
 // - 2 with alpha = roughness^2 in the BRDF's range; SGGX (shared/sggx.h's definition, Heitz et al.
-// 2015): the GGX lobe as S = (1 - alpha^2) N N^T + alpha^2 I.
+// 2015): the GGX lobe as S = (1 - alpha^2) N N^T + alpha^2 I. The alpha field holds the
+// material's alpha at most the BRDF's maximum, not floored (shared/agaa.h w5: a near-mirror's
+// environment level).
 std::vector<double> sampleValues(bool sggx, const double N[3], double roughness, const double albedo[3],
                                  double metallic, const shared::AgaaConstants& k) {
     const double alpha = std::clamp(roughness * roughness, double(k.toksvig.y), double(k.toksvig.z));
@@ -240,7 +242,7 @@ std::vector<double> sampleValues(bool sggx, const double N[3], double roughness,
     for (int i = 0; i < 3; ++i)
         u.push_back(albedo[i]);
     u.push_back(metallic);
-    u.push_back(alpha);
+    u.push_back(std::min(roughness * roughness, double(k.toksvig.z)));
     for (double& v : u)
         v = std::clamp(v, 0.0, 1.0);
     return u;

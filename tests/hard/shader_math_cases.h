@@ -50,6 +50,7 @@ enum MathOp : uint32_t {
     kOpFaceNormal = 23,
     kOpFilteredCosine = 24,
     kOpAggregateWidth = 25,
+    kOpEnvironmentRoughness = 26,
 };
 
 struct EdgeCase {

@@ -1,6 +1,7 @@
 // The shader-math edge cases of the footprints (issue 14): the pixel footprint with the frame's
-// own projection, the AGAA shadow footprint's width along a tangent direction, and the face
-// normal from derivatives, each against a double twin (shader_math_cases.cpp holds the rest).
+// own projection, the AGAA shadow footprint's width along a tangent direction, the face normal
+// from derivatives, and an aggregate's environment level at the BRDF's alpha floor, each against
+// a double twin (shader_math_cases.cpp holds the rest).
 
 #include "engine/frame/frame_constants.h"
 #include "engine/frame/sample_pattern.h"
@@ -108,6 +109,33 @@ void addFootprintCases(std::vector<EdgeCase>& cases) {
                     if (glm::dot(n, D3(f.towards)) < 0.0) n = -n;
                     return near3("N", glm::vec3(r.r0), n, 1e-5, 1e-5);
                 });
+    }
+
+    // The environment's level for an aggregate (common/brdf.glsl environmentAggregateRoughness):
+    // sqrt(alpha) above the punctual BRDF's floor kMinGgxAlpha; at the floor (within
+    // kGgxAlphaFloorRelative, fp32 rounding of sqrt(ax ay) included) the material's own alpha,
+    // which may lie below it (issue 14: mirrors read level 0.03 of the chain).
+    {
+        struct EnvIn {
+            const char* what;
+            float alpha, material;
+            double expected;
+        };
+        const float floorAlpha = 1.0e-3f;
+        const float sggxFloor = std::sqrt(floorAlpha * floorAlpha); // as the lighting pass forms it
+        for (const EnvIn& e : std::vector<EnvIn>{
+                 {"a mirror at the floor", floorAlpha, 0.0f, 0.0},
+                 {"a near-mirror at the floor", floorAlpha, 4.0e-4f, std::sqrt(4.0e-4)},
+                 {"an SGGX lobe clamped on both axes", sggxFloor, 0.0f, 0.0},
+                 {"just inside the floor's tolerance", floorAlpha * 1.0009f, 0.0f, 0.0},
+                 {"just past the floor's tolerance", floorAlpha * 1.0011f, 0.0f, std::sqrt(1.0011e-3)},
+                 {"a spread aggregate of mirrors", 0.05f, 0.0f, std::sqrt(0.05)},
+                 {"a material above the floor", 0.25f, 0.25f, 0.5},
+             })
+            add("environmentAggregateRoughness " + std::string(e.what),
+                {"kMinGgxAlpha", "kGgxAlphaFloorRelative"},
+                op(kOpEnvironmentRoughness, glm::vec4(e.alpha, e.material, 0, 0)),
+                [e](const MathResult& r) { return near("roughness", r.r0.x, e.expected, 1e-6, 1e-5); });
     }
 }
 

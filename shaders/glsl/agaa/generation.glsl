@@ -141,8 +141,10 @@ void main() {
     uint n = agaa.shape.w;
     float alpha = m.roughness * m.roughness;
     AgQuantized f;
-    // The sample's own lobe, for the two-point resolve (shared/agaa.h w5).
-    f.q[10] = quantizeUnit(clamp(alpha, kMinGgxAlpha, kMaxGgxAlpha), kMaterialAlphaScale);
+    // The sample's own lobe, for the two-point resolve and the environment's level (shared/agaa.h
+    // w5): not floored at kMinGgxAlpha, so that a near-mirror's level is its own (2^26 - 1 steps
+    // resolve alpha to 1.5e-8; the lighting pass floors the mean where the BRDF needs it).
+    f.q[10] = quantizeUnit(min(alpha, kMaxGgxAlpha), kMaterialAlphaScale);
     if (ndf == kNdfSggx) {
         // The sample's GGX lobe as an SGGX matrix (shared/sggx.h), alpha in the BRDF's range.
         float a = clamp(alpha, kMinGgxAlpha, kMaxGgxAlpha);

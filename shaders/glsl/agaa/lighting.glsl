@@ -159,7 +159,7 @@ layout(constant_id = 10) const uint kRouteFragment = 0u;
 const uint kTilePixels = kTileSize * kTileSize;
 // Entries of the per-tile list shaded per round: one per invocation. c = 4 can append up to
 // 4 x 256; the list is then shaded in up to 4 rounds through the same 256-entry storage, which
-// keeps the tile's shared memory at 25.5 KB (lavapipe offers 32 KB).
+// keeps the tile's shared memory at 26.5 KB (lavapipe offers 32 KB).
 const uint kListRound = kTilePixels;
 
 // One round of the per-tile list, struct-of-arrays. Inputs, written by the aggregate's pixel:
@@ -168,7 +168,9 @@ const uint kListRound = kTilePixels;
 //   sAlbedo    rgb albedo, a metallic
 //   sTangent   xyz tangent (SGGX), w alphas.x;  sBitangent: xyz bitangent (SGGX), w alphas.y
 //   sOwner     tile pixel index | aggregate id << 8 | the aggregate's sample count << 10
-//   sSpread    the mean length of the aggregate's normals (Toksvig's filtered diffuse; 1: none)
+//   sSpread    x the mean length of the aggregate's normals (Toksvig's filtered diffuse; 1: none),
+//              y the environment's perceptual roughness (common/environment.glsl
+//              environmentAggregateRoughness)
 //   sScreenSpread  the covariance (xx, xy, yy) of its samples' sub-pixel positions, pixel^2
 // Outputs, written in place by the invocation that shades the entry: sPosition.xyz radiance,
 // sNormal.xyz specular part, sAlbedo.xyz its variance over the aggregate's samples.
@@ -178,7 +180,7 @@ shared vec4 sAlbedo[kListRound];
 shared vec4 sTangent[kListRound];
 shared vec4 sBitangent[kListRound];
 shared uint sOwner[kListRound];
-shared float sSpread[kListRound];
+shared vec2 sSpread[kListRound];
 shared vec3 sScreenSpread[kListRound];
 shared uint sEntryCount;
 
@@ -201,7 +203,8 @@ void addLight(SurfaceInputs surface, vec3 T, vec3 B, vec2 alphas, float spread, 
 // variance of the specular radiance over the aggregate's samples (the two-point resolve's).
 // screenSpread: the covariance of the aggregate's sub-pixel sample positions (the statistical
 // shadow footprint's width, common/depth.glsl aggregateWidth).
-void shadeAggregate(SurfaceInputs surface, vec3 T, vec3 B, vec2 alphas, float spread, vec3 P, float sigma,
+void shadeAggregate(SurfaceInputs surface, vec3 T, vec3 B, vec2 alphas, float spread, float environmentRoughness,
+                    vec3 P, float sigma,
                     vec3 screenSpread, ivec2 pixel, uint pixelIndex, uint a, uint k, bool sggx, out vec3 radiance,
                     out vec3 specular, out vec3 specularVariance) {
     radiance = vec3(0.0);
@@ -213,12 +216,10 @@ void shadeAggregate(SurfaceInputs surface, vec3 T, vec3 B, vec2 alphas, float sp
     float pixelSize = pixelFootprint(-P.z, frame.extent, frame.projParams);
 #endif
     vec3 specularSquares = vec3(0.0);
-    // The environment through the aggregate's filtered distribution: its mean normal, and its
-    // Toksvig roughness or the SGGX lobe's (the geometric mean of its two alphas). Smooth at the
+    // The environment through the aggregate's filtered distribution: its mean normal and its
+    // filtered roughness without the punctual BRDF's floor (environmentRoughness). Smooth at the
     // scale of an aggregate: no spike, so it stays out of the two-point resolve's variance.
-    if (kEnvironment != 0u)
-        radiance += environmentLightingFiltered(surface, V, sggx ? sqrt(sqrt(alphas.x * alphas.y)) : surface.roughness,
-                                                spread);
+    if (kEnvironment != 0u) radiance += environmentLightingFiltered(surface, V, environmentRoughness, spread);
     for (uint i = nextTileLight(0u); i < kMaxLights; i = nextTileLight(i + 1u)) {
         vec3 L, irradiance;
         if (!lightIncidence(lights[i], P, L, irradiance)) continue;
@@ -274,6 +275,8 @@ void main() {
     vec3 moment1[kMaxAggregates] = vec3[](vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0));
     vec4 albedoMetalSum[kMaxAggregates] = vec4[](vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0));
     float materialAlphaSum[kMaxAggregates] = float[](0.0, 0.0, 0.0, 0.0); // the two-point resolve's
+    // The material alpha below the BRDF's floor too: the environment's level of a near-mirror.
+    float materialAlphaRawSum[kMaxAggregates] = float[](0.0, 0.0, 0.0, 0.0);
 #endif
     if (inside) {
         for (uint s = 0u; s < n; ++s) {
@@ -323,6 +326,7 @@ void main() {
                 moment0[a] += N * toksvigLength(alpha, agaa.toksvig.x, agaa.toksvig.y, agaa.toksvig.z);
             }
             materialAlphaSum[a] += clamp(alpha, kMinGgxAlpha, kMaxGgxAlpha);
+            materialAlphaRawSum[a] += min(alpha, kMaxGgxAlpha);
 #endif
             float t = -P.z;
             depthSum[a] += t;
@@ -346,6 +350,7 @@ void main() {
     // The mean length of the aggregate's unit normals, the material's roughness taken out of the
     // Toksvig length: the spread the filtered diffuse integrates over (1: one direction).
     float spreads[kMaxAggregates] = float[](1.0, 1.0, 1.0, 1.0);
+    float environmentRoughness[kMaxAggregates] = float[](0.0, 0.0, 0.0, 0.0);
     uint presentCount = 0u;
     uint accumulated[kMaxAggregates] = uint[](0u, 0u, 0u, 0u);
     for (uint a = 0u; a < c; ++a) {
@@ -409,7 +414,8 @@ void main() {
                           meanUnit(w[3] >> 16u, kColour, kUnormScale), meanUnit(w[4] & 0xFFFFu, kColour, kUnormScale));
             metallic = meanUnit(w[4] >> 16u, kColour, kUnormScale);
         }
-        materialAlpha = meanUnit(w[5], k, kMaterialAlphaScale);
+        float rawMaterialMean = meanUnit(w[5], k, kMaterialAlphaScale);
+        materialAlpha = max(rawMaterialMean, kMinGgxAlpha); // the BRDF's range, as the samples path's
 #endif
         surfaces[a].albedo = albedo;
         surfaces[a].metallic = metallic;
@@ -453,6 +459,13 @@ void main() {
             float filtered = clamp(surfaces[a].roughness * surfaces[a].roughness, kMinGgxAlpha, kMaxGgxAlpha);
             alphas[a] = vec2(filtered, clamp(materialAlpha, kMinGgxAlpha, filtered));
         }
+#if AGAA_GBUFFER
+        float rawMaterialAlpha = materialAlphaRawSum[a] / fs;
+#else
+        float rawMaterialAlpha = rawMaterialMean; // the AG-buffer's w5 is not floored (generation.glsl)
+#endif
+        environmentRoughness[a] =
+            environmentAggregateRoughness(sggx ? sqrt(alphas[a].x * alphas[a].y) : alphas[a].x, rawMaterialAlpha);
 #if AGAA_EXPORT
         exportRecord(uint(size.x * size.y) * n + pixelIndex * c + a, vec4(mean0, mean1.x), vec4(mean1.yz, albedo.rg),
                      vec4(albedo.b, metallic, float(k), surfaces[a].roughness), vec4(surfaces[a].normal, 1.0));
@@ -500,7 +513,7 @@ void main() {
                     sTangent[e] = vec4(tangents[a], alphas[a].x);
                     sBitangent[e] = vec4(bitangents[a], alphas[a].y);
                     sOwner[e] = self | (a << 8u) | (samplesIn[a] << 10u);
-                    sSpread[e] = spreads[a];
+                    sSpread[e] = vec2(spreads[a], environmentRoughness[a]);
                     sScreenSpread[e] = screenSpreads[a];
                 }
                 slot += 1u;
@@ -518,7 +531,8 @@ void main() {
                 vec4 T = sTangent[self];
                 vec4 B = sBitangent[self];
                 vec3 lit, spec, variance;
-                shadeAggregate(surface, T.xyz, B.xyz, vec2(T.w, B.w), sSpread[self], sPosition[self].xyz,
+                shadeAggregate(surface, T.xyz, B.xyz, vec2(T.w, B.w), sSpread[self].x, sSpread[self].y,
+                               sPosition[self].xyz,
                                sPosition[self].w, sScreenSpread[self],
                                ownerPixel, uint(ownerPixel.y * size.x + ownerPixel.x), (owner >> 8u) & 3u,
                                owner >> 10u, sggx, lit, spec, variance);
@@ -544,12 +558,14 @@ void main() {
         // After the list's rounds: no barrier follows it, so lavapipe (whose compute barriers
         // split the shader into coroutine segments) keeps its loop free of frame spills.
         if (inside && present[0])
-            shadeAggregate(surfaces[0], tangents[0], bitangents[0], alphas[0], spreads[0], positions[0], depthSigma[0], screenSpreads[0],
+            shadeAggregate(surfaces[0], tangents[0], bitangents[0], alphas[0], spreads[0], environmentRoughness[0],
+                           positions[0], depthSigma[0], screenSpreads[0],
                            pixel, pixelIndex, 0u, samplesIn[0], sggx, radiance[0], specular[0], specularVariance[0]);
     } else if (inside) {
         for (uint a = 0u; a < c; ++a) {
             if (!present[a]) continue;
-            shadeAggregate(surfaces[a], tangents[a], bitangents[a], alphas[a], spreads[a], positions[a], depthSigma[a], screenSpreads[a],
+            shadeAggregate(surfaces[a], tangents[a], bitangents[a], alphas[a], spreads[a], environmentRoughness[a],
+                           positions[a], depthSigma[a], screenSpreads[a],
                            pixel, pixelIndex, a, samplesIn[a], sggx, radiance[a], specular[a], specularVariance[a]);
         }
     }

@@ -69,6 +69,19 @@ vec3 evaluateBrdf(SurfaceInputs s, vec3 V, vec3 L, vec3 irradiance) {
     return (diffuseLobe(s, F) + specular) * irradiance * g.NoL;
 }
 
+// The environment's pre-filtered level (common/environment.glsl), as a perceptual roughness, for an aggregate whose filtered GGX alpha is
+// `alpha` (Toksvig's, or the geometric mean of the SGGX lobe's two) and whose samples' mean
+// material alpha is `materialAlpha` (not floored): sqrt(alpha), except at the punctual BRDF's floor
+// kMinGgxAlpha. The floor keeps the punctual GGX peak finite and stands in for any smaller alpha;
+// the pre-filtered map has no peak, so there the level is the material's own, as the per-sample
+// methods read it. With the floor, a roughness-0 chrome wall read level sqrt(kMinGgxAlpha) = 0.03
+// of the chain and its reflection was up to 31 % off the reference's (issue 14;
+// tests/features/test_environment_gpu.cpp MirrorsReflectTheEnvironmentUnblurred).
+float environmentAggregateRoughness(float alpha, float materialAlpha) {
+    bool floored = alpha <= kMinGgxAlpha * (1.0 + kGgxAlphaFloorRelative);
+    return sqrt(floored ? clamp(materialAlpha, 0.0, kMinGgxAlpha) : alpha);
+}
+
 // Lambert through a spread of normals: E[max(0, N.L)] over a von Mises-Fisher lobe of mean
 // length r around the shading normal, x = N0.L. AGAA's filtered diffuse (paper section 3.5.2,
 // after Baker and Hill 2012): without it an aggregate lights its diffuse with the clamped cosine

@@ -6,6 +6,10 @@
 // Smallest GGX alpha (= roughness^2): roughness 0 would make D a delta and
 // D*G/(4 N.L N.V) divide by zero. 1e-3 keeps D finite (about 3.2e5 peak) in fp32.
 const float kMinGgxAlpha = 1.0e-3;
+// An aggregate's filtered alpha within this relative distance of kMinGgxAlpha is at that floor
+// (common/environment.glsl environmentAggregateRoughness): fp32 rounding of sqrt(ax ay) for an
+// SGGX lobe clamped on both axes stays far inside it.
+const float kGgxAlphaFloorRelative = 1.0e-3;
 // Largest GGX alpha of the shared BRDF (roughness 0.949). Toksvig encodes roughness as the
 // length of the normal (shared/ag_buffer.h); alpha = 1 would be length 0 and erase the sample's
 // direction from its aggregate's mean normal. Capping alpha for every method keeps each

@@ -44,9 +44,10 @@ SHARED_CONST kNormalAngleLevels = 256u;
 //   Per-sample precision: 13 bits at n = 8, 11 bits at n = 32 (the Toksvig layout's albedo
 //   precision); metallic 7 bits at n = 8, 5 bits at n = 32 (glTF metallic is mostly 0 or 1).
 //
-// Both layouts, w5: the sum of the samples' own GGX alpha (clamped to the BRDF's range) at the
-// fixed scale 2^26 - 1: the two-point resolve's material lobe (shared/sggx.h sggxSpikeRatio),
-// which the filtered normal distribution no longer holds (issue 14). No overflow at n = 32:
+// Both layouts, w5: the sum of the samples' own GGX alpha (at most the BRDF's kMaxGgxAlpha, not
+// floored at its kMinGgxAlpha) at the fixed scale 2^26 - 1: the two-point resolve's material lobe
+// (shared/sggx.h sggxSpikeRatio; the lighting pass floors the mean), which the filtered normal
+// distribution no longer holds, and a near-mirror's environment level (issue 14). No overflow at n = 32:
 // 32 * 2^26 = 2^31 < 2^32.
 // tests/agaa/test_fixed_point.cpp checks both layouts' bounds and round trips.
 SHARED_CONST kAggregateWords = 6u;
