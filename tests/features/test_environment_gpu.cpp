@@ -60,6 +60,21 @@ glm::dvec3 bruteForceRadiance(const eng::scene::Environment& env, const glm::dve
     return sum;
 }
 
+// A wall facing the camera (world = view) of one material, lit by the procedural sky alone, the
+// sun's glow in front of it (what the wall reflects).
+Scene skyWall(glm::vec3 albedo, float metallic, float roughness) {
+    Scene s = agaa::test::emptyScene("environment wall");
+    s.lights.clear();
+    s.materials[0].baseColorFactor = glm::vec4(albedo, 1.0f);
+    s.materials[0].metallicFactor = metallic;
+    s.materials[0].roughnessFactor = roughness;
+    agaa::test::addRectangle(s, {-10, -10}, {10, 10}, -2.0f, 0);
+    eng::scene::SkySettings sky;
+    sky.sunDirection = glm::normalize(glm::vec3(0.3f, 0.6f, 0.74f));
+    s.environment = eng::scene::proceduralSky(sky);
+    return s;
+}
+
 } // namespace
 
 // A wall facing the camera (world = view), lit by the procedural sky alone: what every method's
@@ -86,15 +101,7 @@ TEST(EnvironmentGpu, EveryMethodMatchesABruteForceIntegralOfTheBrdfOverTheMap) {
                  {"rough dielectric", {0.6f, 0.5f, 0.4f}, 0.0f, 0.7f, false, 0.04},
                  {"rough metal", {0.9f, 0.7f, 0.5f}, 1.0f, 0.6f, false, 0.12}};
     for (const Case& c : cases) {
-        Scene s = agaa::test::emptyScene("environment wall");
-        s.lights.clear();
-        s.materials[0].baseColorFactor = glm::vec4(c.albedo, 1.0f);
-        s.materials[0].metallicFactor = c.metallic;
-        s.materials[0].roughnessFactor = c.roughness;
-        agaa::test::addRectangle(s, {-10, -10}, {10, 10}, -2.0f, 0);
-        eng::scene::SkySettings sky;
-        sky.sunDirection = glm::normalize(glm::vec3(0.3f, 0.6f, 0.74f)); // the glow in front of the wall
-        s.environment = eng::scene::proceduralSky(sky);
+        Scene s = skyWall(c.albedo, c.metallic, c.roughness);
         if (c.constantSky)
             std::fill(s.environment.radiance.begin(), s.environment.radiance.end(), glm::vec3(5000.0f));
         agaa::FrameRenderer renderer(*device, s);
@@ -146,15 +153,7 @@ TEST(EnvironmentGpu, MirrorsReflectTheEnvironmentUnblurred) {
                  {"gold, roughness 0.02", {1.0f, 0.8f, 0.4f}, 1.0f, 0.02f},
                  {"gold, roughness 0.05", {1.0f, 0.8f, 0.4f}, 1.0f, 0.05f}};
     for (const Case& c : cases) {
-        Scene s = agaa::test::emptyScene("environment mirror");
-        s.lights.clear();
-        s.materials[0].baseColorFactor = glm::vec4(c.albedo, 1.0f);
-        s.materials[0].metallicFactor = c.metallic;
-        s.materials[0].roughnessFactor = c.roughness;
-        agaa::test::addRectangle(s, {-10, -10}, {10, 10}, -2.0f, 0);
-        eng::scene::SkySettings sky;
-        sky.sunDirection = glm::normalize(glm::vec3(0.3f, 0.6f, 0.74f)); // the glow the wall reflects
-        s.environment = eng::scene::proceduralSky(sky);
+        const Scene s = skyWall(c.albedo, c.metallic, c.roughness);
         agaa::FrameRenderer renderer(*device, s);
         auto render = [&](const char* method) {
             agaa::RenderRequest r;

@@ -43,7 +43,8 @@ void main() {
     vec3 P = viewPositionFromDepth(q, gl_FragCoord.z, frame.extent, frame.depthParams, frame.projParams);
     vec3 face = viewFaceNormal(P, normalize(-P));
     // Measured against the face normal (furball 64x64, n = 8, S = 4, display RMSE against the
-    // reference): 0.0140 with this normal, 0.0151 with the face normal, whose test splits a smooth
+    // reference; agaa/sbaa/README.md): 0.0140 with this normal, 0.0151 with the face normal (a
+    // variant not in the tree), whose test splits a smooth
     // tessellated strand at every triangle edge (the shading normals of its triangles agree; their
     // planes differ by the tessellation angle).
     float len = length(inNormal);
