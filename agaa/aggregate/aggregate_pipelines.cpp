@@ -41,6 +41,19 @@ constexpr VkDescriptorType kImage = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
 constexpr VkShaderStageFlags kCs = VK_SHADER_STAGE_COMPUTE_BIT;
 constexpr VkShaderStageFlags kFs = VK_SHADER_STAGE_FRAGMENT_BIT;
 constexpr VkShaderStageFlags kVsFs = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
+
+const char* shadowFootprintName(EffectSettings::ShadowFootprint footprint) {
+    switch (footprint) {
+    case EffectSettings::ShadowFootprint::Statistics:
+        return " along the aggregate's depth-variance vector";
+    case EffectSettings::ShadowFootprint::Samples:
+        return " at the aggregate's sample positions";
+    case EffectSettings::ShadowFootprint::Adaptive:
+        break;
+    }
+    return " along the aggregate's depth-variance vector and at its footprint's corners, at every sample "
+           "where they disagree";
+}
 } // namespace
 
 AggregateAA::AggregateAA(vk::Device& device, const eng::frame::GpuScene& scene,
@@ -365,9 +378,7 @@ std::vector<VariantChoice> AggregateAA::variants() const {
         effectVariants(m_features, m_scene, m_settings.samples, m_settings.effects.shadowTaps);
     for (VariantChoice& choice : v)
         if (choice.effect == "shadows" && m_features.hasShadows())
-            choice.variant += m_settings.effects.shadowFootprint == EffectSettings::ShadowFootprint::Samples
-                                  ? " at the aggregate's sample positions"
-                                  : " along the aggregate's depth-variance vector";
+            choice.variant += shadowFootprintName(m_settings.effects.shadowFootprint);
     const bool sggx = m_settings.ndf == AggregateNdf::Sggx;
     v.push_back({"normal-distribution", sggx ? "sggx, two-point tone-mapped resolve" : "toksvig",
                  m_requestedNdf != AggregateNdf::Auto

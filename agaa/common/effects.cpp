@@ -13,6 +13,9 @@ void validate(const EffectSettings& s) {
     if (s.shadowTaps < 1 || s.shadowTaps > 8)
         throw std::invalid_argument("--shadow-taps " + std::to_string(s.shadowTaps) +
                                     " is out of range (1..8)");
+    if (uint32_t(s.shadowFootprint) > uint32_t(EffectSettings::ShadowFootprint::Adaptive))
+        throw std::invalid_argument("shadow footprint " + std::to_string(uint32_t(s.shadowFootprint)) +
+                                    " is not one of: statistics (0), samples (1), adaptive (2)");
 }
 
 eng::scene::SceneFeatures effectiveFeatures(const eng::scene::Scene& scene, const EffectSettings& settings) {

@@ -23,11 +23,14 @@ struct EffectSettings {
     uint32_t shadowTaps = 4;
     // AGAA: where the taps go. Statistics: along the aggregate's variance vector from its mean
     // position and depth variance (paper section 3.5.3). Samples: at up to shadowTaps of the
-    // aggregate's own sample positions (the paper's "more precise filtering").
+    // aggregate's own sample positions (the paper's "more precise filtering"). Adaptive: the
+    // statistical taps, and where they disagree (a shadow edge crosses the aggregate) a tap at
+    // every one of the aggregate's samples; the default (issue 14, goal P8).
     enum class ShadowFootprint : uint32_t {
         Statistics = 0,
-        Samples = 1
-    } shadowFootprint = ShadowFootprint::Statistics;
+        Samples = 1,
+        Adaptive = 2
+    } shadowFootprint = ShadowFootprint::Adaptive;
 };
 
 // Throws std::invalid_argument naming the setting and its range.
@@ -111,6 +114,6 @@ inline const char* alphaPathName(AlphaPath p) {
 std::vector<uint32_t>
 effectSpecialization(const eng::scene::SceneFeatures& features, uint32_t id0, uint32_t id1,
                      uint32_t shadowTaps,
-                     EffectSettings::ShadowFootprint footprint = EffectSettings::ShadowFootprint::Statistics);
+                     EffectSettings::ShadowFootprint footprint = EffectSettings::ShadowFootprint::Adaptive);
 
 } // namespace agaa

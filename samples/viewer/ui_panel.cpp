@@ -115,7 +115,7 @@ void settingsSection(Controls& controls, PanelActions& actions) {
         int taps = int(s.effects.shadowTaps);
         if (ImGui::SliderInt("shadow taps", &taps, 1, 4)) s.effects.shadowTaps = uint32_t(taps);
         int footprint = int(s.effects.shadowFootprint);
-        if (ImGui::Combo("tap footprint", &footprint, "statistics\0samples\0"))
+        if (ImGui::Combo("tap footprint", &footprint, "statistics\0samples\0adaptive\0"))
             s.effects.shadowFootprint = EffectSettings::ShadowFootprint(footprint);
         ImGui::TreePop();
     }

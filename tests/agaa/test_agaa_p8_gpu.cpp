@@ -6,7 +6,9 @@
 //     tangent-plane distance finds): pixels of one or two surfaces show what c = 2 costs where it
 //     need not merge surfaces, pixels of three or more where it must;
 //   - AGAA_P8_NO_SHADOWS=1: the same without shadowed lights (the aggregate's one footprint
-//     lookup against every sample's own tap), AGAA_P8_NDF=sggx|toksvig one normal distribution,
+//     lookup against every sample's own tap); AGAA_P8_SHADOW_STATISTICS=1 / AGAA_P8_SHADOW_SAMPLES=1
+//     another shadow footprint, AGAA_P8_SHADOW_TAPS=T its tap count; AGAA_P8_NDF=sggx|toksvig one
+//     normal distribution,
 //     AGAA_P8_DIFFUSE=1 every material a rough dielectric (what is left is the diffuse's error).
 
 #include "agaa_test_support.h"
@@ -35,6 +37,8 @@ agaa::RenderRequest request(const std::string& method, uint32_t n, uint32_t c) {
     if (const char* ndf = std::getenv("AGAA_P8_NDF")) r.settings.ndf = ndf;
     if (std::getenv("AGAA_P8_SHADOW_SAMPLES"))
         r.settings.effects.shadowFootprint = agaa::EffectSettings::ShadowFootprint::Samples;
+    if (std::getenv("AGAA_P8_SHADOW_STATISTICS"))
+        r.settings.effects.shadowFootprint = agaa::EffectSettings::ShadowFootprint::Statistics;
     if (const char* taps = std::getenv("AGAA_P8_SHADOW_TAPS"))
         r.settings.effects.shadowTaps = uint32_t(std::atoi(taps));
     r.view.width = kWidth;
@@ -98,46 +102,28 @@ TEST(GoalP8, MoreGeometrySamplesBeatMoreShadingSamples) {
     };
     std::printf("[ measured ] per-sample (8) by depth complexity%s\n", split(perSampleDisplay).c_str());
 
-    double agaaError = 0.0;
+    // Goal P8 at the defaults, on both generation paths: AGAA (32, 2) no worse than per-sample (8).
+    // It holds since the adaptive shadow footprint (agaa/common/effects.h): before it, the
+    // statistical footprint's 4 taps per aggregate left the one-surface pixels with about twice
+    // per-sample shading's error (0.0027 against 0.0015, 1.04x overall), and only 8 taps at the
+    // aggregate's own samples reached the goal (0.98x, 0.96x). What is left above per-sample
+    // shading is the 18 % of pixels with three or more surfaces, whose third and fourth c = 2 must
+    // merge (fur behind railings in front of foliage).
+    const bool measuredSetting = !std::getenv("AGAA_P8_NDF") && !std::getenv("AGAA_P8_NO_SHADOWS") &&
+                                 !std::getenv("AGAA_P8_DIFFUSE") && !std::getenv("AGAA_P8_SHADOW_SAMPLES") &&
+                                 !std::getenv("AGAA_P8_SHADOW_STATISTICS") &&
+                                 !std::getenv("AGAA_P8_SHADOW_TAPS");
     for (const char* method : {"agaa-accumulate", "agaa-samples"}) {
         for (uint32_t c : {2u, 4u}) {
             const agaa::RenderResult ag = renderer.render(request(method, 32, c));
             const eng::io::ImageF display = eng::io::srgbEncoded(ag.display);
             const double error = eng::io::rmse(display, truthDisplay);
-            if (c == 2 && std::string(method) == "agaa-accumulate") agaaError = error;
             std::printf("[ measured ] %s (32, %u): display RMSE %.4f (%.2fx per-sample (8)), linear %.4g%s\n",
                         method, c, error, error / perSampleError, eng::io::rmse(ag.hdr, truth.hdr),
                         split(display).c_str());
-        }
-    }
-    // Goal P8 is not met at the default settings (the README gives the split): the statistical
-    // shadow footprint's 4 taps per aggregate against per-sample shading's 8 per pixel leave the
-    // one-surface pixels with about twice its error (0.0027 against 0.0015), and c = 2 must merge
-    // the third and fourth surfaces of the 18 % of pixels that have them (fur behind railings in
-    // front of foliage). The test guards the measured level (1.04x; 1.34x before the filtered
-    // diffuse and the NDF rule, 1.05x before the footprint's own width) and fails when the goal is
-    // reached at the defaults, so that this becomes the assertion the goal asks for.
-    const bool measuredSetting = !std::getenv("AGAA_P8_NDF") && !std::getenv("AGAA_P8_NO_SHADOWS") &&
-                                 !std::getenv("AGAA_P8_DIFFUSE") && !std::getenv("AGAA_P8_SHADOW_SAMPLES") &&
-                                 !std::getenv("AGAA_P8_SHADOW_TAPS");
-    if (measuredSetting) {
-        EXPECT_LE(agaaError, 1.1 * perSampleError) << "AGAA (32, 2) got worse against per-sample (8)";
-        EXPECT_GT(agaaError, perSampleError)
-            << "goal P8 holds now: make this test assert it (agaaError <= perSampleError)";
-        // The goal is met with the paper's "more precise" shadow filtering: 8 taps at the
-        // aggregate's own samples (measured 0.98x accumulate, 0.96x samples path; the lighting
-        // pass about 1.2x the default's on lavapipe, README).
-        for (const char* method : {"agaa-accumulate", "agaa-samples"}) {
-            agaa::RenderRequest precise = request(method, 32, 2);
-            precise.settings.effects.shadowFootprint = agaa::EffectSettings::ShadowFootprint::Samples;
-            precise.settings.effects.shadowTaps = 8;
-            const agaa::RenderResult ag = renderer.render(precise);
-            const eng::io::ImageF display = eng::io::srgbEncoded(ag.display);
-            const double error = eng::io::rmse(display, truthDisplay);
-            std::printf("[ measured ] %s (32, 2), 8 shadow taps at its samples: display RMSE %.4f (%.2fx "
-                        "per-sample (8))%s\n",
-                        method, error, error / perSampleError, split(display).c_str());
-            EXPECT_LE(error, perSampleError) << method << ": goal P8 with the precise shadow footprint";
+            if (measuredSetting) {
+                EXPECT_LE(error, perSampleError) << method << " (32, " << c << "): goal P8";
+            }
         }
     }
     agaa::test::expectNoValidationErrors(*device);

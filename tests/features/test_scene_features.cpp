@@ -165,6 +165,16 @@ TEST(EffectSettings, OutOfRangeSettingsAreRefused) {
     EXPECT_THROW(agaa::validate(s), std::invalid_argument);
     s.shadowMapSize = 1024;
     EXPECT_NO_THROW(agaa::validate(s));
+    // A footprint from a host's own cast: named with the allowed values.
+    s.shadowFootprint = agaa::EffectSettings::ShadowFootprint(3);
+    try {
+        agaa::validate(s);
+        ADD_FAILURE() << "shadow footprint 3 accepted";
+    } catch (const std::invalid_argument& e) {
+        EXPECT_NE(std::string(e.what()).find("statistics (0), samples (1), adaptive (2)"), std::string::npos)
+            << e.what();
+    }
+    EXPECT_EQ(agaa::EffectSettings{}.shadowFootprint, agaa::EffectSettings::ShadowFootprint::Adaptive);
 }
 
 // The directional fit keeps every scene-bounds corner the camera sees inside the map's volume.

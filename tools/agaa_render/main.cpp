@@ -134,8 +134,10 @@ const char* kUsage =
     "                    effect forced on (shadows, alpha-to-coverage, emissive, normal maps, light "
     "culling)\n"
     "  --shadow-taps N   AGAA shadow taps inside each aggregate's footprint, 1..8 (default 4)\n"
-    "  --shadow-footprint statistics|samples  AGAA shadow taps along the aggregate's depth variance\n"
-    "                    (default) or at its own sample positions\n"
+    "  --shadow-footprint adaptive|statistics|samples  AGAA shadow taps along the aggregate's depth\n"
+    "                    variance (statistics), at its own sample positions (samples), or along the\n"
+    "                    variance and, where those taps disagree, at every one of its samples\n"
+    "                    (adaptive, the default)\n"
     "  --shadow-map-size N  texels per side of each shadow map, 64..4096 (default 1024)\n"
     "  --shadow-casters scene|none  none: the scene's lights cast no shadows (a scene without shadows)\n"
     "  --out PREFIX      writes PREFIX.exr (linear HDR) and PREFIX.png (tone-mapped sRGB)\n"
@@ -248,11 +250,13 @@ Options parse(int argc, char** argv) {
             r.settings.effects.shadowTaps = parseUint(a, value(), 1, 8);
         else if (a == "--shadow-footprint") {
             std::string v = value();
-            if (v != "statistics" && v != "samples")
-                throw BadArgument("--shadow-footprint '" + v + "' is not one of: statistics, samples");
-            r.settings.effects.shadowFootprint = v == "samples"
-                                                     ? agaa::EffectSettings::ShadowFootprint::Samples
-                                                     : agaa::EffectSettings::ShadowFootprint::Statistics;
+            if (v != "adaptive" && v != "statistics" && v != "samples")
+                throw BadArgument("--shadow-footprint '" + v +
+                                  "' is not one of: adaptive, statistics, samples");
+            r.settings.effects.shadowFootprint =
+                v == "samples"      ? agaa::EffectSettings::ShadowFootprint::Samples
+                : v == "statistics" ? agaa::EffectSettings::ShadowFootprint::Statistics
+                                    : agaa::EffectSettings::ShadowFootprint::Adaptive;
         } else if (a == "--shadow-map-size")
             r.settings.effects.shadowMapSize = parseUint(a, value(), 64, 4096);
         else if (a == "--shadow-casters") {

@@ -111,7 +111,10 @@ uint sampleAggregate(uint s, uint pixelIndex) {
 
 #if AGAA_SHADOWS
 // Specialisation id 6 (agaa/common/effects.h ShadowFootprint): 0 the statistical footprint
-// (common/shadow.glsl shadowVisibilityAggregate), 1 taps at the aggregate's own sample positions.
+// (common/shadow.glsl shadowVisibilityAggregate), 1 taps at the aggregate's own sample positions,
+// 2 adaptive: the statistical taps, refined at every sample where they disagree (issue 14, goal
+// P8: the taps' count, not their placement, left one-surface pixels at twice per-sample shading's
+// error, and a shadow edge is where the count matters; elsewhere 4 taps agree and are exact).
 layout(constant_id = 6) const uint kShadowFootprint = 0u;
 
 // The paper's "more precise" footprint (section 3.5.3): min(taps, k) of the aggregate's k samples,
@@ -134,6 +137,24 @@ float shadowVisibilityAggregateSamples(uint light, ivec2 pixel, uint pixelIndex,
         ++rank;
     }
     return sum / float(max(j, 1u));
+}
+
+// The penumbra refinement of the adaptive footprint: every one of the aggregate's k samples,
+// tapped at its own position, which is the visibility per-sample shading gives those samples.
+float shadowVisibilityAggregateEverySample(uint light, ivec2 pixel, uint pixelIndex, uint a, vec3 N) {
+    int layer = shadowLayer(light);
+    if (layer < 0) return 1.0;
+    uint count = 0u;
+    float sum = 0.0;
+    for (uint s = 0u; s < kSamples; ++s) {
+        float d = texelFetch(visibilityDepth, ivec3(pixel, s / 4u), int(s % 4u)).r;
+        if (isSky(d) || sampleAggregate(s, pixelIndex) != a) continue;
+        vec3 Ps = viewPositionFromDepth(vec2(pixel) + frame.samplePositions[s].xy, d, frame.extent, frame.depthParams,
+                                        frame.projParams);
+        sum += shadowTap(layer, shadowReceiver(layer, Ps, N));
+        ++count;
+    }
+    return count == 0u ? 1.0 : sum / float(count);
 }
 #endif
 
@@ -229,8 +250,21 @@ void shadeAggregate(SurfaceInputs surface, vec3 T, vec3 B, vec2 alphas, float sp
     for (uint i = nextTileShadowedLight(0u); i < kMaxLights; i = nextTileShadowedLight(i + 1u)) {
         vec3 L, irradiance;
         if (!lightIncidence(lights[i], P, L, irradiance)) continue;
-        irradiance *= kShadowFootprint == 1u ? shadowVisibilityAggregateSamples(i, pixel, pixelIndex, a, k, surface.normal)
-                                             : shadowVisibilityAggregate(i, P, surface.normal, sigma, pixelSize, screenSpread);
+        float visibility;
+        if (kShadowFootprint == 1u)
+            visibility = shadowVisibilityAggregateSamples(i, pixel, pixelIndex, a, k, surface.normal);
+        else if (kShadowFootprint == 0u)
+            visibility = shadowVisibilityAggregate(i, P, surface.normal, sigma, pixelSize, screenSpread);
+        else {
+            // Adaptive: where the footprint's corners disagree a shadow edge crosses the aggregate
+            // and its own samples decide (up to n taps, paid by the few aggregates on a penumbra);
+            // where they agree, that is the answer.
+            visibility = shadowVisibilityAggregateCorners(i, P, surface.normal, sigma, pixelSize, screenSpread);
+            float rooks = shadowVisibilityAggregate(i, P, surface.normal, sigma, pixelSize, screenSpread);
+            if (visibility != rooks || (visibility > 0.0 && visibility < 1.0))
+                visibility = shadowVisibilityAggregateEverySample(i, pixel, pixelIndex, a, surface.normal);
+        }
+        irradiance *= visibility;
         addLight(surface, T, B, alphas, spread, V, L, irradiance, sggx, radiance, specular, specularSquares);
     }
 #endif
