@@ -79,7 +79,9 @@ constexpr KnownGap kDisplayGaps[] = {
 // The energy bound at c = 2, AGAA's default: spikes breaks it against the 8-sample reference, whose
 // mean is not converged there (a few mirror sparkles carry it: 0.118 at 64x64 n = 8, 0.200 at
 // n = 32, 0.22 to 0.30 at 128x128; AGAA's stays 0.21 to 0.25); hard-light-inside sits on it (AGAA
-// +18.1 %, no-AA +18.0 %: a light inside the geometry puts the mean in a few samples).
+// +18.1 %, no-AA +18.0 %: a light on the sphere's vertex puts the image's mean in the few samples
+// of one pixel, where AGAA and no-AA give the same radiance; +15.6 % against the n = 32
+// reference, -2.9 % at 128x128 and +1.5 % at 256x256, AGAA_QUALITY_SIZE).
 constexpr KnownGap kEnergyGaps[] = {{"spikes", 2, "+78 % mean radiance"},
                                     {"hard-light-inside", 2, "+18.1 % against no-AA's +18.0 %"}};
 
