@@ -133,9 +133,11 @@ double toksvigLengthOf(double alpha, double smax) {
 // vector (DESIGN 4.4), the glTF BRDF at its mean position P (view space), the diffuse through the
 // normals' spread: |N| over the Toksvig length of the samples' mean material alpha.
 // lengthScale: |N| scaled by it (the reference's sensitivity to the float rounding of |N|).
+// diffuseIrradiance (when given): the irradiance through the normals' spread, sum of E times the
+// filtered clamped cosine, which c = 1 resolves its off-layer samples with.
 dvec3 shadeToksvig(const dvec3& mean, double materialAlpha, const dvec3& base, double metallic,
                    const dvec3& P, const std::vector<ViewLight>& lights, double smax,
-                   double lengthScale = 1.0) {
+                   double lengthScale = 1.0, dvec3* diffuseIrradiance = nullptr) {
     const dvec3 V = glm::normalize(-P);
     const double len = glm::length(mean) * lengthScale;
     const dvec3 N = len > 1e-6 ? mean / len : V;
@@ -146,8 +148,9 @@ dvec3 shadeToksvig(const dvec3& mean, double materialAlpha, const dvec3& base, d
     dvec3 radiance(0.0);
     for (const ViewLight& light : lights) {
         dvec3 L, E;
-        if (incidence(light, P, L, E))
-            radiance += brdfTimesCosine(N, V, L, alpha, base, metallic, spread) * E;
+        if (!incidence(light, P, L, E)) continue;
+        radiance += brdfTimesCosine(N, V, L, alpha, base, metallic, spread) * E;
+        if (diffuseIrradiance) *diffuseIrradiance += E * agaa::test::filteredCosine(glm::dot(N, L), spread);
     }
     return radiance;
 }
@@ -199,7 +202,8 @@ void symmetricEigen(double A[3][3], double Q[3][3]) {
 // lobe taken out, m = (lambda_n - a^2) / (1 - a^2) (S = (1 - a^2) E[N N^T] + a^2 I at the samples'
 // mean material alpha a), read as a vMF lobe's E[P2] = (3m - 1) / 2 = r^3.
 dvec3 shadeSggx(const double S[6], double materialAlpha, const dvec3& base, double metallic, const dvec3& P,
-                const std::vector<ViewLight>& lights, double eigenError = 0.0) {
+                const std::vector<ViewLight>& lights, double eigenError = 0.0,
+                dvec3* diffuseIrradiance = nullptr) {
     double A[3][3] = {{S[0], S[3], S[4]}, {S[3], S[1], S[5]}, {S[4], S[5], S[2]}}, Q[3][3];
     symmetricEigen(A, Q);
     const dvec3 V = glm::normalize(-P);
@@ -222,6 +226,7 @@ dvec3 shadeSggx(const double S[6], double materialAlpha, const dvec3& base, doub
         dvec3 L, E;
         if (!incidence(light, P, L, E)) continue;
         const double NoL = glm::dot(N, L);
+        if (diffuseIrradiance) *diffuseIrradiance += E * agaa::test::filteredCosine(NoL, spread);
         const dvec3 f0 = glm::mix(dvec3(0.04), base, metallic);
         if (NoL <= 0.0) {
             const double VoH = std::clamp(glm::dot(V, glm::normalize(V + L)), 0.0, 1.0);
@@ -300,6 +305,7 @@ TEST(AgaaLightingReference, AggregateShadingMatchesADoublePrecisionCpuShading) {
             dvec3 positionSum[4] = {};
             double alphaSum[4] = {};
             uint32_t count[4] = {}, skySamples = 0, offLayer = 0;
+            dvec3 offLayerDiffuse(0.0);
             for (uint32_t s = 0; s < k.n; ++s) {
                 const float* rec = &e[(size_t(p) * k.n + s) * kRecordFloats];
                 if (rec[12] != 1.0f) {
@@ -307,8 +313,9 @@ TEST(AgaaLightingReference, AggregateShadingMatchesADoublePrecisionCpuShading) {
                     continue;
                 }
                 const uint32_t a = uint32_t(rec[11]);
-                if (k.c == 1 && a == 1) { // off the aggregate's layer: its coverage only
+                if (k.c == 1 && a == 1) { // off the aggregate's layer: its coverage and diffuse colour
                     ++offLayer;
+                    offLayerDiffuse += dvec3(rec[4], rec[5], rec[6]) * (1.0 - double(rec[7]));
                     continue;
                 }
                 ASSERT_LT(a, k.c);
@@ -325,12 +332,12 @@ TEST(AgaaLightingReference, AggregateShadingMatchesADoublePrecisionCpuShading) {
                 const double metallic = rec[9];
                 const dvec3 P = positionSum[a] / double(count[a]);
                 const double materialAlpha = alphaSum[a] / double(count[a]);
-                const double covered = double(count[a] + (a == 0 ? offLayer : 0));
+                const double covered = double(count[a]);
                 const double weight = double(r.view.exposure) * covered / k.n;
-                dvec3 radiance;
+                dvec3 radiance, irradiance(0.0);
                 if (sggx) {
                     const double S[6] = {rec[0], rec[1], rec[2], rec[3], rec[4], rec[5]};
-                    radiance = shadeSggx(S, materialAlpha, base, metallic, P, lights);
+                    radiance = shadeSggx(S, materialAlpha, base, metallic, P, lights, 0.0, &irradiance);
                     // fp32 Jacobi sweeps: eigenvalues within a few ulps of the trace (>= 1 - quantisation).
                     for (double eps : {-4.0 * 0x1p-24, 4.0 * 0x1p-24})
                         allowance = glm::max(
@@ -339,9 +346,16 @@ TEST(AgaaLightingReference, AggregateShadingMatchesADoublePrecisionCpuShading) {
                                 weight);
                 } else {
                     radiance = shadeToksvig(dvec3(rec[0], rec[1], rec[2]), materialAlpha, base, metallic, P,
-                                            lights, smax);
+                                            lights, smax, 1.0, &irradiance);
                 }
                 hdr += glm::min(radiance * double(r.view.exposure), dvec3(6.0e4)) * (covered / k.n);
+                // c = 1: the off-layer samples, Lambert surfaces of their own mean diffuse colour
+                // under the aggregate's filtered irradiance, no specular (lighting.glsl offLayerRadiance).
+                if (a == 0 && offLayer > 0)
+                    hdr += glm::min(offLayerDiffuse / double(offLayer) / kPi * irradiance *
+                                        double(r.view.exposure),
+                                    dvec3(6.0e4)) *
+                           (double(offLayer) / k.n);
             }
             offLayers += offLayer;
             for (int ch = 0; ch < 3; ++ch) {

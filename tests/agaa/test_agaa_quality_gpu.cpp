@@ -66,15 +66,18 @@ struct KnownGap {
     const char* scene;
     uint32_t c;
     const char* measured;
+    const char* method = nullptr; // nullptr: both generation paths
 };
 // c = 1 lights the larger of a pixel's two layers (shared/clustering.h splitLayers; before it,
-// hard-mirror 1.49x, hard-many-lights 1.35x, hard-degenerate 1.03x). hard-mirror stays: 60 % of
-// its error is the blue sphere's silhouette, where the chrome wall behind is the smaller layer and
-// its samples' albedo and metallic join the sphere's aggregate, lit with the sphere's grazing
-// normals (a grey ring; the shading is bilinear in albedo and metallic, so their mean is not the
-// shading's). README, "The gap left", has the split and the variants measured (c = 2: 0.58x).
+// hard-mirror 1.49x, hard-many-lights 1.35x, hard-degenerate 1.03x). hard-mirror stays on the
+// accumulate path: 60 % of its error is the blue sphere's silhouette, where the chrome wall behind
+// is the smaller layer and its samples' albedo and metallic join the sphere's aggregate, lit with
+// the sphere's grazing normals (a grey ring; the shading is bilinear in albedo and metallic, so
+// their mean is not the shading's). The samples path resolves those samples with their own
+// diffuse colour under the aggregate's irradiance (lighting.glsl offLayerRadiance): 0.87x; the
+// accumulate path's AG-buffer has no field for that colour (README, "The gap left").
 constexpr KnownGap kDisplayGaps[] = {
-    {"hard-mirror", 1, "1.13x no-AA"},
+    {"hard-mirror", 1, "1.09x no-AA", "agaa-accumulate"},
 };
 // The energy bound at c = 2, AGAA's default: spikes breaks it against the 8-sample reference, whose
 // mean is not converged there (a few mirror sparkles carry it: 0.118 at 64x64 n = 8, 0.200 at
@@ -85,9 +88,10 @@ constexpr KnownGap kDisplayGaps[] = {
 constexpr KnownGap kEnergyGaps[] = {{"spikes", 2, "+78 % mean radiance"},
                                     {"hard-light-inside", 2, "+18.1 % against no-AA's +18.0 %"}};
 
-const KnownGap* knownGap(const KnownGap* begin, const KnownGap* end, const std::string& scene, uint32_t c) {
+const KnownGap* knownGap(const KnownGap* begin, const KnownGap* end, const std::string& scene, uint32_t c,
+                         const std::string& method) {
     for (const KnownGap* g = begin; g != end; ++g)
-        if (scene == g->scene && c == g->c) return g;
+        if (scene == g->scene && c == g->c && (!g->method || method == g->method)) return g;
     return nullptr;
 }
 
@@ -147,9 +151,9 @@ TEST_P(QualityScene, AgaaIsNeverWorseThanNoAaAndKeepsTheEnergy) {
                                                 std::max({0.1 * refMean, std::abs(noaaMean - refMean), 1e-3});
             if (!measuredSetting) continue; // a measurement run: print only
             const KnownGap* displayGap =
-                knownGap(std::begin(kDisplayGaps), std::end(kDisplayGaps), GetParam(), c);
+                knownGap(std::begin(kDisplayGaps), std::end(kDisplayGaps), GetParam(), c, pathName);
             const KnownGap* energyGap =
-                knownGap(std::begin(kEnergyGaps), std::end(kEnergyGaps), GetParam(), c);
+                knownGap(std::begin(kEnergyGaps), std::end(kEnergyGaps), GetParam(), c, pathName);
             if (displayGap) {
                 EXPECT_FALSE(displayOk) << GetParam() << " " << path << " c=" << c
                                         << " is no longer worse than no AA (it measured "

@@ -80,7 +80,7 @@ double toksvigLengthOf(double alpha, double smax, double alphaMin, double alphaM
 }
 
 struct CpuAggregate {
-    uint32_t k = 0, coloured = 0; // samples in its statistics; and in its colour (c = 1: off-layer ones too)
+    uint32_t k = 0, coloured = 0; // samples in its statistics and its colour (off-layer ones in neither)
     double m0[3] = {}, m1[3] = {}, albedo[3] = {}, metallic = 0.0;
     bool metal = false, dielectric = false;
 };
@@ -118,8 +118,9 @@ TEST(AgaaSamplesGpu, AggregationMatchesAnIndependentCpuAggregation) {
                 const float* rec = &e[(size_t(p) * k.n + s) * kRecordFloats];
                 if (rec[12] != 1.0f) continue; // sky
                 const uint32_t id = uint32_t(rec[11]);
-                // c = 1: id 1 is a sample off the aggregate's layer; only its albedo and metallic
-                // join aggregate 0 (and divide by every coloured sample).
+                // c = 1: id 1 is a sample off the aggregate's layer; it gives aggregate 0 nothing
+                // (the resolve lights it with its own diffuse colour, lighting.glsl offLayerRadiance;
+                // the lighting reference test checks that).
                 const bool off = k.c == 1 && id == 1;
                 const uint32_t a = off ? 0 : id;
                 ASSERT_LT(a, k.c) << k.scene << ": aggregate id out of range";
@@ -127,11 +128,11 @@ TEST(AgaaSamplesGpu, AggregationMatchesAnIndependentCpuAggregation) {
                 const double alpha = double(rec[3]) * rec[3];
                 CpuAggregate& g = agg[a];
                 offLayer += off ? 1 : 0;
+                if (off) continue;
                 g.coloured += 1;
                 for (int i = 0; i < 3; ++i)
                     g.albedo[i] += rec[4 + i];
                 g.metallic += rec[7];
-                if (off) continue;
                 if (g.k == 0) ++present;
                 g.k += 1;
                 if (sggx) {

@@ -227,10 +227,11 @@ void addLight(SurfaceInputs surface, vec3 T, vec3 B, vec2 alphas, float spread, 
 void shadeAggregate(SurfaceInputs surface, vec3 T, vec3 B, vec2 alphas, float spread, float environmentRoughness,
                     vec3 P, float sigma,
                     vec3 screenSpread, ivec2 pixel, uint pixelIndex, uint a, uint k, bool sggx, out vec3 radiance,
-                    out vec3 specular, out vec3 specularVariance) {
+                    out vec3 specular, out vec3 specularVariance, out vec3 diffuseIrradiance) {
     radiance = vec3(0.0);
     specular = vec3(0.0);
     specularVariance = vec3(0.0);
+    diffuseIrradiance = vec3(0.0);
     vec3 V = normalize(-P); // |P| >= znear > 0
 #if AGAA_SHADOWS
     // The aggregate's footprint: depth standard deviation along the ray, one pixel across.
@@ -240,10 +241,14 @@ void shadeAggregate(SurfaceInputs surface, vec3 T, vec3 B, vec2 alphas, float sp
     // The environment through the aggregate's filtered distribution: its mean normal and its
     // filtered roughness without the punctual BRDF's floor (environmentRoughness). Smooth at the
     // scale of an aggregate: no spike, so it stays out of the two-point resolve's variance.
-    if (kEnvironment != 0u) radiance += environmentLightingFiltered(surface, V, environmentRoughness, spread);
+    if (kEnvironment != 0u) {
+        radiance += environmentLightingFiltered(surface, V, environmentRoughness, spread);
+        diffuseIrradiance += environmentIrradiance(environmentDirection(surface.normal), vec2(spread, spread * spread * spread));
+    }
     for (uint i = nextTileLight(0u); i < kMaxLights; i = nextTileLight(i + 1u)) {
         vec3 L, irradiance;
         if (!lightIncidence(lights[i], P, L, irradiance)) continue;
+        diffuseIrradiance += irradiance * filteredClampedCosine(dot(surface.normal, L), spread);
         addLight(surface, T, B, alphas, spread, V, L, irradiance, sggx, radiance, specular, specularSquares);
     }
 #if AGAA_SHADOWS
@@ -265,6 +270,7 @@ void shadeAggregate(SurfaceInputs surface, vec3 T, vec3 B, vec2 alphas, float sp
                 visibility = shadowVisibilityAggregateEverySample(i, pixel, pixelIndex, a, surface.normal);
         }
         irradiance *= visibility;
+        diffuseIrradiance += irradiance * filteredClampedCosine(dot(surface.normal, L), spread);
         addLight(surface, T, B, alphas, spread, V, L, irradiance, sggx, radiance, specular, specularSquares);
     }
 #endif
@@ -275,6 +281,17 @@ void shadeAggregate(SurfaceInputs surface, vec3 T, vec3 B, vec2 alphas, float sp
     float ratio = sggx ? sggxSpikeRatio(alphas.x, alphas.y, surface.roughness * surface.roughness) : axis * axis;
     specularVariance = (ratio - 1.0) * specularSquares;
 }
+
+// c = 1 (issue 14): the samples off the aggregate's layer (shared/clustering.h kOffLayer) are a
+// surface the one shading event does not describe: behind or in front of the layer, with normals
+// the aggregate does not carry. The samples path resolves them as Lambert surfaces of their own
+// diffuse colour (albedo (1 - metallic)) under the aggregate's filtered diffuse irradiance, and
+// without specular, which only their own normals could aim: a chrome wall behind a sphere's rim
+// stays dark (its mirror reflects nothing the rim's normals see), leaves and rods keep their
+// colour. Before, their albedo and metallic joined the aggregate's means, which the BRDF is not
+// linear in (diffuse albedo (1 - m), F0 mix(0.04, albedo, m)): a grey ring round hard-mirror's
+// plastic sphere, lit with its grazing normals, 1.13x no-AA's error at c = 1.
+vec3 offLayerRadiance(vec3 diffuseColour, vec3 irradiance) { return diffuseColour / kPi * irradiance; }
 
 void main() {
     ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
@@ -308,6 +325,7 @@ void main() {
     vec3 moment0[kMaxAggregates] = vec3[](vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0));
     vec3 moment1[kMaxAggregates] = vec3[](vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0));
     vec4 albedoMetalSum[kMaxAggregates] = vec4[](vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0));
+    vec3 offLayerDiffuseSum = vec3(0.0); // c = 1: the off-layer samples' diffuse colours (offLayerRadiance)
     float materialAlphaSum[kMaxAggregates] = float[](0.0, 0.0, 0.0, 0.0); // the two-point resolve's
     // The material alpha below the BRDF's floor too: the environment's level of a near-mirror.
     float materialAlphaRawSum[kMaxAggregates] = float[](0.0, 0.0, 0.0, 0.0);
@@ -329,7 +347,9 @@ void main() {
             tmin = min(tmin, -P.z);
             tmax = max(tmax, -P.z);
             // c = 1, off the aggregate's layer (shared/clustering.h kOffLayer): the sample's
-            // coverage and colour join aggregate 0, its position and normal distribution do not.
+            // coverage joins aggregate 0, its position and normal distribution do not; its colour
+            // joins aggregate 0's on the accumulate path, and on the samples path resolves it
+            // (offLayerRadiance).
             bool offLayer = a >= c;
             if (offLayer) {
                 offLayerSamples += 1u;
@@ -340,7 +360,10 @@ void main() {
             vec4 albedoMetal = texelFetch(gAlbedoMetal, at, int(s % 4u));
             float roughness = texelFetch(gEmissiveRoughness, at, int(s % 4u)).a;
             float alpha = roughness * roughness;
-            albedoMetalSum[a] += albedoMetal;
+            if (offLayer)
+                offLayerDiffuseSum += albedoMetal.rgb * (1.0 - albedoMetal.a);
+            else
+                albedoMetalSum[a] += albedoMetal;
 #if AGAA_EXPORT
             exportRecord(pixelIndex * n + s, vec4(N, roughness), albedoMetal, vec4(P, offLayer ? float(c) : float(a)),
                          vec4(1.0, 0.0, 0.0, 0.0));
@@ -421,9 +444,8 @@ void main() {
         materialAlpha = materialAlphaSum[a] / fs;
         mean0 = moment0[a] / fs;
         mean1 = moment1[a] / fs;
-        float coloured = fs + (a == 0u ? float(offLayerSamples) : 0.0); // c = 1: the layer's and the others'
-        albedo = albedoMetalSum[a].rgb / coloured;
-        metallic = albedoMetalSum[a].a / coloured;
+        albedo = albedoMetalSum[a].rgb / fs; // the layer's samples only (c = 1: offLayerRadiance)
+        metallic = albedoMetalSum[a].a / fs;
 #else
         // c = 1: the colour fields hold the layer's samples and those off it (generation.glsl
         // colourIncrement); whole-fragment routing adds every sample in full.
@@ -527,6 +549,8 @@ void main() {
     // Two-point resolve: the specular part of the radiance and its variance over the aggregate's samples.
     vec3 specular[kMaxAggregates] = vec3[](vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0));
     vec3 specularVariance[kMaxAggregates] = vec3[](vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0));
+    // Aggregate 0's filtered diffuse irradiance: what c = 1 resolves its off-layer samples with.
+    vec3 diffuseIrradiance0 = vec3(0.0);
     if (kSkipShading != 0u) {
     } else if (kCompactShading != 0u) {
         // The tile's further aggregates, packed: lane j shades entry j of each round. The slots
@@ -564,12 +588,12 @@ void main() {
                 surface.metallic = sAlbedo[self].a;
                 vec4 T = sTangent[self];
                 vec4 B = sBitangent[self];
-                vec3 lit, spec, variance;
+                vec3 lit, spec, variance, unusedIrradiance;
                 shadeAggregate(surface, T.xyz, B.xyz, vec2(T.w, B.w), sSpread[self].x, sSpread[self].y,
                                sPosition[self].xyz,
                                sPosition[self].w, sScreenSpread[self],
                                ownerPixel, uint(ownerPixel.y * size.x + ownerPixel.x), (owner >> 8u) & 3u,
-                               owner >> 10u, sggx, lit, spec, variance);
+                               owner >> 10u, sggx, lit, spec, variance, unusedIrradiance);
                 sPosition[self].xyz = lit;
                 sNormal[self].xyz = spec;
                 sAlbedo[self].xyz = variance;
@@ -594,13 +618,17 @@ void main() {
         if (inside && present[0])
             shadeAggregate(surfaces[0], tangents[0], bitangents[0], alphas[0], spreads[0], environmentRoughness[0],
                            positions[0], depthSigma[0], screenSpreads[0],
-                           pixel, pixelIndex, 0u, samplesIn[0], sggx, radiance[0], specular[0], specularVariance[0]);
+                           pixel, pixelIndex, 0u, samplesIn[0], sggx, radiance[0], specular[0], specularVariance[0],
+                           diffuseIrradiance0);
     } else if (inside) {
         for (uint a = 0u; a < c; ++a) {
             if (!present[a]) continue;
+            vec3 irradiance;
             shadeAggregate(surfaces[a], tangents[a], bitangents[a], alphas[a], spreads[a], environmentRoughness[a],
                            positions[a], depthSigma[a], screenSpreads[a],
-                           pixel, pixelIndex, a, samplesIn[a], sggx, radiance[a], specular[a], specularVariance[a]);
+                           pixel, pixelIndex, a, samplesIn[a], sggx, radiance[a], specular[a], specularVariance[a],
+                           irradiance);
+            if (a == 0u) diffuseIrradiance0 = irradiance;
         }
     }
     if (!inside) return;
@@ -618,10 +646,22 @@ void main() {
             hdr += weight * sky;
             continue;
         }
-        uint a = min(sampleAggregate(s, pixelIndex), c - 1u); // c = 1: off-layer samples take aggregate 0's
+        uint id = sampleAggregate(s, pixelIndex);
+        uint a = min(id, c - 1u); // c = 1: off-layer samples take aggregate 0's (accumulate path)
         // Fragment routing: a sample whose aggregate received no fragment takes aggregate 0's.
         if (kRouteFragment != 0u && !present[a]) a = 0u;
         vec3 L = present[a] ? radiance[a] : vec3(0.0);
+#if AGAA_GBUFFER
+        if (id >= c) { // c = 1, off the layer: its own diffuse colour, no specular (offLayerRadiance)
+            vec4 albedoMetal = texelFetch(gAlbedoMetal, ivec3(pixel, s / 4u), int(s % 4u));
+            L = offLayerRadiance(albedoMetal.rgb * (1.0 - albedoMetal.a), diffuseIrradiance0) +
+                texelFetch(emissiveSamples, ivec3(pixel, s / 4u), int(s % 4u)).rgb;
+            L = min(L * exposure, vec3(kMaxRadiance));
+            display += weight * toneMapAces(L);
+            hdr += weight * L;
+            continue;
+        }
+#endif
         L += texelFetch(emissiveSamples, ivec3(pixel, s / 4u), int(s % 4u)).rgb;
         L = min(L * exposure, vec3(kMaxRadiance));
         display += weight * (present[a] ? toneMapAggregate(L, specular[a] * exposure,
@@ -638,7 +678,17 @@ void main() {
     for (uint a = 0u; a < c; ++a) {
         // c = 1: the aggregate stands for every covered sample, the off-layer ones too (with fragment
         // routing the fragments whose first sample is off the layer fed it nothing).
+#if AGAA_GBUFFER
+        uint stands = samplesIn[a];
+        if (a == 0u && offLayerSamples > 0u) {
+            vec3 L = min(offLayerRadiance(offLayerDiffuseSum / float(offLayerSamples), diffuseIrradiance0) * exposure,
+                         vec3(kMaxRadiance));
+            display += weight * float(offLayerSamples) * toneMapAces(L);
+            hdr += weight * float(offLayerSamples) * L;
+        }
+#else
         uint stands = kRouteFragment != 0u && c > 1u ? accumulated[a] : samplesIn[a] + (a == 0u ? offLayerSamples : 0u);
+#endif
         if (stands == 0u) continue;
         vec3 L = present[a] ? min(radiance[a] * exposure, vec3(kMaxRadiance)) : vec3(0.0);
         float w = weight * float(stands);
