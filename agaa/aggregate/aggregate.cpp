@@ -4,6 +4,7 @@
 
 #include "engine/vk/descriptors.h"
 #include "shaders/agaa/sample_readback_comp.h"
+#include "shared/ag_buffer.h"
 #include "shared/clustering.h"
 
 #include <algorithm>
@@ -191,7 +192,7 @@ FrameTargets AggregateAA::addPasses(rg::Graph& graph, const FrameInputs& in) {
         struct Clear {
             rg::Buffer agBuffer;
         };
-        const VkDeviceSize agBytes = VkDeviceSize(pixels) * c * shared::kAggregateWords * 4;
+        const VkDeviceSize agBytes = VkDeviceSize(shared::agBufferWords(pixels, c)) * 4;
         const Clear& clear = graph.addPass<Clear>(
             "agaa.clear", rg::PassKind::Transfer,
             [&](rg::Builder& b, Clear& d) {

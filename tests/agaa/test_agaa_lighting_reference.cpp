@@ -23,6 +23,7 @@
 #include "engine/frame/readback.h"
 #include "filtered_diffuse_reference.h"
 #include "gpu_test_support.h"
+#include "shared/ag_buffer.h"
 #include "tools/harness/frame_renderer.h"
 #include "tools/scenes/adversarial_scenes.h"
 
@@ -433,8 +434,8 @@ TEST(AgaaLightingReference, AccumulatePathShadingMatchesADoublePrecisionCpuShadi
         vk::Buffer counts =
             eng::frame::createReadbackBuffer(*device, size, size, VK_FORMAT_R8_UINT, "test.counts");
         vk::Buffer ag =
-            vk::createBuffer(*device, VkDeviceSize(pixels) * k.c * 6 * 4, VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-                             vk::MemoryUse::Readback, "test.ag");
+            vk::createBuffer(*device, VkDeviceSize(shared::agBufferWords(pixels, k.c)) * 4,
+                             VK_BUFFER_USAGE_TRANSFER_DST_BIT, vk::MemoryUse::Readback, "test.ag");
         shared::FrameConstants frame{};
         shared::AgaaConstants constants{};
         r.extraPasses = [&](eng::rg::Graph& graph, agaa::Technique& tech, const agaa::FrameInputs& in) {
@@ -477,7 +478,7 @@ TEST(AgaaLightingReference, AccumulatePathShadingMatchesADoublePrecisionCpuShadi
                 const double ndcX = (p % size + double(frame.samplePositions[s].x)) * (2.0 / size) - 1.0;
                 const double ndcY = (p / size + double(frame.samplePositions[s].y)) * (2.0 / size) - 1.0;
                 const uint32_t a = decodeId(meta + size_t(p) * words, s, k.c);
-                if (k.c == 1 && a == 1) { // off the aggregate's layer: its coverage only
+                if (k.c == 1 && a == 1) { // off the aggregate's layer: its coverage and diffuse colour
                     ++offLayer;
                     continue;
                 }
@@ -497,20 +498,29 @@ TEST(AgaaLightingReference, AccumulatePathShadingMatchesADoublePrecisionCpuShadi
                 auto mean = [&](const Field& f) {
                     return float(fieldValue(w, f)) / (float(received) * float(f.scale));
                 };
-                // c = 1: albedo and metallic hold the off-layer samples' colour too.
-                auto colour = [&](const Field& f) {
-                    return float(fieldValue(w, f)) / (float(received + offLayer) * float(f.scale));
-                };
+                auto colour = mean; // the aggregate's own samples (c = 1: not the off-layer ones)
                 const dvec3 toksvig(2.0 * mean(lay.normal[0]) - 1.0, 2.0 * mean(lay.normal[1]) - 1.0,
                                     2.0 * mean(lay.normal[2]) - 1.0);
                 const dvec3 base(colour(lay.albedo[0]), colour(lay.albedo[1]), colour(lay.albedo[2]));
                 const dvec3 P = positionSum[a] / double(count[a]);
                 const double metallic = colour(lay.metallic);
                 const double materialAlpha = mean(lay.alpha);
-                const dvec3 radiance = shadeToksvig(toksvig, materialAlpha, base, metallic, P, lights, smax);
-                const double covered = double(count[a] + (a == 0 ? offLayer : 0));
+                dvec3 irradiance(0.0);
+                const dvec3 radiance =
+                    shadeToksvig(toksvig, materialAlpha, base, metallic, P, lights, smax, 1.0, &irradiance);
+                const double covered = double(count[a]);
                 const double weight = double(r.view.exposure) * covered / k.n;
                 hdr += glm::min(radiance * double(r.view.exposure), dvec3(6.0e4)) * (covered / k.n);
+                if (a == 0 && offLayer > 0) {
+                    // c = 1: the off-layer samples' mean diffuse colour from the pixel's off-layer
+                    // words (shared/ag_buffer.h), Lambert under the aggregate's filtered irradiance.
+                    const uint32_t* o = agWords + shared::offLayerWord(pixels, p);
+                    const double scale =
+                        double(shared::unitScale(shared::kOffLayerFieldBits, k.n)) * offLayer;
+                    const dvec3 diffuse((o[0] & 0xFFFFu) / scale, (o[0] >> 16u) / scale, o[1] / scale);
+                    hdr += glm::min(diffuse / kPi * irradiance * double(r.view.exposure), dvec3(6.0e4)) *
+                           (double(offLayer) / k.n);
+                }
                 // |N| within 2 fp32 ulps either way: what the shader's float length() may return.
                 for (double scale : {1.0 - 0x1p-23, 1.0 + 0x1p-23})
                     sensitivity =

@@ -16,6 +16,7 @@
 #include "algorithm1_reference.h"
 #include "engine/frame/readback.h"
 #include "gpu_test_support.h"
+#include "shared/ag_buffer.h"
 #include "tools/harness/frame_renderer.h"
 #include "tools/scenes/adversarial_scenes.h"
 
@@ -279,7 +280,7 @@ TEST(AgaaAccumulationReferenceGpu, AgBufferMatchesDoubleSumsOfTheMaterialInputs)
                              vk::MemoryUse::Readback, "test.records");
         static_cast<uint32_t*>(records.mapped)[1] = capacity;
         vk::Buffer ag =
-            vk::createBuffer(*device, VkDeviceSize(size) * size * k.c * 6 * 4,
+            vk::createBuffer(*device, VkDeviceSize(shared::agBufferWords(size * size, k.c)) * 4,
                              VK_BUFFER_USAGE_TRANSFER_DST_BIT, vk::MemoryUse::Readback, "test.ag");
         vk::Buffer metadata =
             vk::createBuffer(*device, std::max<VkDeviceSize>(4, VkDeviceSize(size) * size * words * 4),
@@ -309,6 +310,9 @@ TEST(AgaaAccumulationReferenceGpu, AgBufferMatchesDoubleSumsOfTheMaterialInputs)
         const size_t slots = size_t(size) * size * k.c;
         std::vector<uint32_t> count(slots, 0);
         std::vector<double> sum(slots * fields, 0.0), bound(slots * fields, 0.0);
+        // c = 1: per pixel, the off-layer samples' diffuse colour albedo (1 - metallic), r g b.
+        std::vector<double> offSum(size_t(size) * size * 3, 0.0), offBound(size_t(size) * size * 3, 0.0);
+        const double offScale = double(shared::unitScale(shared::kOffLayerFieldBits, k.n));
         for (uint32_t i = 0; i < fragments; ++i) {
             const uint32_t* f = rec + 2 + size_t(i) * kRecordWords;
             float in[8];
@@ -319,15 +323,23 @@ TEST(AgaaAccumulationReferenceGpu, AgBufferMatchesDoubleSumsOfTheMaterialInputs)
             for (uint32_t hw = 0; hw < 4; ++hw) {
                 if (!(mask & (1u << hw))) continue;
                 const uint32_t id = decodeId(meta + size_t(pixel) * words, layer * 4 + hw, k.c);
-                // c = 1: a sample off the aggregate's layer (id 1) adds its albedo and metallic only.
-                const bool offLayer = k.c == 1 && id == 1;
-                const uint32_t a = offLayer ? 0 : id;
+                // c = 1: a sample off the aggregate's layer (id 1) adds its diffuse colour to the
+                // pixel's off-layer words and nothing to the aggregate.
+                if (k.c == 1 && id == 1) {
+                    for (uint32_t ch = 0; ch < 3; ++ch) {
+                        const double diffuse = albedo[ch] * (1.0 - double(in[7]));
+                        const double ulp = std::ldexp(1.0, std::ilogb(offScale) - 23);
+                        offSum[size_t(pixel) * 3 + ch] += diffuse;
+                        offBound[size_t(pixel) * 3 + ch] +=
+                            (0.5 + 0.5 * ulp) / offScale + 8.0 * 0x1p-24 * diffuse;
+                    }
+                    continue;
+                }
+                const uint32_t a = id;
                 ASSERT_LT(a, k.c);
                 const size_t slot = size_t(pixel) * k.c + a;
-                count[slot] += offLayer ? 0 : 1;
+                count[slot] += 1;
                 for (uint32_t j = 0; j < fields; ++j) {
-                    const bool colourField = j >= lay.normalFields && j < lay.normalFields + 4;
-                    if (offLayer && !colourField) continue;
                     const Field& fd = j < lay.normalFields        ? lay.normal[j]
                                       : j < lay.normalFields + 3  ? lay.albedo[j - lay.normalFields]
                                       : j == lay.normalFields + 3 ? lay.metallic
@@ -369,6 +381,29 @@ TEST(AgaaAccumulationReferenceGpu, AgBufferMatchesDoubleSumsOfTheMaterialInputs)
                                           << ", double " << sum[slot * fields + j] << " (bound " << b << ")";
                     }
                 }
+        uint32_t offCompared = 0, offNonZero = 0;
+        if (k.c == 1)
+            for (uint32_t y = origin; y < origin + window; ++y)
+                for (uint32_t x = origin; x < origin + window; ++x) {
+                    const uint32_t p = y * size + x;
+                    const uint32_t* w = gpu + shared::offLayerWord(size * size, p);
+                    const uint32_t fieldsGpu[3] = {w[0] & 0xFFFFu, w[0] >> 16u, w[1]};
+                    for (uint32_t ch = 0; ch < 3; ++ch) {
+                        const double err = std::abs(fieldsGpu[ch] / offScale - offSum[size_t(p) * 3 + ch]);
+                        ++offCompared;
+                        offNonZero += fieldsGpu[ch] != 0u;
+                        outside += err > offBound[size_t(p) * 3 + ch];
+                        if (err > offBound[size_t(p) * 3 + ch] && outside <= 5)
+                            ADD_FAILURE() << k.scene << " pixel (" << x << ", " << y << ") off-layer diffuse "
+                                          << ch << ": GPU " << fieldsGpu[ch] / offScale << ", double "
+                                          << offSum[size_t(p) * 3 + ch];
+                    }
+                }
+        if (k.c == 1) {
+            EXPECT_GT(offNonZero, 0u) << k.scene << ": c = 1 with no off-layer colour in the window";
+            std::printf("[ measured ] %-8s c=1: %u off-layer diffuse fields compared, %u non-zero\n", k.scene,
+                        offCompared, offNonZero);
+        }
         std::printf("[ measured ] %-8s n=%2u c=%u %-7s: %u fragments, %u fields compared, worst error per "
                     "sample %.3f "
                     "units of the field's scale (%.3f of the bound), %u outside, %u count mismatches\n",

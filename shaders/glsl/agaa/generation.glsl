@@ -93,12 +93,11 @@ layout(location = 0) out vec4 outEmissive;
 #endif
 
 // Adds k samples of the fragment's values to aggregate slot `slot` (pixel * c + aggregate).
-// k samples on the aggregate, and kColour more that add only their colour (c = 1: off its layer).
-void addToAggregate(uint slot, uint k, uint kColour, uint ndf, AgQuantized f) {
+void addToAggregate(uint slot, uint k, uint ndf, AgQuantized f) {
     uint base = slot * kAggregateWords;
     uint inc[kAggregateWords];
     for (uint w = 0u; w < kAggregateWords; ++w)
-        inc[w] = aggregateIncrement(ndf, w, k, f) + colourIncrement(w, kColour, f);
+        inc[w] = aggregateIncrement(ndf, w, k, f);
 #if AGAA_SUBGROUP
     // Lanes with the same slot sum their increments; the lowest of them adds the sum. Each pass
     // of the loop retires the lanes of the first remaining lane's slot.
@@ -212,7 +211,7 @@ void main() {
         uint id = words > 0u ? unpackMetadata(metadata[pixelIndex * words + (s * b) / 32u], s, c) : 0u;
         // c = 1: whole fragments cannot follow the per-sample layer flag; everything to aggregate 0
         // (the lighting pass still takes the aggregate's position from its layer's samples).
-        addToAggregate(pixelIndex * c + min(id, c - 1u), uint(bitCount(mask)), 0u, ndf, f);
+        addToAggregate(pixelIndex * c + min(id, c - 1u), uint(bitCount(mask)), ndf, f);
         return;
     }
     for (uint hw = 0u; hw < 4u; ++hw) {
@@ -221,18 +220,24 @@ void main() {
         perAggregate[id] += (mask >> hw) & 1u;
     }
     // c = 1: the samples off the aggregate's layer (shared/clustering.h kOffLayer) count in
-    // perAggregate[1] and add their colour to aggregate 0.
-    uint colour = c == 1u ? perAggregate[1] : 0u;
+    // perAggregate[1] and add their diffuse colour to the pixel's off-layer words (shared/
+    // ag_buffer.h kOffLayerWords), apart from the aggregate's albedo and metallic.
+    if (c == 1u && perAggregate[1] > 0u) {
+        uint k = perAggregate[1], scale = unitScale(kOffLayerFieldBits, n);
+        vec3 diffuse = m.albedo * (1.0 - m.metallic);
+        uint at = offLayerWord(uint(frame.extent.x) * uint(frame.extent.y), pixelIndex);
+        atomicAdd(agBuffer[at], k * quantizeUnit(diffuse.r, scale) + ((k * quantizeUnit(diffuse.g, scale)) << 16u));
+        atomicAdd(agBuffer[at + 1u], k * quantizeUnit(diffuse.b, scale));
+    }
     // Only the aggregates the fragment touches: a loop over their bits ends for a SIMD group
     // once every lane's are done (most fragments touch one), where a loop over all c with a
     // per-aggregate test would issue every aggregate's atomics masked (lavapipe runs both sides
     // of a branch, and a masked atomic still walks its lanes).
     uint touched = 0u;
     for (uint a = 0u; a < c; ++a) touched |= perAggregate[a] > 0u ? 1u << a : 0u;
-    touched |= colour > 0u ? 1u : 0u;
     while (touched != 0u) {
         uint a = uint(findLSB(touched));
         touched &= touched - 1u;
-        addToAggregate(pixelIndex * c + a, perAggregate[a], a == 0u ? colour : 0u, ndf, f);
+        addToAggregate(pixelIndex * c + a, perAggregate[a], ndf, f);
     }
 }

@@ -397,6 +397,20 @@ void main() {
             screenSquares[a] += vec3(sp.x * sp.x, sp.x * sp.y, sp.y * sp.y);
         }
     }
+    // c = 1: the off-layer samples' mean diffuse colour (offLayerRadiance). Whole-fragment routing
+    // fed their fragments to the aggregate: there they take its radiance instead.
+    const bool offLayerOwnColour = AGAA_GBUFFER != 0 || kRouteFragment == 0u;
+    vec3 offLayerDiffuse = vec3(0.0);
+    if (offLayerOwnColour && offLayerSamples > 0u) {
+#if AGAA_GBUFFER
+        offLayerDiffuse = offLayerDiffuseSum / float(offLayerSamples);
+#else
+        uint at = offLayerWord(uint(size.x * size.y), pixelIndex), scale = unitScale(kOffLayerFieldBits, n);
+        uint rg = agBuffer[at], blue = agBuffer[at + 1u];
+        offLayerDiffuse = vec3(meanUnit(rg & 0xFFFFu, offLayerSamples, scale), meanUnit(rg >> 16u, offLayerSamples, scale),
+                               meanUnit(blue, offLayerSamples, scale));
+#endif
+    }
     SurfaceInputs surfaces[kMaxAggregates];
     vec3 positions[kMaxAggregates];
     float depthSigma[kMaxAggregates] = float[](0.0, 0.0, 0.0, 0.0);
@@ -447,9 +461,9 @@ void main() {
         albedo = albedoMetalSum[a].rgb / fs; // the layer's samples only (c = 1: offLayerRadiance)
         metallic = albedoMetalSum[a].a / fs;
 #else
-        // c = 1: the colour fields hold the layer's samples and those off it (generation.glsl
-        // colourIncrement); whole-fragment routing adds every sample in full.
-        uint kColour = k + (kRouteFragment == 0u && a == 0u ? offLayerSamples : 0u);
+        // The colour fields hold the aggregate's own samples (c = 1: the off-layer ones add their
+        // diffuse colour to the off-layer words; whole-fragment routing adds every sample in full).
+        uint kColour = k;
         if (sggx) {
             uint scale = unitScale(kSggxFieldBits, n);
             mean0 = vec3(meanUnit(w[0] & 0xFFFFu, k, scale), meanUnit(w[0] >> 16u, k, scale),
@@ -651,17 +665,20 @@ void main() {
         // Fragment routing: a sample whose aggregate received no fragment takes aggregate 0's.
         if (kRouteFragment != 0u && !present[a]) a = 0u;
         vec3 L = present[a] ? radiance[a] : vec3(0.0);
+        if (id >= c && offLayerOwnColour) { // c = 1, off the layer: its diffuse colour, no specular
 #if AGAA_GBUFFER
-        if (id >= c) { // c = 1, off the layer: its own diffuse colour, no specular (offLayerRadiance)
             vec4 albedoMetal = texelFetch(gAlbedoMetal, ivec3(pixel, s / 4u), int(s % 4u));
-            L = offLayerRadiance(albedoMetal.rgb * (1.0 - albedoMetal.a), diffuseIrradiance0) +
+            vec3 diffuse = albedoMetal.rgb * (1.0 - albedoMetal.a); // the sample's own
+#else
+            vec3 diffuse = offLayerDiffuse; // the pixel's off-layer mean (the AG-buffer keeps no more)
+#endif
+            L = offLayerRadiance(diffuse, diffuseIrradiance0) +
                 texelFetch(emissiveSamples, ivec3(pixel, s / 4u), int(s % 4u)).rgb;
             L = min(L * exposure, vec3(kMaxRadiance));
             display += weight * toneMapAces(L);
             hdr += weight * L;
             continue;
         }
-#endif
         L += texelFetch(emissiveSamples, ivec3(pixel, s / 4u), int(s % 4u)).rgb;
         L = min(L * exposure, vec3(kMaxRadiance));
         display += weight * (present[a] ? toneMapAggregate(L, specular[a] * exposure,
@@ -678,17 +695,13 @@ void main() {
     for (uint a = 0u; a < c; ++a) {
         // c = 1: the aggregate stands for every covered sample, the off-layer ones too (with fragment
         // routing the fragments whose first sample is off the layer fed it nothing).
-#if AGAA_GBUFFER
-        uint stands = samplesIn[a];
-        if (a == 0u && offLayerSamples > 0u) {
-            vec3 L = min(offLayerRadiance(offLayerDiffuseSum / float(offLayerSamples), diffuseIrradiance0) * exposure,
-                         vec3(kMaxRadiance));
+        uint stands = kRouteFragment != 0u && c > 1u ? accumulated[a]
+                                                     : samplesIn[a] + (a == 0u && !offLayerOwnColour ? offLayerSamples : 0u);
+        if (a == 0u && offLayerOwnColour && offLayerSamples > 0u) {
+            vec3 L = min(offLayerRadiance(offLayerDiffuse, diffuseIrradiance0) * exposure, vec3(kMaxRadiance));
             display += weight * float(offLayerSamples) * toneMapAces(L);
             hdr += weight * float(offLayerSamples) * L;
         }
-#else
-        uint stands = kRouteFragment != 0u && c > 1u ? accumulated[a] : samplesIn[a] + (a == 0u ? offLayerSamples : 0u);
-#endif
         if (stands == 0u) continue;
         vec3 L = present[a] ? min(radiance[a] * exposure, vec3(kMaxRadiance)) : vec3(0.0);
         float w = weight * float(stands);

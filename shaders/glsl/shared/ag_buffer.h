@@ -87,14 +87,22 @@ inline_fn uint aggregateIncrement(uint ndf, uint w, uint k, AgQuantized f) {
     return k * f.q[8] + ((k * f.q[9]) << 16u);
 }
 
-// What k samples off the aggregate's layer add (c = 1, shared/clustering.h kOffLayer): their
-// colour only, albedo and metallic, which lie in words 3 and 4 below the count in both layouts;
-// no normal distribution, material alpha or count. The lighting pass divides these fields by the
-// samples on the layer plus those off it.
-inline_fn uint colourIncrement(uint w, uint k, AgQuantized f) {
-    if (w == 3u) return k * f.q[6] + ((k * f.q[7]) << 16u);
-    if (w == 4u) return k * f.q[8] + ((k * f.q[9]) << 16u);
-    return 0u;
+// c = 1, samples routed per sample (issue 14): after the pixels' aggregate records, kOffLayerWords
+// per pixel sum the off-layer samples' diffuse colour, albedo (1 - metallic): r | g << 16, then b,
+// 16-bit fields of scale unitScale(16, n) (n samples at 1 never carry). The lighting pass resolves
+// those samples with it (agaa/lighting.glsl offLayerRadiance); it never mixes into the aggregate's
+// albedo and metallic, which the BRDF is bilinear in.
+SHARED_CONST kOffLayerWords = 2u;
+SHARED_CONST kOffLayerFieldBits = 16u;
+
+// Words of the AG-buffer for `pixels` pixels at c aggregates.
+inline_fn uint agBufferWords(uint pixels, uint c) {
+    return pixels * (c * kAggregateWords + (c == 1u ? kOffLayerWords : 0u));
+}
+
+// First off-layer word of pixel p (c = 1).
+inline_fn uint offLayerWord(uint pixels, uint p) {
+    return pixels * kAggregateWords + p * kOffLayerWords;
 }
 
 // Samples accumulated into an aggregate, from its first and last words.
