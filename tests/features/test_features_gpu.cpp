@@ -28,13 +28,16 @@ std::string prefixOf(const std::string& method) {
     return method;
 } // pass names are "<method>.<pass>"
 
-agaa::RenderResult render(agaa::FrameRenderer& renderer, const std::string& method, uint32_t n, uint32_t size,
-                          bool forceAll = false) {
+agaa::RenderResult
+render(agaa::FrameRenderer& renderer, const std::string& method, uint32_t n, uint32_t size,
+       bool forceAll = false,
+       agaa::EffectSettings::ShadowFootprint footprint = agaa::EffectSettings{}.shadowFootprint) {
     agaa::RenderRequest r;
     r.method = method;
     r.settings.samples = n;
     r.settings.aggregates = 2;
     r.settings.effects.forceAll = forceAll;
+    r.settings.effects.shadowFootprint = footprint;
     r.view.width = r.view.height = size;
     return renderer.render(r);
 }
@@ -199,15 +202,8 @@ TEST(FeaturesGpu, AdaptiveShadowFootprintTapsEverySampleWhereAShadowEdgeCrossesT
         agaa::RenderResult byFootprint[2];
         int i = 0;
         for (auto footprint : {agaa::EffectSettings::ShadowFootprint::Statistics,
-                               agaa::EffectSettings::ShadowFootprint::Adaptive}) {
-            agaa::RenderRequest r;
-            r.method = method;
-            r.settings.samples = n;
-            r.settings.aggregates = 2;
-            r.settings.effects.shadowFootprint = footprint;
-            r.view.width = r.view.height = size;
-            byFootprint[i++] = renderer.render(r);
-        }
+                               agaa::EffectSettings::ShadowFootprint::Adaptive})
+            byFootprint[i++] = render(renderer, method, n, size, false, footprint);
         const eng::io::ImageF &statistics = byFootprint[0].hdr, &adaptive = byFootprint[1].hdr;
         size_t changed = 0;
         double statisticsError = 0.0, adaptiveError = 0.0;
