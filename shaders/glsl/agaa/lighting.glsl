@@ -315,7 +315,7 @@ void main() {
     vec2 screenSum[kMaxAggregates] = vec2[](vec2(0.0), vec2(0.0), vec2(0.0), vec2(0.0));
     vec3 screenSquares[kMaxAggregates] = vec3[](vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0));
     uint skySamples = 0u;
-    uint offLayerSamples = 0u; // c = 1: samples with aggregate 0's radiance and colour, not its geometry
+    uint offLayerSamples = 0u; // c = 1: covered samples off aggregate 0's layer (offLayerRadiance)
     float tmin = 1e30, tmax = -1e30;
     const bool sggx = kNdf == kNdfSggx;
 #if AGAA_GBUFFER
