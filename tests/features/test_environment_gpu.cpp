@@ -60,14 +60,21 @@ glm::dvec3 bruteForceRadiance(const eng::scene::Environment& env, const glm::dve
     return sum;
 }
 
+// The wall's material in the environment tests' cases.
+struct WallMaterial {
+    const char* name;
+    glm::vec3 albedo;
+    float metallic, roughness;
+};
+
 // A wall facing the camera (world = view) of one material, lit by the procedural sky alone, the
 // sun's glow in front of it (what the wall reflects).
-Scene skyWall(glm::vec3 albedo, float metallic, float roughness) {
+Scene skyWall(const WallMaterial& m) {
     Scene s = agaa::test::emptyScene("environment wall");
     s.lights.clear();
-    s.materials[0].baseColorFactor = glm::vec4(albedo, 1.0f);
-    s.materials[0].metallicFactor = metallic;
-    s.materials[0].roughnessFactor = roughness;
+    s.materials[0].baseColorFactor = glm::vec4(m.albedo, 1.0f);
+    s.materials[0].metallicFactor = m.metallic;
+    s.materials[0].roughnessFactor = m.roughness;
     agaa::test::addRectangle(s, {-10, -10}, {10, 10}, -2.0f, 0);
     eng::scene::SkySettings sky;
     sky.sunDirection = glm::normalize(glm::vec3(0.3f, 0.6f, 0.74f));
@@ -85,24 +92,23 @@ Scene skyWall(glm::vec3 albedo, float metallic, float roughness) {
 TEST(EnvironmentGpu, EveryMethodMatchesABruteForceIntegralOfTheBrdfOverTheMap) {
     auto device = agaa::test::makeValidatedDevice();
     struct Case {
-        const char* name;
-        glm::vec3 albedo;
-        float metallic, roughness;
+        WallMaterial m;
         bool constantSky;
         double tolerance;
     } cases[] = {// A constant sky: the split sum is exact there but for the table's and the filter's own
                  // error (measured: <= 0.9 %).
-                 {"metal, flat sky", {0.9f, 0.7f, 0.5f}, 1.0f, 0.6f, true, 0.02},
-                 {"glossy metal, flat", {0.9f, 0.7f, 0.5f}, 1.0f, 0.3f, true, 0.02},
+                 {{"metal, flat sky", {0.9f, 0.7f, 0.5f}, 1.0f, 0.6f}, true, 0.02},
+                 {{"glossy metal, flat", {0.9f, 0.7f, 0.5f}, 1.0f, 0.3f}, true, 0.02},
                  // The procedural sky: the split sum's separation of the lobe from the light it
                  // gathers (n = v = r, and the horizon's step inside a rough lobe) is the error
                  // (measured: 2.7 % dielectric, 9.9 % rough metal; the flat cases show the rest
                  // is not the implementation).
-                 {"rough dielectric", {0.6f, 0.5f, 0.4f}, 0.0f, 0.7f, false, 0.04},
-                 {"rough metal", {0.9f, 0.7f, 0.5f}, 1.0f, 0.6f, false, 0.12}};
-    for (const Case& c : cases) {
-        Scene s = skyWall(c.albedo, c.metallic, c.roughness);
-        if (c.constantSky)
+                 {{"rough dielectric", {0.6f, 0.5f, 0.4f}, 0.0f, 0.7f}, false, 0.04},
+                 {{"rough metal", {0.9f, 0.7f, 0.5f}, 1.0f, 0.6f}, false, 0.12}};
+    for (const Case& wall : cases) {
+        const WallMaterial& c = wall.m;
+        Scene s = skyWall(c);
+        if (wall.constantSky)
             std::fill(s.environment.radiance.begin(), s.environment.radiance.end(), glm::vec3(5000.0f));
         agaa::FrameRenderer renderer(*device, s);
         for (const char* method :
@@ -130,7 +136,7 @@ TEST(EnvironmentGpu, EveryMethodMatchesABruteForceIntegralOfTheBrdfOverTheMap) {
                 }
             std::printf("[ measured ] %-16s %-16s worst relative error vs the brute-force integral %.4f\n",
                         c.name, method, worst);
-            EXPECT_LT(worst, c.tolerance) << c.name << ", " << method;
+            EXPECT_LT(worst, wall.tolerance) << c.name << ", " << method;
         }
     }
     agaa::test::expectNoValidationErrors(*device);
@@ -144,16 +150,12 @@ TEST(EnvironmentGpu, EveryMethodMatchesABruteForceIntegralOfTheBrdfOverTheMap) {
 // environmentAggregateRoughness). Compared pixel by pixel, relative to the reference.
 TEST(EnvironmentGpu, MirrorsReflectTheEnvironmentUnblurred) {
     auto device = agaa::test::makeValidatedDevice();
-    struct Case {
-        const char* name;
-        glm::vec3 albedo;
-        float metallic, roughness;
-    } cases[] = {{"chrome, roughness 0", {0.95f, 0.95f, 0.95f}, 1.0f, 0.0f},
-                 {"dielectric, roughness 0", {0.1f, 0.3f, 0.8f}, 0.0f, 0.0f},
-                 {"gold, roughness 0.02", {1.0f, 0.8f, 0.4f}, 1.0f, 0.02f},
-                 {"gold, roughness 0.05", {1.0f, 0.8f, 0.4f}, 1.0f, 0.05f}};
-    for (const Case& c : cases) {
-        const Scene s = skyWall(c.albedo, c.metallic, c.roughness);
+    const WallMaterial cases[] = {{"chrome, roughness 0", {0.95f, 0.95f, 0.95f}, 1.0f, 0.0f},
+                                  {"dielectric, roughness 0", {0.1f, 0.3f, 0.8f}, 0.0f, 0.0f},
+                                  {"gold, roughness 0.02", {1.0f, 0.8f, 0.4f}, 1.0f, 0.02f},
+                                  {"gold, roughness 0.05", {1.0f, 0.8f, 0.4f}, 1.0f, 0.05f}};
+    for (const WallMaterial& c : cases) {
+        const Scene s = skyWall(c);
         agaa::FrameRenderer renderer(*device, s);
         auto render = [&](const char* method) {
             agaa::RenderRequest r;
