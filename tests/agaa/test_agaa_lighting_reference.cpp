@@ -134,11 +134,9 @@ double toksvigLengthOf(double alpha, double smax) {
 // vector (DESIGN 4.4), the glTF BRDF at its mean position P (view space), the diffuse through the
 // normals' spread: |N| over the Toksvig length of the samples' mean material alpha.
 // lengthScale: |N| scaled by it (the reference's sensitivity to the float rounding of |N|).
-// diffuseIrradiance (when given): the irradiance through the normals' spread, sum of E times the
-// filtered clamped cosine, which c = 1 resolves its off-layer samples with.
 dvec3 shadeToksvig(const dvec3& mean, double materialAlpha, const dvec3& base, double metallic,
                    const dvec3& P, const std::vector<ViewLight>& lights, double smax,
-                   double lengthScale = 1.0, dvec3* diffuseIrradiance = nullptr) {
+                   double lengthScale = 1.0) {
     const dvec3 V = glm::normalize(-P);
     const double len = glm::length(mean) * lengthScale;
     const dvec3 N = len > 1e-6 ? mean / len : V;
@@ -151,9 +149,25 @@ dvec3 shadeToksvig(const dvec3& mean, double materialAlpha, const dvec3& base, d
         dvec3 L, E;
         if (!incidence(light, P, L, E)) continue;
         radiance += brdfTimesCosine(N, V, L, alpha, base, metallic, spread) * E;
-        if (diffuseIrradiance) *diffuseIrradiance += E * agaa::test::filteredCosine(glm::dot(N, L), spread);
     }
     return radiance;
+}
+
+// c = 1's off-layer samples (lighting.glsl offLayerRadiance): Lambert surfaces of their mean
+// diffuse colour under every light's irradiance at their mean view position, through their normals'
+// lobe: the mean of their unit normals, its direction and its length r (opposing normals that
+// cancel, r -> 0: the view axis +z, which the spread makes all but irrelevant).
+dvec3 offLayerRadiance(const dvec3& diffuse, const dvec3& meanNormal, const dvec3& P,
+                       const std::vector<ViewLight>& lights) {
+    const double r = glm::length(meanNormal);
+    const dvec3 N = r > 1e-6 ? meanNormal / r : dvec3(0.0, 0.0, 1.0);
+    dvec3 irradiance(0.0);
+    for (const ViewLight& light : lights) {
+        dvec3 L, E;
+        if (!incidence(light, P, L, E)) continue;
+        irradiance += E * agaa::test::filteredCosine(glm::dot(N, L), std::min(r, 1.0));
+    }
+    return diffuse / kPi * irradiance;
 }
 
 // Eigen-decomposition of a symmetric 3x3 matrix by cyclic Jacobi rotations in double, run to
@@ -203,8 +217,7 @@ void symmetricEigen(double A[3][3], double Q[3][3]) {
 // lobe taken out, m = (lambda_n - a^2) / (1 - a^2) (S = (1 - a^2) E[N N^T] + a^2 I at the samples'
 // mean material alpha a), read as a vMF lobe's E[P2] = (3m - 1) / 2 = r^3.
 dvec3 shadeSggx(const double S[6], double materialAlpha, const dvec3& base, double metallic, const dvec3& P,
-                const std::vector<ViewLight>& lights, double eigenError = 0.0,
-                dvec3* diffuseIrradiance = nullptr) {
+                const std::vector<ViewLight>& lights, double eigenError = 0.0) {
     double A[3][3] = {{S[0], S[3], S[4]}, {S[3], S[1], S[5]}, {S[4], S[5], S[2]}}, Q[3][3];
     symmetricEigen(A, Q);
     const dvec3 V = glm::normalize(-P);
@@ -227,7 +240,6 @@ dvec3 shadeSggx(const double S[6], double materialAlpha, const dvec3& base, doub
         dvec3 L, E;
         if (!incidence(light, P, L, E)) continue;
         const double NoL = glm::dot(N, L);
-        if (diffuseIrradiance) *diffuseIrradiance += E * agaa::test::filteredCosine(NoL, spread);
         const dvec3 f0 = glm::mix(dvec3(0.04), base, metallic);
         if (NoL <= 0.0) {
             const double VoH = std::clamp(glm::dot(V, glm::normalize(V + L)), 0.0, 1.0);
@@ -306,7 +318,7 @@ TEST(AgaaLightingReference, AggregateShadingMatchesADoublePrecisionCpuShading) {
             dvec3 positionSum[4] = {};
             double alphaSum[4] = {};
             uint32_t count[4] = {}, skySamples = 0, offLayer = 0;
-            dvec3 offLayerDiffuse(0.0);
+            dvec3 offLayerDiffuse(0.0), offLayerNormal(0.0), offLayerPosition(0.0);
             for (uint32_t s = 0; s < k.n; ++s) {
                 const float* rec = &e[(size_t(p) * k.n + s) * kRecordFloats];
                 if (rec[12] != 1.0f) {
@@ -314,9 +326,11 @@ TEST(AgaaLightingReference, AggregateShadingMatchesADoublePrecisionCpuShading) {
                     continue;
                 }
                 const uint32_t a = uint32_t(rec[11]);
-                if (k.c == 1 && a == 1) { // off the aggregate's layer: its coverage and diffuse colour
+                if (k.c == 1 && a == 1) { // off the aggregate's layer: resolved apart (offLayerRadiance)
                     ++offLayer;
                     offLayerDiffuse += dvec3(rec[4], rec[5], rec[6]) * (1.0 - double(rec[7]));
+                    offLayerNormal += dvec3(rec[0], rec[1], rec[2]);
+                    offLayerPosition += dvec3(rec[8], rec[9], rec[10]);
                     continue;
                 }
                 ASSERT_LT(a, k.c);
@@ -335,10 +349,10 @@ TEST(AgaaLightingReference, AggregateShadingMatchesADoublePrecisionCpuShading) {
                 const double materialAlpha = alphaSum[a] / double(count[a]);
                 const double covered = double(count[a]);
                 const double weight = double(r.view.exposure) * covered / k.n;
-                dvec3 radiance, irradiance(0.0);
+                dvec3 radiance;
                 if (sggx) {
                     const double S[6] = {rec[0], rec[1], rec[2], rec[3], rec[4], rec[5]};
-                    radiance = shadeSggx(S, materialAlpha, base, metallic, P, lights, 0.0, &irradiance);
+                    radiance = shadeSggx(S, materialAlpha, base, metallic, P, lights, 0.0);
                     // fp32 Jacobi sweeps: eigenvalues within a few ulps of the trace (>= 1 - quantisation).
                     for (double eps : {-4.0 * 0x1p-24, 4.0 * 0x1p-24})
                         allowance = glm::max(
@@ -347,16 +361,18 @@ TEST(AgaaLightingReference, AggregateShadingMatchesADoublePrecisionCpuShading) {
                                 weight);
                 } else {
                     radiance = shadeToksvig(dvec3(rec[0], rec[1], rec[2]), materialAlpha, base, metallic, P,
-                                            lights, smax, 1.0, &irradiance);
+                                            lights, smax);
                 }
                 hdr += glm::min(radiance * double(r.view.exposure), dvec3(6.0e4)) * (covered / k.n);
-                // c = 1: the off-layer samples, Lambert surfaces of their own mean diffuse colour
-                // under the aggregate's filtered irradiance, no specular (lighting.glsl offLayerRadiance).
-                if (a == 0 && offLayer > 0)
-                    hdr += glm::min(offLayerDiffuse / double(offLayer) / kPi * irradiance *
+                // c = 1: the off-layer samples, with their own means (offLayerRadiance).
+                if (a == 0 && offLayer > 0) {
+                    const double f = 1.0 / double(offLayer);
+                    hdr += glm::min(offLayerRadiance(offLayerDiffuse * f, offLayerNormal * f,
+                                                     offLayerPosition * f, lights) *
                                         double(r.view.exposure),
                                     dvec3(6.0e4)) *
                            (double(offLayer) / k.n);
+                }
             }
             offLayers += offLayer;
             for (int ch = 0; ch < 3; ++ch) {
@@ -465,7 +481,7 @@ TEST(AgaaLightingReference, AccumulatePathShadingMatchesADoublePrecisionCpuShadi
         double rawWorst = 0.0;
         uint32_t worstPixel = 0, lit = 0, unreached = 0;
         for (uint32_t p = 0; p < pixels; ++p) {
-            dvec3 positionSum[4] = {};
+            dvec3 positionSum[4] = {}, offLayerPosition(0.0);
             uint32_t count[4] = {}, skySamples = 0, offLayer = 0;
             for (uint32_t s = 0; s < k.n; ++s) {
                 float d;
@@ -478,12 +494,14 @@ TEST(AgaaLightingReference, AccumulatePathShadingMatchesADoublePrecisionCpuShadi
                 const double ndcX = (p % size + double(frame.samplePositions[s].x)) * (2.0 / size) - 1.0;
                 const double ndcY = (p / size + double(frame.samplePositions[s].y)) * (2.0 / size) - 1.0;
                 const uint32_t a = decodeId(meta + size_t(p) * words, s, k.c);
-                if (k.c == 1 && a == 1) { // off the aggregate's layer: its coverage and diffuse colour
+                const dvec3 P(ndcX * t / frame.projParams.x, ndcY * t / frame.projParams.y, -t);
+                if (k.c == 1 && a == 1) { // off the aggregate's layer: resolved apart (offLayerRadiance)
                     ++offLayer;
+                    offLayerPosition += P;
                     continue;
                 }
                 ASSERT_LT(a, k.c);
-                positionSum[a] += dvec3(ndcX * t / frame.projParams.x, ndcY * t / frame.projParams.y, -t);
+                positionSum[a] += P;
                 ++count[a];
             }
             dvec3 hdr = sky * (double(skySamples) / k.n), sensitivity(0.0);
@@ -505,20 +523,27 @@ TEST(AgaaLightingReference, AccumulatePathShadingMatchesADoublePrecisionCpuShadi
                 const dvec3 P = positionSum[a] / double(count[a]);
                 const double metallic = colour(lay.metallic);
                 const double materialAlpha = mean(lay.alpha);
-                dvec3 irradiance(0.0);
-                const dvec3 radiance =
-                    shadeToksvig(toksvig, materialAlpha, base, metallic, P, lights, smax, 1.0, &irradiance);
+                const dvec3 radiance = shadeToksvig(toksvig, materialAlpha, base, metallic, P, lights, smax);
                 const double covered = double(count[a]);
                 const double weight = double(r.view.exposure) * covered / k.n;
                 hdr += glm::min(radiance * double(r.view.exposure), dvec3(6.0e4)) * (covered / k.n);
                 if (a == 0 && offLayer > 0) {
-                    // c = 1: the off-layer samples' mean diffuse colour from the pixel's off-layer
-                    // words (shared/ag_buffer.h), Lambert under the aggregate's filtered irradiance.
+                    // c = 1: the off-layer samples' mean diffuse colour and normal from the pixel's
+                    // off-layer words (shared/ag_buffer.h: r | g, b | nx, ny | nz; the normal
+                    // offset-binary), their mean position from the depths (offLayerRadiance).
                     const uint32_t* o = agWords + shared::offLayerWord(pixels, p);
                     const double scale =
                         double(shared::unitScale(shared::kOffLayerFieldBits, k.n)) * offLayer;
-                    const dvec3 diffuse((o[0] & 0xFFFFu) / scale, (o[0] >> 16u) / scale, o[1] / scale);
-                    hdr += glm::min(diffuse / kPi * irradiance * double(r.view.exposure), dvec3(6.0e4)) *
+                    auto field = [&](uint32_t word, uint32_t shift) {
+                        return ((o[word] >> shift) & 0xFFFFu) / scale;
+                    };
+                    const dvec3 diffuse(field(0, 0), field(0, 16), field(1, 0));
+                    const dvec3 normal(2.0 * field(1, 16) - 1.0, 2.0 * field(2, 0) - 1.0,
+                                       2.0 * field(2, 16) - 1.0);
+                    hdr += glm::min(offLayerRadiance(diffuse, normal, offLayerPosition / double(offLayer),
+                                                     lights) *
+                                        double(r.view.exposure),
+                                    dvec3(6.0e4)) *
                            (double(offLayer) / k.n);
                 }
                 // |N| within 2 fp32 ulps either way: what the shader's float length() may return.

@@ -310,8 +310,11 @@ TEST(AgaaAccumulationReferenceGpu, AgBufferMatchesDoubleSumsOfTheMaterialInputs)
         const size_t slots = size_t(size) * size * k.c;
         std::vector<uint32_t> count(slots, 0);
         std::vector<double> sum(slots * fields, 0.0), bound(slots * fields, 0.0);
-        // c = 1: per pixel, the off-layer samples' diffuse colour albedo (1 - metallic), r g b.
-        std::vector<double> offSum(size_t(size) * size * 3, 0.0), offBound(size_t(size) * size * 3, 0.0);
+        // c = 1: per pixel, the off-layer samples' diffuse colour albedo (1 - metallic), r g b, and
+        // their normals offset to (N + 1) / 2, x y z (shared/ag_buffer.h kOffLayerWords).
+        constexpr uint32_t kOffFields = 6;
+        std::vector<double> offSum(size_t(size) * size * kOffFields, 0.0),
+            offBound(size_t(size) * size * kOffFields, 0.0);
         const double offScale = double(shared::unitScale(shared::kOffLayerFieldBits, k.n));
         for (uint32_t i = 0; i < fragments; ++i) {
             const uint32_t* f = rec + 2 + size_t(i) * kRecordWords;
@@ -323,15 +326,15 @@ TEST(AgaaAccumulationReferenceGpu, AgBufferMatchesDoubleSumsOfTheMaterialInputs)
             for (uint32_t hw = 0; hw < 4; ++hw) {
                 if (!(mask & (1u << hw))) continue;
                 const uint32_t id = decodeId(meta + size_t(pixel) * words, layer * 4 + hw, k.c);
-                // c = 1: a sample off the aggregate's layer (id 1) adds its diffuse colour to the
-                // pixel's off-layer words and nothing to the aggregate.
+                // c = 1: a sample off the aggregate's layer (id 1) adds its diffuse colour and its
+                // normal to the pixel's off-layer words and nothing to the aggregate.
                 if (k.c == 1 && id == 1) {
-                    for (uint32_t ch = 0; ch < 3; ++ch) {
-                        const double diffuse = albedo[ch] * (1.0 - double(in[7]));
+                    for (uint32_t j = 0; j < kOffFields; ++j) {
+                        const double v = j < 3 ? albedo[j] * (1.0 - double(in[7])) : 0.5 * N[j - 3] + 0.5;
                         const double ulp = std::ldexp(1.0, std::ilogb(offScale) - 23);
-                        offSum[size_t(pixel) * 3 + ch] += diffuse;
-                        offBound[size_t(pixel) * 3 + ch] +=
-                            (0.5 + 0.5 * ulp) / offScale + 8.0 * 0x1p-24 * diffuse;
+                        offSum[size_t(pixel) * kOffFields + j] += v;
+                        offBound[size_t(pixel) * kOffFields + j] +=
+                            (0.5 + 0.5 * ulp) / offScale + 8.0 * 0x1p-24 * v;
                     }
                     continue;
                 }
@@ -387,22 +390,25 @@ TEST(AgaaAccumulationReferenceGpu, AgBufferMatchesDoubleSumsOfTheMaterialInputs)
                 for (uint32_t x = origin; x < origin + window; ++x) {
                     const uint32_t p = y * size + x;
                     const uint32_t* w = gpu + shared::offLayerWord(size * size, p);
-                    const uint32_t fieldsGpu[3] = {w[0] & 0xFFFFu, w[0] >> 16u, w[1]};
-                    for (uint32_t ch = 0; ch < 3; ++ch) {
-                        const double err = std::abs(fieldsGpu[ch] / offScale - offSum[size_t(p) * 3 + ch]);
+                    const uint32_t fieldsGpu[kOffFields] = {w[0] & 0xFFFFu, w[0] >> 16u,    w[1] & 0xFFFFu,
+                                                            w[1] >> 16u,    w[2] & 0xFFFFu, w[2] >> 16u};
+                    for (uint32_t j = 0; j < kOffFields; ++j) {
+                        const size_t at = size_t(p) * kOffFields + j;
+                        const double err = std::abs(fieldsGpu[j] / offScale - offSum[at]);
                         ++offCompared;
-                        offNonZero += fieldsGpu[ch] != 0u;
-                        outside += err > offBound[size_t(p) * 3 + ch];
-                        if (err > offBound[size_t(p) * 3 + ch] && outside <= 5)
-                            ADD_FAILURE() << k.scene << " pixel (" << x << ", " << y << ") off-layer diffuse "
-                                          << ch << ": GPU " << fieldsGpu[ch] / offScale << ", double "
-                                          << offSum[size_t(p) * 3 + ch];
+                        offNonZero += fieldsGpu[j] != 0u;
+                        outside += err > offBound[at];
+                        if (err > offBound[at] && outside <= 5)
+                            ADD_FAILURE() << k.scene << " pixel (" << x << ", " << y << ") off-layer field "
+                                          << j << (j < 3 ? " (diffuse)" : " (normal)") << ": GPU "
+                                          << fieldsGpu[j] / offScale << ", double " << offSum[at];
                     }
                 }
         if (k.c == 1) {
-            EXPECT_GT(offNonZero, 0u) << k.scene << ": c = 1 with no off-layer colour in the window";
-            std::printf("[ measured ] %-8s c=1: %u off-layer diffuse fields compared, %u non-zero\n", k.scene,
-                        offCompared, offNonZero);
+            EXPECT_GT(offNonZero, 0u) << k.scene << ": c = 1 with no off-layer sample in the window";
+            std::printf(
+                "[ measured ] %-8s c=1: %u off-layer fields (diffuse, normal) compared, %u non-zero\n",
+                k.scene, offCompared, offNonZero);
         }
         std::printf("[ measured ] %-8s n=%2u c=%u %-7s: %u fragments, %u fields compared, worst error per "
                     "sample %.3f "

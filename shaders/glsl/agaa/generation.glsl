@@ -220,14 +220,15 @@ void main() {
         perAggregate[id] += (mask >> hw) & 1u;
     }
     // c = 1: the samples off the aggregate's layer (shared/clustering.h kOffLayer) count in
-    // perAggregate[1] and add their diffuse colour to the pixel's off-layer words (shared/
-    // ag_buffer.h kOffLayerWords), apart from the aggregate's albedo and metallic.
+    // perAggregate[1] and add their diffuse colour and normal to the pixel's off-layer words
+    // (shared/ag_buffer.h kOffLayerWords), apart from the aggregate's fields.
     if (c == 1u && perAggregate[1] > 0u) {
         uint k = perAggregate[1], scale = unitScale(kOffLayerFieldBits, n);
         vec3 diffuse = m.albedo * (1.0 - m.metallic);
         uint at = offLayerWord(uint(frame.extent.x) * uint(frame.extent.y), pixelIndex);
         atomicAdd(agBuffer[at], k * quantizeUnit(diffuse.r, scale) + ((k * quantizeUnit(diffuse.g, scale)) << 16u));
-        atomicAdd(agBuffer[at + 1u], k * quantizeUnit(diffuse.b, scale));
+        atomicAdd(agBuffer[at + 1u], k * quantizeUnit(diffuse.b, scale) + ((k * quantizeSigned(m.normal.x, scale)) << 16u));
+        atomicAdd(agBuffer[at + 2u], k * quantizeSigned(m.normal.y, scale) + ((k * quantizeSigned(m.normal.z, scale)) << 16u));
     }
     // Only the aggregates the fragment touches: a loop over their bits ends for a SIMD group
     // once every lane's are done (most fragments touch one), where a loop over all c with a

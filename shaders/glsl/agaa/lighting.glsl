@@ -219,19 +219,34 @@ void addLight(SurfaceInputs surface, vec3 T, vec3 B, vec2 alphas, float spread, 
     specularSquares += spec * spec;
 }
 
+// What light i gives c = 1's off-layer samples, unshadowed: its incidence at their mean position (a
+// wall behind leaves is not where the leaves are: the range window and 1/d^2 differ), through
+// their normals' lobe (filteredClampedCosine).
+vec3 offLayerLight(uint i, vec4 offLayerPosition, vec4 offLayerLobe) {
+    vec3 L, irradiance;
+    // kAggregates: a specialisation constant, so c >= 2 (no off-layer samples) compiles this away.
+    if (kAggregates != 1u || offLayerPosition.w == 0.0 ||
+        !lightIncidence(lights[i], offLayerPosition.xyz, L, irradiance))
+        return vec3(0.0);
+    return irradiance * filteredClampedCosine(dot(offLayerLobe.xyz, L), offLayerLobe.w);
+}
+
 // One shading event: the aggregate `a` of `pixel` (k samples), seen at P, lit by every light of
 // the tile. radiance: its linear radiance before exposure, with its specular part and the
 // variance of the specular radiance over the aggregate's samples (the two-point resolve's).
 // screenSpread: the covariance of the aggregate's sub-pixel sample positions (the statistical
 // shadow footprint's width, common/depth.glsl aggregateWidth).
+// offLayerPosition (w = 1 where the pixel has off-layer samples, else 0) and offLayerLobe (their
+// mean normal's direction and length): c = 1's off-layer samples, whose diffuse irradiance comes
+// back in offLayerIrradiance (offLayerRadiance).
 void shadeAggregate(SurfaceInputs surface, vec3 T, vec3 B, vec2 alphas, float spread, float environmentRoughness,
                     vec3 P, float sigma,
-                    vec3 screenSpread, ivec2 pixel, uint pixelIndex, uint a, uint k, bool sggx, out vec3 radiance,
-                    out vec3 specular, out vec3 specularVariance, out vec3 diffuseIrradiance) {
+                    vec3 screenSpread, ivec2 pixel, uint pixelIndex, uint a, uint k, bool sggx, vec4 offLayerPosition,
+                    vec4 offLayerLobe, out vec3 radiance, out vec3 specular, out vec3 specularVariance, out vec3 offLayerIrradiance) {
     radiance = vec3(0.0);
     specular = vec3(0.0);
     specularVariance = vec3(0.0);
-    diffuseIrradiance = vec3(0.0);
+    offLayerIrradiance = vec3(0.0);
     vec3 V = normalize(-P); // |P| >= znear > 0
 #if AGAA_SHADOWS
     // The aggregate's footprint: depth standard deviation along the ray, one pixel across.
@@ -243,16 +258,23 @@ void shadeAggregate(SurfaceInputs surface, vec3 T, vec3 B, vec2 alphas, float sp
     // scale of an aggregate: no spike, so it stays out of the two-point resolve's variance.
     if (kEnvironment != 0u) {
         radiance += environmentLightingFiltered(surface, V, environmentRoughness, spread);
-        diffuseIrradiance += environmentIrradiance(environmentDirection(surface.normal), vec2(spread, spread * spread * spread));
+        float r = offLayerLobe.w; // the lobe's band factors, as filteredClampedCosine's
+        if (kAggregates == 1u && offLayerPosition.w != 0.0)
+            offLayerIrradiance += environmentIrradiance(environmentDirection(offLayerLobe.xyz), vec2(r, r * r * r));
     }
     for (uint i = nextTileLight(0u); i < kMaxLights; i = nextTileLight(i + 1u)) {
+        offLayerIrradiance += offLayerLight(i, offLayerPosition, offLayerLobe);
         vec3 L, irradiance;
         if (!lightIncidence(lights[i], P, L, irradiance)) continue;
-        diffuseIrradiance += irradiance * filteredClampedCosine(dot(surface.normal, L), spread);
         addLight(surface, T, B, alphas, spread, V, L, irradiance, sggx, radiance, specular, specularSquares);
     }
 #if AGAA_SHADOWS
     for (uint i = nextTileShadowedLight(0u); i < kMaxLights; i = nextTileShadowedLight(i + 1u)) {
+        // c = 1: the off-layer samples' own shadow, one tap at their mean position (not the
+        // aggregate's: the wall behind a leaf is not in the leaf's shadow).
+        vec3 offLayer = offLayerLight(i, offLayerPosition, offLayerLobe);
+        if (offLayer != vec3(0.0))
+            offLayerIrradiance += offLayer * shadowVisibilityPoint(i, offLayerPosition.xyz, offLayerLobe.xyz);
         vec3 L, irradiance;
         if (!lightIncidence(lights[i], P, L, irradiance)) continue;
         float visibility;
@@ -270,7 +292,6 @@ void shadeAggregate(SurfaceInputs surface, vec3 T, vec3 B, vec2 alphas, float sp
                 visibility = shadowVisibilityAggregateEverySample(i, pixel, pixelIndex, a, surface.normal);
         }
         irradiance *= visibility;
-        diffuseIrradiance += irradiance * filteredClampedCosine(dot(surface.normal, L), spread);
         addLight(surface, T, B, alphas, spread, V, L, irradiance, sggx, radiance, specular, specularSquares);
     }
 #endif
@@ -284,13 +305,18 @@ void shadeAggregate(SurfaceInputs surface, vec3 T, vec3 B, vec2 alphas, float sp
 
 // c = 1 (issue 14): the samples off the aggregate's layer (shared/clustering.h kOffLayer) are a
 // surface the one shading event does not describe: behind or in front of the layer, with normals
-// the aggregate does not carry. The samples path resolves them as Lambert surfaces of their own
-// diffuse colour (albedo (1 - metallic)) under the aggregate's filtered diffuse irradiance, and
-// without specular, which only their own normals could aim: a chrome wall behind a sphere's rim
-// stays dark (its mirror reflects nothing the rim's normals see), leaves and rods keep their
-// colour. Before, their albedo and metallic joined the aggregate's means, which the BRDF is not
-// linear in (diffuse albedo (1 - m), F0 mix(0.04, albedo, m)): a grey ring round hard-mirror's
-// plastic sphere, lit with its grazing normals, 1.13x no-AA's error at c = 1.
+// the aggregate does not carry. Both paths resolve them as one Lambert surface of their own mean
+// diffuse colour (albedo (1 - metallic); with emission, which resolves per sample, the samples
+// path takes each sample's own) under their own irradiance: the tile's lights at their mean position, through their mean
+// normal's lobe (filteredClampedCosine and the environment's bands), each shadowed light by one tap
+// at that position (shadeAggregate, offLayerLight). No specular: only their own normals could aim
+// it, and a chrome wall behind a sphere's rim stays dark (its mirror reflects nothing the rim's
+// normals see).
+// Before, their albedo and metallic joined the aggregate's means, which the BRDF is not linear in
+// (diffuse albedo (1 - m), F0 mix(0.04, albedo, m)): a grey ring round hard-mirror's plastic
+// sphere, lit with its grazing normals, 1.13x no-AA's error at c = 1. Then they took the aggregate's
+// irradiance, its position, normals and shadow: foliage's wall behind the leaves lost the point
+// lights near it, -13.7 % of the image's mean radiance at 64x64 (-0.4 % now).
 vec3 offLayerRadiance(vec3 diffuseColour, vec3 irradiance) { return diffuseColour / kPi * irradiance; }
 
 void main() {
@@ -316,6 +342,7 @@ void main() {
     vec3 screenSquares[kMaxAggregates] = vec3[](vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0));
     uint skySamples = 0u;
     uint offLayerSamples = 0u; // c = 1: covered samples off aggregate 0's layer (offLayerRadiance)
+    vec3 offLayerPositionSum = vec3(0.0); // and their view positions
     float tmin = 1e30, tmax = -1e30;
     const bool sggx = kNdf == kNdfSggx;
 #if AGAA_GBUFFER
@@ -326,6 +353,7 @@ void main() {
     vec3 moment1[kMaxAggregates] = vec3[](vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0));
     vec4 albedoMetalSum[kMaxAggregates] = vec4[](vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0));
     vec3 offLayerDiffuseSum = vec3(0.0); // c = 1: the off-layer samples' diffuse colours (offLayerRadiance)
+    vec3 offLayerNormalSum = vec3(0.0);  // and their shading normals
     float materialAlphaSum[kMaxAggregates] = float[](0.0, 0.0, 0.0, 0.0); // the two-point resolve's
     // The material alpha below the BRDF's floor too: the environment's level of a near-mirror.
     float materialAlphaRawSum[kMaxAggregates] = float[](0.0, 0.0, 0.0, 0.0);
@@ -353,6 +381,7 @@ void main() {
             bool offLayer = a >= c;
             if (offLayer) {
                 offLayerSamples += 1u;
+                offLayerPositionSum += P;
                 a = 0u;
             }
 #if AGAA_GBUFFER
@@ -360,9 +389,10 @@ void main() {
             vec4 albedoMetal = texelFetch(gAlbedoMetal, at, int(s % 4u));
             float roughness = texelFetch(gEmissiveRoughness, at, int(s % 4u)).a;
             float alpha = roughness * roughness;
-            if (offLayer)
+            if (offLayer) {
                 offLayerDiffuseSum += albedoMetal.rgb * (1.0 - albedoMetal.a);
-            else
+                offLayerNormalSum += N;
+            } else
                 albedoMetalSum[a] += albedoMetal;
 #if AGAA_EXPORT
             exportRecord(pixelIndex * n + s, vec4(N, roughness), albedoMetal, vec4(P, offLayer ? float(c) : float(a)),
@@ -397,18 +427,21 @@ void main() {
             screenSquares[a] += vec3(sp.x * sp.x, sp.x * sp.y, sp.y * sp.y);
         }
     }
-    // c = 1: the off-layer samples' mean diffuse colour (offLayerRadiance). Whole-fragment routing
-    // fed their fragments to the aggregate: there they take its radiance instead.
+    // c = 1: the off-layer samples' mean diffuse colour and normal (offLayerRadiance). Whole-
+    // fragment routing fed their fragments to the aggregate: there they take its radiance instead.
     const bool offLayerOwnColour = AGAA_GBUFFER != 0 || kRouteFragment == 0u;
-    vec3 offLayerDiffuse = vec3(0.0);
+    vec3 offLayerDiffuse = vec3(0.0), offLayerNormal = vec3(0.0);
     if (offLayerOwnColour && offLayerSamples > 0u) {
 #if AGAA_GBUFFER
         offLayerDiffuse = offLayerDiffuseSum / float(offLayerSamples);
+        offLayerNormal = offLayerNormalSum / float(offLayerSamples);
 #else
         uint at = offLayerWord(uint(size.x * size.y), pixelIndex), scale = unitScale(kOffLayerFieldBits, n);
-        uint rg = agBuffer[at], blue = agBuffer[at + 1u];
-        offLayerDiffuse = vec3(meanUnit(rg & 0xFFFFu, offLayerSamples, scale), meanUnit(rg >> 16u, offLayerSamples, scale),
-                               meanUnit(blue, offLayerSamples, scale));
+        uint w0 = agBuffer[at], w1 = agBuffer[at + 1u], w2 = agBuffer[at + 2u];
+        offLayerDiffuse = vec3(meanUnit(w0 & 0xFFFFu, offLayerSamples, scale), meanUnit(w0 >> 16u, offLayerSamples, scale),
+                               meanUnit(w1 & 0xFFFFu, offLayerSamples, scale));
+        offLayerNormal = vec3(meanSigned(w1 >> 16u, offLayerSamples, scale), meanSigned(w2 & 0xFFFFu, offLayerSamples, scale),
+                              meanSigned(w2 >> 16u, offLayerSamples, scale));
 #endif
     }
     SurfaceInputs surfaces[kMaxAggregates];
@@ -563,8 +596,15 @@ void main() {
     // Two-point resolve: the specular part of the radiance and its variance over the aggregate's samples.
     vec3 specular[kMaxAggregates] = vec3[](vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0));
     vec3 specularVariance[kMaxAggregates] = vec3[](vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0));
-    // Aggregate 0's filtered diffuse irradiance: what c = 1 resolves its off-layer samples with.
-    vec3 diffuseIrradiance0 = vec3(0.0);
+    // c = 1: the irradiance the off-layer samples resolve with (offLayerRadiance), taken with
+    // aggregate 0's lights through their lobe: the direction of their mean normal and its length
+    // (opposing normals that cancel, |N| -> 0: the view axis, +z, where the spread makes the
+    // direction barely matter).
+    vec3 offLayerIrradiance = vec3(0.0);
+    float offLayerLength = length(offLayerNormal);
+    vec4 offLayerPosition = offLayerSamples > 0u ? vec4(offLayerPositionSum / float(offLayerSamples), 1.0) : vec4(0.0);
+    vec4 offLayerLobe = vec4(offLayerLength > kMinNormalLength ? offLayerNormal / offLayerLength : vec3(0.0, 0.0, 1.0),
+                             min(offLayerLength, 1.0));
     if (kSkipShading != 0u) {
     } else if (kCompactShading != 0u) {
         // The tile's further aggregates, packed: lane j shades entry j of each round. The slots
@@ -602,12 +642,13 @@ void main() {
                 surface.metallic = sAlbedo[self].a;
                 vec4 T = sTangent[self];
                 vec4 B = sBitangent[self];
-                vec3 lit, spec, variance, unusedIrradiance;
+                vec3 lit, spec, variance, unusedIrradiance; // no off-layer samples beyond aggregate 0
                 shadeAggregate(surface, T.xyz, B.xyz, vec2(T.w, B.w), sSpread[self].x, sSpread[self].y,
                                sPosition[self].xyz,
                                sPosition[self].w, sScreenSpread[self],
                                ownerPixel, uint(ownerPixel.y * size.x + ownerPixel.x), (owner >> 8u) & 3u,
-                               owner >> 10u, sggx, lit, spec, variance, unusedIrradiance);
+                               owner >> 10u, sggx, vec4(0.0), vec4(surface.normal, sSpread[self].x), lit, spec, variance,
+                               unusedIrradiance);
                 sPosition[self].xyz = lit;
                 sNormal[self].xyz = spec;
                 sAlbedo[self].xyz = variance;
@@ -632,17 +673,17 @@ void main() {
         if (inside && present[0])
             shadeAggregate(surfaces[0], tangents[0], bitangents[0], alphas[0], spreads[0], environmentRoughness[0],
                            positions[0], depthSigma[0], screenSpreads[0],
-                           pixel, pixelIndex, 0u, samplesIn[0], sggx, radiance[0], specular[0], specularVariance[0],
-                           diffuseIrradiance0);
+                           pixel, pixelIndex, 0u, samplesIn[0], sggx, offLayerPosition, offLayerLobe, radiance[0], specular[0],
+                           specularVariance[0], offLayerIrradiance);
     } else if (inside) {
         for (uint a = 0u; a < c; ++a) {
             if (!present[a]) continue;
             vec3 irradiance;
             shadeAggregate(surfaces[a], tangents[a], bitangents[a], alphas[a], spreads[a], environmentRoughness[a],
                            positions[a], depthSigma[a], screenSpreads[a],
-                           pixel, pixelIndex, a, samplesIn[a], sggx, radiance[a], specular[a], specularVariance[a],
-                           irradiance);
-            if (a == 0u) diffuseIrradiance0 = irradiance;
+                           pixel, pixelIndex, a, samplesIn[a], sggx, a == 0u ? offLayerPosition : vec4(0.0), offLayerLobe, radiance[a], specular[a],
+                           specularVariance[a], irradiance);
+            if (a == 0u) offLayerIrradiance = irradiance;
         }
     }
     if (!inside) return;
@@ -672,7 +713,7 @@ void main() {
 #else
             vec3 diffuse = offLayerDiffuse; // the pixel's off-layer mean (the AG-buffer keeps no more)
 #endif
-            L = offLayerRadiance(diffuse, diffuseIrradiance0) +
+            L = offLayerRadiance(diffuse, offLayerIrradiance) +
                 texelFetch(emissiveSamples, ivec3(pixel, s / 4u), int(s % 4u)).rgb;
             L = min(L * exposure, vec3(kMaxRadiance));
             display += weight * toneMapAces(L);
@@ -698,7 +739,7 @@ void main() {
         uint stands = kRouteFragment != 0u && c > 1u ? accumulated[a]
                                                      : samplesIn[a] + (a == 0u && !offLayerOwnColour ? offLayerSamples : 0u);
         if (a == 0u && offLayerOwnColour && offLayerSamples > 0u) {
-            vec3 L = min(offLayerRadiance(offLayerDiffuse, diffuseIrradiance0) * exposure, vec3(kMaxRadiance));
+            vec3 L = min(offLayerRadiance(offLayerDiffuse, offLayerIrradiance) * exposure, vec3(kMaxRadiance));
             display += weight * float(offLayerSamples) * toneMapAces(L);
             hdr += weight * float(offLayerSamples) * L;
         }

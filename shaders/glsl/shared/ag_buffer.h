@@ -88,11 +88,13 @@ inline_fn uint aggregateIncrement(uint ndf, uint w, uint k, AgQuantized f) {
 }
 
 // c = 1, samples routed per sample (issue 14): after the pixels' aggregate records, kOffLayerWords
-// per pixel sum the off-layer samples' diffuse colour, albedo (1 - metallic): r | g << 16, then b,
-// 16-bit fields of scale unitScale(16, n) (n samples at 1 never carry). The lighting pass resolves
-// those samples with it (agaa/lighting.glsl offLayerRadiance); it never mixes into the aggregate's
-// albedo and metallic, which the BRDF is bilinear in.
-SHARED_CONST kOffLayerWords = 2u;
+// per pixel sum the off-layer samples' diffuse colour, albedo (1 - metallic), and their shading
+// normals, offset to (N + 1) / 2: r | g << 16, b | nx << 16, ny | nz << 16, 16-bit fields of scale
+// unitScale(16, n) (n samples at 1 never carry). The lighting pass resolves those samples as a
+// Lambert surface of that colour under the irradiance through their own mean normal and its spread
+// (agaa/lighting.glsl offLayerRadiance); none of it mixes into the aggregate's fields, whose
+// albedo and metallic the BRDF is bilinear in.
+SHARED_CONST kOffLayerWords = 3u;
 SHARED_CONST kOffLayerFieldBits = 16u;
 
 // Words of the AG-buffer for `pixels` pixels at c aggregates.
