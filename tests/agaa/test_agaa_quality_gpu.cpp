@@ -76,14 +76,36 @@ struct KnownGap {
 // the rim's grazing normals (a grey ring). They now resolve with their own diffuse colour under
 // the aggregate's irradiance (lighting.glsl offLayerRadiance): 0.87x / 0.82x.
 constexpr std::array<KnownGap, 0> kDisplayGaps{};
-// The energy bound at c = 2, AGAA's default: spikes breaks it against the 8-sample reference, whose
-// mean is not converged there (a few mirror sparkles carry it: 0.118 at 64x64 n = 8, 0.200 at
-// n = 32, 0.22 to 0.30 at 128x128; AGAA's stays 0.21 to 0.25); hard-light-inside sits on it (AGAA
-// +18.1 %, no-AA +18.0 %: a light on the sphere's vertex puts the image's mean in the few samples
-// of one pixel, where AGAA and no-AA give the same radiance; +15.6 % against the n = 32
-// reference, -2.9 % at 128x128 and +1.5 % at 256x256, AGAA_QUALITY_SIZE).
-constexpr std::array<KnownGap, 2> kEnergyGaps{
-    {{"spikes", 2, "+78 % mean radiance"}, {"hard-light-inside", 2, "+18.1 % against no-AA's +18.0 %"}}};
+// The energy bound, at every c: within 10 % of the 8-sample reference's mean, with no slack (an
+// allowance of no-AA's own distance once let c = 1's foliage pass at -13.7 %, no-AA being at
+// -19 % there; it closed, -0.3 %, when the off-layer samples took their own irradiance). Where it
+// fails, the reference's mean is not converged at 64x64 and n = 8: a few mirror-sharp samples
+// carry it (AGAA_QUALITY_SIZE and AGAA_QUALITY_REFERENCE_SAMPLES move it by tens of per cent):
+// - spikes: the reference's mean is 0.118 at n = 8, 0.200 at n = 32, 0.22 to 0.30 at 128x128,
+//   while AGAA's stays 0.18 to 0.24; against the 128x128 n = 32 reference AGAA is 22 % low at
+//   c = 2.
+// - hard-mirror: the sun's mirror peak on the chrome wall falls between pixel centres. The
+//   reference's samples find it, AGAA's one view direction per aggregate and no-AA's pixel centre
+//   do not (-44 % at c = 2, no-AA -60 %; at 128x128 n = 32 four pixels there hold 81 % of AGAA's
+//   -42 %). Widening the lobe by the view direction's spread over the footprint gave -42 % -> +4 %
+//   at 128x128 but a halo at 64x64 (2.4x no-AA's display error): not kept.
+// - hard-light-inside: a light on the sphere's vertex puts the image's mean in the few samples of
+//   one pixel, where AGAA and no-AA give the same radiance (+18.1 %, no-AA +18.0 %; +16.0 %
+//   against the n = 32 reference, -2.6 % at 128x128 and +1.5 % at 256x256).
+// - metal at c = 4 on the samples path: +11.3 % (accumulate +9.9 %; +1.7 % at 128x128 against the
+//   n = 32 reference).
+constexpr std::array<KnownGap, 10> kEnergyGaps{{
+    {"spikes", 1, "+56 % mean radiance"},
+    {"spikes", 2, "+78 % mean radiance"},
+    {"spikes", 4, "+56 to +67 % mean radiance"},
+    {"hard-mirror", 1, "-60 % mean radiance (no-AA -60 %)"},
+    {"hard-mirror", 2, "-44 % mean radiance (no-AA -60 %)"},
+    {"hard-mirror", 4, "-44 % mean radiance (no-AA -60 %)"},
+    {"hard-light-inside", 1, "+18.1 to +18.6 % (no-AA +18.0 %)"},
+    {"hard-light-inside", 2, "+18.1 to +18.5 % (no-AA +18.0 %)"},
+    {"hard-light-inside", 4, "+18.1 to +18.5 % (no-AA +18.0 %)"},
+    {"metal", 4, "+11.3 % mean radiance", "agaa-samples"},
+}};
 
 const KnownGap* knownGap(std::span<const KnownGap> gaps, const std::string& scene, uint32_t c,
                          const std::string& method) {
@@ -95,9 +117,8 @@ const KnownGap* knownGap(std::span<const KnownGap> gaps, const std::string& scen
 class QualityScene : public ::testing::TestWithParam<std::string> {};
 
 // For both generation paths and c = 1, 2 and 4: AGAA(8, c)'s display error against the reference is at most
-// no-AA's. At c = 2 its linear mean radiance is within 10 % of the reference's, or, where the 8-sample
-// reference is itself a noisy estimate of the pixel (a few firefly samples carry the mean: hard-
-// mirror, hard-light-inside), no further from it than no-AA's one-sample estimate is.
+// no-AA's, and its linear mean radiance is within 10 % of the reference's (kEnergyGaps: where the
+// 8-sample reference's mean is not converged).
 TEST_P(QualityScene, AgaaIsNeverWorseThanNoAaAndKeepsTheEnergy) {
     auto device = agaa::test::makeValidatedDevice();
     eng::scene::Scene scene = eng::scene::loadTestScene(GetParam());
@@ -144,8 +165,7 @@ TEST_P(QualityScene, AgaaIsNeverWorseThanNoAaAndKeepsTheEnergy) {
                         refMean > 0 ? 100.0 * (mean - refMean) / refMean : 0.0);
             // A scene no-AA renders exactly (one surface per pixel) leaves AGAA the same slack.
             const bool displayOk = error <= std::max(noaaError, 1e-3);
-            const bool energyOk = c != 2 || std::abs(mean - refMean) <=
-                                                std::max({0.1 * refMean, std::abs(noaaMean - refMean), 1e-3});
+            const bool energyOk = std::abs(mean - refMean) <= std::max(0.1 * refMean, 1e-3);
             if (!measuredSetting) continue; // a measurement run: print only
             const KnownGap* displayGap = knownGap(kDisplayGaps, GetParam(), c, pathName);
             const KnownGap* energyGap = knownGap(kEnergyGaps, GetParam(), c, pathName);
