@@ -13,7 +13,7 @@ SHARED_CONST kNormalAngleLevels = 256u;
 
 // ---- AG-buffer accumulation (fixed point, paper figure 7 adapted to integer atomics) ----
 // 6 words (24 bytes) per aggregate in either normal-distribution layout (AgaaConstants
-// options.w, agaa/aggregate/agaa_constants.h AggregateNdf); at c = 1, 2 words per pixel more
+// options.w, agaa/aggregate/agaa_constants.h AggregateNdf); at c = 1, 3 words per pixel more
 // after the records (shared/ag_buffer.h kOffLayerWords). Each sample contributes
 // round(v * scale) with v in [0, 1]; the k samples a fragment routes to an aggregate add k times
 // that, so fields only ever sum n values of at most `scale`.
