@@ -725,6 +725,28 @@ std::vector<EdgeCase> shaderMathCases() {
                                 agaa::test::kFilteredCosineModelError);
                 });
 
+    // The lobe of a mean of unit normals (common/brdf.glsl meanNormalLobe; c = 1's off-layer
+    // samples, issue 14): direction and length in double; normals that cancel to within
+    // kMinNormalLength take the view axis, and a fixed-point mean rounded above 1 is clamped.
+    for (const auto& [mean, guards] : std::vector<std::pair<glm::vec3, std::vector<std::string>>>{
+             {{0.0f, 0.0f, 0.0f}, {"kMinNormalLength"}},    // a card's two faces, cancelled
+             {{5e-7f, -5e-7f, 0.0f}, {"kMinNormalLength"}}, // just inside the guard
+             {{2e-6f, 0.0f, 0.0f}, {"kMinNormalLength"}},   // just outside: its own direction
+             {{0.3f, -0.2f, 0.1f}, {}},                     // a spread
+             {{0.0f, 0.6f, 0.8f}, {}},                      // one normal
+             {{0.0f, 0.0f, 1.00003f}, {}},                  // rounded above 1
+         }) {
+        add("meanNormalLobe " + fmt(mean.x) + "," + fmt(mean.y) + "," + fmt(mean.z), guards,
+            op(kOpMeanNormalLobe, glm::vec4(mean, 0)), [mean](const MathResult& r) -> std::string {
+                const glm::dvec3 m(mean);
+                const double len = glm::length(m);
+                const glm::dvec3 dir = len > 1e-6 ? m / len : glm::dvec3(0.0, 0.0, 1.0);
+                if (std::string e = near3("direction", glm::vec3(r.r0), dir, 1e-6, 1e-7); !e.empty())
+                    return e;
+                return near("length", r.r0.w, std::min(len, 1.0), 1e-6, 1e-9);
+            });
+    }
+
     // Curvature roughness (common/curvature_roughness.glsl), twin in double: Kaplanyan's kernel
     // min(boost 1/4 (|dN/dx|^2 + |dN/dy|^2), max footprint) added to alpha^2, unchanged below the
     // variance floor (a flat face's interpolation rounding) and for NaN derivatives.

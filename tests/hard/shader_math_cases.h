@@ -51,6 +51,7 @@ enum MathOp : uint32_t {
     kOpFilteredCosine = 24,
     kOpAggregateWidth = 25,
     kOpEnvironmentRoughness = 26,
+    kOpMeanNormalLobe = 27,
 };
 
 struct EdgeCase {

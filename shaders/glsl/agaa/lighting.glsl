@@ -597,14 +597,10 @@ void main() {
     vec3 specular[kMaxAggregates] = vec3[](vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0));
     vec3 specularVariance[kMaxAggregates] = vec3[](vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0));
     // c = 1: the irradiance the off-layer samples resolve with (offLayerRadiance), taken with
-    // aggregate 0's lights through their lobe: the direction of their mean normal and its length
-    // (opposing normals that cancel, |N| -> 0: the view axis, +z, where the spread makes the
-    // direction barely matter).
+    // aggregate 0's lights at their mean position, through their normals' lobe.
     vec3 offLayerIrradiance = vec3(0.0);
-    float offLayerLength = length(offLayerNormal);
     vec4 offLayerPosition = offLayerSamples > 0u ? vec4(offLayerPositionSum / float(offLayerSamples), 1.0) : vec4(0.0);
-    vec4 offLayerLobe = vec4(offLayerLength > kMinNormalLength ? offLayerNormal / offLayerLength : vec3(0.0, 0.0, 1.0),
-                             min(offLayerLength, 1.0));
+    vec4 offLayerLobe = meanNormalLobe(offLayerNormal);
     if (kSkipShading != 0u) {
     } else if (kCompactShading != 0u) {
         // The tile's further aggregates, packed: lane j shades entry j of each round. The slots

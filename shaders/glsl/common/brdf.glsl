@@ -104,6 +104,15 @@ float filteredClampedCosine(float x, float r) {
     return max(max(x, 0.0) + bands, 0.0);
 }
 
+// The lobe filteredClampedCosine reads from the mean of a set of unit normals: its direction and
+// its length r = |mean| in w (clamped to 1: fixed-point means can round above it). Normals that
+// cancel (|mean| <= kMinNormalLength: a pixel's two faces of a thin card) have no direction; the
+// view axis +z stands in, which r -> 0 makes all but irrelevant (the lobe is the sphere's mean).
+vec4 meanNormalLobe(vec3 meanNormal) {
+    float r = length(meanNormal);
+    return vec4(r > kMinNormalLength ? meanNormal / r : vec3(0.0, 0.0, 1.0), min(r, 1.0));
+}
+
 // evaluateBrdf for a Toksvig aggregate whose normals spread with mean length `spread` (1: one
 // normal, evaluateBrdf's value): the specular lobe is the caller's filtered roughness, the diffuse
 // filteredClampedCosine, which stays lit for lights below the mean normal's horizon that some of

@@ -69,6 +69,7 @@ const uint kOpToneMapAggregate = 20u; // L a.xyz, S b.xyz, variance c.xyz -> r0.
 const uint kOpPixelFootprint = 22u; // t a.x, extent b, projParams c -> r0.x
 const uint kOpFaceNormal = 23u;  // dP/dx a.xyz, dP/dy b.xyz, towards camera c.xyz -> r0.xyz
 const uint kOpFilteredCosine = 24u; // x a.x, spread a.y -> r0.x
+const uint kOpMeanNormalLobe = 27u; // mean normal a.xyz -> r0 (direction, length)
 const uint kOpAggregateWidth = 25u; // direction a.xyz, screen covariance b.xyz -> r0.x
 const uint kOpEnvironmentRoughness = 26u; // filtered alpha a.x, material alpha a.y -> r0.x
 const uint kOpCurvature = 21u;   // dN/dx a.xyz, dN/dy b.xyz, roughness c.x, max footprint c.y, boost c.z -> r0.x
@@ -125,6 +126,8 @@ void main() {
         r0.xyz = faceNormalFromDerivatives(k.a.xyz, k.b.xyz, k.c.xyz);
     } else if (op == kOpFilteredCosine) {
         r0.x = filteredClampedCosine(k.a.x, k.a.y);
+    } else if (op == kOpMeanNormalLobe) {
+        r0 = meanNormalLobe(k.a.xyz);
     } else if (op == kOpEnvironmentRoughness) {
         r0.x = environmentAggregateRoughness(k.a.x, k.a.y);
     } else if (op == kOpAggregateWidth) {
