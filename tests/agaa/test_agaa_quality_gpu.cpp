@@ -79,8 +79,8 @@ constexpr std::array<KnownGap, 0> kDisplayGaps{};
 // The energy bound, at every c: within 10 % of the 8-sample reference's mean, with no slack (an
 // allowance of no-AA's own distance once let c = 1's foliage pass at -13.7 %, no-AA being at
 // -19 % there; it closed, -0.3 %, when the off-layer samples took their own irradiance). Where it
-// fails, the reference's mean is not converged at 64x64 and n = 8: a few mirror-sharp samples
-// carry it (AGAA_QUALITY_SIZE and AGAA_QUALITY_REFERENCE_SAMPLES move it by tens of per cent):
+// fails, a few mirror-sharp samples carry the 8-sample reference's mean at 64x64
+// (AGAA_QUALITY_SIZE and AGAA_QUALITY_REFERENCE_SAMPLES move it by tens of per cent):
 // - spikes: the reference's mean is 0.118 at n = 8, 0.200 at n = 32, 0.22 to 0.30 at 128x128,
 //   while AGAA's stays 0.18 to 0.24; against the 128x128 n = 32 reference AGAA is 22 % low at
 //   c = 2.
