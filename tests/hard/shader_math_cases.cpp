@@ -747,6 +747,30 @@ std::vector<EdgeCase> shaderMathCases() {
             });
     }
 
+    // The near-mirror view footprint's weight (common/depth.glsl viewFootprintWeight, issue 14): rho
+    // = theta^2 (sxx + syy) / (4 alpha^2) in double, 0 up to kViewFootprintLobeRatio, 1 from twice
+    // it; a rough lobe stays at 0, a mirror at the floor alpha (and below it: kMinGgxAlpha) at 1, and
+    // a covariance cancelled below 0 counts as none.
+    const float theta = 0.0114f;                           // a 64-pixel image's pixel at 40 degrees
+    const glm::vec3 box(1.0f / 12.0f, 0.0f, 1.0f / 12.0f); // a whole pixel's samples
+    for (const auto& [alpha, S, guards] : std::vector<std::tuple<float, glm::vec3, std::vector<std::string>>>{
+             {0.05f, box, {"kViewFootprintLobeRatio"}},                // rough: 0
+             {1e-3f, box, {"kViewFootprintLobeRatio"}},                // the floor: 1
+             {0.0f, box, {"kViewFootprintLobeRatio", "kMinGgxAlpha"}}, // below the floor
+             {0.0047f, box, {"kViewFootprintLobeRatio"}},              // rho 0.245: just below the ramp, 0
+             {0.0040f, box, {"kViewFootprintLobeRatio"}},              // rho 0.34: in the ramp
+             {0.0032f, box, {"kViewFootprintLobeRatio"}},              // rho 0.53: above its top, 1
+             {1e-3f, glm::vec3(-1e-7f, 0.0f, -1e-7f), {"kViewFootprintLobeRatio"}}, // cancelled
+         }) {
+        add("viewFootprintWeight alpha=" + fmt(alpha) + " sxx=" + fmt(S.x), guards,
+            op(kOpViewFootprint, glm::vec4(theta, alpha, 0, 0), glm::vec4(S, 0)),
+            [theta, alpha, S](const MathResult& r) -> std::string {
+                const double a = std::max(double(alpha), 1e-3);
+                const double rho = double(theta) * theta * std::max(double(S.x) + S.z, 0.0) / (4.0 * a * a);
+                return near("weight", r.r0.x, std::clamp(rho / 0.25 - 1.0, 0.0, 1.0), 1e-5, 1e-6);
+            });
+    }
+
     // Curvature roughness (common/curvature_roughness.glsl), twin in double: Kaplanyan's kernel
     // min(boost 1/4 (|dN/dx|^2 + |dN/dy|^2), max footprint) added to alpha^2, unchanged below the
     // variance floor (a flat face's interpolation rounding) and for NaN derivatives.

@@ -52,6 +52,7 @@ enum MathOp : uint32_t {
     kOpAggregateWidth = 25,
     kOpEnvironmentRoughness = 26,
     kOpMeanNormalLobe = 27,
+    kOpViewFootprint = 28,
 };
 
 struct EdgeCase {

@@ -31,6 +31,18 @@ float aggregateWidth(vec3 d, vec3 S) {
     return sqrt(12.0 * max(v, 0.0));
 }
 
+// Near mirrors (issue 14): how far one view direction fails to stand for an aggregate's samples',
+// 0 (it does) to 1 (each sample's own view direction). At a fixed light the half vector moves half
+// as far as V: over a footprint of sub-pixel covariance S (pixel^2), theta radians a pixel, its
+// slope variance per axis is theta^2 (sxx + syy) / 8, against a GGX lobe's alpha^2 / 2. The weight
+// ramps from their ratio rho = kViewFootprintLobeRatio to twice it: a smooth switch, so images do
+// not pop and a double-precision twin agrees across it. alpha floored at kMinGgxAlpha.
+float viewFootprintWeight(float theta, vec3 S, float alpha) {
+    float a = max(alpha, kMinGgxAlpha);
+    float rho = theta * theta * max(S.x + S.z, 0.0) / (4.0 * a * a);
+    return clamp(rho / kViewFootprintLobeRatio - 1.0, 0.0, 1.0);
+}
+
 // View-space point at view distance t on the ray through pixel-space position pixelPos.
 vec3 viewPositionAtDistance(vec2 pixelPos, float t, vec4 extent, vec4 projParams) {
     vec2 ndc = pixelPos * extent.zw * 2.0 - 1.0;

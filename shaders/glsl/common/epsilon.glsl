@@ -56,5 +56,12 @@ const float kMinFaceNormalSine = 1.0e-6;
 // rounding (about 1e-7 per component, so a variance near 1e-14); the bias it would add is invisible
 // anyway (alpha^2 + 2e-10).
 const float kMinCurvatureVariance = 1.0e-10;
+// Near-mirror view footprint (common/depth.glsl viewFootprintWeight): where the half vector's slope
+// variance over an aggregate's footprint, from the view direction alone, exceeds this share of its
+// GGX lobe's, the lobe's peak is narrower than the pixel and one view direction no longer stands
+// for the samples'; the blend to their own view directions ramps in from it to twice it. A quarter:
+// the footprint's half-vector spread is half the lobe's width (a rough lobe, alpha >= 0.05, stays
+// below it at any resolution here: 64x64 at 40 degrees gives theta^2 (sxx + syy) / 4 ~ 5e-6).
+const float kViewFootprintLobeRatio = 0.25;
 
 #endif

@@ -70,6 +70,7 @@ const uint kOpPixelFootprint = 22u; // t a.x, extent b, projParams c -> r0.x
 const uint kOpFaceNormal = 23u;  // dP/dx a.xyz, dP/dy b.xyz, towards camera c.xyz -> r0.xyz
 const uint kOpFilteredCosine = 24u; // x a.x, spread a.y -> r0.x
 const uint kOpMeanNormalLobe = 27u; // mean normal a.xyz -> r0 (direction, length)
+const uint kOpViewFootprint = 28u; // theta a.x, alpha a.y, screen covariance b.xyz -> r0.x weight
 const uint kOpAggregateWidth = 25u; // direction a.xyz, screen covariance b.xyz -> r0.x
 const uint kOpEnvironmentRoughness = 26u; // filtered alpha a.x, material alpha a.y -> r0.x
 const uint kOpCurvature = 21u;   // dN/dx a.xyz, dN/dy b.xyz, roughness c.x, max footprint c.y, boost c.z -> r0.x
@@ -128,6 +129,8 @@ void main() {
         r0.x = filteredClampedCosine(k.a.x, k.a.y);
     } else if (op == kOpMeanNormalLobe) {
         r0 = meanNormalLobe(k.a.xyz);
+    } else if (op == kOpViewFootprint) {
+        r0.x = viewFootprintWeight(k.a.x, k.b.xyz, k.a.y);
     } else if (op == kOpEnvironmentRoughness) {
         r0.x = environmentAggregateRoughness(k.a.x, k.a.y);
     } else if (op == kOpAggregateWidth) {
