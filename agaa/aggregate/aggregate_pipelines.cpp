@@ -207,6 +207,7 @@ VkPipeline AggregateAA::lightingPipeline(bool exporting) {
     spec.push_back(m_settings.breakdown & AggregateBreakdown::kLightingWithoutShading ? 1u : 0u); // id 8
     spec.push_back(uint32_t(m_settings.ndf));                                                     // id 9
     spec.push_back(uint32_t(m_settings.routing));                                                 // id 10
+    spec.push_back(m_features.hasNearMirrors() ? 1u : 0u);                                        // id 11
     return vk::createComputePipeline(m_device, code, m_lightingLayout.layout,
                                      lightingSpecialization(std::move(spec), m_features),
                                      exporting ? "agaa.lighting.export" : "agaa.lighting");
@@ -385,6 +386,11 @@ std::vector<VariantChoice> AggregateAA::variants() const {
                      ? std::string("setting --agaa-ndf")
                      : std::to_string(m_features.glossyMetalMaterials) + " of " +
                            std::to_string(m_features.drawnMaterials) + " drawn materials glossy metal"});
+    v.push_back({"near-mirror-view-footprint", m_features.hasNearMirrors() ? "on" : "off",
+                 m_features.forced ? std::string("forced")
+                                   : std::to_string(m_features.nearMirrorMaterials) + " of " +
+                                         std::to_string(m_features.drawnMaterials) +
+                                         " drawn materials below roughness 0.1 or roughness-textured"});
     const vk::Capabilities& caps = m_device.caps();
     const bool compact = m_settings.shading == AggregateShading::Compact;
     v.push_back({"lighting-schedule",

@@ -56,6 +56,8 @@ SceneFeatures deriveSceneFeatures(const Scene& scene) {
             }
         if (mat.metallicFactor >= kGlossyMetallic && mat.roughnessFactor <= kGlossyRoughness)
             ++f.glossyMetalMaterials;
+        if (mat.roughnessFactor < kNearMirrorRoughness || mat.metallicRoughnessTexture >= 0)
+            ++f.nearMirrorMaterials;
     }
     return f;
 }

@@ -17,6 +17,13 @@ inline constexpr uint32_t kMaxShadowedLights = 4;
 // paint; fur, bark, bamboo, floors and walls stay below).
 inline constexpr float kGlossyMetallic = 0.5f;
 inline constexpr float kGlossyRoughness = 0.4f;
+// A material counts as a near mirror below this roughness factor, or with a metallic-roughness
+// texture (which can only lower it): AGAA's lighting then takes its near-mirror view footprint
+// (agaa/lighting.glsl addLightFootprint), which starts below alpha = theta / sqrt(2) for any
+// footprint (sxx + syy <= 1/2): roughness 0.1, alpha 0.01, covers a 40-degree view down to 64
+// pixels (theta 0.0114). Elsewhere the pass is compiled without it: its branch alone costs lavapipe
+// about a fifth of the lighting pass.
+inline constexpr float kNearMirrorRoughness = 0.1f;
 
 struct SceneFeatures {
     // Indices into Scene::lights of the directional and spot lights with castsShadows, in light
@@ -35,7 +42,8 @@ struct SceneFeatures {
     // Glossy metals (metallicFactor >= kGlossyMetallic, roughnessFactor <= kGlossyRoughness): the
     // thin bright highlights an isotropic normal distribution smears (AGAA picks SGGX for them).
     uint32_t glossyMetalMaterials = 0;
-    uint32_t drawnMaterials = 0; // materials used by at least one non-empty draw
+    uint32_t drawnMaterials = 0;      // materials used by at least one non-empty draw
+    uint32_t nearMirrorMaterials = 0; // roughnessFactor < kNearMirrorRoughness, or roughness-textured
     uint32_t directionalLights = 0, pointLights = 0, spotLights = 0;
     // Conservative: true unless the scene's geometry provably covers every view direction,
     // which this cheap estimate never claims (a prepass would be needed). Reported, never used
@@ -59,6 +67,7 @@ struct SceneFeatures {
         return glossyMetalMaterials > 0 && 2 * glossyMetalMaterials >= drawnMaterials;
     }
     bool hasEnvironment() const { return environment; }
+    bool hasNearMirrors() const { return forced || nearMirrorMaterials > 0; }
     bool hasTextureTransforms() const { return transformedMaterials > 0; }
     // Tile light culling only prunes point and spot lights; directional lights touch every tile.
     bool needsLightCulling() const { return forced || pointLights + spotLights > 0; }

@@ -245,6 +245,30 @@ TEST(SceneFeatures, GlossyMetalsCountAtTheThresholdsAndOnlyWhenDrawn) {
             << name;
 }
 
+// AGAA's near-mirror view footprint (agaa/lighting.glsl addLightFootprint) is compiled in only where
+// a drawn material can be a near mirror: roughness below kNearMirrorRoughness, or a metallic-
+// roughness texture (it can only lower the factor); forcing every effect turns it on too.
+TEST(SceneFeatures, NearMirrorsCountBelowTheRoughnessOrWithARoughnessTexture) {
+    Scene s = oneDrawScene();
+    s.materials[0].roughnessFactor = eng::scene::kNearMirrorRoughness;
+    EXPECT_FALSE(eng::scene::deriveSceneFeatures(s).hasNearMirrors()) << "at the threshold";
+    s.materials[0].roughnessFactor = std::nextafter(eng::scene::kNearMirrorRoughness, 0.0f);
+    EXPECT_TRUE(eng::scene::deriveSceneFeatures(s).hasNearMirrors()) << "just below";
+    s.materials[0].roughnessFactor = 0.8f;
+    s.materials[0].metallicRoughnessTexture = 0;
+    EXPECT_TRUE(eng::scene::deriveSceneFeatures(s).hasNearMirrors()) << "a roughness texture";
+    s.materials[0].metallicRoughnessTexture = -1;
+    EXPECT_FALSE(eng::scene::deriveSceneFeatures(s).hasNearMirrors()) << "rough";
+    EXPECT_TRUE(eng::scene::forceAllSceneFeatures(s).hasNearMirrors()) << "forced";
+    s.materials[0].roughnessFactor = 0.0f;
+    s.draws[0].indexCount = 0;
+    EXPECT_FALSE(eng::scene::deriveSceneFeatures(s).hasNearMirrors()) << "an undrawn material";
+    for (auto [name, mirrors] : {std::pair{"furball", false}, std::pair{"foliage", false},
+                                 std::pair{"spikes", true}, std::pair{"hard-mirror", true}})
+        EXPECT_EQ(eng::scene::deriveSceneFeatures(eng::scene::loadTestScene(name)).hasNearMirrors(), mirrors)
+            << name;
+}
+
 // --agaa-ndf auto's rule: SGGX when glossy metals are at least half of the drawn materials.
 TEST(SceneFeatures, GlossyMetalsDominateFromHalfTheDrawnMaterials) {
     Scene s = oneDrawScene();

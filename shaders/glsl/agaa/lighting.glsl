@@ -177,6 +177,10 @@ layout(constant_id = 9) const uint kNdf = 0u;
 // (Algorithm 2); an aggregate then stands for the samples it received, which need not be the
 // samples the metadata assigned it, so the resolve weights it by its accumulated count.
 layout(constant_id = 10) const uint kRouteFragment = 0u;
+// Specialisation id 11 (eng::scene::SceneFeatures::hasNearMirrors): 1 where a material can be a near
+// mirror, whose lobe the pixel's view footprint can outgrow (addLightFootprint); 0 compiles the
+// branch away, which alone costs lavapipe about a fifth of this pass.
+layout(constant_id = 11) const uint kViewFootprint = 1u;
 const uint kTilePixels = kTileSize * kTileSize;
 // Entries of the per-tile list shaded per round: one per invocation. c = 4 can append up to
 // 4 x 256; the list is then shaded in up to 4 rounds through the same 256-entry storage, which
@@ -287,7 +291,8 @@ void shadeAggregate(SurfaceInputs surface, vec3 T, vec3 B, vec2 alphas, float sp
     vec3 specularSquares = vec3(0.0);
     // Near mirrors: the view directions' spread over the footprint against the lobe (addLightFootprint).
     float theta = pixelFootprint(-P.z, frame.extent, frame.projParams) / length(P);
-    float viewWeight = viewFootprintWeight(theta, screenSpread, sggx ? min(alphas.x, alphas.y) : alphas.x);
+    float viewWeight =
+        kViewFootprint != 0u ? viewFootprintWeight(theta, screenSpread, sggx ? min(alphas.x, alphas.y) : alphas.x) : 0.0;
     // The environment through the aggregate's filtered distribution: its mean normal and its
     // filtered roughness without the punctual BRDF's floor (environmentRoughness). Smooth at the
     // scale of an aggregate: no spike, so it stays out of the two-point resolve's variance.
