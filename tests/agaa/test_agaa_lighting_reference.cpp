@@ -95,8 +95,28 @@ bool incidence(const ViewLight& l, const dvec3& P, dvec3& L, dvec3& E) {
     return att > 0.0;
 }
 
+// An aggregate's specular as a cloud of microflakes (common/brdf.glsl specularFlake; Heitz et al.
+// 2015): F D(H) / (4 sigma(V)) per unit irradiance, with no horizon. D is the anisotropic GGX of
+// the lobe (ax along T, ay along B) at the unclamped H, sigma(V) the lobe's projected area
+// towards V, sqrt(ax^2 (T.V)^2 + ay^2 (B.V)^2 + (N.V)^2).
+dvec3 flakeSpecular(const dvec3& F, const dvec3& N, const dvec3& T, const dvec3& B, double ax, double ay,
+                    const dvec3& V, const dvec3& H) {
+    const double th = glm::dot(T, H) / ax, bh = glm::dot(B, H) / ay, nh = glm::dot(N, H);
+    const double q = th * th + bh * bh + nh * nh;
+    const double sigma =
+        std::sqrt(ax * ax * glm::dot(T, V) * glm::dot(T, V) + ay * ay * glm::dot(B, V) * glm::dot(B, V) +
+                  glm::dot(N, V) * glm::dot(N, V));
+    return F / (kPi * ax * ay * q * q * 4.0 * sigma);
+}
+// The microflake form's share of the specular: 0 at spread 1 (one normal), 1 from spread 0.9 down
+// (common/epsilon.glsl kFlakeSpreadRange), linear between.
+double flakeShare(double spread) {
+    return std::clamp((1.0 - spread) / 0.1, 0.0, 1.0);
+}
+
 // glTF 2.0 appendix B, per unit irradiance times N.L; the diffuse through a spread of normals of
-// mean length `spread` (filtered_diffuse_reference.h), lit below N's horizon too.
+// mean length `spread` (filtered_diffuse_reference.h), lit below N's horizon too (Toksvig
+// aggregates keep the microfacet specular: only SGGX ones take the microflake form, shadeSggx).
 dvec3 brdfTimesCosine(const dvec3& N, const dvec3& V, const dvec3& L, double alpha, const dvec3& base,
                       double metallic, double spread) {
     const double NoL = glm::dot(N, L);
@@ -192,21 +212,29 @@ dvec3 withViewFootprint(Shade shade, const dvec3& P, const std::vector<glm::dvec
     return glm::mix(one, each / double(positions.size()), t);
 }
 
-// c = 1's off-layer samples (lighting.glsl offLayerRadiance): Lambert surfaces of their mean
-// diffuse colour under every light's irradiance at their mean view position, through their normals'
-// lobe: the mean of their unit normals, its direction and its length r (opposing normals that
-// cancel, r -> 0: the view axis +z, which the spread makes all but irrelevant).
-dvec3 offLayerRadiance(const dvec3& diffuse, const dvec3& meanNormal, const dvec3& P,
-                       const std::vector<ViewLight>& lights) {
+// c = 1's off-layer samples (lighting.glsl offLayerLight, offLayerRadiance): one surface of their
+// own at their mean view position P. Its normals' lobe is the mean of their unit normals, its
+// direction and its length r (opposing normals that cancel, r -> 0: the view axis +z, which the
+// spread makes all but irrelevant). Lambert of their mean diffuse colour under every light's
+// irradiance through that lobe, plus the glTF specular of their mean F0 along the lobe's direction,
+// with the Toksvig alpha of the length r |N(a)| (a: their mean material alpha; DESIGN 4.4).
+dvec3 offLayerRadiance(const dvec3& diffuse, const dvec3& f0, double materialAlpha, const dvec3& meanNormal,
+                       const dvec3& P, const std::vector<ViewLight>& lights, double smax) {
     const double r = glm::length(meanNormal);
     const dvec3 N = r > 1e-6 ? meanNormal / r : dvec3(0.0, 0.0, 1.0);
-    dvec3 irradiance(0.0);
+    const double len = std::min(r, 1.0) * toksvigLengthOf(materialAlpha, smax);
+    const double f = len / (len + smax * (1.0 - len));
+    const double alpha = std::clamp(std::sqrt(2.0 / (f * smax + 2.0)), kAlphaMin, kAlphaMax);
+    const dvec3 V = glm::normalize(-P);
+    dvec3 irradiance(0.0), specular(0.0);
     for (const ViewLight& light : lights) {
         dvec3 L, E;
         if (!incidence(light, P, L, E)) continue;
         irradiance += E * agaa::test::filteredCosine(glm::dot(N, L), std::min(r, 1.0));
+        if (glm::dot(N, L) > 0.0)
+            specular += brdfTimesCosine(N, V, L, alpha, f0, 1.0, 1.0) * E; // metallic 1: F0 only
     }
-    return diffuse / kPi * irradiance;
+    return diffuse / kPi * irradiance + specular;
 }
 
 // Eigen-decomposition of a symmetric 3x3 matrix by cyclic Jacobi rotations in double, run to
@@ -285,10 +313,13 @@ dvec3 shadeSggx(const double S[6], double materialAlpha, const dvec3& base, doub
         const double NoL = glm::dot(N, L);
         const dvec3 f0 = glm::mix(dvec3(0.04), base, metallic);
         if (NoL <= 0.0) {
-            const double VoH = std::clamp(glm::dot(V, glm::normalize(V + L)), 0.0, 1.0);
+            const dvec3 H = glm::normalize(V + L);
+            const double VoH = std::clamp(glm::dot(V, H), 0.0, 1.0);
             const dvec3 F = f0 + (dvec3(1.0) - f0) * std::pow(1.0 - VoH, 5.0);
-            radiance += (dvec3(1.0) - F) * (1.0 - metallic) * base / kPi *
-                        agaa::test::filteredCosine(NoL, spread) * E;
+            radiance +=
+                ((dvec3(1.0) - F) * (1.0 - metallic) * base / kPi * agaa::test::filteredCosine(NoL, spread) +
+                 flakeShare(spread) * flakeSpecular(F, N, T, B, ax, ay, V, H)) *
+                E;
             continue;
         }
         const double NoV = std::max(glm::dot(N, V), 1e-4), NoLc = std::max(NoL, 1e-4);
@@ -302,7 +333,10 @@ dvec3 shadeSggx(const double S[6], double materialAlpha, const dvec3& base, doub
         const double Vis = 0.5 / (gv + gl);
         const dvec3 F = f0 + (dvec3(1.0) - f0) * std::pow(1.0 - VoH, 5.0);
         const dvec3 diffuse = (dvec3(1.0) - F) * (1.0 - metallic) * base / kPi;
-        radiance += (diffuse * agaa::test::filteredCosine(NoL, spread) + F * (D * Vis) * NoL) * E;
+        const double share = flakeShare(spread);
+        radiance += (diffuse * agaa::test::filteredCosine(NoL, spread) + (1.0 - share) * F * (D * Vis) * NoL +
+                     share * flakeSpecular(F, N, T, B, ax, ay, V, H)) *
+                    E;
     }
     return radiance;
 }
@@ -334,11 +368,17 @@ TEST(AgaaLightingReference, AggregateShadingMatchesADoublePrecisionCpuShading) {
         uint32_t n, c;
         const char* ndf = "toksvig";
     };
-    const Case cases[] = {{"furball", 8, 2},         {"railings", 4, 4},
-                          {"foliage", 16, 2},        {"metal", 8, 3},
-                          {"metal", 8, 2, "sggx"},   {"railings", 16, 3, "sggx"},
-                          {"furball", 8, 4, "sggx"}, {"spikes", 32, 2, "sggx"},
-                          {"furball", 8, 1},         {"railings", 16, 1, "sggx"}};
+    const Case cases[] = {{"furball", 8, 2},
+                          {"railings", 4, 4},
+                          {"foliage", 16, 2},
+                          {"metal", 8, 3},
+                          {"metal", 8, 2, "sggx"},
+                          {"railings", 16, 3, "sggx"},
+                          {"furball", 8, 4, "sggx"},
+                          {"spikes", 32, 2, "sggx"},
+                          {"furball", 8, 1},
+                          {"railings", 16, 1, "sggx"},
+                          {"metal", 8, 1}}; // c = 1's off-layer bars: metal, all specular
     const uint32_t size = 64, pixels = size * size;
     for (const Case& k : cases) {
         eng::scene::Scene scene = eng::scene::loadTestScene(k.scene);
@@ -365,7 +405,8 @@ TEST(AgaaLightingReference, AggregateShadingMatchesADoublePrecisionCpuShading) {
             dvec3 positionSum[4] = {};
             double alphaSum[4] = {};
             uint32_t count[4] = {}, skySamples = 0, offLayer = 0;
-            dvec3 offLayerDiffuse(0.0), offLayerNormal(0.0), offLayerPosition(0.0);
+            dvec3 offLayerDiffuse(0.0), offLayerNormal(0.0), offLayerPosition(0.0), offLayerF0(0.0);
+            double offLayerAlpha = 0.0;
             std::vector<glm::dvec2> screen[4]; // each aggregate's samples' sub-pixel positions
             std::vector<dvec3> positions[4];   // and view positions (withViewFootprint)
             for (uint32_t s = 0; s < k.n; ++s) {
@@ -378,6 +419,8 @@ TEST(AgaaLightingReference, AggregateShadingMatchesADoublePrecisionCpuShading) {
                 if (k.c == 1 && a == 1) { // off the aggregate's layer: resolved apart (offLayerRadiance)
                     ++offLayer;
                     offLayerDiffuse += dvec3(rec[4], rec[5], rec[6]) * (1.0 - double(rec[7]));
+                    offLayerF0 += glm::mix(dvec3(0.04), dvec3(rec[4], rec[5], rec[6]), double(rec[7]));
+                    offLayerAlpha += std::min(double(rec[3]) * double(rec[3]), 1.0); // roughness^2
                     offLayerNormal += dvec3(rec[0], rec[1], rec[2]);
                     offLayerPosition += dvec3(rec[8], rec[9], rec[10]);
                     continue;
@@ -427,8 +470,8 @@ TEST(AgaaLightingReference, AggregateShadingMatchesADoublePrecisionCpuShading) {
                 // c = 1: the off-layer samples, with their own means (offLayerRadiance).
                 if (a == 0 && offLayer > 0) {
                     const double f = 1.0 / double(offLayer);
-                    hdr += glm::min(offLayerRadiance(offLayerDiffuse * f, offLayerNormal * f,
-                                                     offLayerPosition * f, lights) *
+                    hdr += glm::min(offLayerRadiance(offLayerDiffuse * f, offLayerF0 * f, offLayerAlpha * f,
+                                                     offLayerNormal * f, offLayerPosition * f, lights, smax) *
                                         double(r.view.exposure),
                                     dvec3(6.0e4)) *
                            (double(offLayer) / k.n);
@@ -491,8 +534,8 @@ TEST(AgaaLightingReference, AccumulatePathShadingMatchesADoublePrecisionCpuShadi
         const char* scene;
         uint32_t n, c;
     };
-    const Case cases[] = {{"furball", 8, 2}, {"railings", 4, 4}, {"foliage", 16, 2},
-                          {"metal", 8, 3},   {"spikes", 32, 4},  {"furball", 8, 1}};
+    const Case cases[] = {{"furball", 8, 2}, {"railings", 4, 4}, {"foliage", 16, 2}, {"metal", 8, 3},
+                          {"spikes", 32, 4}, {"furball", 8, 1},  {"metal", 8, 1}};
     const uint32_t size = 64, pixels = size * size;
     for (const Case& k : cases) {
         eng::scene::Scene scene = eng::scene::loadTestScene(k.scene);
@@ -599,9 +642,10 @@ TEST(AgaaLightingReference, AccumulatePathShadingMatchesADoublePrecisionCpuShadi
                 const double weight = double(r.view.exposure) * covered / k.n;
                 hdr += glm::min(radiance * double(r.view.exposure), dvec3(6.0e4)) * (covered / k.n);
                 if (a == 0 && offLayer > 0) {
-                    // c = 1: the off-layer samples' mean diffuse colour and normal from the pixel's
-                    // off-layer words (shared/ag_buffer.h: r | g, b | nx, ny | nz; the normal
-                    // offset-binary), their mean position from the depths (offLayerRadiance).
+                    // c = 1: the off-layer samples' mean diffuse colour, normal, F0 and alpha from the
+                    // pixel's off-layer words (shared/ag_buffer.h: r | g, b | nx, ny | nz, F0r | F0g,
+                    // F0b | alpha; the normal offset-binary), their mean position from the depths
+                    // (offLayerRadiance).
                     const uint32_t* o = agWords + shared::offLayerWord(pixels, p);
                     const double scale =
                         double(shared::unitScale(shared::kOffLayerFieldBits, k.n)) * offLayer;
@@ -611,8 +655,9 @@ TEST(AgaaLightingReference, AccumulatePathShadingMatchesADoublePrecisionCpuShadi
                     const dvec3 diffuse(field(0, 0), field(0, 16), field(1, 0));
                     const dvec3 normal(2.0 * field(1, 16) - 1.0, 2.0 * field(2, 0) - 1.0,
                                        2.0 * field(2, 16) - 1.0);
-                    hdr += glm::min(offLayerRadiance(diffuse, normal, offLayerPosition / double(offLayer),
-                                                     lights) *
+                    const dvec3 f0(field(3, 0), field(3, 16), field(4, 0));
+                    hdr += glm::min(offLayerRadiance(diffuse, f0, field(4, 16), normal,
+                                                     offLayerPosition / double(offLayer), lights, smax) *
                                         double(r.view.exposure),
                                     dvec3(6.0e4)) *
                            (double(offLayer) / k.n);

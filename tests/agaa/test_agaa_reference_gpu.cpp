@@ -310,9 +310,10 @@ TEST(AgaaAccumulationReferenceGpu, AgBufferMatchesDoubleSumsOfTheMaterialInputs)
         const size_t slots = size_t(size) * size * k.c;
         std::vector<uint32_t> count(slots, 0);
         std::vector<double> sum(slots * fields, 0.0), bound(slots * fields, 0.0);
-        // c = 1: per pixel, the off-layer samples' diffuse colour albedo (1 - metallic), r g b, and
-        // their normals offset to (N + 1) / 2, x y z (shared/ag_buffer.h kOffLayerWords).
-        constexpr uint32_t kOffFields = 6;
+        // c = 1: per pixel, the off-layer samples' diffuse colour albedo (1 - metallic), r g b,
+        // their normals offset to (N + 1) / 2, x y z, their F0 mix(0.04, albedo, metallic), r g b,
+        // and their material alpha roughness^2 (shared/ag_buffer.h kOffLayerWords).
+        constexpr uint32_t kOffFields = 10;
         std::vector<double> offSum(size_t(size) * size * kOffFields, 0.0),
             offBound(size_t(size) * size * kOffFields, 0.0);
         const double offScale = double(shared::unitScale(shared::kOffLayerFieldBits, k.n));
@@ -330,7 +331,11 @@ TEST(AgaaAccumulationReferenceGpu, AgBufferMatchesDoubleSumsOfTheMaterialInputs)
                 // normal to the pixel's off-layer words and nothing to the aggregate.
                 if (k.c == 1 && id == 1) {
                     for (uint32_t j = 0; j < kOffFields; ++j) {
-                        const double v = j < 3 ? albedo[j] * (1.0 - double(in[7])) : 0.5 * N[j - 3] + 0.5;
+                        const double metallic = in[7];
+                        const double v = j < 3   ? albedo[j] * (1.0 - metallic)
+                                         : j < 6 ? 0.5 * N[j - 3] + 0.5
+                                         : j < 9 ? 0.04 * (1.0 - metallic) + albedo[j - 6] * metallic
+                                                 : std::min(double(in[3]) * double(in[3]), 1.0);
                         const double ulp = std::ldexp(1.0, std::ilogb(offScale) - 23);
                         offSum[size_t(pixel) * kOffFields + j] += v;
                         offBound[size_t(pixel) * kOffFields + j] +=
@@ -390,8 +395,9 @@ TEST(AgaaAccumulationReferenceGpu, AgBufferMatchesDoubleSumsOfTheMaterialInputs)
                 for (uint32_t x = origin; x < origin + window; ++x) {
                     const uint32_t p = y * size + x;
                     const uint32_t* w = gpu + shared::offLayerWord(size * size, p);
-                    const uint32_t fieldsGpu[kOffFields] = {w[0] & 0xFFFFu, w[0] >> 16u,    w[1] & 0xFFFFu,
-                                                            w[1] >> 16u,    w[2] & 0xFFFFu, w[2] >> 16u};
+                    const uint32_t fieldsGpu[kOffFields] = {
+                        w[0] & 0xFFFFu, w[0] >> 16u,    w[1] & 0xFFFFu, w[1] >> 16u,    w[2] & 0xFFFFu,
+                        w[2] >> 16u,    w[3] & 0xFFFFu, w[3] >> 16u,    w[4] & 0xFFFFu, w[4] >> 16u};
                     for (uint32_t j = 0; j < kOffFields; ++j) {
                         const size_t at = size_t(p) * kOffFields + j;
                         const double err = std::abs(fieldsGpu[j] / offScale - offSum[at]);
@@ -399,16 +405,20 @@ TEST(AgaaAccumulationReferenceGpu, AgBufferMatchesDoubleSumsOfTheMaterialInputs)
                         offNonZero += fieldsGpu[j] != 0u;
                         outside += err > offBound[at];
                         if (err > offBound[at] && outside <= 5)
-                            ADD_FAILURE() << k.scene << " pixel (" << x << ", " << y << ") off-layer field "
-                                          << j << (j < 3 ? " (diffuse)" : " (normal)") << ": GPU "
-                                          << fieldsGpu[j] / offScale << ", double " << offSum[at];
+                            ADD_FAILURE()
+                                << k.scene << " pixel (" << x << ", " << y << ") off-layer field " << j
+                                << (j < 3   ? " (diffuse)"
+                                    : j < 6 ? " (normal)"
+                                    : j < 9 ? " (F0)"
+                                            : " (alpha)")
+                                << ": GPU " << fieldsGpu[j] / offScale << ", double " << offSum[at];
                     }
                 }
         if (k.c == 1) {
             EXPECT_GT(offNonZero, 0u) << k.scene << ": c = 1 with no off-layer sample in the window";
-            std::printf(
-                "[ measured ] %-8s c=1: %u off-layer fields (diffuse, normal) compared, %u non-zero\n",
-                k.scene, offCompared, offNonZero);
+            std::printf("[ measured ] %-8s c=1: %u off-layer fields (diffuse, normal, F0, alpha) compared, "
+                        "%u non-zero\n",
+                        k.scene, offCompared, offNonZero);
         }
         std::printf("[ measured ] %-8s n=%2u c=%u %-7s: %u fragments, %u fields compared, worst error per "
                     "sample %.3f "

@@ -25,7 +25,8 @@ using namespace checks;
 // The guard values of epsilon.glsl, restated: the twins below implement the documented
 // behaviour (guards included) in double precision.
 constexpr double kMinGgxAlpha = 1.0e-3, kMaxGgxAlpha = 0.9, kMinCosine = 1.0e-4, kMinLightDistance2 = 1.0e-4,
-                 kMinNormalLength = 1.0e-6, kMaxRadiance = 6.0e4, kDepthCompareRelative = 1.0e-4;
+                 kMinNormalLength = 1.0e-6, kMaxRadiance = 6.0e4, kDepthCompareRelative = 1.0e-4,
+                 kFlakeSpreadRange = 0.1;
 constexpr double kPi = 3.14159265358979323846;
 constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
 constexpr float kInf = std::numeric_limits<float>::infinity();
@@ -95,6 +96,31 @@ D3 brdfAnisotropic(D3 albedo, double metallic, D3 N, D3 T, double ax, double ay,
     D3 F = fresnel(glm::mix(D3(0.04), albedo, metallic), g.VoH);
     specular = F * (D * Vis) * g.NoL;
     return diffuse(albedo, metallic, F) * g.NoL + specular;
+}
+// An SGGX aggregate's BRDF with normals of mean length `spread` (common/brdf.glsl
+// evaluateBrdfAnisotropicFiltered): the diffuse through the spread's filtered cosine; the specular the
+// microfacet form (brdfAnisotropic) times 1 - w plus, times w = clamp((1 - spread) / kFlakeSpreadRange, 0,
+// 1), the microflake form F D(H) / (4 sigma(V)), D the lobe's GGX at the unclamped N.H and sigma(V) =
+// |(ax T.V, ay B.V, N.V)|, which lights it past N's horizon too.
+D3 brdfFiltered(D3 albedo, double metallic, D3 N, D3 T, double ax, double ay, double spread, D3 V, D3 L,
+                D3& specular) {
+    const D3 B = glm::cross(N, T);
+    Angles g;
+    const bool above = angles(N, V, L, g);
+    const D3 F = fresnel(glm::mix(D3(0.04), albedo, metallic), g.VoH);
+    const D3 lambert =
+        diffuse(albedo, metallic, F) * agaa::test::filteredCosine(g.NoL, std::clamp(spread, 0.0, 1.0));
+    ax = std::clamp(ax, kMinGgxAlpha, kMaxGgxAlpha);
+    ay = std::clamp(ay, kMinGgxAlpha, kMaxGgxAlpha);
+    const double w = std::clamp((1.0 - spread) / kFlakeSpreadRange, 0.0, 1.0);
+    const double th = glm::dot(T, g.H) / ax, bh = glm::dot(B, g.H) / ay, nh = glm::dot(N, g.H);
+    const double q = th * th + bh * bh + nh * nh;
+    const double sigma = glm::length(D3(ax * glm::dot(T, V), ay * glm::dot(B, V), glm::dot(N, V)));
+    const D3 flake = F / (kPi * ax * ay * q * q * 4.0 * sigma);
+    D3 microfacet(0.0);
+    if (above) brdfAnisotropic(albedo, metallic, N, T, ax, ay, V, L, microfacet);
+    specular = (1.0 - w) * microfacet + w * flake;
+    return lambert + specular;
 }
 double window(double d2, double range) {
     if (range <= 0.0) return 1.0;
@@ -600,6 +626,55 @@ std::vector<EdgeCase> shaderMathCases() {
                         return e;
                     return near3("specular", glm::vec3(r.r1), spec, 1e-4, 1e-6);
                 });
+        }
+        // The aggregate's BRDF with a spread of normals: the microfacet form at one normal, the
+        // microflake form from 1 - kFlakeSpreadRange down (lit past the mean normal's horizon).
+        struct FilteredIn {
+            const char* what;
+            std::vector<std::string> guards;
+            double ax, ay, spread;
+            D3 V, L;
+        };
+        const D3 below = glm::normalize(D3(0.1, 0.9, -0.2)); // past N's horizon
+        for (const FilteredIn& f : std::vector<FilteredIn>{
+                 {"spread 1: the microfacet form", {"kFlakeSpreadRange"}, 0.8, 0.04, 1.0, V, L},
+                 {"spread 1, light past the horizon: dark", {"kFlakeSpreadRange"}, 0.8, 0.04, 1.0, V, below},
+                 {"spread halfway down the ramp: the blend", {"kFlakeSpreadRange"}, 0.8, 0.04, 0.95, V, L},
+                 {"spread 1 - range: the microflake form", {"kFlakeSpreadRange"}, 0.8, 0.04, 0.9, V, L},
+                 {"tube lit past the mean normal's horizon",
+                  {"kFlakeSpreadRange"},
+                  0.7,
+                  0.06,
+                  0.79,
+                  V,
+                  below},
+                 {"viewer in the tangent plane, alphas below the floor",
+                  {"kFlakeSpreadRange", "kMinGgxAlpha"},
+                  0.0,
+                  1e-6,
+                  0.5,
+                  D3(1, 0, 0),
+                  L},
+             }) {
+            MathCase in = op(kOpBrdfFiltered, v4(D3(0.8, 0.6, 0.4), 0.5), v4(N), v4(f.V, f.ax), v4(f.L, f.ay),
+                             v4(T, f.spread));
+            add("evaluateBrdf*Filtered " + std::string(f.what), f.guards, in, [f, N, T](const MathResult& r) {
+                D3 spec;
+                const D3 want = brdfFiltered(D3(0.8, 0.6, 0.4), 0.5, N, T, f.ax, f.ay, f.spread,
+                                             glm::dvec3(glm::vec3(glm::normalize(f.V))),
+                                             glm::dvec3(glm::vec3(glm::normalize(f.L))), spec);
+                if (std::string e = near3("radiance", glm::vec3(r.r0), want, 1e-4, 1e-6); !e.empty())
+                    return e;
+                if (std::string e = near3("specular", glm::vec3(r.r1), spec, 1e-4, 1e-6); !e.empty())
+                    return e;
+                // Past the horizon only the microflake share lights the specular.
+                const bool pastHorizon = glm::dot(N, f.L) <= 0.0;
+                if (pastHorizon && f.spread < 1.0 && !(r.r1.x > 0.0f))
+                    return std::string("no specular past the horizon");
+                if (pastHorizon && f.spread >= 1.0 && r.r1 != glm::vec4(0.0f))
+                    return std::string("a flat lobe lit past its horizon");
+                return std::string();
+            });
         }
         // With equal alphas the anisotropic BRDF is the reference's isotropic one (same lobe).
         for (double roughness : {0.2, 0.6, 1.0}) {

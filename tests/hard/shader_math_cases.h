@@ -53,6 +53,7 @@ enum MathOp : uint32_t {
     kOpEnvironmentRoughness = 26,
     kOpMeanNormalLobe = 27,
     kOpViewFootprint = 28,
+    kOpBrdfFiltered = 29,
 };
 
 struct EdgeCase {

@@ -223,7 +223,7 @@ void main() {
         perAggregate[id] += (mask >> hw) & 1u;
     }
     // c = 1: the samples off the aggregate's layer (shared/clustering.h kOffLayer) count in
-    // perAggregate[1] and add their diffuse colour and normal to the pixel's off-layer words
+    // perAggregate[1] and add their diffuse colour, normal, F0 and alpha to the pixel's off-layer words
     // (shared/ag_buffer.h kOffLayerWords), apart from the aggregate's fields.
     if (c == 1u && perAggregate[1] > 0u) {
         uint k = perAggregate[1], scale = unitScale(kOffLayerFieldBits, n);
@@ -232,6 +232,10 @@ void main() {
         atomicAdd(agBuffer[at], k * quantizeUnit(diffuse.r, scale) + ((k * quantizeUnit(diffuse.g, scale)) << 16u));
         atomicAdd(agBuffer[at + 1u], k * quantizeUnit(diffuse.b, scale) + ((k * quantizeSigned(m.normal.x, scale)) << 16u));
         atomicAdd(agBuffer[at + 2u], k * quantizeSigned(m.normal.y, scale) + ((k * quantizeSigned(m.normal.z, scale)) << 16u));
+        vec3 f0 = mix(vec3(0.04), m.albedo, m.metallic);
+        float alpha = min(m.roughness * m.roughness, 1.0);
+        atomicAdd(agBuffer[at + 3u], k * quantizeUnit(f0.r, scale) + ((k * quantizeUnit(f0.g, scale)) << 16u));
+        atomicAdd(agBuffer[at + 4u], k * quantizeUnit(f0.b, scale) + ((k * quantizeUnit(alpha, scale)) << 16u));
     }
     // Only the aggregates the fragment touches: a loop over their bits ends for a SIMD group
     // once every lane's are done (most fragments touch one), where a loop over all c with a

@@ -255,16 +255,30 @@ void addLightFootprint(SurfaceInputs surface, vec3 T, vec3 B, vec2 alphas, float
     specularSquares += oneSpecular * oneSpecular;
 }
 
-// What light i gives c = 1's off-layer samples, unshadowed: its incidence at their mean position (a
-// wall behind leaves is not where the leaves are: the range window and 1/d^2 differ), through
-// their normals' lobe (filteredClampedCosine).
-vec3 offLayerLight(uint i, vec4 offLayerPosition, vec4 offLayerLobe) {
-    vec3 L, irradiance;
+// What light i gives c = 1's off-layer samples, unshadowed, from their mean position (a wall
+// behind leaves is not where the leaves are: the range window and 1/d^2 differ): the irradiance
+// through their normals' lobe (filteredClampedCosine), and the specular radiance towards the eye
+// through the same mean normal, of their mean F0, with the alpha Toksvig filters from the lobe's
+// length (offLayerSpecular: F0 rgb, roughness). Without the specular a metal behind the
+// aggregate's layer was black: the metal lattice's bars of the other layers, -24 % of the image's
+// mean radiance at c = 1 (issue 14). False where the light does not reach that position.
+bool offLayerLight(uint i, vec4 offLayerPosition, vec4 offLayerLobe, vec4 offLayerSpecular, out vec3 irradiance,
+                   out vec3 specular) {
+    irradiance = vec3(0.0);
+    specular = vec3(0.0);
+    vec3 L, incidence;
     // kAggregates: a specialisation constant, so c >= 2 (no off-layer samples) compiles this away.
     if (kAggregates != 1u || offLayerPosition.w == 0.0 ||
-        !lightIncidence(lights[i], offLayerPosition.xyz, L, irradiance))
-        return vec3(0.0);
-    return irradiance * filteredClampedCosine(dot(offLayerLobe.xyz, L), offLayerLobe.w);
+        !lightIncidence(lights[i], offLayerPosition.xyz, L, incidence))
+        return false;
+    irradiance = incidence * filteredClampedCosine(dot(offLayerLobe.xyz, L), offLayerLobe.w);
+    SurfaceInputs surface;
+    surface.albedo = offLayerSpecular.rgb; // metallic 1: F0 is the albedo, and no diffuse lobe
+    surface.metallic = 1.0;
+    surface.roughness = offLayerSpecular.w;
+    surface.normal = offLayerLobe.xyz;
+    specular = evaluateBrdf(surface, normalize(-offLayerPosition.xyz), L, incidence); // |P| >= znear
+    return true;
 }
 
 // One shading event: the aggregate `a` of `pixel` (k samples), seen at P, lit by every light of
@@ -272,17 +286,24 @@ vec3 offLayerLight(uint i, vec4 offLayerPosition, vec4 offLayerLobe) {
 // variance of the specular radiance over the aggregate's samples (the two-point resolve's).
 // screenSpread: the covariance of the aggregate's sub-pixel sample positions (the statistical
 // shadow footprint's width, common/depth.glsl aggregateWidth).
-// offLayerPosition (w = 1 where the pixel has off-layer samples, else 0) and offLayerLobe (their
-// mean normal's direction and length): c = 1's off-layer samples, whose diffuse irradiance comes
-// back in offLayerIrradiance (offLayerRadiance).
+// offLayerPosition (w = 1 where the pixel has off-layer samples, else 0), offLayerLobe (their
+// mean normal's direction and length), offLayerSpecular (their F0 and filtered roughness) and
+// offLayerMaterialAlpha (their samples' mean material alpha): c = 1's
+// off-layer samples, whose diffuse irradiance, specular radiance and its variance over their samples
+// come back in offLayerIrradiance, offLayerSpecularRadiance and offLayerSpecularVariance
+// (offLayerLight, offLayerRadiance; the variance as the aggregate's, for the two-point resolve).
 void shadeAggregate(SurfaceInputs surface, vec3 T, vec3 B, vec2 alphas, float spread, float environmentRoughness,
                     vec3 P, float sigma,
                     vec3 screenSpread, ivec2 pixel, uint pixelIndex, uint a, uint k, bool sggx, vec4 offLayerPosition,
-                    vec4 offLayerLobe, out vec3 radiance, out vec3 specular, out vec3 specularVariance, out vec3 offLayerIrradiance) {
+                    vec4 offLayerLobe, vec4 offLayerSpecular, float offLayerMaterialAlpha, out vec3 radiance, out vec3 specular, out vec3 specularVariance,
+                    out vec3 offLayerIrradiance, out vec3 offLayerSpecularRadiance, out vec3 offLayerSpecularVariance) {
     radiance = vec3(0.0);
     specular = vec3(0.0);
     specularVariance = vec3(0.0);
     offLayerIrradiance = vec3(0.0);
+    offLayerSpecularRadiance = vec3(0.0);
+    offLayerSpecularVariance = vec3(0.0);
+    vec3 offLayerSquares = vec3(0.0);
     vec3 V = normalize(-P); // |P| >= znear > 0
 #if AGAA_SHADOWS
     // The aggregate's footprint: depth standard deviation along the ray, one pixel across.
@@ -303,7 +324,12 @@ void shadeAggregate(SurfaceInputs surface, vec3 T, vec3 B, vec2 alphas, float sp
             offLayerIrradiance += environmentIrradiance(environmentDirection(offLayerLobe.xyz), vec2(r, r * r * r));
     }
     for (uint i = nextTileLight(0u); i < kMaxLights; i = nextTileLight(i + 1u)) {
-        offLayerIrradiance += offLayerLight(i, offLayerPosition, offLayerLobe);
+        vec3 offLayerE, offLayerS;
+        if (offLayerLight(i, offLayerPosition, offLayerLobe, offLayerSpecular, offLayerE, offLayerS)) {
+            offLayerIrradiance += offLayerE;
+            offLayerSpecularRadiance += offLayerS;
+            offLayerSquares += offLayerS * offLayerS;
+        }
         vec3 L, irradiance;
         if (!lightIncidence(lights[i], P, L, irradiance)) continue;
         if (viewWeight > 0.0)
@@ -316,9 +342,14 @@ void shadeAggregate(SurfaceInputs surface, vec3 T, vec3 B, vec2 alphas, float sp
     for (uint i = nextTileShadowedLight(0u); i < kMaxLights; i = nextTileShadowedLight(i + 1u)) {
         // c = 1: the off-layer samples' own shadow, one tap at their mean position (not the
         // aggregate's: the wall behind a leaf is not in the leaf's shadow).
-        vec3 offLayer = offLayerLight(i, offLayerPosition, offLayerLobe);
-        if (offLayer != vec3(0.0))
-            offLayerIrradiance += offLayer * shadowVisibilityPoint(i, offLayerPosition.xyz, offLayerLobe.xyz);
+        vec3 offLayerE, offLayerS;
+        if (offLayerLight(i, offLayerPosition, offLayerLobe, offLayerSpecular, offLayerE, offLayerS) &&
+            offLayerE + offLayerS != vec3(0.0)) {
+            float offLayerVisibility = shadowVisibilityPoint(i, offLayerPosition.xyz, offLayerLobe.xyz);
+            offLayerIrradiance += offLayerE * offLayerVisibility;
+            offLayerSpecularRadiance += offLayerS * offLayerVisibility;
+            offLayerSquares += offLayerS * offLayerS * (offLayerVisibility * offLayerVisibility);
+        }
         vec3 L, irradiance;
         if (!lightIncidence(lights[i], P, L, irradiance)) continue;
         float visibility;
@@ -349,22 +380,31 @@ void shadeAggregate(SurfaceInputs surface, vec3 T, vec3 B, vec2 alphas, float sp
     float axis = spikeRatioAxis(alphas.x, alphas.y);
     float ratio = sggx ? sggxSpikeRatio(alphas.x, alphas.y, surface.roughness * surface.roughness) : axis * axis;
     specularVariance = (ratio - 1.0) * specularSquares;
+    // c = 1's off-layer samples: their Toksvig lobe (filtered, material alpha) likewise. Without it
+    // the spike ball's off-layer gold, a wide lobe of the same mean, tone-mapped to a glow: 1.38x
+    // no-AA's display error at c = 1.
+    if (kAggregates == 1u && offLayerPosition.w != 0.0) {
+        float filtered = clamp(offLayerSpecular.w * offLayerSpecular.w, kMinGgxAlpha, kMaxGgxAlpha);
+        float offAxis = spikeRatioAxis(filtered, clamp(offLayerMaterialAlpha, kMinGgxAlpha, filtered));
+        offLayerSpecularVariance = (offAxis * offAxis - 1.0) * offLayerSquares;
+    }
 }
 
 // c = 1 (issue 14): the samples off the aggregate's layer (shared/clustering.h kOffLayer) are a
 // surface the one shading event does not describe: behind or in front of the layer, with normals
-// the aggregate does not carry. Both paths resolve them as one Lambert surface of their own mean
-// diffuse colour (albedo (1 - metallic); with emission, which resolves per sample, the samples
-// path takes each sample's own) under their own irradiance: the tile's lights at their mean position, through their mean
-// normal's lobe (filteredClampedCosine and the environment's bands), each shadowed light by one tap
-// at that position (shadeAggregate, offLayerLight). No specular: only their own normals could aim
-// it, and a chrome wall behind a sphere's rim stays dark (its mirror reflects nothing the rim's
-// normals see).
+// the aggregate does not carry. Both paths resolve them as one surface of their own: Lambert of
+// their mean diffuse colour (albedo (1 - metallic); with emission, which resolves per sample, the
+// samples path takes each sample's own) under their own irradiance, and GGX of their mean F0
+// through their own mean normal and its Toksvig-filtered alpha: the tile's lights at their mean
+// position, through their mean normal's lobe (filteredClampedCosine and the environment's bands),
+// each shadowed light by one tap at that position (shadeAggregate, offLayerLight). A chrome wall
+// behind a sphere's rim takes the wall's own flat normals there, not the rim's.
 // Before, their albedo and metallic joined the aggregate's means, which the BRDF is not linear in
 // (diffuse albedo (1 - m), F0 mix(0.04, albedo, m)): a grey ring round hard-mirror's plastic
 // sphere, lit with its grazing normals, 1.13x no-AA's error at c = 1. Then they took the aggregate's
 // irradiance, its position, normals and shadow: foliage's wall behind the leaves lost the point
-// lights near it, -13.7 % of the image's mean radiance at 64x64 (-0.4 % now).
+// lights near it, -13.7 % of the image's mean radiance at 64x64 (-0.4 % then). Then they had no
+// specular: metal's bars behind the aggregate's layer were black, -24 % (offLayerLight).
 vec3 offLayerRadiance(vec3 diffuseColour, vec3 irradiance) { return diffuseColour / kPi * irradiance; }
 
 void main() {
@@ -401,7 +441,8 @@ void main() {
     vec3 moment1[kMaxAggregates] = vec3[](vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0));
     vec4 albedoMetalSum[kMaxAggregates] = vec4[](vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0));
     vec3 offLayerDiffuseSum = vec3(0.0); // c = 1: the off-layer samples' diffuse colours (offLayerRadiance)
-    vec3 offLayerNormalSum = vec3(0.0);  // and their shading normals
+    vec3 offLayerNormalSum = vec3(0.0);  // and their shading normals,
+    vec4 offLayerF0AlphaSum = vec4(0.0); // F0 and material alpha (offLayerLight)
     float materialAlphaSum[kMaxAggregates] = float[](0.0, 0.0, 0.0, 0.0); // the two-point resolve's
     // The material alpha below the BRDF's floor too: the environment's level of a near-mirror.
     float materialAlphaRawSum[kMaxAggregates] = float[](0.0, 0.0, 0.0, 0.0);
@@ -440,6 +481,7 @@ void main() {
             if (offLayer) {
                 offLayerDiffuseSum += albedoMetal.rgb * (1.0 - albedoMetal.a);
                 offLayerNormalSum += N;
+                offLayerF0AlphaSum += vec4(mix(vec3(0.04), albedoMetal.rgb, albedoMetal.a), min(alpha, 1.0));
             } else
                 albedoMetalSum[a] += albedoMetal;
 #if AGAA_EXPORT
@@ -479,10 +521,12 @@ void main() {
     // fragment routing fed their fragments to the aggregate: there they take its radiance instead.
     const bool offLayerOwnColour = AGAA_GBUFFER != 0 || kRouteFragment == 0u;
     vec3 offLayerDiffuse = vec3(0.0), offLayerNormal = vec3(0.0);
+    vec4 offLayerF0Alpha = vec4(0.0);
     if (offLayerOwnColour && offLayerSamples > 0u) {
 #if AGAA_GBUFFER
         offLayerDiffuse = offLayerDiffuseSum / float(offLayerSamples);
         offLayerNormal = offLayerNormalSum / float(offLayerSamples);
+        offLayerF0Alpha = offLayerF0AlphaSum / float(offLayerSamples);
 #else
         uint at = offLayerWord(uint(size.x * size.y), pixelIndex), scale = unitScale(kOffLayerFieldBits, n);
         uint w0 = agBuffer[at], w1 = agBuffer[at + 1u], w2 = agBuffer[at + 2u];
@@ -490,6 +534,9 @@ void main() {
                                meanUnit(w1 & 0xFFFFu, offLayerSamples, scale));
         offLayerNormal = vec3(meanSigned(w1 >> 16u, offLayerSamples, scale), meanSigned(w2 & 0xFFFFu, offLayerSamples, scale),
                               meanSigned(w2 >> 16u, offLayerSamples, scale));
+        uint w3 = agBuffer[at + 3u], w4 = agBuffer[at + 4u];
+        offLayerF0Alpha = vec4(meanUnit(w3 & 0xFFFFu, offLayerSamples, scale), meanUnit(w3 >> 16u, offLayerSamples, scale),
+                               meanUnit(w4 & 0xFFFFu, offLayerSamples, scale), meanUnit(w4 >> 16u, offLayerSamples, scale));
 #endif
     }
     SurfaceInputs surfaces[kMaxAggregates];
@@ -649,6 +696,13 @@ void main() {
     vec3 offLayerIrradiance = vec3(0.0);
     vec4 offLayerPosition = offLayerSamples > 0u ? vec4(offLayerPositionSum / float(offLayerSamples), 1.0) : vec4(0.0);
     vec4 offLayerLobe = meanNormalLobe(offLayerNormal);
+    // Their specular lobe: Toksvig's filtered alpha from the normals' mean length times the
+    // material's own Toksvig length (the aggregates' Toksvig path, section 4.4), as a roughness.
+    vec4 offLayerSpecular = vec4(offLayerF0Alpha.rgb,
+                                 sqrt(filteredAlpha(offLayerLobe.w * toksvigLength(offLayerF0Alpha.w, agaa.toksvig.x,
+                                                                                   agaa.toksvig.y, agaa.toksvig.z),
+                                                    agaa.toksvig.x)));
+    vec3 offLayerSpecularRadiance = vec3(0.0), offLayerSpecularVariance = vec3(0.0);
     if (kSkipShading != 0u) {
     } else if (kCompactShading != 0u) {
         // The tile's further aggregates, packed: lane j shades entry j of each round. The slots
@@ -686,13 +740,14 @@ void main() {
                 surface.metallic = sAlbedo[self].a;
                 vec4 T = sTangent[self];
                 vec4 B = sBitangent[self];
-                vec3 lit, spec, variance, unusedIrradiance; // no off-layer samples beyond aggregate 0
+                // No off-layer samples beyond aggregate 0.
+                vec3 lit, spec, variance, unusedIrradiance, unusedSpecular, unusedVariance;
                 shadeAggregate(surface, T.xyz, B.xyz, vec2(T.w, B.w), sSpread[self].x, sSpread[self].y,
                                sPosition[self].xyz,
                                sPosition[self].w, sScreenSpread[self],
                                ownerPixel, uint(ownerPixel.y * size.x + ownerPixel.x), (owner >> 8u) & 3u,
-                               owner >> 10u, sggx, vec4(0.0), vec4(surface.normal, sSpread[self].x), lit, spec, variance,
-                               unusedIrradiance);
+                               owner >> 10u, sggx, vec4(0.0), vec4(surface.normal, sSpread[self].x), vec4(0.0), 0.0, lit,
+                               spec, variance, unusedIrradiance, unusedSpecular, unusedVariance);
                 sPosition[self].xyz = lit;
                 sNormal[self].xyz = spec;
                 sAlbedo[self].xyz = variance;
@@ -717,17 +772,23 @@ void main() {
         if (inside && present[0])
             shadeAggregate(surfaces[0], tangents[0], bitangents[0], alphas[0], spreads[0], environmentRoughness[0],
                            positions[0], depthSigma[0], screenSpreads[0],
-                           pixel, pixelIndex, 0u, samplesIn[0], sggx, offLayerPosition, offLayerLobe, radiance[0], specular[0],
-                           specularVariance[0], offLayerIrradiance);
+                           pixel, pixelIndex, 0u, samplesIn[0], sggx, offLayerPosition, offLayerLobe, offLayerSpecular,
+                           offLayerF0Alpha.w, radiance[0], specular[0], specularVariance[0], offLayerIrradiance,
+                           offLayerSpecularRadiance, offLayerSpecularVariance);
     } else if (inside) {
         for (uint a = 0u; a < c; ++a) {
             if (!present[a]) continue;
-            vec3 irradiance;
+            vec3 irradiance, offSpecular, offVariance;
             shadeAggregate(surfaces[a], tangents[a], bitangents[a], alphas[a], spreads[a], environmentRoughness[a],
                            positions[a], depthSigma[a], screenSpreads[a],
-                           pixel, pixelIndex, a, samplesIn[a], sggx, a == 0u ? offLayerPosition : vec4(0.0), offLayerLobe, radiance[a], specular[a],
-                           specularVariance[a], irradiance);
-            if (a == 0u) offLayerIrradiance = irradiance;
+                           pixel, pixelIndex, a, samplesIn[a], sggx, a == 0u ? offLayerPosition : vec4(0.0), offLayerLobe,
+                           offLayerSpecular, offLayerF0Alpha.w, radiance[a], specular[a], specularVariance[a], irradiance,
+                           offSpecular, offVariance);
+            if (a == 0u) {
+                offLayerIrradiance = irradiance;
+                offLayerSpecularRadiance = offSpecular;
+                offLayerSpecularVariance = offVariance;
+            }
         }
     }
     if (!inside) return;
@@ -750,17 +811,18 @@ void main() {
         // Fragment routing: a sample whose aggregate received no fragment takes aggregate 0's.
         if (kRouteFragment != 0u && !present[a]) a = 0u;
         vec3 L = present[a] ? radiance[a] : vec3(0.0);
-        if (id >= c && offLayerOwnColour) { // c = 1, off the layer: its diffuse colour, no specular
+        if (id >= c && offLayerOwnColour) { // c = 1, off the layer: its diffuse colour, their specular
 #if AGAA_GBUFFER
             vec4 albedoMetal = texelFetch(gAlbedoMetal, ivec3(pixel, s / 4u), int(s % 4u));
             vec3 diffuse = albedoMetal.rgb * (1.0 - albedoMetal.a); // the sample's own
 #else
             vec3 diffuse = offLayerDiffuse; // the pixel's off-layer mean (the AG-buffer keeps no more)
 #endif
-            L = offLayerRadiance(diffuse, offLayerIrradiance) +
+            L = offLayerRadiance(diffuse, offLayerIrradiance) + offLayerSpecularRadiance +
                 texelFetch(emissiveSamples, ivec3(pixel, s / 4u), int(s % 4u)).rgb;
             L = min(L * exposure, vec3(kMaxRadiance));
-            display += weight * toneMapAces(L);
+            display += weight * toneMapAggregate(L, offLayerSpecularRadiance * exposure,
+                                                 offLayerSpecularVariance * (exposure * exposure));
             hdr += weight * L;
             continue;
         }
@@ -783,8 +845,11 @@ void main() {
         uint stands = kRouteFragment != 0u && c > 1u ? accumulated[a]
                                                      : samplesIn[a] + (a == 0u && !offLayerOwnColour ? offLayerSamples : 0u);
         if (a == 0u && offLayerOwnColour && offLayerSamples > 0u) {
-            vec3 L = min(offLayerRadiance(offLayerDiffuse, offLayerIrradiance) * exposure, vec3(kMaxRadiance));
-            display += weight * float(offLayerSamples) * toneMapAces(L);
+            vec3 L = min((offLayerRadiance(offLayerDiffuse, offLayerIrradiance) + offLayerSpecularRadiance) * exposure,
+                         vec3(kMaxRadiance));
+            display += weight * float(offLayerSamples) *
+                       toneMapAggregate(L, offLayerSpecularRadiance * exposure,
+                                        offLayerSpecularVariance * (exposure * exposure));
             hdr += weight * float(offLayerSamples) * L;
         }
         if (stands == 0u) continue;

@@ -25,6 +25,12 @@ const float kMinLightDistance2 = 1.0e-4;
 const float kMinNormalLength = 1.0e-6;
 // Spot cone: cos(inner) - cos(outer) floor, so equal inner and outer cones do not divide by zero.
 const float kMinSpotCosRange = 1.0e-4;
+// Aggregate specular (common/brdf.glsl flakeWeight): the microflake form's weight ramps from 0 at
+// spread 1 (one normal: a flat pixel keeps the microfacet form, its Smith masking and its horizon,
+// so a light just below a flat mirror's horizon cannot leak through the lobe's peak) to 1 at spread
+// 1 - kFlakeSpreadRange (unitless mean normal length). 0.1: a tube seen side-on has 0.79; the
+// rounding of a flat aggregate's fixed-point normal moves its spread by under 1e-4.
+const float kFlakeSpreadRange = 0.1;
 // Largest radiance a tone mapper is fed; beyond it the curve is flat anyway and
 // fp32 products would overflow (1e4 emissive * 1e3 light count stays below).
 const float kMaxRadiance = 6.0e4;

@@ -88,13 +88,15 @@ inline_fn uint aggregateIncrement(uint ndf, uint w, uint k, AgQuantized f) {
 }
 
 // c = 1, samples routed per sample (issue 14): after the pixels' aggregate records, kOffLayerWords
-// per pixel sum the off-layer samples' diffuse colour, albedo (1 - metallic), and their shading
-// normals, offset to (N + 1) / 2: r | g << 16, b | nx << 16, ny | nz << 16, 16-bit fields of scale
-// unitScale(16, n) (n samples at 1 never carry). The lighting pass resolves those samples as a
-// Lambert surface of that colour under the irradiance through their own mean normal and its spread
-// (agaa/lighting.glsl offLayerRadiance); none of it mixes into the aggregate's fields, whose
-// albedo and metallic the BRDF is bilinear in.
-SHARED_CONST kOffLayerWords = 3u;
+// per pixel sum the off-layer samples' diffuse colour, albedo (1 - metallic), their shading
+// normals, offset to (N + 1) / 2, their specular colour F0 = mix(0.04, albedo, metallic) and their
+// material alpha (roughness^2): r | g << 16, b | nx << 16, ny | nz << 16, F0r | F0g << 16,
+// F0b | alpha << 16, 16-bit fields of scale unitScale(16, n) (n samples at 1 never carry). The
+// lighting pass resolves those samples as a surface of their own: Lambert of that colour under the
+// irradiance through their mean normal and its spread, and GGX of that F0 through the same normal
+// with the alpha Toksvig filters from its spread (agaa/lighting.glsl offLayerLight); none of it
+// mixes into the aggregate's fields, whose albedo and metallic the BRDF is bilinear in.
+SHARED_CONST kOffLayerWords = 5u;
 SHARED_CONST kOffLayerFieldBits = 16u;
 
 // Words of the AG-buffer for `pixels` pixels at c aggregates.

@@ -73,6 +73,7 @@ const uint kOpMeanNormalLobe = 27u; // mean normal a.xyz -> r0 (direction, lengt
 const uint kOpViewFootprint = 28u; // theta a.x, alpha a.y, screen covariance b.xyz -> r0.x weight
 const uint kOpAggregateWidth = 25u; // direction a.xyz, screen covariance b.xyz -> r0.x
 const uint kOpEnvironmentRoughness = 26u; // filtered alpha a.x, material alpha a.y -> r0.x
+const uint kOpBrdfFiltered = 29u; // as kOpBrdfAniso, spread e.w (evaluateBrdfAnisotropicFiltered) -> r0.xyz, r1.xyz
 const uint kOpCurvature = 21u;   // dN/dx a.xyz, dN/dy b.xyz, roughness c.x, max footprint c.y, boost c.z -> r0.x
 
 void main() {
@@ -117,6 +118,16 @@ void main() {
         vec3 spec;
         r0.xyz = evaluateBrdfAnisotropic(s, k.e.xyz, cross(k.b.xyz, k.e.xyz), k.c.w, k.d.w, k.c.xyz, k.d.xyz,
                                          vec3(1.0), spec);
+        r1.xyz = spec;
+    } else if (op == kOpBrdfFiltered) {
+        SurfaceInputs s;
+        s.albedo = k.a.xyz;
+        s.metallic = k.a.w;
+        s.normal = k.b.xyz;
+        s.roughness = 0.5;
+        vec3 spec;
+        r0.xyz = evaluateBrdfAnisotropicFiltered(s, k.e.xyz, cross(k.b.xyz, k.e.xyz), k.c.w, k.d.w, k.e.w, k.c.xyz,
+                                                 k.d.xyz, vec3(1.0), spec);
         r1.xyz = spec;
     } else if (op == kOpSggxLobe) {
         SggxLobe lobe = sggxLobe(k.a.x, k.a.y, k.a.z, k.b.x, k.b.y, k.b.z, k.c.xyz, kSggxOffDiagonal,
