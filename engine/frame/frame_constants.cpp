@@ -20,6 +20,29 @@ glm::mat4 reversedZPerspective(float yfov, float aspect, float znear, float zfar
     return p;
 }
 
+glm::mat4 viewTileCrop(const ViewTile& tile, uint32_t width, uint32_t height) {
+    if (tile.scale < 1 || tile.scale > kMaxViewTileScale)
+        throw std::invalid_argument("view tile scale " + std::to_string(tile.scale) + " is out of range (1.." +
+                                    std::to_string(kMaxViewTileScale) + ")");
+    const uint64_t wholeWidth = uint64_t(tile.scale) * width, wholeHeight = uint64_t(tile.scale) * height;
+    if (uint64_t(tile.origin.x) + width > wholeWidth || uint64_t(tile.origin.y) + height > wholeHeight)
+        throw std::invalid_argument("view tile at (" + std::to_string(tile.origin.x) + ", " +
+                                    std::to_string(tile.origin.y) + ") lies outside its " +
+                                    std::to_string(wholeWidth) + "x" + std::to_string(wholeHeight) + " view");
+    glm::mat4 crop(1.0f);
+    if (tile.scale == 1) return crop;
+    // Computed in double: the tile's centre in the whole view's NDC, pixel rows downwards as the
+    // shaders' ndc = 2 p / extent - 1.
+    const double s = tile.scale;
+    const double cx = (2.0 * tile.origin.x + width) / double(wholeWidth) - 1.0;
+    const double cy = (2.0 * tile.origin.y + height) / double(wholeHeight) - 1.0;
+    crop[0][0] = float(s);
+    crop[1][1] = float(s);
+    crop[3][0] = float(-s * cx);
+    crop[3][1] = float(-s * cy);
+    return crop;
+}
+
 glm::mat4 orbitView(const glm::mat4& view, const glm::vec3& pivot, float degrees) {
     // world' = T(pivot) R T(-pivot) world; the camera sees the scene rotated the other way.
     glm::mat4 toPivot(1.0f), fromPivot(1.0f), rotate(1.0f);
@@ -50,7 +73,8 @@ shared::FrameConstants makeFrameConstants(const scene::Scene& scene, const ViewS
     shared::FrameConstants c{};
     float aspect = float(view.width) / float(view.height);
     c.view = view.viewOverride ? *view.viewOverride : cam.view;
-    c.proj = reversedZPerspective(cam.yfov, aspect, cam.znear, cam.zfar);
+    c.proj = viewTileCrop(view.tile, view.width, view.height) *
+             reversedZPerspective(cam.yfov, aspect, cam.znear, cam.zfar);
     c.viewProj = c.proj * c.view;
     for (uint32_t l = 0; l < pattern.layers; ++l)
         c.layerOffsets[l] = glm::vec4(pattern.layerOffsets[l], 0, 0);
@@ -59,7 +83,9 @@ shared::FrameConstants makeFrameConstants(const scene::Scene& scene, const ViewS
     c.skyRadiance = glm::vec4(view.skyRadiance, 0.0f);
     c.extent = {float(view.width), float(view.height), 1.0f / float(view.width), 1.0f / float(view.height)};
     c.depthParams = {cam.znear, cam.zfar, view.exposure, 0.0f};
-    c.projParams = {c.proj[0][0], c.proj[1][1], 0.0f, 0.0f};
+    // zw: 0 for a whole view; a tile's NDC offset, which common/depth.glsl adds back on the ray.
+    c.projParams = {c.proj[0][0], c.proj[1][1], c.proj[2][0], c.proj[2][1]};
+    c.viewTile = {float(view.tile.scale), 0.0f, 0.0f, 0.0f};
     c.counts = {pattern.samples, pattern.samplesPerLayer, pattern.layers,
                 uint32_t(std::min<size_t>(scene.lights.size(), shared::kMaxLights))};
     return c;

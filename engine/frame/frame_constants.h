@@ -11,6 +11,15 @@
 
 namespace eng::frame {
 
+// One tile of a view `scale` times larger in each axis: the frame shows the width x height pixels
+// at pixel `origin` of the (scale width) x (scale height) image. The converged truth
+// (tools/harness/converged_truth.h) renders its supersampled image tile by tile this way, so its
+// memory is one frame's at any scale. scale 1 is the whole view.
+struct ViewTile {
+    uint32_t scale = 1;
+    glm::uvec2 origin{0, 0};
+};
+
 struct ViewSettings {
     uint32_t width = 256;
     uint32_t height = 256;
@@ -23,7 +32,15 @@ struct ViewSettings {
     // A host's own camera (view, yfov, znear, zfar) instead of Scene::cameras[camera]; checked
     // (0 < yfov < pi, 0 < znear < zfar). viewOverride, when set, still replaces its view.
     std::optional<scene::Camera> cameraOverride;
+    // Checked: 1 <= scale <= kMaxViewTileScale, and the tile inside the larger image.
+    ViewTile tile;
 };
+
+inline constexpr uint32_t kMaxViewTileScale = 64;
+
+// The clip-space crop that turns the whole view's projection into `tile`'s: x' = s x - s c w,
+// with s = tile.scale and c the tile's centre in the whole view's NDC. Identity for scale 1.
+glm::mat4 viewTileCrop(const ViewTile& tile, uint32_t width, uint32_t height);
 
 // The scene camera's view rotated about the world Y axis through `pivot` by `degrees`
 // (a short orbit for temporal-stability measurements).

@@ -43,9 +43,15 @@ float viewFootprintWeight(float theta, vec3 S, float alpha) {
     return clamp(rho / kViewFootprintLobeRatio - 1.0, 0.0, 1.0);
 }
 
+// The view ray's slope numerator at pixel-space position pixelPos: its NDC, plus the projection's
+// off-axis terms (projParams.zw, 0 except in a tile of a larger view), so that x_view = r.x t / P00.
+vec2 viewRayNdc(vec2 pixelPos, vec4 extent, vec4 projParams) {
+    return pixelPos * extent.zw * 2.0 - 1.0 + projParams.zw;
+}
+
 // View-space point at view distance t on the ray through pixel-space position pixelPos.
 vec3 viewPositionAtDistance(vec2 pixelPos, float t, vec4 extent, vec4 projParams) {
-    vec2 ndc = pixelPos * extent.zw * 2.0 - 1.0;
+    vec2 ndc = viewRayNdc(pixelPos, extent, projParams);
     return vec3(ndc.x * t / projParams.x, ndc.y * t / projParams.y, -t);
 }
 

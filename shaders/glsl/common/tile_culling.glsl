@@ -1,5 +1,6 @@
 #ifndef AGAA_TILE_CULLING_GLSL
 #define AGAA_TILE_CULLING_GLSL
+#include "common/depth.glsl"
 // Tiled deferred light culling (one workgroup of kTileSize^2 invocations per tile):
 // tile depth bounds from the samples' view distances, then every point/spot light
 // tested against the tile's view-space box. Surviving lights are recorded as bits,
@@ -75,8 +76,8 @@ void tileCullLights() {
     }
     float tmin = uintBitsToFloat(sTileMinBits);
     float tmax = uintBitsToFloat(sTileMaxBits);
-    vec2 lo = vec2(gl_WorkGroupID.xy * kTileSize) * frame.extent.zw * 2.0 - 1.0;
-    vec2 hi = vec2((gl_WorkGroupID.xy + 1u) * kTileSize) * frame.extent.zw * 2.0 - 1.0;
+    vec2 lo = viewRayNdc(vec2(gl_WorkGroupID.xy * kTileSize), frame.extent, frame.projParams);
+    vec2 hi = viewRayNdc(vec2((gl_WorkGroupID.xy + 1u) * kTileSize), frame.extent, frame.projParams);
     // View-space box of the tile's frustum slice: x = ndc.x t / P00, y = ndc.y t / P11.
     vec3 boxLo = vec3(1e30), boxHi = vec3(-1e30);
     for (int c = 0; c < 8; ++c) {

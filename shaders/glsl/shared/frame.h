@@ -32,8 +32,13 @@ struct FrameConstants {
     vec4 skyRadiance; // rgb: radiance of uncovered samples
     vec4 extent;      // width, height, 1/width, 1/height
     vec4 depthParams; // znear, zfar, exposure, unused
-    vec4 projParams;  // proj[0][0], proj[1][1], unused, unused
+    // proj[0][0], proj[1][1], proj[2][0], proj[2][1]: zw are 0 except in a tile of a larger view
+    // (engine/frame/frame_constants.h ViewTile), whose rays are off the axis.
+    vec4 projParams;
     uvec4 counts;     // samples n, samples per layer, layers, light count
+    // x: the tile scale (1 = this frame is the whole view); the shadow maps are fitted to the
+    // whole view's frustum, so every tile of a view sees the same ones. yzw unused.
+    vec4 viewTile;
 };
 
 // A punctual light in view space. Intensity already multiplied into colour.
