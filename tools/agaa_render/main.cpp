@@ -17,12 +17,14 @@
 #include "engine/scene/scene_error.h"
 #include "engine/vk/check.h"
 #include "engine/vk/device.h"
+#include "tools/harness/converged_truth.h"
 #include "tools/harness/frame_renderer.h"
 #include "tools/scenes/adversarial_scenes.h"
 
 #include <nlohmann/json.hpp>
 
 #include <charconv>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -55,6 +57,8 @@ struct Options {
     std::string lights = "auto";
     uint32_t extraLights = 0; // --extra-lights: generated point lights (engine/scene/extra_lights.h)
     std::optional<std::string> environment;
+    uint32_t truth = 0; // --truth K: the converged truth, K x K sub-pixel tiles at n = 32, instead of --method
+    std::optional<std::string> truthCache;
 };
 
 const char* kUsage =
@@ -73,6 +77,7 @@ const char* kUsage =
     "                   [--curvature-roughness on|off]\n"
     "                   [--effects scene|all] [--shadow-taps N] [--shadow-footprint F] [--shadow-map-size N] "
     "[--shadow-casters scene|none]\n"
+    "                   [--truth K] [--truth-cache DIR]\n"
     "                   [--validate] [--device NAME] [--caps] [--help]\n"
     "\n"
     "  --scene FILE      glTF 2.0 scene (.gltf or .glb)\n"
@@ -140,6 +145,11 @@ const char* kUsage =
     "                    (adaptive, the default)\n"
     "  --shadow-map-size N  texels per side of each shadow map, 64..4096 (default 1024)\n"
     "  --shadow-casters scene|none  none: the scene's lights cast no shadows (a scene without shadows)\n"
+    "  --truth K         the converged ground truth instead of --method: the reference at n = 32 with\n"
+    "                    materials shaded per sample, at K times the width and height in K^2 tiles,\n"
+    "                    each K x K block averaged (32 K^2 samples a pixel), K in 1..16; prints its\n"
+    "                    own error estimate (its two checkerboard halves' display RMSE / 2)\n"
+    "  --truth-cache DIR  keep truths in DIR, keyed by scene, view, lights, exposure and binary\n"
     "  --out PREFIX      writes PREFIX.exr (linear HDR) and PREFIX.png (tone-mapped sRGB)\n"
     "  --stats FILE      per-pass GPU times, storage, shading events, validation errors as JSON\n"
     "  --graph FILE      compiled render graph as Graphviz DOT (and FILE.json)\n"
@@ -294,6 +304,10 @@ Options parse(int argc, char** argv) {
             o.frames = parseUint(a, value(), 1, 1000);
         else if (a == "--warmup")
             o.warmup = parseUint(a, value(), 0, 1000);
+        else if (a == "--truth")
+            o.truth = parseUint(a, value(), 1, agaa::kMaxTruthSupersampling);
+        else if (a == "--truth-cache")
+            o.truthCache = value();
         else if (a == "--validate")
             o.validate = true;
         else if (a == "--device")
@@ -397,6 +411,46 @@ nlohmann::json statsJson(const Options& o, const agaa::RenderResult& r, const en
     return j;
 }
 
+int renderTruth(const Options& o, agaa::FrameRenderer& renderer, const agaa::RenderRequest& request,
+                eng::vk::Device& device) {
+    agaa::TruthSettings settings;
+    settings.supersampling = o.truth;
+    std::optional<agaa::TruthCache> cache;
+    if (o.truthCache) cache.emplace(*o.truthCache);
+    const agaa::ConvergedTruth t = agaa::renderConvergedTruth(renderer, request, settings, cache ? &*cache : nullptr);
+    std::filesystem::path prefix(o.out);
+    eng::io::writeExr(prefix.string() + ".exr", t.hdr);
+    eng::io::writePng(prefix.string() + ".png", eng::io::quantizeToU8(eng::io::srgbEncoded(t.display)));
+    std::cout << "wrote " << prefix.string() << ".exr and " << prefix.string() << ".png (converged truth: "
+              << settings.supersampling << "x" << settings.supersampling << " tiles at n=" << settings.samples
+              << ", " << settings.samples * settings.supersampling * settings.supersampling
+              << " samples a pixel, " << request.view.width << "x" << request.view.height << ", exposure "
+              << t.exposure << (t.fromCache ? ", from the cache" : "") << ")\n"
+              << "truth error estimate (display RMSE): " << t.errorEstimate << "; linear mean luminance "
+              << t.meanLuminance << "\n";
+    if (o.stats) {
+        nlohmann::json j;
+        j["method"] = "truth";
+        j["supersampling"] = settings.supersampling;
+        j["samples"] = settings.samples;
+        j["width"] = request.view.width;
+        j["height"] = request.view.height;
+        j["exposure"] = t.exposure;
+        j["error_estimate"] = std::isfinite(t.errorEstimate) ? nlohmann::json(t.errorEstimate) : nlohmann::json();
+        j["mean_luminance"] = t.meanLuminance;
+        j["from_cache"] = t.fromCache;
+        j["key"] = t.key;
+        j["validation_errors"] = device.validationErrors();
+        writeText(*o.stats, j.dump(2) + "\n");
+        std::cout << "wrote " << *o.stats << "\n";
+    }
+    if (device.validationErrors() > 0) {
+        std::cerr << "agaa-render: " << device.validationErrors() << " validation error(s)\n";
+        return 1;
+    }
+    return 0;
+}
+
 int renderWith(const Options& o, eng::vk::Device& device) {
     if (o.caps) {
         std::cout << device.caps().describe();
@@ -427,6 +481,7 @@ int renderWith(const Options& o, eng::vk::Device& device) {
     request.autoExposure = o.exposure ? *o.exposure == "auto" : !scene.exposure.has_value();
     if (!o.exposure && scene.exposure) request.view.exposure = *scene.exposure;
     agaa::FrameRenderer renderer(device, scene);
+    if (o.truth > 0) return renderTruth(o, renderer, request, device);
     agaa::RenderResult r = renderer.render(request);
     if (!eng::io::allFinite(r.hdr) || !eng::io::allFinite(r.display)) {
         std::cerr << "agaa-render: internal error: the frame contains NaN or Inf; nothing written\n";

@@ -96,6 +96,7 @@ float FrameRenderer::meteredExposure(const eng::frame::ViewSettings& view, doubl
         RenderRequest meter;
         meter.method = "noaa";
         meter.view = view;
+        meter.view.tile = {}; // a tile of the view is metered as the whole view
         meter.view.width = meterWidth;
         meter.view.height = meterHeight;
         meter.view.exposure = eng::frame::meteringExposure(m_scene);
@@ -107,6 +108,14 @@ float FrameRenderer::meteredExposure(const eng::frame::ViewSettings& view, doubl
     }
     ev100 = it->second.second;
     return it->second.first;
+}
+
+float FrameRenderer::exposureFor(const RenderRequest& request) {
+    if (!request.autoExposure) return request.view.exposure;
+    double ev100 = 0.0;
+    eng::frame::ViewSettings whole = request.view;
+    whole.tile = {};
+    return meteredExposure(whole, ev100);
 }
 
 RenderResult FrameRenderer::render(const RenderRequest& original) {
@@ -123,6 +132,11 @@ RenderResult FrameRenderer::render(const RenderRequest& original) {
     }
     const RenderRequest& request = original;
     const uint32_t w = request.view.width, h = request.view.height;
+    // Only the reference reconstructs its rays through common/depth.glsl alone, which honours a
+    // tile's off-axis projection; the converged truth is all that renders tiles.
+    if (request.view.tile.scale != 1 && request.method != "reference")
+        throw std::invalid_argument("a view tile is rendered by the reference method only, not '" +
+                                    request.method + "'");
     if (w == 0 || h == 0 || w > 8192 || h > 8192)
         throw std::invalid_argument("image size " + std::to_string(w) + "x" + std::to_string(h) +
                                     " is out of range (1..8192 each)");

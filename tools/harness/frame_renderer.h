@@ -81,6 +81,8 @@ class FrameRenderer {
     // The technique a request renders with (created on first use, then cached).
     Technique& technique(const RenderRequest& request);
     const eng::scene::Scene& scene() const { return m_scene; }
+    // The exposure `request` renders at: its own, or the metered one when it asks for auto.
+    float exposureFor(const RenderRequest& request);
 
   private:
     float meteredExposure(const eng::frame::ViewSettings& view, double& ev100);
