@@ -16,7 +16,7 @@ constexpr float kYfov = 0.7f; // radians (40 degrees)
 constexpr float kAspect16x9 = 16.0f / 9.0f;
 constexpr int kPointLights = 16;
 
-enum class Kind { Furball, Metal, Foliage, Bamboo, Railings, Plane, Default, Spikes };
+enum class Kind { Furball, Metal, Foliage, Bamboo, Railings, Plane, Default, Spikes, GoldPoints };
 
 struct KindName {
     Kind kind;
@@ -26,7 +26,7 @@ struct KindName {
 constexpr KindName kKinds[] = {
     {Kind::Furball, "furball"}, {Kind::Metal, "metal"},       {Kind::Foliage, "foliage"},
     {Kind::Bamboo, "bamboo"},   {Kind::Railings, "railings"}, {Kind::Plane, "plane"},
-    {Kind::Default, "default"}, {Kind::Spikes, "spikes"},
+    {Kind::Default, "default"}, {Kind::Spikes, "spikes"},     {Kind::GoldPoints, "glints"},
 };
 
 std::string knownList() {
@@ -55,7 +55,28 @@ glm::vec3 hueToRgb(float hue, float saturation) {
     return glm::mix(glm::vec3(1.0f), rgb, saturation);
 }
 
+// The glossy thin-metal case under point lights alone (issue 34): 8 white lights of 20 cd on a
+// ring 2 m from the subject's centre, no sun, no floor; every highlight is a point light's.
+constexpr int kGoldPointLights = 8;
+constexpr float kGoldPointRadius = 2.0f;   // metres
+constexpr float kGoldPointCandela = 20.0f; // about 5 lux at the ball
+
+void addGoldPointLights(ModelBuilder& builder, const Bounds& subject) {
+    const glm::vec3 centre = 0.5f * (subject.min + subject.max);
+    for (int k = 0; k < kGoldPointLights; ++k) {
+        const float a = 6.28318530718f * (static_cast<float>(k) + 0.5f) / kGoldPointLights;
+        // Alternately above and below the equator, so the highlights are not all in one band.
+        const glm::vec3 p = centre + kGoldPointRadius * glm::normalize(glm::vec3(std::cos(a), k % 2 ? -0.4f : 0.6f,
+                                                                                 std::sin(a)));
+        builder.addPointLight("point." + std::to_string(k), p, {1.0f, 1.0f, 1.0f}, kGoldPointCandela, 0.0f);
+    }
+}
+
 void addLights(ModelBuilder& builder, const Bounds& subject, const Stage& stage, Kind kind) {
+    if (kind == Kind::GoldPoints) {
+        addGoldPointLights(builder, subject);
+        return;
+    }
     builder.addDirectionalLight("sun", glm::normalize(glm::vec3(-0.35f, -1.0f, -0.45f)), {1.0f, 0.96f, 0.9f},
                                 3.0f, true);
     const glm::vec3 centre = 0.5f * (subject.min + subject.max);
@@ -155,6 +176,11 @@ Stage buildKind(Kind kind, SubjectSink& sink) {
         stage.floorY = 0.0f;
         addFloor(sink, 0.0f, 3.0f, {0.1f, 0.1f, 0.11f});
         addSpikeBall(sink, {0.0f, 1.05f, 0.0f}, 1.0f, 6000);
+        stage.viewDir = {0.0f, -0.2f, -1.0f};
+        break;
+    case Kind::GoldPoints:
+        // The spike ball alone, in the dark: 6000 gold rods of 2.5 mm, roughness 0.02.
+        addSpikeBall(sink, {0.0f, 0.0f, 0.0f}, 1.0f, 6000);
         stage.viewDir = {0.0f, -0.2f, -1.0f};
         break;
     case Kind::Default:
