@@ -12,6 +12,7 @@
 #include "engine/io/tone_map.h"
 #include "engine/scene/scenegen.h"
 #include "gpu_test_support.h"
+#include "tools/harness/converged_truth.h"
 #include "tools/harness/frame_renderer.h"
 #include "tools/scenes/adversarial_scenes.h"
 
@@ -60,52 +61,50 @@ std::vector<std::string> everyScene() {
     return scenes;
 }
 
-// Where AGAA is still worse than no AA (issue 14, open): measured at 64x64, n = 8, and listed so
+// Where AGAA misses a bound against the converged truth (64x64, n = 8, truth k = 4), listed so
 // that the test guards every other scene and c, and notices when a gap closes (it then fails and
-// asks for the entry to go). The README's quality table gives each with its numbers.
+// asks for the entry to go). docs/truth.md gives each with its numbers and the reference's.
 struct KnownGap {
     const char* scene;
     uint32_t c;
     const char* measured;
     const char* method = nullptr; // nullptr: both generation paths
 };
-// No display gap is left. The last, hard-mirror at c = 1 (1.13x samples path, 1.09x accumulate),
-// was the off-layer samples' colour: c = 1 lights the larger of a pixel's two layers (shared/
-// clustering.h splitLayers; before it hard-mirror 1.49x, hard-many-lights 1.35x), and the chrome
-// wall's samples behind the plastic sphere's rim joined its albedo and metallic means, lit with
-// the rim's grazing normals (a grey ring). They now resolve with their own diffuse colour under
-// their own irradiance (lighting.glsl offLayerRadiance): 0.39x / 0.26x.
-constexpr std::array<KnownGap, 0> kDisplayGaps{};
-// The energy bound, at every c: within 10 % of the 8-sample reference's mean, with no slack (an
-// allowance of no-AA's own distance once let c = 1's foliage pass at -13.7 %, no-AA being at
-// -19 % there; it closed, -0.3 %, when the off-layer samples took their own irradiance).
-// The reference reads each fragment's attributes at the centroid of its covered samples
-// (reference/gbuffer_inputs.glsl). At the pixel centre, as before, a thin bar's normal was
-// extrapolated outside the bar: the metal lattice's reference mean was 0.370 against 0.454 at
-// sample rate, and that 18 % bias was the "+11.3 %" gap of metal c = 4 (now -2.3 %), and it hid
-// the two metal gaps below (c = 1 measured -5.3 %, c = 2 +9.8 % against the biased reference).
-// - spikes: the reference's mean (0.904) is one sample: a spike's flat cap that mirrors the sun
-//   puts 3224 in one pixel, 94 % of the image's mean (0.118 without it, at the pixel centre);
-//   the pixel-centre reference's mean went 0.12 to 0.30 with the size and n, and AGAA sees the
-//   same 8 samples: its mean stays 0.19 to 0.26.
-// - hard-light-inside: a light on the sphere's vertex puts the image's mean in the few samples of
-//   one pixel, where AGAA and no-AA give the same radiance (+19 %, no-AA +18 %; -2.6 % at 128x128
-//   and +1.5 % at 256x256 before the centroid).
-// Metal, -24.1 % at c = 1 and -10.1 to -10.6 % at c = 2, closed in two steps (now -9.2 % and
-// -4.5 to -4.7 %): c = 1's off-layer samples took a specular of their own (lighting.glsl
-// offLayerLight; the bars behind the aggregate's layer were black: -14.2 %), and the aggregates'
-// specular the microflake form where their normals spread (common/brdf.glsl specularFlake): the
-// mean normal's horizon cut the sun's highlights on the bars' upper halves.
-// Hard-mirror, -44 % at c = 2 (no-AA -60 %), closed when near mirrors took their samples' own view
-// directions (lighting.glsl addLightFootprint: -0.1 %): the sun's peak on the flat chrome wall
-// falls between pixel centres, and one view direction a pixel found it or missed it.
-constexpr std::array<KnownGap, 6> kEnergyGaps{{
-    {"spikes", 1, "-71.2 to -71.4 % mean radiance"},
-    {"spikes", 2, "-68.8 to -68.9 % mean radiance"},
-    {"spikes", 4, "-73.2 to -75.2 % mean radiance"},
-    {"hard-light-inside", 1, "+19.0 to +19.4 % (no-AA +17.7 %)"},
-    {"hard-light-inside", 2, "+19.0 to +19.4 % (no-AA +17.7 %)"},
-    {"hard-light-inside", 4, "+19.0 to +19.4 % (no-AA +17.7 %)"},
+// hard-far: every multi-sample method is further from the truth than no-AA, the reference (8)
+// included (0.0121 against no-AA's 0.0023; the truth's own error 0.0006): not AGAA's pre-filter.
+constexpr std::array<KnownGap, 3> kDisplayGaps{{
+    {"hard-far", 1, "0.0163 / 0.0164, 7.0x no-AA (reference (8) 5.2x)"},
+    {"hard-far", 2, "0.0121, 5.2x no-AA (reference (8) 5.2x)"},
+    {"hard-far", 4, "0.0121, 5.2x no-AA (reference (8) 5.2x)"},
+}};
+// The energy bound, at every c: within 10 % of the truth's mean. The gaps, each beside the
+// reference (8)'s own distance from the truth:
+// - foliage: -14.8 to -15.6 %, as the reference (8) (-15.6 %); no-AA -30.9 %. Every method that
+//   evaluates alpha-tested materials once a pixel loses this much coverage against the truth's
+//   per-sample materials.
+// - spikes c = 2: +15.7 / +16.0 % (reference (8) +271.7 %: one sample mirroring the sun).
+// - glints: +52.6 to +82.7 % (reference (8) +55.9 %, no-AA +19.4 %): glossy gold rods of 2.5 mm
+//   under point lights only; issue 35 takes it on.
+// - hard-mirror: -37.6 to -38.1 % (reference (8) -38.4 %, no-AA -75.5 %): the sun's mirror
+//   image on the chrome wall is narrower than a sample's spacing at n = 8.
+// - hard-light-inside: +22.0 / +22.4 % (reference (8) +2.5 %, no-AA +20.6 %): a light on the
+//   sphere's vertex puts the image's mean in the few samples of one pixel.
+// The 8-sample reference had listed spikes at c = 1 and 4 (-71 to -75 %): its own noise; against
+// the truth they are +6.4 to +7.0 % and -0.5 to -7.9 %.
+constexpr std::array<KnownGap, 13> kEnergyGaps{{
+    {"foliage", 1, "-14.8 % (reference (8) -15.6 %)"},
+    {"foliage", 2, "-15.6 % (reference (8) -15.6 %)"},
+    {"foliage", 4, "-15.5 to -15.6 % (reference (8) -15.6 %)"},
+    {"spikes", 2, "+15.7 to +16.0 %"},
+    {"glints", 1, "+57.9 to +59.9 % (reference (8) +55.9 %)"},
+    {"glints", 2, "+63.2 to +65.0 % (reference (8) +55.9 %)"},
+    {"glints", 4, "+52.6 to +82.7 % (reference (8) +55.9 %)"},
+    {"hard-mirror", 1, "-37.7 to -38.1 % (reference (8) -38.4 %)"},
+    {"hard-mirror", 2, "-37.6 to -38.1 % (reference (8) -38.4 %)"},
+    {"hard-mirror", 4, "-37.6 to -38.1 % (reference (8) -38.4 %)"},
+    {"hard-light-inside", 1, "+22.0 to +22.4 % (no-AA +20.6 %)"},
+    {"hard-light-inside", 2, "+22.0 to +22.4 % (no-AA +20.6 %)"},
+    {"hard-light-inside", 4, "+22.0 to +22.4 % (no-AA +20.6 %)"},
 }};
 
 const KnownGap* knownGap(std::span<const KnownGap> gaps, const std::string& scene, uint32_t c,
@@ -117,9 +116,17 @@ const KnownGap* knownGap(std::span<const KnownGap> gaps, const std::string& scen
 
 class QualityScene : public ::testing::TestWithParam<std::string> {};
 
-// For both generation paths and c = 1, 2 and 4: AGAA(8, c)'s display error against the reference is at most
-// no-AA's, and its linear mean radiance is within 10 % of the reference's (kEnergyGaps: where the
-// 8-sample reference's mean is not converged).
+// The converged truth of a scene at the test's size (tools/harness/converged_truth.h): k = 4, 512
+// samples a pixel; cached in the build folder, so a re-run of the suite pays for it once.
+agaa::ConvergedTruth truthOf(agaa::FrameRenderer& renderer, const agaa::RenderRequest& view) {
+    const agaa::TruthCache cache(agaa::truthCacheDir(AGAA_TEST_TRUTH_CACHE));
+    return agaa::renderConvergedTruth(renderer, view, agaa::TruthSettings{}, &cache);
+}
+
+// For both generation paths and c = 1, 2 and 4, against the converged truth: AGAA(8, c)'s display
+// error is at most no-AA's (decidedly worse only: by more than the truth's own error estimate),
+// and its linear mean radiance is within 10 % of the truth's. The reference at the same n is
+// printed beside it: the shading error at fixed visibility.
 TEST_P(QualityScene, AgaaIsNeverWorseThanNoAaAndKeepsTheEnergy) {
     auto device = agaa::test::makeValidatedDevice();
     eng::scene::Scene scene = eng::scene::loadTestScene(GetParam());
@@ -132,20 +139,26 @@ TEST_P(QualityScene, AgaaIsNeverWorseThanNoAaAndKeepsTheEnergy) {
     const char* ndf = std::getenv("AGAA_QUALITY_NDF");
     agaa::FrameRenderer renderer(*device, scene);
     const uint32_t size = qualitySize(), n = 8;
-    // AGAA_QUALITY_REFERENCE_SAMPLES=32: the reference at another n (AGAA stays at 8).
-    const char* refSamples = std::getenv("AGAA_QUALITY_REFERENCE_SAMPLES");
     const bool measuredSetting = size == 64 && !std::getenv("AGAA_QUALITY_NO_SHADOWS") && !ndf &&
                                  !std::getenv("AGAA_QUALITY_EXPOSURE") &&
-                                 !std::getenv("AGAA_QUALITY_METAL_ROUGHNESS") && !refSamples;
-    const agaa::RenderResult ref =
-        renderer.render(request("reference", refSamples ? uint32_t(std::atoi(refSamples)) : n, 1, size));
+                                 !std::getenv("AGAA_QUALITY_METAL_ROUGHNESS");
+    const agaa::ConvergedTruth truth = truthOf(renderer, request("reference", n, 1, size));
+    const agaa::RenderResult ref = renderer.render(request("reference", n, 1, size));
+    // The same reference with materials at sample rate: what of its error is the pixel-rate material.
+    agaa::RenderRequest sampleRate = request("reference", n, 1, size);
+    sampleRate.settings.sampleRateShading = true;
+    const agaa::RenderResult refSampleRate = renderer.render(sampleRate);
     const agaa::RenderResult noaa = renderer.render(request("noaa", 1, 1, size));
-    const eng::io::ImageF refDisplay = encoded(ref.display);
-    const double noaaError = eng::io::rmse(encoded(noaa.display), refDisplay);
-    const double refMean = meanRadiance(ref.hdr), noaaMean = meanRadiance(noaa.hdr);
-    std::printf(
-        "[ measured ] %-18s reference mean %.4g, no-AA display RMSE %.4f, linear RMSE %.4g (mean %.4g)\n",
-        GetParam().c_str(), refMean, noaaError, eng::io::rmse(noaa.hdr, ref.hdr), noaaMean);
+    const eng::io::ImageF truthDisplay = encoded(truth.display);
+    const double noaaError = eng::io::rmse(encoded(noaa.display), truthDisplay);
+    const double refError = eng::io::rmse(encoded(ref.display), truthDisplay);
+    const double truthMean = meanRadiance(truth.hdr), noaaMean = meanRadiance(noaa.hdr);
+    auto percent = [&](double mean) { return truthMean > 0 ? 100.0 * (mean - truthMean) / truthMean : 0.0; };
+    std::printf("[ measured ] %-18s truth mean %.4g (own error %.4f), reference (8) display RMSE %.4f "
+                "(mean %+.1f %%), at sample rate %.4f (%+.1f %%), no-AA %.4f (mean %+.1f %%)\n",
+                GetParam().c_str(), truthMean, truth.errorEstimate, refError, percent(meanRadiance(ref.hdr)),
+                eng::io::rmse(encoded(refSampleRate.display), truthDisplay), percent(meanRadiance(refSampleRate.hdr)),
+                noaaError, percent(noaaMean));
     // Both generation paths, with the same known gaps (AGAA_QUALITY_METHOD: one method only).
     const char* only = std::getenv("AGAA_QUALITY_METHOD");
     std::vector<std::string> paths = {"agaa-samples", "agaa-accumulate"};
@@ -156,17 +169,17 @@ TEST_P(QualityScene, AgaaIsNeverWorseThanNoAaAndKeepsTheEnergy) {
             agaa::RenderRequest r = request(path, n, c, size);
             if (ndf) r.settings.ndf = ndf;
             const agaa::RenderResult ag = renderer.render(r);
-            const double error = eng::io::rmse(encoded(ag.display), refDisplay);
+            const double error = eng::io::rmse(encoded(ag.display), truthDisplay);
             const double mean = meanRadiance(ag.hdr);
-            std::printf("[ measured ] %-18s agaa (8, %u): display RMSE %.4f (%.2fx no-AA), linear RMSE %.4g, "
-                        "mean %.4g "
-                        "(%+.1f %%)\n",
-                        GetParam().c_str(), c, error, noaaError > 0 ? error / noaaError : 0.0,
-                        eng::io::rmse(ag.hdr, ref.hdr), mean,
-                        refMean > 0 ? 100.0 * (mean - refMean) / refMean : 0.0);
-            // A scene no-AA renders exactly (one surface per pixel) leaves AGAA the same slack.
-            const bool displayOk = error <= std::max(noaaError, 1e-3);
-            const bool energyOk = std::abs(mean - refMean) <= std::max(0.1 * refMean, 1e-3);
+            std::printf("[ measured ] %-18s %s (8, %u): display RMSE %.4f (%.2fx no-AA, %.2fx reference), "
+                        "mean %.4g (%+.1f %%)\n",
+                        GetParam().c_str(), path, c, error, noaaError > 0 ? error / noaaError : 0.0,
+                        refError > 0 ? error / refError : 0.0, mean,
+                        truthMean > 0 ? 100.0 * (mean - truthMean) / truthMean : 0.0);
+            // Worse only when decidedly so: each error may be off by the truth's own. A scene no-AA
+            // renders exactly (one surface per pixel) leaves AGAA the same slack.
+            const bool displayOk = error <= std::max(noaaError, 1e-3) + truth.errorEstimate;
+            const bool energyOk = std::abs(mean - truthMean) <= std::max(0.1 * truthMean, 1e-3);
             if (!measuredSetting) continue; // a measurement run: print only
             const KnownGap* displayGap = knownGap(kDisplayGaps, GetParam(), c, pathName);
             const KnownGap* energyGap = knownGap(kEnergyGaps, GetParam(), c, pathName);
@@ -180,11 +193,11 @@ TEST_P(QualityScene, AgaaIsNeverWorseThanNoAaAndKeepsTheEnergy) {
             }
             if (energyGap) {
                 EXPECT_FALSE(energyOk) << GetParam() << " " << path << " c=" << c
-                                       << " now keeps the reference's energy (it measured "
+                                       << " now keeps the truth's energy (it measured "
                                        << energyGap->measured << "): remove it from kEnergyGaps";
             } else {
                 EXPECT_TRUE(energyOk) << GetParam() << " " << path << " c=" << c
-                                      << ": AGAA's mean radiance is not the reference's";
+                                      << ": AGAA's mean radiance is not the truth's";
             }
         }
     }
