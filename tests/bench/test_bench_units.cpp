@@ -195,7 +195,9 @@ JobResult sampleResult(const std::string& scene, const std::string& method, uint
     r.passes = {{"x.lighting", makeSpread({0.5, 0.75})}};
     r.bytesPerPixel = 12.5;
     r.errorSameN = ErrorMetrics{0.0, std::numeric_limits<double>::infinity(), 1.0, 0.0};
-    r.errorHighRate = ErrorMetrics{0.01, 40.0, 0.99, 0.05};
+    r.errorTruth = ErrorMetrics{0.01, 40.0, 0.99, 0.05};
+    r.truth = TruthInfo{4, 32, 0.0004, 0.21};
+    r.meanLuminance = 0.2;
     r.temporal = TemporalStability{5, 0.5f, 4, 4, 0.002, {0.001, 0.003}};
     r.imageDisplay = "images/a.png";
     return r;
@@ -262,7 +264,7 @@ TEST(Claims, PeersClaimsFromTheirJobs) {
                   double bytes) {
         JobResult r = sampleResult("foliage", method, 8, c);
         r.job.surfaces = S;
-        r.errorHighRate = ErrorMetrics{rmse, 30.0, 0.9, 0.1};
+        r.errorTruth = ErrorMetrics{rmse, 30.0, 0.9, 0.1};
         r.shadingEventsMean = events;
         r.shadingEventsWorstLane = worst;
         r.shadingEventsMax = uint32_t(worst) + 1;
@@ -291,6 +293,35 @@ TEST(Claims, PeersClaimsFromTheirJobs) {
     EXPECT_EQ(starting("SBAA at iso-quality"), "3.00x | foliage: 3.00x at S=6")
         << "S = 4 is worse than AGAA, S = 6 better: 300 / 100 B";
     EXPECT_EQ(starting("Worst-lane shading events").substr(0, 4), "0.25") << "1.8 / 7.2";
+}
+
+// A truth whose own error is not a tenth of the difference between two methods' errors cannot rank
+// them: the claim says undecided instead of a ratio, and names both figures.
+TEST(Claims, ErrorClaimsBelowTheTruthsOwnErrorAreUndecided) {
+    auto job = [](const std::string& method, uint32_t S, double rmse, double truthError) {
+        JobResult r = sampleResult("foliage", method, 8, method == "agaa" ? 2 : 0);
+        r.job.surfaces = S;
+        r.errorTruth = ErrorMetrics{rmse, 30.0, 0.9, 0.1};
+        r.truth.errorEstimate = truthError;
+        return r;
+    };
+    auto claim = [](const std::vector<JobResult>& run) {
+        for (const ClaimRow& row : measureClaims(run))
+            if (row.claim.rfind("AGAA (8x, c=2) looks as good as SBAA", 0) == 0)
+                return row.measured + (row.perScene.empty() ? "" : " | " + row.perScene[0]);
+        return std::string("missing");
+    };
+    // 0.010 against 0.020: a difference of 0.010, decided at a truth error of 0.001, not at 0.002.
+    EXPECT_EQ(claim({job("agaa", 0, 0.010, 0.001), job("sbaa", 4, 0.020, 0.001)}), "0.50 | foliage: 0.50");
+    const std::string undecided = claim({job("agaa", 0, 0.010, 0.002), job("sbaa", 4, 0.020, 0.002)});
+    EXPECT_EQ(
+        undecided.rfind("undecided on 1 scene(s) | foliage: 0.50, undecided (errors 0.0100 and 0.0200", 0),
+        0u)
+        << undecided;
+    EXPECT_NE(undecided.find("the truth's own error is 0.0020"), std::string::npos) << undecided;
+    const std::string unknown = claim({job("agaa", 0, 0.010, std::numeric_limits<double>::infinity()),
+                                       job("sbaa", 4, 0.020, std::numeric_limits<double>::infinity())});
+    EXPECT_EQ(unknown.rfind("undecided", 0), 0u) << "a truth of unknown error decides nothing: " << unknown;
 }
 
 TEST(LightAxis, SceneVariantsNameTheLightCountAndRoundTrip) {

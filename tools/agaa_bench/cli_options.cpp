@@ -4,6 +4,7 @@
 #include "engine/frame/sample_pattern.h"
 #include "engine/scene/extra_lights.h"
 #include "engine/scene/scenegen.h"
+#include "tools/harness/converged_truth.h"
 
 #include <algorithm>
 #include <charconv>
@@ -56,13 +57,15 @@ std::string usage() {
     return "usage: agaa-bench --out DIR [--scenes a,b] [--methods a,b] [--samples 8,32] [--aggregates 1,2]\n"
            "                  [--surfaces 1,2,3] [--size WxH] [--frames K] [--warmup K] [--temporal K] "
            "[--full] [--job I/N]\n"
+           "                  [--truth-supersampling K] [--truth-cache DIR]\n"
            "                  [--agaa-generation auto|accumulate|samples|coverage] [--sample-rate-shading "
            "on|off]\n"
            "                  [--extra-lights 0,4,16,64] [--validate] [--help]\n"
            "       agaa-bench --out DIR --merge DIR1 DIR2 ...\n"
            "\n"
            "Renders every method and setting on every scene, measures GPU time per pass, memory, and error\n"
-           "against the reference at the same n and against a high-rate truth (the reference at n=32), and\n"
+           "against the reference at the same n and against a converged truth (the reference at n=32 with\n"
+           "sample-rate shading, supersampled K x K; its own error estimate is printed), and\n"
            "writes DIR/jobs/<scene>__<method>__n<N>__c<C>.json, DIR/results.json, DIR/results.csv,\n"
            "DIR/report.html and DIR/images/. Error metrics are on the tone-mapped display image, "
            "sRGB-encoded.\n"
@@ -88,8 +91,13 @@ std::string usage() {
            "  --merge DIR...    merge the jobs of several output directories into --out, without rendering\n"
            "  --agaa-generation P  AGAA's generation path for method agaa (default auto); the methods\n"
            "                    agaa-accumulate and agaa-samples sweep both paths side by side\n"
-           "  --sample-rate-shading on|off  every per-sample G-buffer fill at sample rate, the truths'\n"
-           "                    too: errors against the supersampled ground truth (default off)\n"
+           "  --sample-rate-shading on|off  every per-sample G-buffer fill at sample rate, the same-n\n"
+           "                    reference's too (default off; the converged truth always is)\n"
+           "  --truth-supersampling K  the truth's K x K sub-pixel tiles at n = 32, 1..16 (default 4: 512\n"
+           "                    samples a pixel); an error difference below the truth's own error\n"
+           "                    estimate is reported as undecided\n"
+           "  --truth-cache DIR  where truths are kept between runs (default $AGAA_TRUTH_CACHE, else\n"
+           "                    DIR/truth-cache)\n"
            "  --extra-lights K,...  the light-count axis: every scene once per K, 0..1000, with K generated\n"
            "                    point lights (a Halton sequence in the bounds, each lighting its\n"
            "                    neighbourhood like the key light; agaa-render --help); scene variants are\n"
@@ -185,7 +193,11 @@ BenchOptions parseOptions(int argc, char** argv) {
             s.temporalFrames = parseUint(a, v, 0, 64);
             if (s.temporalFrames == 1)
                 throw BadArgument("--temporal '1': a path needs 0 (off) or 2..64 frames");
-        } else if (a == "--full")
+        } else if (a == "--truth-supersampling")
+            s.truthSupersampling = parseUint(a, value(), 1, agaa::kMaxTruthSupersampling);
+        else if (a == "--truth-cache")
+            s.truthCache = value();
+        else if (a == "--full")
             full = true;
         else if (a == "--job") {
             try {
@@ -207,6 +219,7 @@ BenchOptions parseOptions(int argc, char** argv) {
     if (o.help) return o;
     if (o.out.empty()) throw BadArgument("--out DIR is required (see --help)");
     if (merge && sliced) throw BadArgument("--job and --merge do not go together: --merge renders nothing");
+    if (s.truthCache.empty()) s.truthCache = agaa::truthCacheDir(o.out / "truth-cache");
 
     s.scenes = scenes ? *scenes : full ? eng::scene::sceneKinds() : defaultSweepScenes();
     if (methods)

@@ -11,6 +11,7 @@
 #include "tools/scenes/adversarial_scenes.h"
 
 #include <chrono>
+#include <cstdio>
 #include <limits>
 #include <stdexcept>
 
@@ -32,6 +33,13 @@ ErrorMetrics identical() {
     return e;
 }
 
+double meanLuminance(const eng::io::ImageF& hdr) {
+    double sum = 0.0;
+    for (size_t p = 0; p + 3 < hdr.rgba.size(); p += 4)
+        sum += 0.2126 * hdr.rgba[p] + 0.7152 * hdr.rgba[p + 1] + 0.0722 * hdr.rgba[p + 2];
+    return hdr.rgba.empty() ? 0.0 : sum / double(hdr.rgba.size() / 4);
+}
+
 void writeDisplayPng(const std::filesystem::path& file, const eng::io::ImageF& srgb) {
     std::filesystem::create_directories(file.parent_path());
     eng::io::writePng(file, eng::io::quantizeToU8(srgb));
@@ -40,7 +48,8 @@ void writeDisplayPng(const std::filesystem::path& file, const eng::io::ImageF& s
 } // namespace
 
 JobRunner::JobRunner(eng::vk::Device& device, const SweepSettings& settings, std::filesystem::path outDir)
-    : m_device(device), m_settings(settings), m_outDir(std::move(outDir)) {}
+    : m_device(device), m_settings(settings), m_outDir(std::move(outDir)), m_truthCache(settings.truthCache) {
+}
 
 JobRunner::~JobRunner() {
     m_scene.renderer.reset(); // before the scene it points at
@@ -91,25 +100,35 @@ RenderResult JobRunner::renderTruth(const RenderRequest& request) {
     return result;
 }
 
-const eng::io::ImageF& JobRunner::truth(uint32_t samples) {
-    auto it = m_scene.truthAtSamples.find(samples);
-    if (it != m_scene.truthAtSamples.end()) return it->second;
+ConvergedTruth JobRunner::renderConverged(const RenderRequest& request) {
+    const uint32_t before = m_device.validationErrors();
+    TruthSettings settings;
+    settings.supersampling = m_settings.truthSupersampling;
+    ConvergedTruth truth = renderConvergedTruth(*m_scene.renderer, request, settings, &m_truthCache);
+    m_truthValidationErrors += m_device.validationErrors() - before;
+    return truth;
+}
+
+const eng::io::ImageF& JobRunner::referenceAtSamples(uint32_t samples) {
+    auto it = m_scene.referenceAtSamples.find(samples);
+    if (it != m_scene.referenceAtSamples.end()) return it->second;
     RenderResult r = renderTruth(
         request(kReference, samples, kAggregatesWhenUnused, m_settings.width, m_settings.height, 0.0f));
-    it = m_scene.truthAtSamples.emplace(samples, srgbEncoded(r.display)).first;
+    it = m_scene.referenceAtSamples.emplace(samples, srgbEncoded(r.display)).first;
     return it->second;
 }
 
-const eng::io::ImageF* JobRunner::supersampledTruth() {
-    // The sweep at sample rate already compares with this truth; without the feature there is none.
-    if (m_settings.sampleRateShading || !m_device.caps().sampleRateShading) return nullptr;
-    if (!m_scene.supersampledTruth) {
-        RenderRequest r = request(kReference, m_settings.truthSamples, kAggregatesWhenUnused,
-                                  m_settings.width, m_settings.height, 0.0f);
-        r.settings.sampleRateShading = true;
-        m_scene.supersampledTruth = srgbEncoded(renderTruth(r).display);
+const ConvergedTruth& JobRunner::truth() {
+    if (!m_scene.truth) {
+        m_scene.truth = renderConverged(
+            request(kReference, 32, kAggregatesWhenUnused, m_settings.width, m_settings.height, 0.0f));
+        m_scene.truthDisplay = srgbEncoded(m_scene.truth->display);
+        const ConvergedTruth& t = *m_scene.truth;
+        std::printf("\n  truth for %s: %ux%u tiles at n=%u, error estimate %.5f, mean %.4f%s\n  ",
+                    m_scene.name.c_str(), t.settings.supersampling, t.settings.supersampling,
+                    t.settings.samples, t.errorEstimate, t.meanLuminance, t.fromCache ? " (cached)" : "");
     }
-    return &*m_scene.supersampledTruth;
+    return *m_scene.truth;
 }
 
 const std::vector<eng::io::ImageF>& JobRunner::pathTruth() {
@@ -117,9 +136,9 @@ const std::vector<eng::io::ImageF>& JobRunner::pathTruth() {
         uint32_t w = 0, h = 0;
         temporalSize(m_settings, w, h);
         for (uint32_t t = 0; t < m_settings.temporalFrames; ++t) {
-            RenderResult r = renderTruth(request(kReference, m_settings.truthSamples, kAggregatesWhenUnused,
-                                                 w, h, float(t) * m_settings.temporalStepDegrees));
-            m_scene.pathTruth.push_back(srgbEncoded(r.display));
+            const ConvergedTruth truth = renderConverged(request(kReference, 32, kAggregatesWhenUnused, w, h,
+                                                                 float(t) * m_settings.temporalStepDegrees));
+            m_scene.pathTruth.push_back(srgbEncoded(truth.display));
         }
     }
     return m_scene.pathTruth;
@@ -184,20 +203,23 @@ JobResult JobRunner::run(const Job& job) {
     r.culledPasses = rendered.culledPasses;
     r.validationEnabled = m_device.validationEnabled();
     r.validationErrors = validationErrors;
-    r.truthSamples = m_settings.truthSamples;
+    const ConvergedTruth& converged = truth();
+    r.truth.supersampling = converged.settings.supersampling;
+    r.truth.samples = converged.settings.samples;
+    r.truth.errorEstimate = converged.errorEstimate;
+    r.truth.meanLuminance = converged.meanLuminance;
+    r.meanLuminance = meanLuminance(rendered.hdr);
 
     const eng::io::ImageF display = srgbEncoded(rendered.display);
     if (job.method == kReference) {
-        // The reference is the same-n truth: error 0 by definition. Keep its image as that truth.
+        // The reference is itself the same-n measure: error 0 by definition. Keep its image for it.
         r.errorSameN = identical();
-        m_scene.truthAtSamples.emplace(job.samples, display);
+        m_scene.referenceAtSamples.emplace(job.samples, display);
     } else if (job.usesSamples) {
-        r.errorSameN = compareImages(display, truth(job.samples));
+        r.errorSameN = compareImages(display, referenceAtSamples(job.samples));
     }
-    const eng::io::ImageF& highRate = truth(m_settings.truthSamples);
-    r.errorHighRate = compareImages(display, highRate);
-    if (const eng::io::ImageF* supersampled = supersampledTruth())
-        r.errorSupersampledTruth = compareImages(display, *supersampled);
+    const eng::io::ImageF& truthDisplay = m_scene.truthDisplay;
+    r.errorTruth = compareImages(display, truthDisplay);
     if (!path.empty()) {
         TemporalStability t;
         t.frames = m_settings.temporalFrames;
@@ -212,17 +234,17 @@ JobResult JobRunner::run(const Job& job) {
 
     // Images, relative to the output directory (the report references them as files).
     const std::string size = std::to_string(m_settings.width) + "x" + std::to_string(m_settings.height);
-    r.imageTruth =
-        "images/" + job.scene + "__truth_n" + std::to_string(m_settings.truthSamples) + "_" + size + ".png";
+    r.imageTruth = "images/" + job.scene + "__truth_k" + std::to_string(converged.settings.supersampling) +
+                   "_" + size + ".png";
     if (m_scene.truthImage.empty()) {
-        writeDisplayPng(m_outDir / r.imageTruth, highRate);
+        writeDisplayPng(m_outDir / r.imageTruth, truthDisplay);
         m_scene.truthImage = r.imageTruth;
     }
     r.imageDisplay = "images/" + job.id() + "_" + size + ".png";
     r.imageHeatmap = "images/" + job.id() + "_" + size + "__error.png";
     r.heatmapScale = kHeatmapScale;
     writeDisplayPng(m_outDir / r.imageDisplay, display);
-    writeDisplayPng(m_outDir / r.imageHeatmap, eng::io::errorHeatmap(display, highRate, kHeatmapScale));
+    writeDisplayPng(m_outDir / r.imageHeatmap, eng::io::errorHeatmap(display, truthDisplay, kHeatmapScale));
     return r;
 }
 

@@ -1,9 +1,11 @@
 #pragma once
 // Runs benchmark jobs on one device: renders the method (warm-up, then timed
-// frames), measures its error against the two ground truths and its temporal
-// stability along a short orbit, writes its images, and returns the numbers.
-// Truths are rendered once per scene and cached; a scene's renderer lives
-// until the next scene starts, so a sweep ordered by scene uploads each once.
+// frames), measures its error against the converged truth (and, as the shading
+// error at fixed visibility, against the reference at the same n) and its
+// temporal stability along a short orbit, writes its images, and returns the
+// numbers. Truths are rendered once per scene and kept in memory and in the
+// disk cache; a scene's renderer lives until the next scene starts, so a sweep
+// ordered by scene uploads each once.
 
 #include "image_error.h"
 #include "result_io.h"
@@ -11,6 +13,7 @@
 
 #include "engine/scene/scene.h"
 #include "engine/vk/device.h"
+#include "tools/harness/converged_truth.h"
 #include "tools/harness/frame_renderer.h"
 
 #include <filesystem>
@@ -38,27 +41,30 @@ class JobRunner {
         std::string name;
         std::unique_ptr<eng::scene::Scene> scene;
         std::unique_ptr<FrameRenderer> renderer;
-        std::map<uint32_t, eng::io::ImageF> truthAtSamples; // reference display, sRGB-encoded, sweep size
-        std::vector<eng::io::ImageF> pathTruth;             // high-rate truth along the orbit, temporal size
-        std::string truthImage;                             // relative path of the high-rate truth PNG
-        std::optional<eng::io::ImageF> supersampledTruth;   // the high-rate truth at sample rate
+        std::map<uint32_t, eng::io::ImageF> referenceAtSamples; // display, sRGB-encoded, sweep size
+        std::optional<ConvergedTruth> truth;                    // at the sweep size
+        eng::io::ImageF truthDisplay;                           // its display, sRGB-encoded
+        std::vector<eng::io::ImageF> pathTruth; // converged truth along the orbit, sRGB, temporal size
+        std::string truthImage;                 // relative path of the truth PNG
     };
 
     void selectScene(const std::string& name);
     RenderRequest request(const std::string& method, uint32_t samples, uint32_t aggregates, uint32_t width,
                           uint32_t height, float orbitDegrees, uint32_t surfaces = 0) const;
-    const eng::io::ImageF& truth(uint32_t samples);
-    const eng::io::ImageF* supersampledTruth(); // nullptr where it is not measured
+    const eng::io::ImageF& referenceAtSamples(uint32_t samples);
+    const ConvergedTruth& truth();
     const std::vector<eng::io::ImageF>& pathTruth();
     std::vector<eng::io::ImageF> renderPath(const std::string& method, uint32_t samples, uint32_t aggregates,
                                             uint32_t surfaces);
     RenderResult renderTruth(const RenderRequest& request);
+    ConvergedTruth renderConverged(const RenderRequest& request);
 
     eng::vk::Device& m_device;
     SweepSettings m_settings;
     std::filesystem::path m_outDir;
     SceneState m_scene;
     uint32_t m_truthValidationErrors = 0;
+    TruthCache m_truthCache;
 };
 
 } // namespace agaa::bench

@@ -94,7 +94,7 @@ int runSweep(const BenchOptions& o, const fs::path& chartJs) {
             writeJobFile(o.out, r);
             validationErrors += r.validationErrors;
             std::printf("frame %.2f ms, %.1f B/px, RMSE %.4f (%.1f s)\n", r.frameMs.median, r.bytesPerPixel,
-                        r.errorHighRate ? r.errorHighRate->rmse : 0.0, elapsed() - before);
+                        r.errorTruth ? r.errorTruth->rmse : 0.0, elapsed() - before);
         } catch (const eng::vk::MissingCapability& e) {
             ++missing;
             std::printf("skipped: the device lacks %s\n", e.what());

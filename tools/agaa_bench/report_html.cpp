@@ -152,7 +152,9 @@ json benchData(const std::vector<JobResult>& results) {
              {"frameMin", r.frameMs.min},
              {"frameMax", r.frameMs.max},
              {"bpp", r.bytesPerPixel},
-             {"rmse", r.errorHighRate ? json(r.errorHighRate->rmse) : json(nullptr)},
+             {"rmse", r.errorTruth ? json(r.errorTruth->rmse) : json(nullptr)},
+             // The error bar: the truth's own error bounds how far the measured error can be off.
+             {"rmseBar", std::isfinite(r.truth.errorEstimate) ? json(r.truth.errorEstimate) : json(nullptr)},
              {"passes", passes}});
     }
     return {{"jobs", jobs}, {"methods", methods}, {"passGroups", groups}};
@@ -202,14 +204,16 @@ std::string cropSection(const SceneCrops& crops, const std::vector<const JobResu
     const std::string tableId = "crops-" + std::to_string(sceneIndex);
     const JobResult& first = *jobs.front();
     h << "<p class=\"small\">Windows of " << crops.windows[0].width << "x" << crops.windows[0].height
-      << " pixels where the per-pixel error against the high-rate truth (n=" << first.truthSamples
+      << " pixels where the per-pixel error against the converged truth (" << first.truth.supersampling << "x"
+      << first.truth.supersampling << " tiles at n=" << first.truth.samples
       << ") varies most between the methods. Per window: the method, its error heatmap (error x"
       << num(first.heatmapScale, 0)
       << ": black 0, blue, red, yellow, white >= " << num(1.0 / first.heatmapScale, 2)
       << "), and a slider over the truth. Click a crop for the full image. "
       << "<button class=\"cmp-toggle\" data-table=\"" << tableId
       << "\">slider: method over truth</button></p>\n";
-    h << "<table class=\"crops\" id=\"" << tableId << "\"><tr><th>truth n=" << first.truthSamples << "</th>";
+    h << "<table class=\"crops\" id=\"" << tableId << "\"><tr><th>truth " << first.truth.supersampling << "x"
+      << first.truth.supersampling << ", n=" << first.truth.samples << "</th>";
     for (size_t k = 0; k < crops.windows.size(); ++k) {
         const Window& w = crops.windows[k];
         h << "<th colspan=\"3\">window " << k + 1 << " at (" << w.x << ", " << w.y << "), spread "
@@ -218,7 +222,7 @@ std::string cropSection(const SceneCrops& crops, const std::vector<const JobResu
     h << "</tr>\n";
     for (const JobResult* r : jobs) {
         h << "<tr><td class=\"label\"><b>" << esc(label(r->job)) << "</b><br>RMSE "
-          << (r->errorHighRate ? num(r->errorHighRate->rmse, 4) : "&ndash;") << "<br><a href=\""
+          << (r->errorTruth ? num(r->errorTruth->rmse, 4) : "&ndash;") << "<br><a href=\""
           << esc(r->imageDisplay) << "\">image</a> <a href=\"" << esc(r->imageHeatmap) << "\">error</a></td>";
         for (const Window& w : crops.windows)
             h << "<td>" << cropBox(r->imageDisplay, w, crops) << "</td><td>"
@@ -237,14 +241,15 @@ std::string errorCells(const std::optional<ErrorMetrics>& e) {
 
 std::string jobsTable(const std::vector<JobResult>& results) {
     std::ostringstream h;
-    const uint32_t truthN = results.empty() ? 32 : results.front().truthSamples;
+    const TruthInfo truth = results.empty() ? TruthInfo{} : results.front().truth;
     h << "<table class=\"jobs\"><tr><th rowspan=\"2\">scene</th><th rowspan=\"2\">method</th><th "
          "rowspan=\"2\">n</th>"
          "<th rowspan=\"2\">c</th><th colspan=\"2\">frame GPU ms</th><th rowspan=\"2\">shading pass ms</th>"
          "<th rowspan=\"2\">bytes / pixel</th><th colspan=\"2\">shading events / pixel</th>"
-         "<th colspan=\"4\">vs reference at the same n</th><th colspan=\"4\">vs high-rate truth (reference n="
-      << truthN
-      << ")</th><th rowspan=\"2\">RMSE vs<br>supersampled<br>truth</th><th "
+         "<th colspan=\"4\">vs reference at the same n</th><th colspan=\"4\">vs converged truth ("
+      << truth.supersampling << "x" << truth.supersampling << " tiles at n=" << truth.samples
+      << ")</th><th rowspan=\"2\">truth's<br>own error</th><th rowspan=\"2\">linear mean<br>/ "
+         "truth's</th><th "
          "rowspan=\"2\">temporal<br>&Delta;error</th><th rowspan=\"2\">valid.<br>errors</th>"
          "<th rowspan=\"2\">images</th></tr>\n<tr><th>median</th><th>min..max</th><th>mean</th><th>max</th>"
          "<th>RMSE</th><th>PSNR dB</th><th>SSIM</th><th>p99</th><th>RMSE</th><th>PSNR "
@@ -264,8 +269,10 @@ std::string jobsTable(const std::vector<JobResult>& results) {
           << "</td><td class=\"num\">" << (shading ? num(*shading) : "&ndash;") << "</td><td class=\"num\">"
           << num(r.bytesPerPixel, 1) << "</td><td class=\"num\">" << num(r.shadingEventsMean, 2)
           << "</td><td class=\"num\">" << r.shadingEventsMax << "</td>" << errorCells(r.errorSameN)
-          << errorCells(r.errorHighRate) << "<td class=\"num\">"
-          << (r.errorSupersampledTruth ? num(r.errorSupersampledTruth->rmse, 4) : "&ndash;")
+          << errorCells(r.errorTruth) << "<td class=\"num\">"
+          << (std::isfinite(r.truth.errorEstimate) ? num(r.truth.errorEstimate, 4) : "unknown")
+          << "</td><td class=\"num\">"
+          << (r.truth.meanLuminance > 0.0 ? num(r.meanLuminance / r.truth.meanLuminance, 3) : "&ndash;")
           << "</td><td class=\"num\">" << (r.temporal ? num(r.temporal->meanErrorChange, 5) : "&ndash;")
           << "</td><td class=\"num\">" << (r.validationEnabled ? std::to_string(r.validationErrors) : "off")
           << "</td><td><a href=\"" << esc(r.imageDisplay) << "\">image</a> <a href=\"" << esc(r.imageHeatmap)
@@ -436,7 +443,7 @@ void writeReport(const fs::path& outDir, const std::vector<JobResult>& results, 
     h << "<section id=\"jobs\"><h2>Every job</h2>\n<p class=\"small\">Hover a frame time for its passes. "
          "Temporal &Delta;error: mean over pixels and channels of |e<sub>t</sub> - e<sub>t-1</sub>| with e "
          "the signed "
-         "error against the high-rate truth at each frame of the camera path.</p>\n"
+         "error against the converged truth at each frame of the camera path.</p>\n"
       << jobsTable(results) << "</section>\n";
 
     const JobResult* any = results.empty() ? nullptr : &results.front();
@@ -449,8 +456,14 @@ void writeReport(const fs::path& outDir, const std::vector<JobResult>& results, 
          "per-pixel "
          "max-channel error, all on the tone-mapped display image, sRGB-encoded.</li>\n"
          "<li>Ground truths: the reference (per-sample shading) at the same n, for methods that take n (the "
-         "reference itself is listed with error 0 by definition), and the reference at n="
-      << (any ? any->truthSamples : 32) << " at the same size, rendered once per scene.</li>\n";
+         "reference itself is listed with error 0 by definition): the shading error at fixed visibility; and "
+         "the converged truth: the reference at n="
+      << (any ? any->truth.samples : 32) << " with materials shaded per sample, at "
+      << (any ? any->truth.supersampling : 4) << " times the width and height in tiles, each block averaged ("
+      << (any ? any->truth.samples * any->truth.supersampling * any->truth.supersampling : 512)
+      << " samples a pixel). Its own error is estimated as half the display RMSE between its two "
+         "checkerboard halves, drawn as error bars on the charts; a claim whose two errors differ by less "
+         "than ten times it reads undecided.</li>\n";
     if (any && any->temporal)
         h << "<li>Temporal stability: " << any->temporal->frames
           << " frames orbiting the scene's bounds centre in " << num(any->temporal->stepDegrees, 2)

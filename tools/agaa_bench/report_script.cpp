@@ -53,6 +53,33 @@ const char* reportScript() {
     },
   };
 
+  // Vertical error bars: the truth's own error around each measured error.
+  const ySpread = {
+    id: "ySpread",
+    afterDatasetsDraw(chart) {
+      const ctx = chart.ctx, y = chart.scales.y;
+      ctx.save();
+      chart.data.datasets.forEach((ds, i) => {
+        if (!ds.ySpread || !chart.isDatasetVisible(i)) return;
+        ctx.strokeStyle = ds.borderColor;
+        chart.getDatasetMeta(i).data.forEach((pt, k) => {
+          const bar = ds.ySpread[k];
+          if (bar === null) return;
+          const lo = y.getPixelForValue(Math.max(0, bar[0])), hi = y.getPixelForValue(bar[1]);
+          ctx.beginPath();
+          ctx.moveTo(pt.x, lo);
+          ctx.lineTo(pt.x, hi);
+          ctx.moveTo(pt.x - 3, lo);
+          ctx.lineTo(pt.x + 3, lo);
+          ctx.moveTo(pt.x - 3, hi);
+          ctx.lineTo(pt.x + 3, hi);
+          ctx.stroke();
+        });
+      });
+      ctx.restore();
+    },
+  };
+
   // Points not dominated by another (lower or equal cost and lower or equal error), by cost.
   function paretoFront(points) {
     const sorted = points.slice().sort((a, b) => a.x - b.x || a.y - b.y);
@@ -83,6 +110,7 @@ const char* reportScript() {
         pointRadius: 4,
       };
       if (xKey === "frameMs") ds.xSpread = js.map((j) => [j.frameMin, j.frameMax]);
+      ds.ySpread = js.map((j) => (j.rmseBar === null ? null : [j.rmse - j.rmseBar, j.rmse + j.rmseBar]));
       datasets.push(ds);
     }
     datasets.push({
@@ -97,7 +125,7 @@ const char* reportScript() {
     });
     return new Chart(canvas, {
       data: { datasets },
-      plugins: [pointLabels, xSpread],
+      plugins: [pointLabels, xSpread, ySpread],
       options: {
         animation: false,
         layout: { padding: { right: 40, top: 8 } }, // room for the labels of the outermost points
@@ -105,7 +133,7 @@ const char* reportScript() {
         maintainAspectRatio: false,
         scales: {
           x: { type: "linear", beginAtZero: true, title: { display: true, text: xTitle } },
-          y: { beginAtZero: true, title: { display: true, text: "RMSE vs high-rate truth (sRGB display)" } },
+          y: { beginAtZero: true, title: { display: true, text: "RMSE vs converged truth (sRGB display), bars: the truth's own error" } },
         },
         plugins: { legend: { position: "bottom" } },
       },

@@ -118,9 +118,13 @@ json toJson(const JobResult& r) {
     j["passes_culled"] = r.culledPasses;
     j["validation"] = {{"enabled", r.validationEnabled}, {"errors", r.validationErrors}};
     j["error_vs_same_n_reference"] = errorJson(r.errorSameN);
-    j["truth_samples"] = r.truthSamples;
-    j["error_vs_high_rate_truth"] = errorJson(r.errorHighRate);
-    j["error_vs_supersampled_truth"] = errorJson(r.errorSupersampledTruth);
+    j["truth"] = {{"supersampling", r.truth.supersampling},
+                  {"samples", r.truth.samples},
+                  {"error_estimate",
+                   std::isfinite(r.truth.errorEstimate) ? json(r.truth.errorEstimate) : json(nullptr)},
+                  {"mean_luminance", r.truth.meanLuminance}};
+    j["error_vs_truth"] = errorJson(r.errorTruth);
+    j["mean_luminance"] = r.meanLuminance;
     if (r.temporal) {
         const TemporalStability& t = *r.temporal;
         j["temporal"] = {
@@ -172,10 +176,15 @@ JobResult jobFromJson(const json& j) {
         r.validationEnabled = j.at("validation").at("enabled").get<bool>();
         r.validationErrors = j.at("validation").at("errors").get<uint32_t>();
         r.errorSameN = errorFromJson(j.at("error_vs_same_n_reference"));
-        r.truthSamples = j.at("truth_samples").get<uint32_t>();
-        r.errorHighRate = errorFromJson(j.at("error_vs_high_rate_truth"));
-        if (j.contains("error_vs_supersampled_truth")) // absent in files from before issue 13
-            r.errorSupersampledTruth = errorFromJson(j.at("error_vs_supersampled_truth"));
+        const json& truth = j.at("truth");
+        r.truth.supersampling = truth.at("supersampling").get<uint32_t>();
+        r.truth.samples = truth.at("samples").get<uint32_t>();
+        r.truth.errorEstimate = truth.at("error_estimate").is_null()
+                                    ? std::numeric_limits<double>::infinity()
+                                    : truth.at("error_estimate").get<double>();
+        r.truth.meanLuminance = truth.at("mean_luminance").get<double>();
+        r.errorTruth = errorFromJson(j.at("error_vs_truth"));
+        r.meanLuminance = j.at("mean_luminance").get<double>();
         if (!j.at("temporal").is_null()) {
             const json& tj = j.at("temporal");
             TemporalStability ts;
@@ -235,8 +244,8 @@ void writeResultsCsv(const std::filesystem::path& file, const std::vector<JobRes
     s << "id,scene,method,samples,aggregates,samples_rendered,width,height,frames_timed,frame_ms_median,"
          "frame_ms_min,frame_ms_max,frame_ms_q1,frame_ms_q3,bytes_per_pixel,shading_events_mean,"
          "shading_events_max,rmse_same_n,psnr_same_n,ssim_same_n,p99_same_n,rmse_truth,psnr_truth,ssim_truth,"
-         "p99_truth,rmse_supersampled_truth,temporal_error_change,validation_errors,passes,surfaces,"
-         "shading_events_worst_lane\n";
+         "p99_truth,truth_error_estimate,temporal_error_change,validation_errors,passes,surfaces,"
+         "shading_events_worst_lane,mean_luminance,truth_mean_luminance,truth_supersampling\n";
     for (const JobResult& r : results) {
         auto err = [&](const std::optional<ErrorMetrics>& e) {
             if (!e) return std::string(",,,");
@@ -252,10 +261,11 @@ void writeResultsCsv(const std::filesystem::path& file, const std::vector<JobRes
           << csvNumber(r.frameMs.min) << "," << csvNumber(r.frameMs.max) << "," << csvNumber(r.frameMs.q1)
           << "," << csvNumber(r.frameMs.q3) << "," << csvNumber(r.bytesPerPixel) << ","
           << csvNumber(r.shadingEventsMean) << "," << r.shadingEventsMax << "," << err(r.errorSameN) << ","
-          << err(r.errorHighRate) << ","
-          << (r.errorSupersampledTruth ? csvNumber(r.errorSupersampledTruth->rmse) : "") << ","
+          << err(r.errorTruth) << "," << csvNumber(r.truth.errorEstimate) << ","
           << (r.temporal ? csvNumber(r.temporal->meanErrorChange) : "") << "," << r.validationErrors << ","
-          << csvField(passes) << "," << r.job.surfaces << "," << csvNumber(r.shadingEventsWorstLane) << "\n";
+          << csvField(passes) << "," << r.job.surfaces << "," << csvNumber(r.shadingEventsWorstLane) << ","
+          << csvNumber(r.meanLuminance) << "," << csvNumber(r.truth.meanLuminance) << ","
+          << r.truth.supersampling << "\n";
     }
     writeTextFile(file, s.str());
 }

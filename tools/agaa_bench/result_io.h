@@ -19,8 +19,9 @@
 
 namespace agaa::bench {
 
-inline constexpr const char* kJobSchema = "agaa-bench-job/1";
-inline constexpr const char* kResultsSchema = "agaa-bench-results/1";
+// /2: errors against the converged truth (tools/harness/converged_truth.h) with its own error.
+inline constexpr const char* kJobSchema = "agaa-bench-job/2";
+inline constexpr const char* kResultsSchema = "agaa-bench-results/2";
 
 // Median and spread over the timed frames (after warm-up), milliseconds.
 struct Spread {
@@ -40,6 +41,17 @@ struct TemporalStability {
     uint32_t width = 0, height = 0;
     double meanErrorChange = 0.0; // mean over steps (see temporalErrorChange)
     std::vector<double> perStep;
+};
+
+// The converged truth a job's errors are measured against (tools/harness/converged_truth.h): the
+// reference at n = samples with sample-rate shading, supersampled k x k.
+struct TruthInfo {
+    uint32_t supersampling = 4; // k
+    uint32_t samples = 32;      // per sub-pixel
+    // The truth's own display RMSE, estimated from its two halves; +infinity when unknown (k = 1).
+    // An error difference between two methods below it is not a measured one.
+    double errorEstimate = 0.0;
+    double meanLuminance = 0.0; // its linear image mean (Rec. 709 luma)
 };
 
 struct JobResult {
@@ -69,12 +81,9 @@ struct JobResult {
     // Against the reference at the same n (absent for methods that take no n); for the reference
     // itself 0 by definition, not rendered twice.
     std::optional<ErrorMetrics> errorSameN;
-    uint32_t truthSamples = 32;
-    std::optional<ErrorMetrics> errorHighRate; // against the reference at truthSamples, same size
-    // Against the same reference with sample-rate shading (supersampled materials, textures and
-    // alpha; issue 13's second ground truth): absent where the device lacks sampleRateShading or
-    // the sweep already runs at sample rate (errorHighRate is then that truth).
-    std::optional<ErrorMetrics> errorSupersampledTruth;
+    TruthInfo truth;
+    std::optional<ErrorMetrics> errorTruth; // against the converged truth, same size
+    double meanLuminance = 0.0; // this frame's linear image mean (luma): energy against the truth's
     std::optional<TemporalStability> temporal;
 
     // Relative to the output directory.

@@ -27,15 +27,17 @@ struct SweepSettings {
     uint32_t height = 90;
     uint32_t timedFrames = 3;
     uint32_t warmupFrames = 1;
-    uint32_t truthSamples = 32;  // the high-rate ground truth: the reference at this n, same size
+    // The converged truth (tools/harness/converged_truth.h): the reference at n = 32 with sample-rate
+    // shading, k x k sub-pixel tiles; cached in truthCache (default DIR/truth-cache).
+    uint32_t truthSupersampling = 4;
+    std::filesystem::path truthCache;
     uint32_t temporalFrames = 5; // camera path length for temporal stability; 0 = not measured
     float temporalStepDegrees = 0.5f;
     uint32_t temporalMaxWidth = 320; // the path renders at the sweep size scaled down to this width
     bool validate = false;
-    // Applied to every job and to the truths: AGAA's generation path for method "agaa" (the
-    // agaa-accumulate and agaa-samples methods pin theirs), and sample-rate shading of every
-    // per-sample G-buffer fill, the truths' included (errors are then against the supersampled
-    // ground truth).
+    // Applied to every job: AGAA's generation path for method "agaa" (the agaa-accumulate and
+    // agaa-samples methods pin theirs), and sample-rate shading of every per-sample G-buffer fill
+    // (the same-n reference's included; the converged truth is always at sample rate).
     std::string agaaGeneration = "auto";
     bool sampleRateShading = false;
 };
