@@ -62,11 +62,12 @@ glm::mat4 ShadowMapPass::fitLight(const eng::scene::Scene& scene, const eng::sce
     glm::vec3 viewLo(1e30f), viewHi(-1e30f);
     const glm::mat4 inverseViewProj = frame ? glm::inverse(frame->viewProj) : glm::mat4(0.0f);
     const float tileScale = frame && frame->viewTile.x > 1.0f ? frame->viewTile.x : 1.0f;
-    const glm::vec2 tileOffset = frame && tileScale > 1.0f ? glm::vec2(frame->projParams.z, frame->projParams.w)
-                                                           : glm::vec2(0.0f);
+    const glm::vec2 tileOffset =
+        frame && tileScale > 1.0f ? glm::vec2(frame->projParams.z, frame->projParams.w) : glm::vec2(0.0f);
     for (int i = 0; frame && i < 8; ++i) {
         glm::vec4 ndc((i & 1) ? tileScale - tileOffset.x : -tileScale - tileOffset.x,
-                      (i & 2) ? tileScale - tileOffset.y : -tileScale - tileOffset.y, (i & 4) ? 1.0f : 0.0f, 1.0f);
+                      (i & 2) ? tileScale - tileOffset.y : -tileScale - tileOffset.y, (i & 4) ? 1.0f : 0.0f,
+                      1.0f);
         glm::vec4 w = inverseViewProj * ndc;
         if (std::abs(w.w) < 1e-12f) continue;
         glm::vec3 p = glm::vec3(view * glm::vec4(glm::vec3(w) / w.w, 1.0f));

@@ -22,8 +22,8 @@ glm::mat4 reversedZPerspective(float yfov, float aspect, float znear, float zfar
 
 glm::mat4 viewTileCrop(const ViewTile& tile, uint32_t width, uint32_t height) {
     if (tile.scale < 1 || tile.scale > kMaxViewTileScale)
-        throw std::invalid_argument("view tile scale " + std::to_string(tile.scale) + " is out of range (1.." +
-                                    std::to_string(kMaxViewTileScale) + ")");
+        throw std::invalid_argument("view tile scale " + std::to_string(tile.scale) +
+                                    " is out of range (1.." + std::to_string(kMaxViewTileScale) + ")");
     const uint64_t wholeWidth = uint64_t(tile.scale) * width, wholeHeight = uint64_t(tile.scale) * height;
     if (uint64_t(tile.origin.x) + width > wholeWidth || uint64_t(tile.origin.y) + height > wholeHeight)
         throw std::invalid_argument("view tile at (" + std::to_string(tile.origin.x) + ", " +

@@ -66,8 +66,9 @@ void addGoldPointLights(ModelBuilder& builder, const Bounds& subject) {
     for (int k = 0; k < kGoldPointLights; ++k) {
         const float a = 6.28318530718f * (static_cast<float>(k) + 0.5f) / kGoldPointLights;
         // Alternately above and below the equator, so the highlights are not all in one band.
-        const glm::vec3 p = centre + kGoldPointRadius * glm::normalize(glm::vec3(std::cos(a), k % 2 ? -0.4f : 0.6f,
-                                                                                 std::sin(a)));
+        const glm::vec3 p =
+            centre +
+            kGoldPointRadius * glm::normalize(glm::vec3(std::cos(a), k % 2 ? -0.4f : 0.6f, std::sin(a)));
         builder.addPointLight("point." + std::to_string(k), p, {1.0f, 1.0f, 1.0f}, kGoldPointCandela, 0.0f);
     }
 }

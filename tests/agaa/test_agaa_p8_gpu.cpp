@@ -1,7 +1,8 @@
 // Goal P8 (issue 14): more geometry samples beat more shading samples. On the default scene at
 // 160x90, AGAA (32, 2) against the converged truth (tools/harness/converged_truth.h, 512 samples a
 // pixel) must be no decidedly worse than per-sample shading at n = 8: not by more than the
-// truth's own error estimate. The test prints where AGAA's error goes, so that a gap is a measurement, not a guess:
+// truth's own error estimate. The test prints where AGAA's error goes, so that a gap is a measurement, not a
+// guess:
 //   - display RMSE (each method's own resolve, sRGB) and linear RMSE against the truth;
 //   - the same split by the pixel's depth complexity (the surfaces AGAA (32, 4) with the
 //     tangent-plane distance finds): pixels of one or two surfaces show what c = 2 costs where it
@@ -79,8 +80,9 @@ TEST(GoalP8, MoreGeometrySamplesBeatMoreShadingSamples) {
     const agaa::ConvergedTruth truth =
         agaa::renderConvergedTruth(renderer, request("reference", 32, 1), agaa::TruthSettings{}, &cache);
     const eng::io::ImageF truthDisplay = eng::io::srgbEncoded(truth.display);
-    std::printf("[ measured ] truth: %ux%u tiles at n=%u, own error estimate %.4f\n", truth.settings.supersampling,
-                truth.settings.supersampling, truth.settings.samples, truth.errorEstimate);
+    std::printf("[ measured ] truth: %ux%u tiles at n=%u, own error estimate %.4f\n",
+                truth.settings.supersampling, truth.settings.supersampling, truth.settings.samples,
+                truth.errorEstimate);
     const agaa::RenderResult perSample = renderer.render(request("reference", 8, 1));
     const double perSampleError = eng::io::rmse(eng::io::srgbEncoded(perSample.display), truthDisplay);
     std::printf("[ measured ] per-sample (8): display RMSE %.4f, linear %.4g\n", perSampleError,
@@ -124,8 +126,8 @@ TEST(GoalP8, MoreGeometrySamplesBeatMoreShadingSamples) {
                         split(display).c_str());
             if (!measuredSetting) continue;
             EXPECT_LE(error, perSampleError + truth.errorEstimate)
-                << method << " (32, " << c << "): goal P8 (per-sample (8) " << perSampleError << ", truth's own error "
-                << truth.errorEstimate << ")";
+                << method << " (32, " << c << "): goal P8 (per-sample (8) " << perSampleError
+                << ", truth's own error " << truth.errorEstimate << ")";
         }
     }
     agaa::test::expectNoValidationErrors(*device);

@@ -157,8 +157,8 @@ TEST_P(QualityScene, AgaaIsNeverWorseThanNoAaAndKeepsTheEnergy) {
     std::printf("[ measured ] %-18s truth mean %.4g (own error %.4f), reference (8) display RMSE %.4f "
                 "(mean %+.1f %%), at sample rate %.4f (%+.1f %%), no-AA %.4f (mean %+.1f %%)\n",
                 GetParam().c_str(), truthMean, truth.errorEstimate, refError, percent(meanRadiance(ref.hdr)),
-                eng::io::rmse(encoded(refSampleRate.display), truthDisplay), percent(meanRadiance(refSampleRate.hdr)),
-                noaaError, percent(noaaMean));
+                eng::io::rmse(encoded(refSampleRate.display), truthDisplay),
+                percent(meanRadiance(refSampleRate.hdr)), noaaError, percent(noaaMean));
     // Both generation paths, with the same known gaps (AGAA_QUALITY_METHOD: one method only).
     const char* only = std::getenv("AGAA_QUALITY_METHOD");
     std::vector<std::string> paths = {"agaa-samples", "agaa-accumulate"};
@@ -193,11 +193,11 @@ TEST_P(QualityScene, AgaaIsNeverWorseThanNoAaAndKeepsTheEnergy) {
             }
             if (energyGap) {
                 EXPECT_FALSE(energyOk) << GetParam() << " " << path << " c=" << c
-                                       << " now keeps the truth's energy (it measured "
-                                       << energyGap->measured << "): remove it from kEnergyGaps";
+                                       << " now keeps the truth's energy (it measured " << energyGap->measured
+                                       << "): remove it from kEnergyGaps";
             } else {
-                EXPECT_TRUE(energyOk) << GetParam() << " " << path << " c=" << c
-                                      << ": AGAA's mean radiance is not the truth's";
+                EXPECT_TRUE(energyOk)
+                    << GetParam() << " " << path << " c=" << c << ": AGAA's mean radiance is not the truth's";
             }
         }
     }

@@ -1,9 +1,9 @@
 // The converged truth on lavapipe, validation on: tiles that stitch into the image one large
 // frame would give, k = 1 as the sample-rate reference itself, and the disk cache.
 
-#include "gpu_test_support.h"
 #include "engine/io/metrics.h"
 #include "engine/io/tone_map.h"
+#include "gpu_test_support.h"
 #include "tools/harness/converged_truth.h"
 #include "tools/scenes/adversarial_scenes.h"
 
@@ -120,8 +120,10 @@ TEST(ConvergedTruthGpu, TheEstimateTracksTheDistanceToAFinerTruth) {
                         fine.errorEstimate);
             // Measured at 32x32: the estimate is 1.07 to 1.45 times the distance (k = 8's own error is
             // in the distance too). Below 0.8 it would flatter the truth; above 2 waste its samples.
-            EXPECT_GE(t.errorEstimate, 0.8 * distance) << name << " k=" << k << ": the truth claims too little error";
-            EXPECT_LE(t.errorEstimate, 2.0 * distance) << name << " k=" << k << ": the estimate is far too wide";
+            EXPECT_GE(t.errorEstimate, 0.8 * distance)
+                << name << " k=" << k << ": the truth claims too little error";
+            EXPECT_LE(t.errorEstimate, 2.0 * distance)
+                << name << " k=" << k << ": the estimate is far too wide";
         }
     }
     agaa::test::expectNoValidationErrors(*device);

@@ -25,7 +25,8 @@ glm::vec2 pixelOf(const glm::mat4& proj, glm::vec3 p, uint32_t width, uint32_t h
 }
 
 TEST(ViewTile, ScaleOneIsTheIdentity) {
-    EXPECT_EQ(eng::frame::viewTileCrop({}, 64, 48), glm::mat4(1.0f)) << "a whole view's projection is unchanged";
+    EXPECT_EQ(eng::frame::viewTileCrop({}, 64, 48), glm::mat4(1.0f))
+        << "a whole view's projection is unchanged";
 }
 
 // A point seen at pixel (X, Y) of the k-times-larger view is at (X - ox, Y - oy) in the tile at
@@ -38,7 +39,8 @@ TEST(ViewTile, ATilesPixelsAreThoseOfTheLargerView) {
         for (uint32_t tx = 0; tx < k; ++tx) {
             const ViewTile tile{k, {tx * w, ty * h}};
             const glm::mat4 tileProj = eng::frame::viewTileCrop(tile, w, h) * p;
-            for (glm::vec3 q : {glm::vec3(0.3f, -0.2f, -2.0f), glm::vec3(-1.1f, 0.7f, -5.0f), glm::vec3(0, 0, -1)}) {
+            for (glm::vec3 q :
+                 {glm::vec3(0.3f, -0.2f, -2.0f), glm::vec3(-1.1f, 0.7f, -5.0f), glm::vec3(0, 0, -1)}) {
                 const glm::vec2 big = pixelOf(whole, q, w * k, h * k);
                 const glm::vec2 inTile = pixelOf(tileProj, q, w, h);
                 EXPECT_NEAR(inTile.x, big.x - float(tile.origin.x), 2e-3f) << "tile " << tx << "," << ty;
@@ -48,7 +50,8 @@ TEST(ViewTile, ATilesPixelsAreThoseOfTheLargerView) {
             // point a pixel sees.
             const glm::vec3 q(0.4f, 0.25f, -3.0f);
             const glm::vec2 px = pixelOf(tileProj, q, w, h);
-            const glm::vec2 ndc = px / glm::vec2(w, h) * 2.0f - 1.0f + glm::vec2(tileProj[2][0], tileProj[2][1]);
+            const glm::vec2 ndc =
+                px / glm::vec2(w, h) * 2.0f - 1.0f + glm::vec2(tileProj[2][0], tileProj[2][1]);
             EXPECT_NEAR(ndc.x * 3.0f / tileProj[0][0], q.x, 1e-4f);
             EXPECT_NEAR(ndc.y * 3.0f / tileProj[1][1], q.y, 1e-4f);
         }
@@ -56,7 +59,8 @@ TEST(ViewTile, ATilesPixelsAreThoseOfTheLargerView) {
 
 TEST(ViewTile, OutOfRangeTilesAreRefusedByName) {
     EXPECT_THROW(eng::frame::viewTileCrop({0, {0, 0}}, 8, 8), std::invalid_argument);
-    EXPECT_THROW(eng::frame::viewTileCrop({eng::frame::kMaxViewTileScale + 1, {0, 0}}, 8, 8), std::invalid_argument);
+    EXPECT_THROW(eng::frame::viewTileCrop({eng::frame::kMaxViewTileScale + 1, {0, 0}}, 8, 8),
+                 std::invalid_argument);
     try {
         eng::frame::viewTileCrop({2, {9, 0}}, 8, 8);
         ADD_FAILURE() << "a tile reaching past its view was accepted";
@@ -124,7 +128,8 @@ TEST(TruthErrorEstimate, HalfTheHalvesDisplayRmse) {
 
 TEST(TruthSettings, OutOfRangeValuesAreRefusedByName) {
     EXPECT_THROW(agaa::validate(agaa::TruthSettings{0, 32}), std::invalid_argument);
-    EXPECT_THROW(agaa::validate(agaa::TruthSettings{agaa::kMaxTruthSupersampling + 1, 32}), std::invalid_argument);
+    EXPECT_THROW(agaa::validate(agaa::TruthSettings{agaa::kMaxTruthSupersampling + 1, 32}),
+                 std::invalid_argument);
     EXPECT_THROW(agaa::validate(agaa::TruthSettings{4, 6}), std::invalid_argument);
     EXPECT_NO_THROW(agaa::validate(agaa::TruthSettings{4, 32}));
 }

@@ -57,7 +57,8 @@ struct Options {
     std::string lights = "auto";
     uint32_t extraLights = 0; // --extra-lights: generated point lights (engine/scene/extra_lights.h)
     std::optional<std::string> environment;
-    uint32_t truth = 0; // --truth K: the converged truth, K x K sub-pixel tiles at n = 32, instead of --method
+    uint32_t truth =
+        0; // --truth K: the converged truth, K x K sub-pixel tiles at n = 32, instead of --method
     std::optional<std::string> truthCache;
 };
 
@@ -417,15 +418,17 @@ int renderTruth(const Options& o, agaa::FrameRenderer& renderer, const agaa::Ren
     settings.supersampling = o.truth;
     std::optional<agaa::TruthCache> cache;
     if (o.truthCache) cache.emplace(*o.truthCache);
-    const agaa::ConvergedTruth t = agaa::renderConvergedTruth(renderer, request, settings, cache ? &*cache : nullptr);
+    const agaa::ConvergedTruth t =
+        agaa::renderConvergedTruth(renderer, request, settings, cache ? &*cache : nullptr);
     std::filesystem::path prefix(o.out);
     eng::io::writeExr(prefix.string() + ".exr", t.hdr);
     eng::io::writePng(prefix.string() + ".png", eng::io::quantizeToU8(eng::io::srgbEncoded(t.display)));
-    std::cout << "wrote " << prefix.string() << ".exr and " << prefix.string() << ".png (converged truth: "
-              << settings.supersampling << "x" << settings.supersampling << " tiles at n=" << settings.samples
-              << ", " << settings.samples * settings.supersampling * settings.supersampling
-              << " samples a pixel, " << request.view.width << "x" << request.view.height << ", exposure "
-              << t.exposure << (t.fromCache ? ", from the cache" : "") << ")\n"
+    std::cout << "wrote " << prefix.string() << ".exr and " << prefix.string()
+              << ".png (converged truth: " << settings.supersampling << "x" << settings.supersampling
+              << " tiles at n=" << settings.samples << ", "
+              << settings.samples * settings.supersampling * settings.supersampling << " samples a pixel, "
+              << request.view.width << "x" << request.view.height << ", exposure " << t.exposure
+              << (t.fromCache ? ", from the cache" : "") << ")\n"
               << "truth error estimate (display RMSE): " << t.errorEstimate << "; linear mean luminance "
               << t.meanLuminance << "\n";
     if (o.stats) {
@@ -436,7 +439,8 @@ int renderTruth(const Options& o, agaa::FrameRenderer& renderer, const agaa::Ren
         j["width"] = request.view.width;
         j["height"] = request.view.height;
         j["exposure"] = t.exposure;
-        j["error_estimate"] = std::isfinite(t.errorEstimate) ? nlohmann::json(t.errorEstimate) : nlohmann::json();
+        j["error_estimate"] =
+            std::isfinite(t.errorEstimate) ? nlohmann::json(t.errorEstimate) : nlohmann::json();
         j["mean_luminance"] = t.meanLuminance;
         j["from_cache"] = t.fromCache;
         j["key"] = t.key;

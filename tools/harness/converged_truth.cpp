@@ -142,8 +142,8 @@ ConvergedTruth TruthAccumulator::finish() const {
         lumaSum += luma(t.hdr.rgba[p], t.hdr.rgba[p + 1], t.hdr.rgba[p + 2]);
     t.meanLuminance = lumaSum / double(size_t(m_width) * m_height);
     // k = 1 has no second half: its own error is not measured, reported as unknown (infinite).
-    t.errorEstimate = m_k == 1 ? std::numeric_limits<double>::infinity()
-                               : truthErrorEstimate(t.halves[0], t.halves[1]);
+    t.errorEstimate =
+        m_k == 1 ? std::numeric_limits<double>::infinity() : truthErrorEstimate(t.halves[0], t.halves[1]);
     return t;
 }
 
@@ -214,8 +214,8 @@ ConvergedTruth renderConvergedTruth(FrameRenderer& renderer, const RenderRequest
             frame.view.tile = {k, {tx * w, ty * h}};
             RenderResult r = renderer.render(frame);
             if (!eng::io::allFinite(r.display) || !eng::io::allFinite(r.hdr))
-                throw std::runtime_error("the truth's tile (" + std::to_string(tx) + ", " + std::to_string(ty) +
-                                         ") contains NaN or Inf");
+                throw std::runtime_error("the truth's tile (" + std::to_string(tx) + ", " +
+                                         std::to_string(ty) + ") contains NaN or Inf");
             acc.add(frame.view.tile, r.display, r.hdr);
         }
     ConvergedTruth truth = acc.finish();
@@ -244,8 +244,8 @@ std::optional<ConvergedTruth> TruthCache::load(const std::string& key) const {
     in.read(reinterpret_cast<char*>(&t.meanLuminance), 8);
     in.read(reinterpret_cast<char*>(&w), 4);
     in.read(reinterpret_cast<char*>(&h), 4);
-    if (!in || std::memcmp(magic, kCacheMagic, 8) != 0 || std::string(stored, 16) != key || w == 0 || h == 0 ||
-        uint64_t(w) * h > eng::io::kMaxImagePixels)
+    if (!in || std::memcmp(magic, kCacheMagic, 8) != 0 || std::string(stored, 16) != key || w == 0 ||
+        h == 0 || uint64_t(w) * h > eng::io::kMaxImagePixels)
         return std::nullopt;
     for (eng::io::ImageF* img : {&t.display, &t.hdr, &t.halves[0], &t.halves[1]}) {
         *img = eng::io::makeImage(w, h);

@@ -35,7 +35,7 @@ struct FrameConstants {
     // proj[0][0], proj[1][1], proj[2][0], proj[2][1]: zw are 0 except in a tile of a larger view
     // (engine/frame/frame_constants.h ViewTile), whose rays are off the axis.
     vec4 projParams;
-    uvec4 counts;     // samples n, samples per layer, layers, light count
+    uvec4 counts; // samples n, samples per layer, layers, light count
     // x: the tile scale (1 = this frame is the whole view); the shadow maps are fitted to the
     // whole view's frustum, so every tile of a view sees the same ones. yzw unused.
     vec4 viewTile;
