@@ -5,7 +5,9 @@
 // AGAA_QUALITY_NO_SHADOWS=1 without shadowed lights, AGAA_QUALITY_EXPOSURE=E at another exposure,
 // AGAA_QUALITY_METAL_ROUGHNESS=R with every metal at roughness R, AGAA_QUALITY_REFERENCE_SAMPLES=N
 // against the reference at n = N,
-// AGAA_QUALITY_NDF=sggx|toksvig with one normal distribution: the measurements behind the README's causes).
+// AGAA_QUALITY_NDF=sggx|toksvig with one normal distribution; AGAA_QUALITY_DISTANCE=plane,
+// AGAA_QUALITY_SEED_THRESHOLD=T, AGAA_QUALITY_SHADOW_FOOTPRINT=statistics|samples and
+// AGAA_QUALITY_CURVATURE=1 AGAA's other settings: the measurements behind docs/decisions).
 
 #include "agaa_test_support.h"
 #include "engine/io/metrics.h"
@@ -139,9 +141,11 @@ TEST_P(QualityScene, AgaaIsNeverWorseThanNoAaAndKeepsTheEnergy) {
     const char* ndf = std::getenv("AGAA_QUALITY_NDF");
     agaa::FrameRenderer renderer(*device, scene);
     const uint32_t size = qualitySize(), n = 8;
-    const bool measuredSetting = size == 64 && !std::getenv("AGAA_QUALITY_NO_SHADOWS") && !ndf &&
-                                 !std::getenv("AGAA_QUALITY_EXPOSURE") &&
-                                 !std::getenv("AGAA_QUALITY_METAL_ROUGHNESS");
+    const bool measuredSetting =
+        size == 64 && !std::getenv("AGAA_QUALITY_NO_SHADOWS") && !ndf &&
+        !std::getenv("AGAA_QUALITY_DISTANCE") && !std::getenv("AGAA_QUALITY_SEED_THRESHOLD") &&
+        !std::getenv("AGAA_QUALITY_SHADOW_FOOTPRINT") && !std::getenv("AGAA_QUALITY_CURVATURE") &&
+        !std::getenv("AGAA_QUALITY_EXPOSURE") && !std::getenv("AGAA_QUALITY_METAL_ROUGHNESS");
     const agaa::ConvergedTruth truth = truthOf(renderer, request("reference", n, 1, size));
     const agaa::RenderResult ref = renderer.render(request("reference", n, 1, size));
     // The same reference with materials at sample rate: what of its error is the pixel-rate material.
@@ -168,6 +172,14 @@ TEST_P(QualityScene, AgaaIsNeverWorseThanNoAaAndKeepsTheEnergy) {
         for (uint32_t c : {1u, 2u, 4u}) {
             agaa::RenderRequest r = request(path, n, c, size);
             if (ndf) r.settings.ndf = ndf;
+            if (const char* d = std::getenv("AGAA_QUALITY_DISTANCE")) r.settings.agaaDistance = d;
+            if (const char* t = std::getenv("AGAA_QUALITY_SEED_THRESHOLD"))
+                r.settings.seedThreshold = float(std::atof(t));
+            if (const char* f = std::getenv("AGAA_QUALITY_SHADOW_FOOTPRINT"))
+                r.settings.effects.shadowFootprint = std::string(f) == "samples"
+                                                         ? agaa::EffectSettings::ShadowFootprint::Samples
+                                                         : agaa::EffectSettings::ShadowFootprint::Statistics;
+            if (std::getenv("AGAA_QUALITY_CURVATURE")) r.settings.curvatureRoughness = true;
             const agaa::RenderResult ag = renderer.render(r);
             const double error = eng::io::rmse(encoded(ag.display), truthDisplay);
             const double mean = meanRadiance(ag.hdr);

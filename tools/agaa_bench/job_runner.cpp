@@ -33,13 +33,6 @@ ErrorMetrics identical() {
     return e;
 }
 
-double meanLuminance(const eng::io::ImageF& hdr) {
-    double sum = 0.0;
-    for (size_t p = 0; p + 3 < hdr.rgba.size(); p += 4)
-        sum += 0.2126 * hdr.rgba[p] + 0.7152 * hdr.rgba[p + 1] + 0.0722 * hdr.rgba[p + 2];
-    return hdr.rgba.empty() ? 0.0 : sum / double(hdr.rgba.size() / 4);
-}
-
 void writeDisplayPng(const std::filesystem::path& file, const eng::io::ImageF& srgb) {
     std::filesystem::create_directories(file.parent_path());
     eng::io::writePng(file, eng::io::quantizeToU8(srgb));

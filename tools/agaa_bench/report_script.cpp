@@ -133,7 +133,7 @@ const char* reportScript() {
         maintainAspectRatio: false,
         scales: {
           x: { type: "linear", beginAtZero: true, title: { display: true, text: xTitle } },
-          y: { beginAtZero: true, title: { display: true, text: "RMSE vs converged truth (sRGB display), bars: the truth's own error" } },
+          y: { beginAtZero: true, title: { display: true, text: "RMSE vs truth (sRGB); bars: the truth's own error" } },
         },
         plugins: { legend: { position: "bottom" } },
       },

@@ -62,10 +62,6 @@ uint64_t codeVersion() {
     return version;
 }
 
-double luma(float r, float g, float b) {
-    return 0.2126 * r + 0.7152 * g + 0.0722 * b;
-}
-
 } // namespace
 
 void validate(const TruthSettings& s) {
@@ -76,6 +72,13 @@ void validate(const TruthSettings& s) {
         throw std::invalid_argument("truth samples " + std::to_string(s.samples) +
                                     " is out of range (1, 4, 8, ..., " + std::to_string(shared::kMaxSamples) +
                                     ": a multiple of 4 above 4)");
+}
+
+double meanLuminance(const eng::io::ImageF& hdr) {
+    double sum = 0.0;
+    for (size_t p = 0; p + 3 < hdr.rgba.size(); p += 4)
+        sum += 0.2126 * hdr.rgba[p] + 0.7152 * hdr.rgba[p + 1] + 0.0722 * hdr.rgba[p + 2];
+    return hdr.rgba.empty() ? 0.0 : sum / double(hdr.rgba.size() / 4);
 }
 
 double truthErrorEstimate(const eng::io::ImageF& halfA, const eng::io::ImageF& halfB) {
@@ -131,16 +134,13 @@ ConvergedTruth TruthAccumulator::finish() const {
     t.hdr = eng::io::makeImage(m_width, m_height);
     for (int h = 0; h < 2; ++h)
         t.halves[h] = eng::io::makeImage(m_width, m_height);
-    double lumaSum = 0.0;
     for (size_t i = 0; i < m_display.size(); ++i) {
         t.display.rgba[i] = float(m_display[i] / all);
         t.hdr.rgba[i] = float(m_hdr[i] / all);
         for (int h = 0; h < 2; ++h)
             t.halves[h].rgba[i] = halfCount[h] > 0.0 ? float(m_half[h][i] / halfCount[h]) : t.display.rgba[i];
     }
-    for (size_t p = 0; p < m_display.size(); p += 4)
-        lumaSum += luma(t.hdr.rgba[p], t.hdr.rgba[p + 1], t.hdr.rgba[p + 2]);
-    t.meanLuminance = lumaSum / double(size_t(m_width) * m_height);
+    t.meanLuminance = meanLuminance(t.hdr);
     // k = 1 has no second half: its own error is not measured, reported as unknown (infinite).
     t.errorEstimate =
         m_k == 1 ? std::numeric_limits<double>::infinity() : truthErrorEstimate(t.halves[0], t.halves[1]);

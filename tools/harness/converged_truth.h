@@ -55,6 +55,10 @@ struct ConvergedTruth {
     std::string key; // the cache key's hash, hex
 };
 
+// Linear image mean of Rec. 709 luma (0.2126 R + 0.7152 G + 0.0722 B): the energy figure every
+// comparison with the truth's meanLuminance uses. 0 for an empty image.
+double meanLuminance(const eng::io::ImageF& hdr);
+
 // Error estimate from two halves: display RMSE between their sRGB encodings, halved. Throws
 // eng::io::IoError for images of different sizes or with NaN (as the metrics do).
 double truthErrorEstimate(const eng::io::ImageF& halfA, const eng::io::ImageF& halfB);
