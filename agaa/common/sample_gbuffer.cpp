@@ -105,8 +105,8 @@ SampleGBuffer SampleGBufferPass::add(rg::Graph& graph, const FrameInputs& in) {
     const eng::frame::SamplePattern pattern = eng::frame::makeSamplePattern(m_samples);
     const VkSampleCountFlagBits hwSamples =
         pattern.samplesPerLayer == 4 ? VK_SAMPLE_COUNT_4_BIT : VK_SAMPLE_COUNT_1_BIT;
-    auto desc = [&](VkFormat f) {
-        return rg::TextureDesc{f, in.width, in.height, pattern.layers, hwSamples};
+    auto desc = [&](VkFormat f, VkFormat sampled = VK_FORMAT_UNDEFINED) {
+        return rg::TextureDesc{f, in.width, in.height, pattern.layers, hwSamples, sampled};
     };
 
     // Variants each draw needs, chosen up front so pipeline creation never happens mid-recording.
@@ -142,7 +142,8 @@ SampleGBuffer SampleGBufferPass::add(rg::Graph& graph, const FrameInputs& in) {
                 return;
             }
             d.g.normal = b.color(b.create(m_name + ".gbuffer.normal", desc(kNormalFormat)));
-            d.g.albedoMetal = b.color(b.create(m_name + ".gbuffer.albedoMetal", desc(kAlbedoMetalFormat)));
+            d.g.albedoMetal = b.color(b.create(m_name + ".gbuffer.albedoMetal",
+                                               desc(kAlbedoMetalFormat, kAlbedoMetalSampledFormat)));
             d.g.emissiveRoughness =
                 b.color(b.create(m_name + ".gbuffer.emissiveRoughness", desc(kEmissiveRoughnessFormat)));
             if (m_options.primitiveIds)

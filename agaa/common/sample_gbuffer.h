@@ -21,7 +21,7 @@ namespace agaa {
 struct SampleGBuffer {
     eng::rg::Texture depth;             // D32, reversed Z, 0 = sky
     eng::rg::Texture normal;            // RG16_SNORM octahedral, view space
-    eng::rg::Texture albedoMetal;       // RGBA8_SRGB
+    eng::rg::Texture albedoMetal;       // RGBA8_UNORM written sRGB-encoded, sampled as RGBA8_SRGB
     eng::rg::Texture emissiveRoughness; // RGBA16F
     eng::rg::Texture primitive;         // R32_SFLOAT triangle number + 1 (GBufferOptions::primitiveIds only)
     eng::rg::Texture
@@ -62,7 +62,11 @@ class SampleGBufferPass {
   public:
     static constexpr VkFormat kDepthFormat = VK_FORMAT_D32_SFLOAT;
     static constexpr VkFormat kNormalFormat = VK_FORMAT_R16G16_SNORM;
-    static constexpr VkFormat kAlbedoMetalFormat = VK_FORMAT_R8G8B8A8_SRGB;
+    // Albedo is stored sRGB-encoded, but by the shader (common/srgb.glsl): lavapipe's fixed-function
+    // encode is not the same on every x86 CPU, so an _SRGB attachment made the goldens differ
+    // between machines. Readers sample the image through a view of kAlbedoMetalSampledFormat.
+    static constexpr VkFormat kAlbedoMetalFormat = VK_FORMAT_R8G8B8A8_UNORM;
+    static constexpr VkFormat kAlbedoMetalSampledFormat = VK_FORMAT_R8G8B8A8_SRGB;
     static constexpr VkFormat kEmissiveRoughnessFormat = VK_FORMAT_R16G16B16A16_SFLOAT;
     static constexpr VkFormat kPrimitiveFormat = VK_FORMAT_R32_SFLOAT;
     static constexpr VkFormat kGeometricNormalFormat = VK_FORMAT_R8G8_UNORM;

@@ -7,6 +7,7 @@ namespace {
 
 vk::ImageDesc imageDesc(const rg::TextureDesc& desc, VkImageUsageFlags usage) {
     vk::ImageDesc d{desc.format, desc.width, desc.height, desc.layers, 1, desc.samples, usage};
+    d.sampledFormat = desc.sampledFormat;
     // Single-sample single-layer targets are plain 2D images to shaders (image2D, sampler2D);
     // layered or multisampled ones are arrays, so emulated and native rates share one shader.
     d.viewType = desc.layers == 1 && desc.samples == VK_SAMPLE_COUNT_1_BIT ? VK_IMAGE_VIEW_TYPE_2D
@@ -16,7 +17,7 @@ vk::ImageDesc imageDesc(const rg::TextureDesc& desc, VkImageUsageFlags usage) {
 
 bool sameTexture(const rg::TextureDesc& a, const rg::TextureDesc& b) {
     return a.format == b.format && a.width == b.width && a.height == b.height && a.layers == b.layers &&
-           a.samples == b.samples;
+           a.samples == b.samples && a.sampledFormat == b.sampledFormat;
 }
 
 // Same objects and the same lifetimes, hence the same placement is valid; names may differ.
@@ -204,7 +205,7 @@ rg::PhysicalTexture TransientPool::acquireTexture(const std::string& name, const
         const vk::ImageDesc& d = s.object.image.desc;
         if (s.object.isImage && !s.object.inUse && d.format == desc.format && d.width == desc.width &&
             d.height == desc.height && d.layers == desc.layers && d.samples == desc.samples &&
-            d.usage == usage) {
+            d.sampledFormat == desc.sampledFormat && d.usage == usage) {
             found = &s;
             break;
         }

@@ -31,6 +31,9 @@ struct TextureDesc {
     VkFormat format = VK_FORMAT_UNDEFINED;
     uint32_t width = 1, height = 1, layers = 1;
     VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;
+    // A format of the same texel size that sampled reads see (PhysicalTexture::sampledView): a
+    // UNORM colour target read as sRGB. UNDEFINED: they see `format`.
+    VkFormat sampledFormat = VK_FORMAT_UNDEFINED;
 };
 
 struct BufferDesc {
@@ -40,7 +43,8 @@ struct BufferDesc {
 struct PhysicalTexture {
     VkImage image = VK_NULL_HANDLE;
     VkImageView view = VK_NULL_HANDLE;        // all aspects; 2D, or 2D_ARRAY when layers > 1
-    VkImageView sampledView = VK_NULL_HANDLE; // depth aspect only for depth formats, else == view
+    VkImageView sampledView = VK_NULL_HANDLE; // depth aspect only for depth formats, of sampledFormat if
+                                              // set, else == view
     TextureDesc desc;
 };
 

@@ -3,6 +3,8 @@
 #include "engine/vk/check.h"
 
 #include <cstring>
+#include <stdexcept>
+#include <string>
 
 namespace eng::vk {
 
@@ -160,8 +162,30 @@ void invalidateBuffer(const Device& device, const Buffer& b) {
 
 namespace {
 
+bool hasSampledFormat(const ImageDesc& desc) {
+    return desc.sampledFormat != VK_FORMAT_UNDEFINED && desc.sampledFormat != desc.format;
+}
+
 VkImage createImageObject(const Device& device, const ImageDesc& desc) {
     VkImageCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
+    // The two formats must be of one compatibility class; equal texel sizes of colour formats is
+    // the part the views' validation would report only as a VUID.
+    const VkFormat formats[2] = {desc.format, desc.sampledFormat};
+    VkImageFormatListCreateInfo formatList{VK_STRUCTURE_TYPE_IMAGE_FORMAT_LIST_CREATE_INFO};
+    if (hasSampledFormat(desc)) {
+        if (isDepthFormat(desc.format) || isDepthFormat(desc.sampledFormat) ||
+            bytesPerTexel(desc.format) == 0 ||
+            bytesPerTexel(desc.format) != bytesPerTexel(desc.sampledFormat))
+            throw std::invalid_argument(
+                "image sampledFormat (VkFormat " + std::to_string(desc.sampledFormat) +
+                ") is not a colour format of the texel size of its format (VkFormat " +
+                std::to_string(desc.format) + ")");
+        info.flags |= VK_IMAGE_CREATE_MUTABLE_FORMAT_BIT;
+        // The list keeps lossless compression on drivers that disable it for arbitrary views.
+        formatList.viewFormatCount = 2;
+        formatList.pViewFormats = formats;
+        info.pNext = &formatList;
+    }
     info.imageType = VK_IMAGE_TYPE_2D;
     info.format = desc.format;
     info.extent = {desc.width, desc.height, 1};
@@ -198,6 +222,15 @@ void createViews(const Device& device, Image& img, const std::string& name) {
     if (isDepthFormat(desc.format) && hasStencil(desc.format) && (desc.usage & VK_IMAGE_USAGE_SAMPLED_BIT)) {
         view.subresourceRange.aspectMask = VK_IMAGE_ASPECT_DEPTH_BIT;
         VK_CHECK(vkCreateImageView(device.device(), &view, nullptr, &img.sampledView));
+    }
+    if (hasSampledFormat(desc) && (desc.usage & VK_IMAGE_USAGE_SAMPLED_BIT)) {
+        // Sampling only: an sRGB view may not inherit the image's storage usage.
+        VkImageViewUsageCreateInfo usage{VK_STRUCTURE_TYPE_IMAGE_VIEW_USAGE_CREATE_INFO};
+        usage.usage = VK_IMAGE_USAGE_SAMPLED_BIT;
+        view.pNext = &usage;
+        view.format = desc.sampledFormat;
+        VK_CHECK(vkCreateImageView(device.device(), &view, nullptr, &img.sampledView));
+        device.setName(VK_OBJECT_TYPE_IMAGE_VIEW, img.sampledView, name + ".sampledView");
     }
     device.setName(VK_OBJECT_TYPE_IMAGE_VIEW, img.view, name + ".view");
 }

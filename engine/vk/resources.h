@@ -36,13 +36,19 @@ struct ImageDesc {
     VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;
     VkImageUsageFlags usage = 0;
     VkImageViewType viewType = VK_IMAGE_VIEW_TYPE_2D_ARRAY; // 2D for material textures
+    // A second format of the same texel size for sampledView (the image is then MUTABLE_FORMAT):
+    // a target written as UNORM with a shader's exact sRGB encode and read through the sampler's
+    // sRGB decode. The fixed-function encode is not reproducible across CPUs on lavapipe
+    // (see sample_gbuffer.h). UNDEFINED: sampledView has `format`.
+    VkFormat sampledFormat = VK_FORMAT_UNDEFINED;
 };
 
 struct Image {
     VkImage image = VK_NULL_HANDLE;
     VkDeviceMemory memory = VK_NULL_HANDLE;
     VkImageView view = VK_NULL_HANDLE;        // all aspects, of desc.viewType
-    VkImageView sampledView = VK_NULL_HANDLE; // depth aspect only for depth formats, else == view
+    VkImageView sampledView = VK_NULL_HANDLE; // depth aspect only for depth formats, of sampledFormat if set,
+                                              // else == view
     ImageDesc desc;
     VkDeviceSize bytes = 0; // the allocation's size, for bytes-per-pixel reports
 };

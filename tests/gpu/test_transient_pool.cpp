@@ -13,6 +13,8 @@
 #include <gtest/gtest.h>
 
 #include <cstring>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 namespace {
@@ -152,6 +154,42 @@ TEST(TransientPool, RepeatedSizeChangesKeepMemoryBounded) {
         EXPECT_EQ(read(*device, host, 1)[0], kMax) << "the last frame's clear value";
     }
     vk::destroyBuffer(*device, host);
+    agaa::test::expectNoValidationErrors(*device);
+}
+
+// The G-buffer's albedo is a UNORM target read through an sRGB view (sample_gbuffer.h): the
+// sampled view must be of the second format, images of different sampled formats must never be
+// handed out for each other, and a pair of formats of different sizes is refused by name.
+TEST(TransientPool, ASampledFormatGivesTheSampledViewItsFormat) {
+    auto device = agaa::test::makeValidatedDevice();
+    {
+        eng::frame::TransientPool pool(*device);
+        constexpr VkImageUsageFlags kUsage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT;
+        rg::TextureDesc srgb{VK_FORMAT_R8G8B8A8_UNORM, 8, 8, 2, VK_SAMPLE_COUNT_4_BIT,
+                             VK_FORMAT_R8G8B8A8_SRGB};
+        const rg::PhysicalTexture a = pool.acquireTexture("test.srgb", srgb, kUsage);
+        EXPECT_NE(a.sampledView, a.view) << "the sampled view is a second view, of R8G8B8A8_SRGB";
+        pool.release(a);
+        rg::TextureDesc plain = srgb;
+        plain.sampledFormat = VK_FORMAT_UNDEFINED;
+        const rg::PhysicalTexture b = pool.acquireTexture("test.plain", plain, kUsage);
+        EXPECT_NE(b.image, a.image) << "a released image with another sampled format was reused";
+        EXPECT_EQ(b.sampledView, b.view);
+        pool.release(b);
+        const rg::PhysicalTexture c = pool.acquireTexture("test.srgb.again", srgb, kUsage);
+        EXPECT_EQ(c.image, a.image) << "the same description reuses the released image";
+        pool.release(c);
+
+        rg::TextureDesc wrong = srgb;
+        wrong.sampledFormat = VK_FORMAT_R16G16B16A16_SFLOAT;
+        try {
+            pool.acquireTexture("test.wrong", wrong, kUsage);
+            ADD_FAILURE() << "a sampled format of another texel size was accepted";
+        } catch (const std::invalid_argument& e) {
+            EXPECT_NE(std::string(e.what()).find("sampledFormat"), std::string::npos) << e.what();
+        }
+        pool.destroyAll();
+    }
     agaa::test::expectNoValidationErrors(*device);
 }
 

@@ -54,6 +54,7 @@ enum MathOp : uint32_t {
     kOpMeanNormalLobe = 27,
     kOpViewFootprint = 28,
     kOpBrdfFiltered = 29,
+    kOpSrgbEncode = 30,
 };
 
 struct EdgeCase {

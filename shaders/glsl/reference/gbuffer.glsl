@@ -1,8 +1,10 @@
 // Per-sample G-buffer: 16 bytes per sample plus depth (DESIGN section 5):
 //   RT0 RG16_SNORM   shading normal, octahedral, view space
-//   RT1 RGBA8_SRGB   albedo (sRGB-encoded for precision in the darks), A metallic
+//   RT1 RGBA8_UNORM  albedo, sRGB-encoded here for precision in the darks (common/srgb.glsl) and
+//                    sampled through an sRGB view; A metallic
 //   RT2 RGBA16F      emissive radiance (HDR), A roughness
 #include "shared/frame.h"
+#include "common/srgb.glsl"
 
 // Masked materials (agaa/common/effects.h AlphaPath): 0 opaque (samples nothing), 1 discard below
 // the cutoff (1 sample per pixel), 2 alpha-to-coverage (MSAA; common/alpha_coverage.glsl).
@@ -99,7 +101,7 @@ void main() {
     }
 #else
     outNormal = vec4(encodeOctahedral(s.normal), 0.0, coverage);
-    outAlbedoMetal = vec4(s.albedo, s.metallic);
+    outAlbedoMetal = vec4(srgbEncode(s.albedo), s.metallic);
     outEmissiveRoughness = vec4(min(s.emissive, vec3(kMaxRadiance)), s.roughness);
 #endif
 #if GBUFFER_PRIMITIVE_ID

@@ -26,6 +26,7 @@ vec3 gbufferNormal(ivec2 pixel, uint s) { return vec3(0.0, 0.0, 1.0); }
 #include "common/material.glsl"
 #include "common/octahedral.glsl"
 #include "common/tonemap.glsl"
+#include "common/srgb.glsl"
 #include "simple_complex/classify.glsl"
 #undef texture
 
@@ -74,6 +75,7 @@ const uint kOpViewFootprint = 28u; // theta a.x, alpha a.y, screen covariance b.
 const uint kOpAggregateWidth = 25u; // direction a.xyz, screen covariance b.xyz -> r0.x
 const uint kOpEnvironmentRoughness = 26u; // filtered alpha a.x, material alpha a.y -> r0.x
 const uint kOpBrdfFiltered = 29u; // as kOpBrdfAniso, spread e.w (evaluateBrdfAnisotropicFiltered) -> r0.xyz, r1.xyz
+const uint kOpSrgbEncode = 30u; // linear a.xyz -> r0.xyz (srgbEncode, the G-buffer albedo's store)
 const uint kOpCurvature = 21u;   // dN/dx a.xyz, dN/dy b.xyz, roughness c.x, max footprint c.y, boost c.z -> r0.x
 
 void main() {
@@ -168,6 +170,8 @@ void main() {
         r0.x = rangeWindow(k.a.x, k.a.y);
     } else if (op == kOpToneMap) {
         r0.xyz = toneMapAces(k.a.xyz);
+    } else if (op == kOpSrgbEncode) {
+        r0.xyz = srgbEncode(k.a.xyz);
     } else if (op == kOpToksvig) {
         r0.x = toksvigLength(k.a.x, k.a.y, k.a.z, k.a.w);
     } else if (op == kOpFiltered) {
