@@ -12,6 +12,8 @@
 #include "agaa_test_support.h"
 #include "engine/io/metrics.h"
 #include "engine/io/tone_map.h"
+#include "engine/scene/default_lighting.h"
+#include "engine/scene/gltf_loader.h"
 #include "engine/scene/scenegen.h"
 #include "gpu_test_support.h"
 #include "tools/harness/converged_truth.h"
@@ -24,6 +26,7 @@
 #include <array>
 #include <cmath>
 #include <cstdlib>
+#include <filesystem>
 #include <span>
 #include <string>
 #include <vector>
@@ -45,10 +48,45 @@ double meanRadiance(const eng::io::ImageF& hdr) {
     return sum / double(hdr.rgba.size() / 4 * 3);
 }
 
-agaa::RenderRequest request(const std::string& method, uint32_t n, uint32_t c, uint32_t size) {
+// A glTF file gives no exposure: it is metered, the same for every method and the truth.
+agaa::RenderRequest request(const eng::scene::Scene& scene, const std::string& method, uint32_t n, uint32_t c,
+                            uint32_t size) {
     agaa::RenderRequest r = agaa::test::request(method, n, c, size);
-    if (const char* e = std::getenv("AGAA_QUALITY_EXPOSURE")) r.view.exposure = float(std::atof(e));
+    r.autoExposure = !scene.exposure.has_value();
+    if (const char* e = std::getenv("AGAA_QUALITY_EXPOSURE")) {
+        r.view.exposure = float(std::atof(e));
+        r.autoExposure = false;
+    }
     return r;
+}
+
+// The shared real scenes (../shared/scenes; never copied in), lit as agaa-render's default does.
+struct RealScene {
+    const char* name;
+    const char* asset;
+};
+constexpr RealScene kRealScenes[] = {
+    {"gltf-cubes", "Cubes/Cubes.glb"},
+    {"gltf-mixed-lighting", "MixedLightingExample/MixedLightingExample.gltf"},
+    {"gltf-dutch-ship", "dutch_ship_medium/dutch_ship_medium_1k.gltf"},
+};
+
+eng::scene::Scene loadScene(const std::string& name) {
+    for (const RealScene& r : kRealScenes)
+        if (name == r.name) {
+            eng::scene::Scene scene =
+                eng::scene::loadGltf(std::filesystem::path(AGAA_SHARED_SCENES_DIR) / r.asset);
+            eng::scene::applyLighting(scene, eng::scene::LightingMode::Automatic);
+            return scene;
+        }
+    return eng::scene::loadTestScene(name);
+}
+
+bool realSceneMissing(const std::string& name) {
+    for (const RealScene& r : kRealScenes)
+        if (name == r.name)
+            return !std::filesystem::exists(std::filesystem::path(AGAA_SHARED_SCENES_DIR) / r.asset);
+    return false;
 }
 
 uint32_t qualitySize() {
@@ -60,6 +98,8 @@ std::vector<std::string> everyScene() {
     std::vector<std::string> scenes = eng::scene::sceneKinds();
     for (const std::string& h : eng::scene::hardSceneKinds())
         scenes.push_back(h);
+    for (const RealScene& r : kRealScenes)
+        scenes.push_back(r.name);
     return scenes;
 }
 
@@ -130,8 +170,9 @@ agaa::ConvergedTruth truthOf(agaa::FrameRenderer& renderer, const agaa::RenderRe
 // and its linear mean radiance is within 10 % of the truth's. The reference at the same n is
 // printed beside it: the shading error at fixed visibility.
 TEST_P(QualityScene, AgaaIsNeverWorseThanNoAaAndKeepsTheEnergy) {
+    if (realSceneMissing(GetParam())) GTEST_SKIP() << GetParam() << " is missing (AGAA_SHARED_SCENES_DIR)";
     auto device = agaa::test::makeValidatedDevice();
-    eng::scene::Scene scene = eng::scene::loadTestScene(GetParam());
+    eng::scene::Scene scene = loadScene(GetParam());
     if (std::getenv("AGAA_QUALITY_NO_SHADOWS"))
         for (eng::scene::Light& l : scene.lights)
             l.castsShadows = false;
@@ -146,13 +187,13 @@ TEST_P(QualityScene, AgaaIsNeverWorseThanNoAaAndKeepsTheEnergy) {
         !std::getenv("AGAA_QUALITY_DISTANCE") && !std::getenv("AGAA_QUALITY_SEED_THRESHOLD") &&
         !std::getenv("AGAA_QUALITY_SHADOW_FOOTPRINT") && !std::getenv("AGAA_QUALITY_CURVATURE") &&
         !std::getenv("AGAA_QUALITY_EXPOSURE") && !std::getenv("AGAA_QUALITY_METAL_ROUGHNESS");
-    const agaa::ConvergedTruth truth = truthOf(renderer, request("reference", n, 1, size));
-    const agaa::RenderResult ref = renderer.render(request("reference", n, 1, size));
+    const agaa::ConvergedTruth truth = truthOf(renderer, request(scene, "reference", n, 1, size));
+    const agaa::RenderResult ref = renderer.render(request(scene, "reference", n, 1, size));
     // The same reference with materials at sample rate: what of its error is the pixel-rate material.
-    agaa::RenderRequest sampleRate = request("reference", n, 1, size);
+    agaa::RenderRequest sampleRate = request(scene, "reference", n, 1, size);
     sampleRate.settings.sampleRateShading = true;
     const agaa::RenderResult refSampleRate = renderer.render(sampleRate);
-    const agaa::RenderResult noaa = renderer.render(request("noaa", 1, 1, size));
+    const agaa::RenderResult noaa = renderer.render(request(scene, "noaa", 1, 1, size));
     const eng::io::ImageF truthDisplay = encoded(truth.display);
     const double noaaError = eng::io::rmse(encoded(noaa.display), truthDisplay);
     const double refError = eng::io::rmse(encoded(ref.display), truthDisplay);
@@ -170,7 +211,7 @@ TEST_P(QualityScene, AgaaIsNeverWorseThanNoAaAndKeepsTheEnergy) {
     for (const std::string& pathName : paths) {
         const char* path = pathName.c_str();
         for (uint32_t c : {1u, 2u, 4u}) {
-            agaa::RenderRequest r = request(path, n, c, size);
+            agaa::RenderRequest r = request(scene, path, n, c, size);
             if (ndf) r.settings.ndf = ndf;
             if (const char* d = std::getenv("AGAA_QUALITY_DISTANCE")) r.settings.agaaDistance = d;
             if (const char* t = std::getenv("AGAA_QUALITY_SEED_THRESHOLD"))
