@@ -195,6 +195,7 @@ ConvergedTruth renderConvergedTruth(FrameRenderer& renderer, const RenderRequest
     frame.method = "reference";
     frame.settings.samples = settings.samples;
     frame.settings.sampleRateShading = true; // materials, textures and alpha per sample
+    frame.settings.debug.clear();            // the lit frame, whatever view the caller's method shows
     frame.warmupFrames = 0;
     frame.timedFrames = 1;
     frame.extraPasses = nullptr;
