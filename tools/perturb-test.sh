@@ -25,6 +25,9 @@ lvp="$(ls /usr/share/vulkan/icd.d/lvp_icd.*.json 2>/dev/null | head -n1)"
 export VK_ICD_FILENAMES="${VK_ICD_FILENAMES:-$lvp}"
 variants=("$@")
 [ ${#variants[@]} -gt 0 ] || variants=(brdf metadata)
+# glints is not in the proof: a 1 % BRDF change moves its AGAA goldens (a dark ball of few
+# highlights) by display RMSE 2.5e-5 to 3.7e-5, under the golden threshold of 1e-4, although 300
+# to 840 of their pixels change (measured with glints in this list; issue 37's per-pixel metric).
 builtins="furball metal foliage bamboo railings plane default spikes"
 build="${AGAA_BUILD_DIR:-build/test}"
 case "$build" in /*) ;; *) build="$root/$build" ;; esac
