@@ -6,19 +6,13 @@
 #include "gpu_test_support.h"
 #include "tools/harness/converged_truth.h"
 #include "tools/scenes/adversarial_scenes.h"
+#include "truth_request.h"
 
 #include <gtest/gtest.h>
 
 #include <cstdio>
 
 namespace {
-
-agaa::RenderRequest view(uint32_t w, uint32_t h) {
-    agaa::RenderRequest r;
-    r.view.width = w;
-    r.view.height = h;
-    return r;
-}
 
 // The certificate is a measurement, so it is checked against one: each truth's estimated error
 // against its measured distance from a truth at twice the k (k = 8 standing in for the limit
@@ -28,10 +22,12 @@ TEST(ConvergedTruthGpu, TheEstimateTracksTheDistanceToAFinerTruth) {
     for (const char* name : {"default", "spikes", "glints"}) {
         eng::scene::Scene scene = eng::scene::loadTestScene(name);
         agaa::FrameRenderer renderer(*device, scene);
-        const agaa::ConvergedTruth fine = agaa::renderConvergedTruth(renderer, view(32, 32), {8, 32});
+        const agaa::ConvergedTruth fine =
+            agaa::renderConvergedTruth(renderer, agaa::test::truthView(32, 32), {8, 32});
         const eng::io::ImageF limit = eng::io::srgbEncoded(fine.display);
         for (uint32_t k : {2u, 4u}) {
-            const agaa::ConvergedTruth t = agaa::renderConvergedTruth(renderer, view(32, 32), {k, 32});
+            const agaa::ConvergedTruth t =
+                agaa::renderConvergedTruth(renderer, agaa::test::truthView(32, 32), {k, 32});
             const double distance = eng::io::rmse(eng::io::srgbEncoded(t.display), limit);
             std::printf("[ measured ] %-8s k=%u: estimate %.5f, display RMSE to k=8 %.5f (ratio %.2f); k=8's "
                         "estimate %.5f\n",

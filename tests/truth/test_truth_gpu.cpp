@@ -6,6 +6,7 @@
 #include "gpu_test_support.h"
 #include "tools/harness/converged_truth.h"
 #include "tools/scenes/adversarial_scenes.h"
+#include "truth_request.h"
 
 #include <gtest/gtest.h>
 
@@ -13,15 +14,8 @@
 
 namespace {
 
-agaa::RenderRequest view(uint32_t w, uint32_t h) {
-    agaa::RenderRequest r;
-    r.view.width = w;
-    r.view.height = h;
-    return r;
-}
-
 agaa::RenderResult referenceAtSampleRate(agaa::FrameRenderer& renderer, uint32_t w, uint32_t h) {
-    agaa::RenderRequest r = view(w, h);
+    agaa::RenderRequest r = agaa::test::truthView(w, h);
     r.method = "reference";
     r.settings.samples = 32;
     r.settings.sampleRateShading = true;
@@ -50,7 +44,8 @@ TEST(ConvergedTruthGpu, OneTileIsTheSampleRateReference) {
     auto device = agaa::test::makeValidatedDevice();
     eng::scene::Scene scene = eng::scene::loadTestScene("default");
     agaa::FrameRenderer renderer(*device, scene);
-    const agaa::ConvergedTruth t = agaa::renderConvergedTruth(renderer, view(48, 32), {1, 32});
+    const agaa::ConvergedTruth t =
+        agaa::renderConvergedTruth(renderer, agaa::test::truthView(48, 32), {1, 32});
     const agaa::RenderResult ref = referenceAtSampleRate(renderer, 48, 32);
     EXPECT_EQ(t.display.rgba, ref.display.rgba);
     EXPECT_EQ(t.hdr.rgba, ref.hdr.rgba);
@@ -67,7 +62,8 @@ TEST(ConvergedTruthGpu, TilesStitchIntoTheLargeFrame) {
     for (const char* name : {"default", "spikes"}) {
         eng::scene::Scene scene = eng::scene::loadTestScene(name);
         agaa::FrameRenderer renderer(*device, scene);
-        const agaa::ConvergedTruth t = agaa::renderConvergedTruth(renderer, view(40, 24), {2, 32});
+        const agaa::ConvergedTruth t =
+            agaa::renderConvergedTruth(renderer, agaa::test::truthView(40, 24), {2, 32});
         const agaa::RenderResult big = referenceAtSampleRate(renderer, 80, 48);
         const eng::io::ImageF whole = downsample(big.display, 2);
         const double err = eng::io::rmse(eng::io::srgbEncoded(t.display), eng::io::srgbEncoded(whole));
@@ -86,16 +82,19 @@ TEST(ConvergedTruthGpu, TheCacheServesTheSameTruthOnce) {
     const agaa::TruthCache cache(dir);
     eng::scene::Scene scene = eng::scene::loadTestScene("plane");
     agaa::FrameRenderer renderer(*device, scene);
-    const agaa::ConvergedTruth first = agaa::renderConvergedTruth(renderer, view(16, 16), {2, 32}, &cache);
+    const agaa::ConvergedTruth first =
+        agaa::renderConvergedTruth(renderer, agaa::test::truthView(16, 16), {2, 32}, &cache);
     EXPECT_FALSE(first.fromCache);
-    const agaa::ConvergedTruth second = agaa::renderConvergedTruth(renderer, view(16, 16), {2, 32}, &cache);
+    const agaa::ConvergedTruth second =
+        agaa::renderConvergedTruth(renderer, agaa::test::truthView(16, 16), {2, 32}, &cache);
     EXPECT_TRUE(second.fromCache);
     EXPECT_EQ(second.display.rgba, first.display.rgba);
     EXPECT_EQ(second.errorEstimate, first.errorEstimate);
-    agaa::RenderRequest brighter = view(16, 16);
+    agaa::RenderRequest brighter = agaa::test::truthView(16, 16);
     brighter.view.exposure = 2.0f;
     EXPECT_NE(agaa::truthKey(scene, brighter, 2.0f, {2, 32}), first.key) << "exposure is part of the key";
-    EXPECT_NE(agaa::truthKey(scene, view(16, 16), 1.0f, {4, 32}), first.key) << "k is part of the key";
+    EXPECT_NE(agaa::truthKey(scene, agaa::test::truthView(16, 16), 1.0f, {4, 32}), first.key)
+        << "k is part of the key";
     std::filesystem::remove_all(dir);
     agaa::test::expectNoValidationErrors(*device);
 }
@@ -104,7 +103,7 @@ TEST(ConvergedTruthGpu, OtherMethodsRefuseATile) {
     auto device = agaa::test::makeValidatedDevice();
     eng::scene::Scene scene = eng::scene::loadTestScene("plane");
     agaa::FrameRenderer renderer(*device, scene);
-    agaa::RenderRequest r = view(8, 8);
+    agaa::RenderRequest r = agaa::test::truthView(8, 8);
     r.method = "agaa";
     r.view.tile = {2, {8, 0}};
     EXPECT_THROW(renderer.render(r), std::invalid_argument);
