@@ -28,52 +28,37 @@ const char* reportScript() {
       ctx.restore();
     },
   };
-  // Horizontal whiskers: the min..max of the timed frames behind each point's median.
-  const xSpread = {
-    id: "xSpread",
+  // Whiskers around each point: ds.xSpread holds the min..max of the timed frames behind its
+  // median frame time, ds.ySpread the truth's own error around its measured error (null: unknown).
+  const spreads = {
+    id: "spreads",
     afterDatasetsDraw(chart) {
-      const ctx = chart.ctx, x = chart.scales.x;
+      const ctx = chart.ctx, x = chart.scales.x, y = chart.scales.y;
+      // A line from a to b with 3-pixel end ticks across it.
+      function whisker(a, b, horizontal) {
+        const t = horizontal ? [0, 3] : [3, 0];
+        ctx.beginPath();
+        ctx.moveTo(a[0], a[1]);
+        ctx.lineTo(b[0], b[1]);
+        for (const e of [a, b]) {
+          ctx.moveTo(e[0] - t[0], e[1] - t[1]);
+          ctx.lineTo(e[0] + t[0], e[1] + t[1]);
+        }
+        ctx.stroke();
+      }
       ctx.save();
       chart.data.datasets.forEach((ds, i) => {
-        if (!ds.xSpread || !chart.isDatasetVisible(i)) return;
+        if (!chart.isDatasetVisible(i)) return;
         ctx.strokeStyle = ds.borderColor;
         chart.getDatasetMeta(i).data.forEach((pt, k) => {
-          const [lo, hi] = ds.xSpread[k];
-          ctx.beginPath();
-          ctx.moveTo(x.getPixelForValue(lo), pt.y);
-          ctx.lineTo(x.getPixelForValue(hi), pt.y);
-          ctx.moveTo(x.getPixelForValue(lo), pt.y - 3);
-          ctx.lineTo(x.getPixelForValue(lo), pt.y + 3);
-          ctx.moveTo(x.getPixelForValue(hi), pt.y - 3);
-          ctx.lineTo(x.getPixelForValue(hi), pt.y + 3);
-          ctx.stroke();
-        });
-      });
-      ctx.restore();
-    },
-  };
-
-  // Vertical error bars: the truth's own error around each measured error.
-  const ySpread = {
-    id: "ySpread",
-    afterDatasetsDraw(chart) {
-      const ctx = chart.ctx, y = chart.scales.y;
-      ctx.save();
-      chart.data.datasets.forEach((ds, i) => {
-        if (!ds.ySpread || !chart.isDatasetVisible(i)) return;
-        ctx.strokeStyle = ds.borderColor;
-        chart.getDatasetMeta(i).data.forEach((pt, k) => {
-          const bar = ds.ySpread[k];
-          if (bar === null) return;
-          const lo = y.getPixelForValue(Math.max(0, bar[0])), hi = y.getPixelForValue(bar[1]);
-          ctx.beginPath();
-          ctx.moveTo(pt.x, lo);
-          ctx.lineTo(pt.x, hi);
-          ctx.moveTo(pt.x - 3, lo);
-          ctx.lineTo(pt.x + 3, lo);
-          ctx.moveTo(pt.x - 3, hi);
-          ctx.lineTo(pt.x + 3, hi);
-          ctx.stroke();
+          if (ds.xSpread) {
+            const [lo, hi] = ds.xSpread[k];
+            whisker([x.getPixelForValue(lo), pt.y], [x.getPixelForValue(hi), pt.y], true);
+          }
+          if (ds.ySpread && ds.ySpread[k] !== null) {
+            const [lo, hi] = ds.ySpread[k];
+            whisker([pt.x, y.getPixelForValue(Math.max(0, lo))], [pt.x, y.getPixelForValue(hi)], false);
+          }
         });
       });
       ctx.restore();
@@ -125,7 +110,7 @@ const char* reportScript() {
     });
     return new Chart(canvas, {
       data: { datasets },
-      plugins: [pointLabels, xSpread, ySpread],
+      plugins: [pointLabels, spreads],
       options: {
         animation: false,
         layout: { padding: { right: 40, top: 8 } }, // room for the labels of the outermost points
