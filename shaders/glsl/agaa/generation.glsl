@@ -124,30 +124,16 @@ void addToAggregate(uint slot, uint k, uint ndf, AgQuantized f) {
 #endif
 }
 
-void main() {
-    if (kBreakdownPart == 2u) return;
-    GpuMaterial gm = materials[pc.material];
-    MaterialSample m = evaluateMaterial(gm, inUvs, inColor, inNormal, inTangent, gl_FrontFacing);
-#if AGAA_EMISSIVE
-    outEmissive = vec4(min(m.emissive, vec3(kMaxRadiance)), 1.0);
-#endif
-    uint mask = uint(gl_SampleMaskIn[0]) & 0xFu;
-    if (mask == 0u) return;
-    uvec2 pixel = uvec2(gl_FragCoord.xy);
-    uint width = uint(frame.extent.x);
-    uint pixelIndex = pixel.y * width + pixel.x;
-    uint c = agaa.shape.x;
-    uint words = agaa.shape.z;
-
-    const uint ndf = kNdf;
-    uint n = agaa.shape.w;
+// The fragment's values as the AG-buffer's fixed-point fields (shared/agaa.h), in either
+// normal-distribution layout.
+AgQuantized quantizeFragment(MaterialSample m, uint n) {
     float alpha = m.roughness * m.roughness;
     AgQuantized f;
     // The sample's own lobe, for the two-point resolve and the environment's level (shared/agaa.h
     // w5): not floored at kMinGgxAlpha, so that a near-mirror's level is its own (2^26 - 1 steps
     // resolve alpha to 1.5e-8; the lighting pass floors the mean where the BRDF needs it).
     f.q[10] = quantizeUnit(min(alpha, kMaxGgxAlpha), kMaterialAlphaScale);
-    if (ndf == kNdfSggx) {
+    if (kNdf == kNdfSggx) {
         // The sample's GGX lobe as an SGGX matrix (shared/sggx.h), alpha in the BRDF's range.
         float a = clamp(alpha, kMinGgxAlpha, kMaxGgxAlpha);
         float a2 = a * a;
@@ -176,29 +162,71 @@ void main() {
         f.q[8] = quantizeUnit(m.albedo.b, kUnormScale);
         f.q[9] = quantizeUnit(m.metallic, kUnormScale);
     }
+    return f;
+}
 
 #if AGAA_RECORD
+void recordFragment(uvec2 pixel, uint pixelIndex, uint mask, AgQuantized f, MaterialSample m) {
     uvec2 origin = uvec2(frame.extent.xy) / 2u - kRecordWindow / 2u;
-    if (all(greaterThanEqual(pixel, origin)) && all(lessThan(pixel, origin + kRecordWindow))) {
-        uint slot = atomicAdd(recordCount, 1u);
-        if (slot < recordCapacity) {
-            uint r = slot * kRecordWords;
-            records[r + 0u] = pixelIndex;
-            records[r + 1u] = inLayer;
-            records[r + 2u] = mask;
-            for (uint j = 0u; j < kQuantizedFields; ++j) records[r + 3u + j] = f.q[j];
-            uint inputs = r + 3u + kQuantizedFields;
-            records[inputs + 0u] = floatBitsToUint(m.normal.x);
-            records[inputs + 1u] = floatBitsToUint(m.normal.y);
-            records[inputs + 2u] = floatBitsToUint(m.normal.z);
-            records[inputs + 3u] = floatBitsToUint(m.roughness);
-            records[inputs + 4u] = floatBitsToUint(m.albedo.r);
-            records[inputs + 5u] = floatBitsToUint(m.albedo.g);
-            records[inputs + 6u] = floatBitsToUint(m.albedo.b);
-            records[inputs + 7u] = floatBitsToUint(m.metallic);
-        }
-    }
+    if (any(lessThan(pixel, origin)) || any(greaterThanEqual(pixel, origin + kRecordWindow))) return;
+    uint slot = atomicAdd(recordCount, 1u);
+    if (slot >= recordCapacity) return;
+    uint r = slot * kRecordWords;
+    records[r + 0u] = pixelIndex;
+    records[r + 1u] = inLayer;
+    records[r + 2u] = mask;
+    for (uint j = 0u; j < kQuantizedFields; ++j) records[r + 3u + j] = f.q[j];
+    uint inputs = r + 3u + kQuantizedFields;
+    records[inputs + 0u] = floatBitsToUint(m.normal.x);
+    records[inputs + 1u] = floatBitsToUint(m.normal.y);
+    records[inputs + 2u] = floatBitsToUint(m.normal.z);
+    records[inputs + 3u] = floatBitsToUint(m.roughness);
+    records[inputs + 4u] = floatBitsToUint(m.albedo.r);
+    records[inputs + 5u] = floatBitsToUint(m.albedo.g);
+    records[inputs + 6u] = floatBitsToUint(m.albedo.b);
+    records[inputs + 7u] = floatBitsToUint(m.metallic);
+}
+#else
+void recordFragment(uvec2 pixel, uint pixelIndex, uint mask, AgQuantized f, MaterialSample m) {}
 #endif
+
+// c = 1: the k of the fragment's samples off the aggregate's layer (shared/clustering.h
+// kOffLayer) add their diffuse colour, normal, F0 and alpha to the pixel's off-layer words
+// (shared/ag_buffer.h kOffLayerWords), apart from the aggregate's fields.
+void addToOffLayer(uint pixelIndex, uint k, MaterialSample m, uint n) {
+    uint scale = unitScale(kOffLayerFieldBits, n);
+    vec3 diffuse = m.albedo * (1.0 - m.metallic);
+    uint at = offLayerWord(uint(frame.extent.x) * uint(frame.extent.y), pixelIndex);
+    atomicAdd(agBuffer[at], k * quantizeUnit(diffuse.r, scale) + ((k * quantizeUnit(diffuse.g, scale)) << 16u));
+    atomicAdd(agBuffer[at + 1u], k * quantizeUnit(diffuse.b, scale) + ((k * quantizeSigned(m.normal.x, scale)) << 16u));
+    atomicAdd(agBuffer[at + 2u], k * quantizeSigned(m.normal.y, scale) + ((k * quantizeSigned(m.normal.z, scale)) << 16u));
+    vec3 f0 = mix(vec3(0.04), m.albedo, m.metallic);
+    float alpha = min(m.roughness * m.roughness, 1.0);
+    atomicAdd(agBuffer[at + 3u], k * quantizeUnit(f0.r, scale) + ((k * quantizeUnit(f0.g, scale)) << 16u));
+    atomicAdd(agBuffer[at + 4u], k * quantizeUnit(f0.b, scale) + ((k * quantizeUnit(alpha, scale)) << 16u));
+}
+
+// Sample s's aggregate id (0 where the clustering stored no metadata: c = 1 without a layer split).
+uint sampleAggregate(uint s, uint pixelIndex) {
+    uint c = agaa.shape.x, words = agaa.shape.z;
+    return words > 0u ? unpackMetadata(metadata[pixelIndex * words + (s * metadataBits(c)) / 32u], s, c) : 0u;
+}
+
+void main() {
+    if (kBreakdownPart == 2u) return;
+    GpuMaterial gm = materials[pc.material];
+    MaterialSample m = evaluateMaterial(gm, inUvs, inColor, inNormal, inTangent, gl_FrontFacing);
+#if AGAA_EMISSIVE
+    outEmissive = vec4(min(m.emissive, vec3(kMaxRadiance)), 1.0);
+#endif
+    uint mask = uint(gl_SampleMaskIn[0]) & 0xFu;
+    if (mask == 0u) return;
+    uvec2 pixel = uvec2(gl_FragCoord.xy);
+    uint pixelIndex = pixel.y * uint(frame.extent.x) + pixel.x;
+    uint c = agaa.shape.x;
+    uint n = agaa.shape.w;
+    AgQuantized f = quantizeFragment(m, n);
+    recordFragment(pixel, pixelIndex, mask, f, m);
     if (kBreakdownPart == 1u) {
         // Keep the material's evaluation alive without the atomics: an add no value reaches (an
         // atomic, as every other access to the AG-buffer here: a plain store would make the
@@ -206,37 +234,18 @@ void main() {
         if (f.q[0] + f.q[6] + f.q[9] == 0xFFFFFFFFu) atomicAdd(agBuffer[0], 1u);
         return;
     }
-    uint perAggregate[kMaxAggregates] = uint[](0u, 0u, 0u, 0u);
-    uint b = metadataBits(c);
     if (kRouteFragment != 0u) {
-        // Algorithm 2: the first visible sample's aggregate takes the whole fragment.
-        uint s = inLayer * 4u + uint(findLSB(mask));
-        uint id = words > 0u ? unpackMetadata(metadata[pixelIndex * words + (s * b) / 32u], s, c) : 0u;
-        // c = 1: whole fragments cannot follow the per-sample layer flag; everything to aggregate 0
-        // (the lighting pass still takes the aggregate's position from its layer's samples).
-        addToAggregate(pixelIndex * c + min(id, c - 1u), uint(bitCount(mask)), ndf, f);
+        // Algorithm 2: the first visible sample's aggregate takes the whole fragment. c = 1: whole
+        // fragments cannot follow the per-sample layer flag; everything to aggregate 0 (the
+        // lighting pass still takes the aggregate's position from its layer's samples).
+        uint id = sampleAggregate(inLayer * 4u + uint(findLSB(mask)), pixelIndex);
+        addToAggregate(pixelIndex * c + min(id, c - 1u), uint(bitCount(mask)), kNdf, f);
         return;
     }
-    for (uint hw = 0u; hw < 4u; ++hw) {
-        uint s = inLayer * 4u + hw;
-        uint id = words > 0u ? unpackMetadata(metadata[pixelIndex * words + (s * b) / 32u], s, c) : 0u;
-        perAggregate[id] += (mask >> hw) & 1u;
-    }
-    // c = 1: the samples off the aggregate's layer (shared/clustering.h kOffLayer) count in
-    // perAggregate[1] and add their diffuse colour, normal, F0 and alpha to the pixel's off-layer words
-    // (shared/ag_buffer.h kOffLayerWords), apart from the aggregate's fields.
-    if (c == 1u && perAggregate[1] > 0u) {
-        uint k = perAggregate[1], scale = unitScale(kOffLayerFieldBits, n);
-        vec3 diffuse = m.albedo * (1.0 - m.metallic);
-        uint at = offLayerWord(uint(frame.extent.x) * uint(frame.extent.y), pixelIndex);
-        atomicAdd(agBuffer[at], k * quantizeUnit(diffuse.r, scale) + ((k * quantizeUnit(diffuse.g, scale)) << 16u));
-        atomicAdd(agBuffer[at + 1u], k * quantizeUnit(diffuse.b, scale) + ((k * quantizeSigned(m.normal.x, scale)) << 16u));
-        atomicAdd(agBuffer[at + 2u], k * quantizeSigned(m.normal.y, scale) + ((k * quantizeSigned(m.normal.z, scale)) << 16u));
-        vec3 f0 = mix(vec3(0.04), m.albedo, m.metallic);
-        float alpha = min(m.roughness * m.roughness, 1.0);
-        atomicAdd(agBuffer[at + 3u], k * quantizeUnit(f0.r, scale) + ((k * quantizeUnit(f0.g, scale)) << 16u));
-        atomicAdd(agBuffer[at + 4u], k * quantizeUnit(f0.b, scale) + ((k * quantizeUnit(alpha, scale)) << 16u));
-    }
+    // Per sample: each covered sample to its own aggregate (c = 1: kOffLayer counts in slot 1).
+    uint perAggregate[kMaxAggregates] = uint[](0u, 0u, 0u, 0u);
+    for (uint hw = 0u; hw < 4u; ++hw) perAggregate[sampleAggregate(inLayer * 4u + hw, pixelIndex)] += (mask >> hw) & 1u;
+    if (c == 1u && perAggregate[1] > 0u) addToOffLayer(pixelIndex, perAggregate[1], m, n);
     // Only the aggregates the fragment touches: a loop over their bits ends for a SIMD group
     // once every lane's are done (most fragments touch one), where a loop over all c with a
     // per-aggregate test would issue every aggregate's atomics masked (lavapipe runs both sides
@@ -246,6 +255,6 @@ void main() {
     while (touched != 0u) {
         uint a = uint(findLSB(touched));
         touched &= touched - 1u;
-        addToAggregate(pixelIndex * c + a, perAggregate[a], ndf, f);
+        addToAggregate(pixelIndex * c + a, perAggregate[a], kNdf, f);
     }
 }
