@@ -335,7 +335,8 @@ FrameTargets AggregateAA::addPasses(rg::Graph& graph, const FrameInputs& in) {
                 pd.sampled(11, m_shadow->sampler(), ctx.texture(d.shadowMap).sampledView)
                     .uniform(12, ctx.buffer(d.shadowConstants).buffer);
             pushEnvironment(pd, *in.scene);
-            pd.push(m_device, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, m_lightingLayout.layout);
+            pd.push(m_device, cmd, VK_PIPELINE_BIND_POINT_COMPUTE,
+                    exporting ? m_exportLayout.layout : m_lightingLayout.layout);
             vkCmdDispatch(cmd, groups(in.width, shared::kTileSize), groups(in.height, shared::kTileSize), 1);
         });
     return {lit.hdr, lit.display, lit.events, {}, lightingDepth};

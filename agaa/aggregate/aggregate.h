@@ -79,6 +79,9 @@ class AggregateAA final : public Technique {
     VkPipeline visibilityPipeline(AlphaPath alpha, bool doubleSided);
     VkPipeline generationPipeline(bool doubleSided);
     VkPipeline lightingPipeline(bool exporting); // the lighting variant for this path and scene
+    // The lighting pass's bindings; exporting adds the test export's (binding 14), which the
+    // shipping layout does not have.
+    eng::vk::LayoutDesc lightingLayoutDesc(bool exporting) const;
     void resolveGeneration(); // Auto -> a path, or MissingCapability for a path the device lacks
     void createLayouts(const eng::frame::GpuScene& scene);
     void release(); // the destructor's work, also for a constructor that throws
@@ -94,7 +97,7 @@ class AggregateAA final : public Technique {
     VkFormat m_depthFormat = VK_FORMAT_D32_SFLOAT_S8_UINT;
     shared::AgaaConstants m_constants{};
     eng::vk::PipelineLayout m_visibilityLayout, m_generationLayout, m_recordLayout, m_clusterLayout,
-        m_lightingLayout, m_debugLayout, m_readbackLayout;
+        m_lightingLayout, m_exportLayout, m_debugLayout, m_readbackLayout;
     std::array<VkPipeline, 2 * kAlphaPaths> m_visibilityPipelines{}; // [alpha path][double-sided]
     std::unique_ptr<ShadowMapPass> m_shadow;
     std::unique_ptr<SampleGBufferPass> m_gbuffer;      // samples path only

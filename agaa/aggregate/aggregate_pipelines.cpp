@@ -208,14 +208,43 @@ VkPipeline AggregateAA::lightingPipeline(bool exporting) {
     spec.push_back(uint32_t(m_settings.ndf));                                                     // id 9
     spec.push_back(uint32_t(m_settings.routing));                                                 // id 10
     spec.push_back(m_features.hasNearMirrors() ? 1u : 0u);                                        // id 11
-    return vk::createComputePipeline(m_device, code, m_lightingLayout.layout,
+    return vk::createComputePipeline(m_device, code,
+                                     exporting ? m_exportLayout.layout : m_lightingLayout.layout,
                                      lightingSpecialization(std::move(spec), m_features),
                                      exporting ? "agaa.lighting.export" : "agaa.lighting");
 }
 
 void AggregateAA::setAggregateExportTarget(const vk::Buffer* host) {
     m_exportTarget = host;
-    if (host && !m_exportPipeline) m_exportPipeline = lightingPipeline(true);
+    if (!host || m_exportPipeline) return;
+    m_exportLayout =
+        vk::createPipelineLayout(m_device, lightingLayoutDesc(true), "agaa.lighting.export.layout");
+    m_exportPipeline = lightingPipeline(true);
+}
+
+eng::vk::LayoutDesc AggregateAA::lightingLayoutDesc(bool exporting) const {
+    const bool samplesPath = m_settings.generation == AggregateGeneration::Samples;
+    // Binding 6: the AG-buffer (accumulate) or the G-buffer's normals (samples); 10 the per-sample
+    // emissive (accumulate, emissive scenes) or the G-buffer's emissive + roughness (samples).
+    vk::LayoutDesc lighting;
+    lighting.pushBindings = {{0, kUbo, kCs},
+                             {1, kSsbo, kCs},
+                             {2, kUbo, kCs},
+                             {3, kSampled, kCs},
+                             {4, kSsbo, kCs},
+                             {5, kImage, kCs},
+                             {6, samplesPath ? kSampled : kSsbo, kCs},
+                             {7, kImage, kCs},
+                             {8, kImage, kCs},
+                             {9, kImage, kCs}};
+    if (m_hasEmissive || samplesPath) lighting.pushBindings.push_back({10, kSampled, kCs});
+    lighting.pushBindings.push_back({11, kSampled, kCs}); // shadow maps (pushed for shadowed scenes only)
+    lighting.pushBindings.push_back({12, kUbo, kCs});
+    if (samplesPath) lighting.pushBindings.push_back({13, kSampled, kCs}); // the G-buffer's albedo + metallic
+    if (exporting) lighting.pushBindings.push_back({14, kSsbo, kCs});      // the test export
+    for (const vk::Binding& b : environmentBindings())
+        lighting.pushBindings.push_back(b);
+    return lighting;
 }
 
 void AggregateAA::createLayouts(const eng::frame::GpuScene& scene) {
@@ -244,29 +273,7 @@ void AggregateAA::createLayouts(const eng::frame::GpuScene& scene) {
     if (samplesPath) cluster.pushBindings.push_back({6, kSampled, kCs}); // the G-buffer's albedo + metallic
     m_clusterLayout = vk::createPipelineLayout(m_device, cluster, "agaa.cluster.layout");
 
-    // Binding 6: the AG-buffer (accumulate) or the G-buffer's normals (samples); 10 the per-sample
-    // emissive (accumulate, emissive scenes) or the G-buffer's emissive + roughness (samples).
-    vk::LayoutDesc lighting;
-    lighting.pushBindings = {{0, kUbo, kCs},
-                             {1, kSsbo, kCs},
-                             {2, kUbo, kCs},
-                             {3, kSampled, kCs},
-                             {4, kSsbo, kCs},
-                             {5, kImage, kCs},
-                             {6, samplesPath ? kSampled : kSsbo, kCs},
-                             {7, kImage, kCs},
-                             {8, kImage, kCs},
-                             {9, kImage, kCs}};
-    if (m_hasEmissive || samplesPath) lighting.pushBindings.push_back({10, kSampled, kCs});
-    lighting.pushBindings.push_back({11, kSampled, kCs}); // shadow maps (pushed for shadowed scenes only)
-    lighting.pushBindings.push_back({12, kUbo, kCs});
-    if (samplesPath) {
-        lighting.pushBindings.push_back({13, kSampled, kCs}); // the G-buffer's albedo + metallic
-        lighting.pushBindings.push_back({14, kSsbo, kCs});    // the test export (its variant only)
-    }
-    for (const vk::Binding& b : environmentBindings())
-        lighting.pushBindings.push_back(b);
-    m_lightingLayout = vk::createPipelineLayout(m_device, lighting, "agaa.lighting.layout");
+    m_lightingLayout = vk::createPipelineLayout(m_device, lightingLayoutDesc(false), "agaa.lighting.layout");
 
     vk::LayoutDesc debug;
     debug.pushBindings = {{0, kUbo, kCs},     {1, kUbo, kCs},   {2, kSsbo, kCs},  {3, kImage, kCs},
@@ -295,7 +302,7 @@ void AggregateAA::release() {
         if (p) vkDestroyPipeline(d, p, nullptr);
     vkDestroySampler(d, m_fetchSampler, nullptr);
     for (vk::PipelineLayout* l : {&m_visibilityLayout, &m_generationLayout, &m_recordLayout, &m_clusterLayout,
-                                  &m_lightingLayout, &m_debugLayout, &m_readbackLayout})
+                                  &m_lightingLayout, &m_exportLayout, &m_debugLayout, &m_readbackLayout})
         vk::destroyPipelineLayout(m_device, *l);
 }
 
