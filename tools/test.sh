@@ -85,6 +85,12 @@ stage configure cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DAGAA_
   "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O2 -g1 -DNDEBUG" \
   -DAGAA_TEST_PERTURB=none >/dev/null
 stage build cmake --build "$build" -j"$(nproc)"
+# What ran (issue 37: goldens are compared on whatever CPU runs the suite): the CPU, the vector
+# extensions llvmpipe's JIT can use, and the device lavapipe reports (its vector width in bits).
+echo "test.sh: CPU: $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2- | sed 's/^ *//'), $(nproc) cores;" \
+  "extensions: $(grep -m1 '^flags' /proc/cpuinfo | tr ' ' '\n' | grep -xE 'sse4_2|avx|avx2|fma|avx512f' | tr '\n' ' ')"
+echo "test.sh: llvmpipe: $("$build/tools/agaa_render/agaa-render" --caps 2>/dev/null | sed -n 's/^device *//p');" \
+  "LP_NATIVE_VECTOR_WIDTH=${LP_NATIVE_VECTOR_WIDTH:-unset} LP_NUM_THREADS=${LP_NUM_THREADS:-unset (one per core)}"
 stage ctest ctest --test-dir "$build" --output-on-failure -j2 "$@"
 if [ "$#" -eq 0 ]; then
   # The same build folder with a deliberate shader error, one variant after the other: only the

@@ -27,6 +27,8 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
+#include <sstream>
 #include <string>
 
 namespace fs = std::filesystem;
@@ -56,6 +58,29 @@ void writeImages(const fs::path& stem, const eng::io::ImageF& display) {
     fs::create_directories(stem.parent_path());
     eng::io::writeExr(stem.string() + ".exr", display); // half floats: what the metric reads
     eng::io::writePng(stem.string() + ".png", eng::io::quantizeToU8(eng::io::srgbEncoded(display)));
+}
+
+// What rendered the failing image: goldens are compared on whatever CPU runs the suite, and
+// llvmpipe's JIT code follows the CPU's vector extensions (docs/cross-cpu.md).
+std::string machine(const eng::vk::Device& device) {
+    std::ifstream cpuinfo("/proc/cpuinfo");
+    std::string line, model = "unknown CPU", extensions;
+    while (std::getline(cpuinfo, line)) {
+        const std::string value = line.substr(line.find(':') == std::string::npos ? 0 : line.find(':') + 1);
+        if (line.rfind("model name", 0) == 0 && model == "unknown CPU")
+            model = value.substr(value.find_first_not_of(' '));
+        if (line.rfind("flags", 0) != 0 || !extensions.empty()) continue;
+        std::istringstream flags(value);
+        for (std::string f; flags >> f;)
+            if (f == "sse4_2" || f == "avx" || f == "avx2" || f == "fma" || f == "avx512f")
+                extensions += " " + f;
+    }
+    auto env = [](const char* name) {
+        const char* v = std::getenv(name);
+        return std::string(name) + "=" + (v ? v : "unset");
+    };
+    return model + " (" + (extensions.empty() ? " none" : extensions) + " ); " + device.caps().deviceName +
+           "; " + env("LP_NATIVE_VECTOR_WIDTH") + " " + env("LP_NUM_THREADS");
 }
 
 std::string describe(const agaa::golden::GoldenError& e) {
@@ -121,7 +146,7 @@ TEST_P(Golden, MatchesStoredImages) {
                       << agaa::golden::GoldenThresholds{}.percentileError
                       << ")\n  golden:  " << (kGoldenDir / (stem + ".png")).string()
                       << "\n  actual:  " << out.string() << ".actual.png (.exr)\n  heatmap: " << out.string()
-                      << ".heatmap.png (error x20: 0.05 is white)";
+                      << ".heatmap.png (error x20: 0.05 is white)\n  machine: " << machine(*device);
     }
     agaa::test::expectNoValidationErrors(*device);
 }
