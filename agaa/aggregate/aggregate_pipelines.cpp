@@ -200,17 +200,22 @@ VkPipeline AggregateAA::lightingPipeline(bool exporting) {
                               : kAgaaLightingEmissiveComp)
                    : (shadows ? std::span<const uint32_t>(kAgaaLightingShadowComp) : kAgaaLightingComp);
     }
-    std::vector<uint32_t> spec =
+    static_assert(shared::kSpecLightingSamples == 0 && shared::kSpecLightingAggregates == 1,
+                  "effectSpecialization's ids 0 and 1 are n and c");
+    vk::Specialization spec = lightingSpecialization(
         effectSpecialization(m_features, m_settings.samples, m_settings.aggregates,
-                             m_settings.effects.shadowTaps, m_settings.effects.shadowFootprint);
-    spec.push_back(m_settings.shading == AggregateShading::Compact ? 1u : 0u);                    // id 7
-    spec.push_back(m_settings.breakdown & AggregateBreakdown::kLightingWithoutShading ? 1u : 0u); // id 8
-    spec.push_back(uint32_t(m_settings.ndf));                                                     // id 9
-    spec.push_back(uint32_t(m_settings.routing));                                                 // id 10
-    spec.push_back(m_features.hasNearMirrors() ? 1u : 0u);                                        // id 11
+                             m_settings.effects.shadowTaps, m_settings.effects.shadowFootprint),
+        m_features);
+    const bool skipShading = m_settings.breakdown & AggregateBreakdown::kLightingWithoutShading;
+    spec.byId.insert(
+        spec.byId.end(),
+        {{shared::kSpecLightingCompact, m_settings.shading == AggregateShading::Compact ? 1u : 0u},
+         {shared::kSpecLightingSkipShading, skipShading ? 1u : 0u},
+         {shared::kSpecLightingNdf, uint32_t(m_settings.ndf)},
+         {shared::kSpecLightingRouting, uint32_t(m_settings.routing)},
+         {shared::kSpecLightingViewFootprint, m_features.hasNearMirrors() ? 1u : 0u}});
     return vk::createComputePipeline(m_device, code,
-                                     exporting ? m_exportLayout.layout : m_lightingLayout.layout,
-                                     lightingSpecialization(std::move(spec), m_features),
+                                     exporting ? m_exportLayout.layout : m_lightingLayout.layout, spec,
                                      exporting ? "agaa.lighting.export" : "agaa.lighting");
 }
 

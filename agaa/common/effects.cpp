@@ -81,6 +81,9 @@ std::vector<VariantChoice> effectVariants(const eng::scene::SceneFeatures& f, co
 
 std::vector<uint32_t> effectSpecialization(const eng::scene::SceneFeatures& f, uint32_t id0, uint32_t id1,
                                            uint32_t shadowTaps, EffectSettings::ShadowFootprint footprint) {
+    // Positional: value i is specialisation id i (engine/vk/pipeline.h Specialization::values).
+    static_assert(kSpecTileLightCulling == 2 && kSpecNormalMaps == 3 && kSpecEmissive == 4 &&
+                  kSpecShadowTaps == 5 && kSpecShadowFootprint == 6);
     return {id0,
             id1,
             f.needsLightCulling() ? 1u : 0u,

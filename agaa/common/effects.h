@@ -8,6 +8,7 @@
 #include "engine/scene/scene_features.h"
 #include "engine/vk/descriptors.h"
 #include "engine/vk/pipeline.h"
+#include "shared/specialization.h"
 
 #include <cstdint>
 #include <string>
@@ -51,19 +52,16 @@ std::vector<VariantChoice> effectVariants(const eng::scene::SceneFeatures& featu
                                           const eng::scene::Scene& scene, uint32_t samples,
                                           uint32_t shadowTaps);
 
-// Specialisation-constant ids shared by every shader that includes common/material.glsl,
-// common/tile_culling.glsl or common/shadow.glsl (ids 0 and 1 belong to each pass).
-inline constexpr uint32_t kSpecTileLightCulling = 2;
-inline constexpr uint32_t kSpecNormalMaps = 3;
-inline constexpr uint32_t kSpecEmissive = 4;
-inline constexpr uint32_t kSpecShadowTaps = 5;
-inline constexpr uint32_t kSpecShadowFootprint = 6; // AGAA lighting only
-// common/environment.glsl, apart from the passes' own ids (which run up to 10).
-inline constexpr uint32_t kSpecEnvironment = 16;
-// common/material.glsl: KHR_texture_transform on any used texture slot (issue 16).
-inline constexpr uint32_t kSpecTextureTransforms = 18;
-// common/material.glsl: vertex colours (COLOR_0) in the scene.
-inline constexpr uint32_t kSpecVertexColors = 19;
+// Specialisation-constant ids shared by every shader that reads a scene effect: named once, for
+// GLSL and C++ alike, in shaders/glsl/shared/specialization.h.
+using shared::kSpecEmissive;
+using shared::kSpecEnvironment;
+using shared::kSpecNormalMaps;
+using shared::kSpecShadowFootprint;
+using shared::kSpecShadowTaps;
+using shared::kSpecTextureTransforms;
+using shared::kSpecTileLightCulling;
+using shared::kSpecVertexColors;
 // Every raster pass that evaluates materials: ids 18 and 19 from the scene's features.
 inline void addMaterialSpecialization(eng::vk::Specialization& s, const eng::scene::SceneFeatures& f) {
     s.byId.push_back({kSpecTextureTransforms, f.hasTextureTransforms() ? 1u : 0u});

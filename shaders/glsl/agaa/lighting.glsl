@@ -18,6 +18,7 @@
 #include "shared/clustering.h"
 #include "shared/frame.h"
 #include "shared/sggx.h"
+#include "shared/specialization.h"
 
 #ifndef AGAA_GBUFFER
 #define AGAA_GBUFFER 0
@@ -25,26 +26,26 @@
 
 layout(local_size_x = 16, local_size_y = 16) in;
 // n and c as specialisation constants: constant trip counts for the per-sample loops.
-layout(constant_id = 0) const uint kSamples = 8u;
-layout(constant_id = 1) const uint kAggregates = 2u;
-// Specialisation id 7 (agaa/aggregate/agaa_constants.h AggregateShading): 1 the compacted
+layout(constant_id = kSpecLightingSamples) const uint kSamples = 8u;
+layout(constant_id = kSpecLightingAggregates) const uint kAggregates = 2u;
+// agaa/aggregate/agaa_constants.h AggregateShading: 1 the compacted
 // per-tile list, 0 each invocation shades its own pixel's aggregates (agaa/lighting/schedule.glsl).
-layout(constant_id = 7) const uint kCompactShading = 1u;
-// Specialisation id 8 (AggregateSettings::skipShading, agaa-timings --breakdown): 1 skips step 3.
-layout(constant_id = 8) const uint kSkipShading = 0u;
-// Specialisation id 9: the normal distribution (kNdfToksvig, kNdfSggx; agaa.options.w holds the
+layout(constant_id = kSpecLightingCompact) const uint kCompactShading = 1u;
+// AggregateSettings::breakdown (agaa-timings --breakdown): 1 skips step 3.
+layout(constant_id = kSpecLightingSkipShading) const uint kSkipShading = 0u;
+// The normal distribution (kNdfToksvig, kNdfSggx; agaa.options.w holds the
 // same value). A constant, not a uniform: lavapipe executes both sides of every branch whose
 // condition is not known at compile time, so a uniform choice would pay for both BRDFs.
-layout(constant_id = 9) const uint kNdf = 0u;
+layout(constant_id = kSpecLightingNdf) const uint kNdf = 0u;
 const bool kSggx = kNdf == kNdfSggx;
-// Specialisation id 10 (AggregateRouting): 1 when the generation pass routed whole fragments
+// AggregateRouting: 1 when the generation pass routed whole fragments
 // (Algorithm 2); an aggregate then stands for the samples it received, which need not be the
 // samples the metadata assigned it, so the resolve weights it by its accumulated count.
-layout(constant_id = 10) const uint kRouteFragment = 0u;
-// Specialisation id 11 (eng::scene::SceneFeatures::hasNearMirrors): 1 where a material can be a
+layout(constant_id = kSpecLightingRouting) const uint kRouteFragment = 0u;
+// eng::scene::SceneFeatures::hasNearMirrors: 1 where a material can be a
 // near mirror, whose lobe the pixel's view footprint can outgrow (light.glsl addLightFootprint); 0
 // compiles the branch away, which alone costs lavapipe about a fifth of this pass.
-layout(constant_id = 11) const uint kViewFootprint = 1u;
+layout(constant_id = kSpecLightingViewFootprint) const uint kViewFootprint = 1u;
 
 layout(set = 0, binding = 0) uniform Frame { FrameConstants frame; };
 layout(set = 0, binding = 1, std430) readonly buffer Lights { GpuLight lights[]; };

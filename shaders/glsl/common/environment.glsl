@@ -14,8 +14,9 @@
 #include "common/depth.glsl"
 #include "common/epsilon.glsl"
 #include "shared/environment.h"
+#include "shared/specialization.h"
 
-layout(constant_id = 16) const uint kEnvironment = 0u;
+layout(constant_id = kSpecEnvironment) const uint kEnvironment = 0u;
 layout(set = 0, binding = 15) uniform sampler2DArray environmentMap;
 layout(set = 0, binding = 16) uniform Environment { EnvironmentConstants environment; };
 layout(set = 0, binding = 17) uniform sampler2D environmentDfg;

@@ -2,18 +2,19 @@
 #define AGAA_MATERIAL_GLSL
 #include "common/epsilon.glsl"
 #include "shared/frame.h"
+#include "shared/specialization.h"
 // What a classic G-buffer holds, evaluated from a glTF material at one fragment.
 // Requires: `textures` (sampler2D array, set 1) declared by the includer.
 //
 // Scene-driven variants (agaa/common/effects.h): specialisation ids 3 and 4 switch the normal-map
 // fetch and the emissive fetch off for scenes without normal-mapped or emissive materials.
-layout(constant_id = 3) const uint kNormalMaps = 1u;
-layout(constant_id = 4) const uint kEmissiveMaterials = 1u;
+layout(constant_id = kSpecNormalMaps) const uint kNormalMaps = 1u;
+layout(constant_id = kSpecEmissive) const uint kEmissiveMaterials = 1u;
 // KHR_texture_transform or a second UV set in the scene (agaa/common/effects.h kSpecTextureTransforms).
-layout(constant_id = 18) const uint kTextureTransforms = 1u;
+layout(constant_id = kSpecTextureTransforms) const uint kTextureTransforms = 1u;
 // Vertex colours in the scene (kSpecVertexColors): without them the interpolated 1 (which
 // barycentric rounding can leave a ulp off) is not multiplied in.
-layout(constant_id = 19) const uint kVertexColors = 1u;
+layout(constant_id = kSpecVertexColors) const uint kVertexColors = 1u;
 
 // Toksvig (2005) from a normal-map texel's pre-filtered length |Na| (engine/frame/gpu_scene.cpp
 // stores it in alpha): with the GGX alpha a = r^2 and its Blinn-Phong exponent s = 2/a^2 - 2,

@@ -6,13 +6,14 @@
 // depth comparison with the nearest texel (no hardware PCF: a tap is one binary visibility).
 #include "common/depth.glsl"
 #include "shared/shadow.h"
+#include "shared/specialization.h"
 
 layout(set = 0, binding = SHADOW_MAP_BINDING) uniform sampler2DArray shadowMap;
 layout(set = 0, binding = SHADOW_CONSTANTS_BINDING) uniform Shadow { ShadowConstants shadow; };
 const float kMinTangentLength = 1.0e-3; // view ray along the normal: no depth gradient in the plane
 const float kMaxFootprintStretch = 16.0; // grazing surfaces: at most 16 m along g per metre of depth
 // Taps per shading event (specialisation id 5, agaa/common/effects.h): 1..8.
-layout(constant_id = 5) const uint kShadowTaps = 4u;
+layout(constant_id = kSpecShadowTaps) const uint kShadowTaps = 4u;
 
 // The shadow-map layer of light i, or -1 when it casts none.
 int shadowLayer(uint light) {

@@ -1,6 +1,7 @@
 #ifndef AGAA_TILE_CULLING_GLSL
 #define AGAA_TILE_CULLING_GLSL
 #include "common/depth.glsl"
+#include "shared/specialization.h"
 // Tiled deferred light culling (one workgroup of kTileSize^2 invocations per tile):
 // tile depth bounds from the samples' view distances, then every point/spot light
 // tested against the tile's view-space box. Surviving lights are recorded as bits,
@@ -10,7 +11,7 @@
 
 // Specialisation id 2 (agaa/common/effects.h): 0 when the scene has no point or spot light,
 // so every light touches every tile and the per-tile frustum box is not built.
-layout(constant_id = 2) const uint kTileLightCulling = 1u;
+layout(constant_id = kSpecTileLightCulling) const uint kTileLightCulling = 1u;
 
 shared uint sTileMinBits;
 shared uint sTileMaxBits;

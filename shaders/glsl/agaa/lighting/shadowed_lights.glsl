@@ -3,12 +3,12 @@
 // variant has no shadow bindings (agaa/lighting.glsl) and addShadowedLights adds nothing.
 #if AGAA_SHADOWS
 
-// Specialisation id 6 (agaa/common/effects.h ShadowFootprint): 0 the statistical footprint
+// agaa/common/effects.h ShadowFootprint: 0 the statistical footprint
 // (common/shadow.glsl shadowVisibilityAggregate), 1 taps at the aggregate's own sample positions,
 // 2 adaptive: the statistical taps, refined at every sample where they disagree. The taps' count,
 // not their placement, leaves one-surface pixels at twice per-sample shading's error, and a
 // shadow edge is where the count matters; elsewhere 4 taps agree and are exact.
-layout(constant_id = 6) const uint kShadowFootprint = 0u;
+layout(constant_id = kSpecShadowFootprint) const uint kShadowFootprint = 0u;
 
 // The paper's "more precise" footprint (section 3.5.3): min(taps, k) of the aggregate's k samples,
 // evenly spread in sample order (ranks (2j + 1) k / (2 taps)), each tapped at its own position.
