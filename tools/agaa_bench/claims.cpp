@@ -129,9 +129,12 @@ std::optional<double> truthRmse(const JobResult& r) {
     return r.errorTruth->rmse;
 }
 
-// Two errors against one truth differ by a measured amount only where the truth's own error is at
-// most a tenth of their difference (DESIGN section 7); otherwise the ranking is the truth's noise.
-inline constexpr double kDecidedDifferenceRatio = 10.0;
+// Two errors against one truth differ by a measured amount only where the truth's own error cannot
+// account for the difference (DESIGN section 7). Each error is off by at most the truth's distance
+// d from the exact image (triangle inequality), and the certificate check holds the estimate e to
+// at least 0.8 d (tests/truth, TheEstimateTracksTheDistanceToAFinerTruth), so two errors closer
+// than 2 d <= 2.5 e may be ranked by the truth's noise alone.
+inline constexpr double kDecidedDifferenceRatio = 2.5;
 std::optional<std::string> undecided(const JobResult& a, const JobResult& b) {
     const std::optional<double> ea = truthRmse(a), eb = truthRmse(b);
     if (!ea || !eb) return std::nullopt;
