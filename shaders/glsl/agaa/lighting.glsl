@@ -100,7 +100,6 @@ void main() {
     //    aggregate's means normalised into the surface it is shaded as.
     clearMaterialSums();
     walkPixelSamples(pixel, pixelIndex, inside);
-    Aggregate aggregates[kMaxAggregates];
     uint presentCount = 0u;
     for (uint a = 0u; a < kAggregates; ++a) {
         AggregateMoments moments =
@@ -116,19 +115,18 @@ void main() {
     // 2. Tile depth bounds and light culling; the pixel's slots in the tile's list.
     tileListBegin();
     tileBoundsBegin(); // its barrier orders the list's reset before the appends
-    uint firstEntry = tileListAppend(aggregates, presentCount);
+    uint firstEntry = tileListAppend(presentCount);
     tileBoundsAdd(walk.tmin, walk.tmax);
     tileCullLights();
     barrier();
 
     // 3. Light each aggregate once per light.
-    Shading shaded[kMaxAggregates];
     OffLayerShading offLayerShaded;
-    shadeAggregates(aggregates, offLayer, inside, firstEntry, shaded, offLayerShaded);
+    shadeAggregates(offLayer, inside, firstEntry, offLayerShaded);
     if (!inside) return;
 
     // 4. Resolve.
-    Resolved resolved = resolvePixel(pixel, aggregates, shaded, offLayer, offLayerShaded);
+    Resolved resolved = resolvePixel(pixel, offLayer, offLayerShaded);
     imageStore(outHdr, pixel, vec4(resolved.hdr, 1.0));
     imageStore(outDisplay, pixel, vec4(resolved.display, 1.0));
     imageStore(outShadingEvents, pixel, uvec4(presentCount));

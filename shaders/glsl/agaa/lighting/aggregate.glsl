@@ -23,6 +23,10 @@ struct Aggregate {
     bool present;
 };
 
+// The pixel's aggregates, module state as the walk's (pixel_samples.glsl): the per-sample resolve
+// indexes them by the metadata's id, and lavapipe keeps a copied array of dynamic index in memory.
+Aggregate aggregates[kMaxAggregates];
+
 Aggregate normaliseAggregate(uint a, AggregateMoments m, ivec2 pixel, uint pixelIndex) {
     Aggregate ag;
     ag.pixel = pixel;

@@ -13,6 +13,9 @@ Shading noShading() {
     return Shading(vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0));
 }
 
+// What step 3 gives each of the pixel's aggregates (module state, as aggregate.glsl's aggregates).
+Shading shaded[kMaxAggregates];
+
 void addLight(Aggregate ag, vec3 V, vec3 L, vec3 irradiance, inout vec3 radiance, inout vec3 specular,
               inout vec3 specularSquares) {
     vec3 spec;

@@ -22,8 +22,7 @@ vec3 toneMapOffLayer(vec3 L, OffLayerShading shading, float exposure) {
 
 #if AGAA_EMISSIVE
 // Per sample: each sample adds its own emission to its aggregate's radiance.
-Resolved resolvePixel(ivec2 pixel, Aggregate aggregates[kMaxAggregates], Shading shaded[kMaxAggregates],
-                      OffLayer off, OffLayerShading offShaded) {
+Resolved resolvePixel(ivec2 pixel, OffLayer off, OffLayerShading offShaded) {
     float exposure = frame.depthParams.z;
     float weight = 1.0 / float(kSamples);
     vec3 sky = skyRadiance(pixel) * exposure;
@@ -60,8 +59,7 @@ Resolved resolvePixel(ivec2 pixel, Aggregate aggregates[kMaxAggregates], Shading
 #else
 // Per aggregate: every sample of an aggregate shares its radiance; one tone map per aggregate,
 // weighted by its sample count. Samples of an aggregate that received no fragment are black.
-Resolved resolvePixel(ivec2 pixel, Aggregate aggregates[kMaxAggregates], Shading shaded[kMaxAggregates],
-                      OffLayer off, OffLayerShading offShaded) {
+Resolved resolvePixel(ivec2 pixel, OffLayer off, OffLayerShading offShaded) {
     float exposure = frame.depthParams.z;
     float weight = 1.0 / float(kSamples);
     vec3 sky = skyRadiance(pixel) * exposure;

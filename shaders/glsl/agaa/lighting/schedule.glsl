@@ -39,7 +39,7 @@ void tileListBegin() {
 }
 
 // The slots of this pixel's further aggregates in the tile's list.
-uint tileListAppend(Aggregate aggregates[kMaxAggregates], uint presentCount) {
+uint tileListAppend(uint presentCount) {
     uint extraCount = presentCount - (aggregates[0].present ? 1u : 0u);
     return kCompactShading != 0u && extraCount > 0u ? atomicAdd(sEntryCount, extraCount) : 0u;
 }
@@ -82,8 +82,7 @@ Aggregate loadListEntry(uint e) {
 // The compacted schedule. The slots are taken in whatever order the appends ran; an entry's
 // result depends only on its own values and the tile's lights, so the image does not depend on
 // that order. Every invocation runs the same rounds (sEntryCount is uniform over the workgroup).
-void shadeTileList(Aggregate aggregates[kMaxAggregates], uint firstEntry,
-                   inout Shading shaded[kMaxAggregates]) {
+void shadeTileList(uint firstEntry) {
     uint entries = sEntryCount;
     for (uint listRound = 0u; listRound * kListRound < entries; ++listRound) {
         uint lo = listRound * kListRound;
@@ -122,13 +121,12 @@ void shadeTileList(Aggregate aggregates[kMaxAggregates], uint firstEntry,
 
 // Step 3: every present aggregate of the pixel shaded once; c = 1's off-layer samples with
 // aggregate 0.
-void shadeAggregates(Aggregate aggregates[kMaxAggregates], OffLayer off, bool inside, uint firstEntry,
-                     out Shading shaded[kMaxAggregates], out OffLayerShading offShaded) {
+void shadeAggregates(OffLayer off, bool inside, uint firstEntry, out OffLayerShading offShaded) {
     shaded = Shading[](noShading(), noShading(), noShading(), noShading());
     offShaded = noOffLayerShading();
     if (kSkipShading != 0u) return;
     if (kCompactShading != 0u) {
-        shadeTileList(aggregates, firstEntry, shaded);
+        shadeTileList(firstEntry);
         // Aggregate 0 of every covered pixel: every lane of a SIMD group busy but for sky pixels.
         // After the list's rounds: no barrier follows it, so lavapipe (whose compute barriers
         // split the shader into coroutine segments) keeps its loop free of frame spills.
@@ -136,10 +134,10 @@ void shadeAggregates(Aggregate aggregates[kMaxAggregates], OffLayer off, bool in
         return;
     }
     if (!inside) return;
-    for (uint a = 0u; a < kAggregates; ++a) {
+    if (aggregates[0].present) shadeAggregate(aggregates[0], off, shaded[0], offShaded);
+    for (uint a = 1u; a < kAggregates; ++a) {
         if (!aggregates[a].present) continue;
-        OffLayerShading offLayer;
-        shadeAggregate(aggregates[a], a == 0u ? off : noOffLayer(aggregates[a]), shaded[a], offLayer);
-        if (a == 0u) offShaded = offLayer;
+        OffLayerShading unused; // no off-layer samples beyond aggregate 0
+        shadeAggregate(aggregates[a], noOffLayer(aggregates[a]), shaded[a], unused);
     }
 }
