@@ -6,8 +6,19 @@
 # diff holds exactly the goldens that moved.
 #   tools/update-goldens.sh                 every scene
 #   tools/update-goldens.sh 'gltf_*'        only the scenes matching a gtest filter (Every/Golden.*/NAME)
+#   AGAA_GOLDEN_HOST_CASES=FILE tools/update-goldens.sh
+#                                           a host's scenes instead: the goldens FILE lists, in
+#                                           AGAA_GOLDEN_HOST_DIR (default: FILE's folder's goldens/;
+#                                           tests/README.md, "A host's scenes")
 # AGAA_BUILD_DIR (default build/release) is configured if needed and only test_golden is built.
 set -euo pipefail
+# A host's paths as the caller meant them, before the cd.
+if [ -n "${AGAA_GOLDEN_HOST_CASES:-}" ]; then
+  AGAA_GOLDEN_HOST_CASES="$(realpath "$AGAA_GOLDEN_HOST_CASES")"
+  AGAA_GOLDEN_HOST_DIR="$(realpath -m "${AGAA_GOLDEN_HOST_DIR:-$(dirname "$AGAA_GOLDEN_HOST_CASES")/goldens}")"
+  export AGAA_GOLDEN_HOST_CASES AGAA_GOLDEN_HOST_DIR
+fi
+[ -z "${AGAA_BUILD_DIR:-}" ] || AGAA_BUILD_DIR="$(realpath -m "$AGAA_BUILD_DIR")"
 root="$(cd "$(dirname "$0")/.." && pwd)"
 cd "$root"
 build="${AGAA_BUILD_DIR:-build/release}"
@@ -21,7 +32,7 @@ fi
 cmake --build "$build" --target test_golden -j2
 lvp="$(ls /usr/share/vulkan/icd.d/lvp_icd.*.json 2>/dev/null | head -n1)"
 export VK_ICD_FILENAMES="${VK_ICD_FILENAMES:-$lvp}"
-golden="$root/tests/golden/images"
+golden="${AGAA_GOLDEN_HOST_DIR:-$root/tests/golden/images}"
 tmp="$(mktemp -d)"
 trap 'rm -rf "$tmp"' EXIT
 filter="Every/Golden.*/${1:-*}"
@@ -68,7 +79,7 @@ for dir in "$tmp/images"/*/; do
     fi
   done
 done
-echo "update-goldens: $unchanged unchanged, $changed changed, $added new, $removed removed ($(du -sh --apparent-size "$golden" | cut -f1) in tests/golden/images)"
+echo "update-goldens: $unchanged unchanged, $changed changed, $added new, $removed removed ($(du -sh --apparent-size "$golden" | cut -f1) in $golden)"
 if [ $((changed + added + removed)) -gt 0 ]; then
   echo "update-goldens: commit them with a message that says why each changed golden changed"
 fi

@@ -1,7 +1,13 @@
 #include "golden_cases.h"
 
+#include "agaa/methods.h"
 #include "engine/scene/scenegen.h"
 #include "tools/scenes/adversarial_scenes.h"
+
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
 
 namespace agaa::golden {
 
@@ -24,7 +30,69 @@ void PrintTo(const GoldenScene& scene, std::ostream* os) {
     *os << scene.name;
 }
 
+std::vector<GoldenScene> hostGoldenScenes(const std::filesystem::path& caseFile,
+                                          const std::filesystem::path& imagesDir) {
+    std::ifstream in(caseFile);
+    if (!in) throw std::runtime_error(caseFile.string() + ": cannot be read (AGAA_GOLDEN_HOST_CASES)");
+    std::vector<GoldenScene> scenes;
+    std::string line;
+    for (int number = 1; std::getline(in, line); ++number) {
+        const std::string where = caseFile.string() + ":" + std::to_string(number) + ": ";
+        std::istringstream words(line.substr(0, line.find('#')));
+        std::string kind;
+        if (!(words >> kind)) continue;
+        auto count = [&](const char* field, uint32_t lo, uint32_t hi, uint32_t fallback) {
+            std::string text;
+            if (!(words >> text)) return fallback;
+            char* end = nullptr;
+            const unsigned long v = std::strtoul(text.c_str(), &end, 10);
+            if (*end != '\0' || v < lo || v > hi)
+                throw std::runtime_error(where + field + " '" + text + "' is not a whole number in " +
+                                         std::to_string(lo) + ".." + std::to_string(hi));
+            return uint32_t(v);
+        };
+        if (kind == "scene") {
+            GoldenScene s{"", SceneSource::Gltf, "", 64, {}, imagesDir};
+            std::string file;
+            if (!(words >> s.name >> file))
+                throw std::runtime_error(where + "expected 'scene NAME FILE [SIZE]'");
+            if (s.name.find_first_not_of(
+                    "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_-") != std::string::npos)
+                throw std::runtime_error(where + "NAME '" + s.name +
+                                         "' may hold only letters, digits, '_' and '-'");
+            s.asset = (caseFile.parent_path() / file).lexically_normal().string();
+            s.size = count("SIZE", 16, 256, 64);
+            scenes.push_back(s);
+        } else if (kind == "case") {
+            if (scenes.empty()) throw std::runtime_error(where + "a 'case' line before any 'scene' line");
+            GoldenCase c;
+            if (!(words >> c.method))
+                throw std::runtime_error(where + "expected 'case METHOD SAMPLES [AGGREGATES]'");
+            if (!isKnownMethod(c.method))
+                throw std::runtime_error(where + "METHOD '" + c.method +
+                                         "' is not one of: " + knownMethodNames());
+            c.samples = count("SAMPLES", 1, 32, 8);
+            c.aggregates = count("AGGREGATES", 1, 4, 2);
+            scenes.back().cases.push_back(c);
+        } else {
+            throw std::runtime_error(where + "'" + kind + "' is not 'scene' or 'case'");
+        }
+        std::string extra;
+        if (words >> extra) throw std::runtime_error(where + "unexpected '" + extra + "'");
+    }
+    for (const GoldenScene& s : scenes)
+        if (s.cases.empty())
+            throw std::runtime_error(caseFile.string() + ": scene '" + s.name + "' has no case");
+    if (scenes.empty()) throw std::runtime_error(caseFile.string() + ": no 'scene' line");
+    return scenes;
+}
+
 std::vector<GoldenScene> goldenScenes() {
+    if (const char* caseFile = std::getenv("AGAA_GOLDEN_HOST_CASES")) {
+        const char* dir = std::getenv("AGAA_GOLDEN_HOST_DIR");
+        const std::filesystem::path file(caseFile);
+        return hostGoldenScenes(file, dir ? std::filesystem::path(dir) : file.parent_path() / "goldens");
+    }
     std::vector<GoldenScene> scenes;
     for (const std::string& k : eng::scene::sceneKinds())
         scenes.push_back({k, SceneSource::Builtin, "", 64});
@@ -40,6 +108,7 @@ std::vector<GoldenScene> goldenScenes() {
 }
 
 std::vector<GoldenCase> goldenCases(const GoldenScene& scene) {
+    if (!scene.cases.empty()) return scene.cases; // a host's
     // Every method at the default settings (n = 8, c = 2, S = 4 for SBAA and 3 for streaming; no-AA and FXAA
     // take one sample). "agaa" is the automatic path choice (samples at n <= 16).
     std::vector<GoldenCase> cases = {

@@ -109,7 +109,8 @@ TEST_P(Golden, MatchesStoredImages) {
         const agaa::RenderResult result = renderer.render(request);
         const double ms =
             std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-        const fs::path golden = kGoldenDir / (stem + ".exr");
+        const fs::path goldenDir = goldenScene.imagesDir.empty() ? kGoldenDir : goldenScene.imagesDir;
+        const fs::path golden = goldenDir / (stem + ".exr");
         const bool haveGolden = fs::exists(golden);
         if (writeDir) {
             // Update mode: the new image goes to writeDir; the script decides what to copy.
@@ -144,19 +145,28 @@ TEST_P(Golden, MatchesStoredImages) {
         ADD_FAILURE() << stem << " differs from its golden: " << describe(e) << " (thresholds: RMSE "
                       << agaa::golden::GoldenThresholds{}.rmse << ", p99 "
                       << agaa::golden::GoldenThresholds{}.percentileError
-                      << ")\n  golden:  " << (kGoldenDir / (stem + ".png")).string()
+                      << ")\n  golden:  " << (goldenDir / (stem + ".png")).string()
                       << "\n  actual:  " << out.string() << ".actual.png (.exr)\n  heatmap: " << out.string()
                       << ".heatmap.png (error x20: 0.05 is white)\n  machine: " << machine(*device);
     }
     agaa::test::expectNoValidationErrors(*device);
 }
 
-INSTANTIATE_TEST_SUITE_P(Every, Golden, ::testing::ValuesIn(agaa::golden::goldenScenes()),
-                         [](const auto& info) {
-                             std::string s = info.param.name;
-                             for (char& ch : s)
-                                 if (ch == '-') ch = '_';
-                             return s;
-                         });
+// A host's case file is read before any test runs: a bad one ends the binary with its message.
+std::vector<GoldenScene> scenesOrExit() {
+    try {
+        return agaa::golden::goldenScenes();
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "test_golden: %s\n", e.what());
+        std::exit(2);
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(Every, Golden, ::testing::ValuesIn(scenesOrExit()), [](const auto& info) {
+    std::string s = info.param.name;
+    for (char& ch : s)
+        if (ch == '-') ch = '_';
+    return s;
+});
 
 } // namespace
