@@ -124,20 +124,19 @@ void shadeTileList(uint firstEntry) {
 void shadeAggregates(OffLayer off, bool inside, uint firstEntry, out OffLayerShading offShaded) {
     shaded = Shading[](noShading(), noShading(), noShading(), noShading());
     offShaded = noOffLayerShading();
-    if (kSkipShading != 0u) return;
-    if (kCompactShading != 0u) {
+    if (kSkipShading != 0u) {
+    } else if (kCompactShading != 0u) {
         shadeTileList(firstEntry);
         // Aggregate 0 of every covered pixel: every lane of a SIMD group busy but for sky pixels.
         // After the list's rounds: no barrier follows it, so lavapipe (whose compute barriers
         // split the shader into coroutine segments) keeps its loop free of frame spills.
         if (inside && aggregates[0].present) shadeAggregate(aggregates[0], off, shaded[0], offShaded);
-        return;
-    }
-    if (!inside) return;
-    if (aggregates[0].present) shadeAggregate(aggregates[0], off, shaded[0], offShaded);
-    for (uint a = 1u; a < kAggregates; ++a) {
-        if (!aggregates[a].present) continue;
-        OffLayerShading unused; // no off-layer samples beyond aggregate 0
-        shadeAggregate(aggregates[a], noOffLayer(aggregates[a]), shaded[a], unused);
+    } else if (inside) {
+        if (aggregates[0].present) shadeAggregate(aggregates[0], off, shaded[0], offShaded);
+        for (uint a = 1u; a < kAggregates; ++a) {
+            if (!aggregates[a].present) continue;
+            OffLayerShading unused; // no off-layer samples beyond aggregate 0
+            shadeAggregate(aggregates[a], noOffLayer(aggregates[a]), shaded[a], unused);
+        }
     }
 }
