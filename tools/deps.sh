@@ -11,7 +11,7 @@
 set -euo pipefail
 
 packages=(
-  build-essential cmake pkg-config clang-format
+  build-essential cmake pkg-config clang-format python3
   mesa-vulkan-drivers libvulkan-dev vulkan-validationlayers
   glslang-tools glslang-dev
   libglm-dev libtinygltf-dev nlohmann-json3-dev libstb-dev libopenexr-dev

@@ -2,7 +2,7 @@
 # The main job: installs what is missing, builds Release, renders the built-in
 # default scene and the real ship (../shared/scenes) with every method into out/ (EXR, PNG,
 # stats JSON, graph dump), the real scenes with AGAA and its aggregates, and ends with the
-# benchmark sweep on the default scene and the ship: out/bench/report.html.
+# benchmark sweep (out/bench/report.html) and the results page written from it (out/results.md).
 #   tools/run.sh            (AGAA_RENDER_FLAGS adds agaa-render flags, e.g. "--device NAME")
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
@@ -48,9 +48,18 @@ fi
 echo
 echo "out/ holds:"
 ls -1 out | sed 's/^/  out\//'
-# What accuracy costs in time, on the default scene: every method and setting, and the report.
-bench_scenes=default
-[ -f "$scenes/dutch_ship_medium/dutch_ship_medium_1k.gltf" ] && bench_scenes=default,ship
-AGAA_SHARED_SCENES="$scenes" "$build/tools/agaa_bench/agaa-bench" --out out/bench --scenes "$bench_scenes" \
-  --size 160x90 --frames 3 --warmup 1
+# What accuracy costs in time: every method at its main setting (n = 8, AGAA c = 2, SBAA S = 4,
+# streaming S = 3) against the converged truth on the default scene, the ship, foliage and spikes:
+# out/bench/report.html, and out/results.md written from the same run (docs/results.md is the
+# committed copy: tools/results-page.py out/bench --write docs/results.md --readme README.md).
+# The allocator thresholds keep lavapipe's large per-frame buffers mapped between frames; without
+# them frame times on lavapipe swing up to 4x from job to job.
+bench_scenes=default,foliage,spikes
+[ -f "$scenes/dutch_ship_medium/dutch_ship_medium_1k.gltf" ] && bench_scenes=default,ship,foliage,spikes
+MALLOC_TRIM_THRESHOLD_=1073741824 MALLOC_MMAP_THRESHOLD_=33554432 AGAA_SHARED_SCENES="$scenes" \
+  tools/results-page.py --record out/bench -- "$build/tools/agaa_bench/agaa-bench" --out out/bench \
+  --scenes "$bench_scenes" --methods noaa,fxaa,reference,simple-complex,sbaa,streaming,agaa --samples 8 \
+  --aggregates 2 --size 160x90 --frames 5 --warmup 2 --temporal 0
+tools/results-page.py out/bench --write out/results.md
 echo "report: $root/out/bench/report.html"
+echo "results: $root/out/results.md"

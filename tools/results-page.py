@@ -1,0 +1,440 @@
+#!/usr/bin/env python3
+"""docs/results.md and the README's headline table, from one recorded agaa-bench run.
+
+  tools/results-page.py --record DIR -- AGAA-BENCH --out DIR [flags]
+      runs the bench command and writes DIR/run.json beside its output: the command, its wall
+      time, the machine (CPU model, cores, Mesa) and the git commit.
+  tools/results-page.py DIR --write FILE [--readme README.md]
+      writes the results page from DIR (run.json and the results.json agaa-bench wrote) and,
+      with --readme, replaces the README's block between the headline markers with the page's.
+  tools/results-page.py --check [--page docs/results.md] [--readme README.md]
+      exits 1, saying where, when the page's headline table is not the one its own data
+      implies, or the README's block is not the page's. Needs no bench output.
+
+Errors are display RMSE against the converged truth (docs/truth.md). Python 3 standard
+library only.
+"""
+
+import argparse
+import datetime
+import json
+import os
+import shlex
+import subprocess
+import sys
+import textwrap
+import time
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+BEGIN = "<!-- results:headline begin -->"
+END = "<!-- results:headline end -->"
+DATA_BEGIN = "<!-- results:data"
+DATA_END = "-->"
+JOB_SCHEMA = "agaa-bench-job/2"
+RESULTS_SCHEMA = "agaa-bench-results/2"
+# Two errors against one truth differ by a measured amount only where the truth's own error cannot
+# account for their difference: 2.5 times it (tools/agaa_bench/claims.cpp, kDecidedDifferenceRatio).
+DECIDED_RATIO = 2.5
+METHOD_ORDER = ["noaa", "fxaa", "reference", "simple-complex", "simple-complex-naive", "sbaa",
+                "streaming", "agaa", "agaa-samples", "agaa-accumulate"]
+AGAA = "agaa"
+
+
+class Refused(Exception):
+    pass
+
+
+def method_label(job):
+    m, n, c, s = job["method"], job["samples"], job["aggregates"], job["surfaces"]
+    names = {"noaa": "no-AA", "fxaa": "FXAA", "reference": "reference", "simple-complex": "Simple/Complex",
+             "simple-complex-naive": "Simple/Complex naive", "sbaa": "SBAA", "streaming": "streaming",
+             "agaa": "AGAA", "agaa-samples": "AGAA samples path", "agaa-accumulate": "AGAA accumulate path"}
+    name = names.get(m, m)
+    if not job["uses_samples"]:
+        return name
+    if job["uses_aggregates"]:
+        return f"{name} ({n}, {c})"
+    if s:
+        return f"{name} ({n}, S = {s})"
+    return f"{name} ({n})"
+
+
+def method_rank(job):
+    m = job["method"]
+    return (METHOD_ORDER.index(m) if m in METHOD_ORDER else len(METHOD_ORDER), m, job["samples"],
+            job["aggregates"], job["surfaces"])
+
+
+# ---- recording a run ----------------------------------------------------------------------
+
+def run_text(args):
+    try:
+        return subprocess.run(args, capture_output=True, text=True, check=True, cwd=ROOT).stdout.strip()
+    except (OSError, subprocess.CalledProcessError):
+        return ""
+
+
+def machine():
+    cpu = "unknown CPU"
+    try:
+        with open("/proc/cpuinfo") as f:
+            for line in f:
+                if line.startswith("model name"):
+                    cpu = line.split(":", 1)[1].strip()
+                    break
+    except OSError:
+        pass
+    mesa = run_text(["dpkg-query", "-W", "-f", "${Version}", "mesa-vulkan-drivers"])
+    # Other work on the machine slows lavapipe's frames: the load when the run started says how much.
+    load = os.getloadavg()[0] if hasattr(os, "getloadavg") else -1.0
+    return {"cpu": cpu, "cores": os.cpu_count() or 0, "mesa": mesa or "unknown",
+            "load_at_start": round(load, 2)}
+
+
+def commit():
+    head = run_text(["git", "rev-parse", "HEAD"])
+    # What the working tree held beyond the commit, pages (*.md) aside: the binary may include it.
+    status = run_text(["git", "status", "--porcelain"])
+    changed = sorted(line[3:] for line in status.splitlines() if line[3:] and not line.endswith(".md"))
+    return {"commit": head or "unknown", "uncommitted_changes": changed}
+
+
+def record(out_dir, command):
+    if not command:
+        raise Refused("--record DIR needs the bench command after --")
+    started = datetime.datetime.now(datetime.timezone.utc)
+    t0 = time.monotonic()
+    rc = subprocess.call(command)
+    seconds = time.monotonic() - t0
+    # The allocator settings lavapipe's frame times depend on (tools/run.sh sets them) belong to the command.
+    env = [f"{k}={os.environ[k]}" for k in sorted(os.environ) if k.startswith("MALLOC_")]
+    info = {"command": " ".join(env + [shlex.join(command)]),
+            "started_utc": started.strftime("%Y-%m-%d %H:%M UTC"),
+            "wall_s": round(seconds, 1), "exit_status": rc, "machine": machine(), "git": commit()}
+    os.makedirs(out_dir, exist_ok=True)
+    with open(os.path.join(out_dir, "run.json"), "w") as f:
+        json.dump(info, f, indent=2)
+        f.write("\n")
+    print(f"results-page: the bench took {seconds:.0f} s (exit status {rc}); "
+          f"recorded in {os.path.join(out_dir, 'run.json')}")
+    return rc
+
+
+# ---- reading a run ------------------------------------------------------------------------
+
+def load_run(out_dir):
+    run_file = os.path.join(out_dir, "run.json")
+    if not os.path.isfile(run_file):
+        raise Refused(f"{run_file} is missing: record the run with "
+                      f"tools/results-page.py --record {out_dir} -- AGAA-BENCH --out {out_dir} ...")
+    with open(run_file) as f:
+        run = json.load(f)
+    if run.get("exit_status", 0) != 0:
+        raise Refused(f"{run_file}: the recorded bench run exited with status {run['exit_status']}")
+    # results.json holds exactly the jobs of the run's plan; DIR/jobs/ may hold an earlier sweep's too.
+    results_file = os.path.join(out_dir, "results.json")
+    try:
+        with open(results_file) as f:
+            results = json.load(f)
+    except (OSError, json.JSONDecodeError) as err:
+        raise Refused(f"{results_file}: {err}")
+    if results.get("schema") != RESULTS_SCHEMA:
+        raise Refused(f"{results_file}: schema is {results.get('schema')!r}, not {RESULTS_SCHEMA!r}")
+    jobs = results.get("jobs", [])
+    for j in jobs:
+        if j.get("schema") != JOB_SCHEMA:
+            raise Refused(f"{results_file}: job {j.get('id')}: schema is {j.get('schema')!r}, "
+                          f"not {JOB_SCHEMA!r}")
+        if j.get("error_vs_truth") is None:
+            raise Refused(f"{results_file}: job {j['id']} has no error against the truth")
+    if not jobs:
+        raise Refused(f"{results_file} holds no jobs")
+    return run, jobs
+
+
+def scene_order(jobs):
+    seen = []
+    for j in sorted(jobs, key=lambda j: j["plan_index"]):
+        if j["scene"] not in seen:
+            seen.append(j["scene"])
+    return seen
+
+
+def headline_data(jobs):
+    """What the headline table needs, small enough to keep in the page itself."""
+    scenes = []
+    for scene in scene_order(jobs):
+        rows = sorted((j for j in jobs if j["scene"] == scene), key=method_rank)
+        scenes.append({
+            "scene": scene,
+            "truth_error": round(rows[0]["truth"]["error_estimate"], 6),
+            "methods": [{"label": method_label(j), "agaa": j["method"] == AGAA,
+                         "error": round(j["error_vs_truth"]["rmse"], 6),
+                         "frame_ms": round(j["timing"]["frame_gpu_ms"]["median"], 3)} for j in rows],
+        })
+    return scenes
+
+
+# ---- the headline table -------------------------------------------------------------------
+
+def verdict(scene):
+    """The method closest to the truth among those at or below AGAA's frame time."""
+    agaa = [m for m in scene["methods"] if m["agaa"]]
+    if len(agaa) != 1:
+        return "not judged: no AGAA job" if not agaa else "not judged: several AGAA jobs"
+    budget = agaa[0]["frame_ms"]
+    within = sorted((m for m in scene["methods"] if m["frame_ms"] <= budget), key=lambda m: m["error"])
+    best = within[0]
+    bound = DECIDED_RATIO * scene["truth_error"]
+    tied = [m for m in within if m["error"] - best["error"] < bound]
+    if len(tied) == 1:
+        return best["label"]
+    return "undecided: " + ", ".join(m["label"] for m in tied)
+
+
+def headline_block(data, run):
+    scenes = [s["scene"] for s in data]
+    labels = []
+    for s in data:
+        for m in s["methods"]:
+            if m["label"] not in labels:
+                labels.append(m["label"])
+    lines = ["| | " + " | ".join(scenes) + " |", "|---" * (len(scenes) + 1) + "|",
+             "| truth's own error | " + " | ".join(f"{s['truth_error']:.4f}" for s in data) + " |"]
+    for label in labels:
+        cells = []
+        for s in data:
+            m = next((m for m in s["methods"] if m["label"] == label), None)
+            if m is None:
+                cells.append("")
+                continue
+            cell = f"{m['error']:.4f}, {m['frame_ms']:.0f} ms"
+            cells.append(f"**{cell}**" if m["agaa"] else cell)
+        lines.append(f"| {label} | " + " | ".join(cells) + " |")
+    lines.append("| **closest to the truth at AGAA's frame time or less** | " +
+                 " | ".join(verdict(s) for s in data) + " |")
+    g = run["git"]
+    m = run["machine"]
+    caption = (f"Display RMSE against the converged truth, and frame time (median GPU ms on lavapipe, "
+               f"{m['cpu']}, {m['cores']} cores, load average {m.get('load_at_start', 0.0):.1f}), per scene; "
+               f"commit {g['commit'][:10]}. \"undecided\": the errors differ by less than "
+               f"{DECIDED_RATIO:g} times the truth's own error.")
+    return "\n".join([BEGIN, wrap(caption), "", *lines, END])
+
+
+# ---- the page -----------------------------------------------------------------------------
+
+def wrap(text):
+    return textwrap.fill(text, width=100, break_long_words=False, break_on_hyphens=False)
+
+
+def pct(a, b):
+    return f"{100.0 * (a - b) / b:+.1f} %" if b else ""
+
+
+def job_table(rows):
+    out = ["| method | frame ms, median [quartiles] | display RMSE vs truth | vs reference at the same n "
+           "| SSIM vs truth | mean vs truth's | bytes/px | shading events/px, mean / worst lane |",
+           "|---|---|---|---|---|---|---|---|"]
+    for j in rows:
+        f = j["timing"]["frame_gpu_ms"]
+        same = j.get("error_vs_same_n_reference")
+        ev = j["shading_events_per_pixel"]
+        label = method_label(j)
+        if j["method"] == AGAA:
+            label = f"**{label}**"
+        same_n = f"{same['rmse']:.4f}" if same else ""
+        out.append(f"| {label} | {f['median']:.1f} [{f['q1']:.0f}..{f['q3']:.0f}] | "
+                   f"{j['error_vs_truth']['rmse']:.4f} | {same_n} | "
+                   f"{j['error_vs_truth']['ssim']:.3f} | "
+                   f"{pct(j['mean_luminance'], j['truth']['mean_luminance'])} | "
+                   f"{j['bytes_per_pixel']:.1f} | {ev['mean']:.2f} / {ev.get('worst_lane_mean', 0.0):.2f} |")
+    return out
+
+
+def passes_table(rows):
+    out = ["| method | passes, median GPU ms (the frame's read-backs for the bench left out) |", "|---|---|"]
+    for j in rows:
+        parts = ", ".join(f"`{p['name']}` {p['gpu_ms']['median']:.1f}" for p in j["timing"]["passes"]
+                          if not p["name"].startswith("readback."))
+        out.append(f"| {method_label(j)} | {parts} |")
+    return out
+
+
+def page(run, jobs):
+    data = headline_data(jobs)
+    first = jobs[0]
+    devices = sorted({j["timing"]["device"] for j in jobs})
+    k = first["truth"]["supersampling"]
+    g, m = run["git"], run["machine"]
+    changed = g["uncommitted_changes"]
+    state = ""
+    if changed is True:  # recorded before the paths were listed
+        state = "; the working tree also held uncommitted changes"
+    elif changed:
+        shown = ", ".join(f"`{c}`" for c in changed[:6])
+        if len(changed) > 6:
+            shown += f" and {len(changed) - 6} more"
+        state = f"; the working tree also held uncommitted changes to {shown}"
+    lines = [
+        "# Measured results",
+        "",
+        "<!-- Written by tools/results-page.py from one recorded agaa-bench run. Do not edit by hand: -->",
+        "<!-- tools/run.sh, then tools/results-page.py out/bench --write docs/results.md "
+        "--readme README.md -->",
+        "",
+        wrap("Every figure on this page comes from one agaa-bench run. Errors are display RMSE "
+             "(sRGB-encoded, tone-mapped) against the converged truth: the reference at n = 32 with "
+             f"sample-rate shading, {k}x{k} supersampled ({first['truth']['samples'] * k * k} samples a "
+             "pixel; [truth.md](truth.md)). Frame time is the median of the timed frames' GPU time, the "
+             "sum of the frame's passes. lavapipe's times are a software rasteriser's and vary between "
+             "runs on a shared machine: read them as ratios within a scene."),
+        "",
+        "## The run",
+        "",
+        "| | |",
+        "|---|---|",
+        f"| command | `{run['command']}` |",
+        f"| started | {run['started_utc']} |",
+        f"| wall time | {run['wall_s']:.0f} s |",
+        f"| machine | {m['cpu']}, {m['cores']} cores; load average {m['load_at_start']:.2f} when the run "
+        "started |",
+        f"| device | {', '.join(devices)}; Mesa {m['mesa']} (lavapipe) |",
+        f"| commit | {g['commit']}{state} |",
+        f"| per job | {first['width']}x{first['height']}, {first['frames_warmup']} warm-up + "
+        f"{first['frames_timed']} timed frames |",
+        "",
+        "## At the same frame time",
+        "",
+        wrap("Per scene, each method's error and frame time. The last row names the method closest to "
+             "the truth among those whose frame time is at most AGAA's; where the next ones are within "
+             f"{DECIDED_RATIO:g} times the truth's own error of it, the row says \"undecided\" and names them all. The "
+             "README shows this table."),
+        "",
+        headline_block(data, run),
+        "",
+        "## Every job",
+        "",
+        wrap("\"vs reference at the same n\" is the shading error at fixed visibility; \"mean vs "
+             "truth's\" the linear image mean (energy) against the truth's. Bytes per pixel are the "
+             "method's own storage, from the real allocations."),
+    ]
+    for scene in scene_order(jobs):
+        rows = sorted((j for j in jobs if j["scene"] == scene), key=method_rank)
+        lines += ["", f"### {scene}", "",
+                  f"Truth's own error {rows[0]['truth']['error_estimate']:.4f}.", ""]
+        lines += job_table(rows)
+        lines += ["", "<details><summary>per pass</summary>", ""]
+        lines += passes_table(rows)
+        lines += ["", "</details>"]
+    # One line for the run and one per scene: small, and a rerun's diff reads scene by scene.
+    scenes_json = ",\n  ".join(json.dumps(s, sort_keys=True) for s in data)
+    data_json = f'{{"run": {json.dumps(run, sort_keys=True)},\n "headline": [\n  {scenes_json}\n ]}}'
+
+    lines += ["", DATA_BEGIN, data_json, DATA_END, ""]
+    return "\n".join(lines)
+
+
+# ---- blocks and the check -----------------------------------------------------------------
+
+def block(text, where):
+    b, e = text.find(BEGIN), text.find(END)
+    if b < 0 or e < b or text.count(BEGIN) != 1 or text.count(END) != 1:
+        raise Refused(f"{where}: needs exactly one '{BEGIN}' followed by one '{END}'")
+    return text[b:e + len(END)]
+
+
+def page_data(text, where):
+    b = text.rfind(DATA_BEGIN)
+    e = text.find(DATA_END, b + len(DATA_BEGIN))
+    if b < 0 or e < 0:
+        raise Refused(f"{where}: no '{DATA_BEGIN} ... {DATA_END}' block (write the page with this script)")
+    try:
+        return json.loads(text[b + len(DATA_BEGIN):e])
+    except json.JSONDecodeError as err:
+        raise Refused(f"{where}: the data block is not JSON ({err})")
+
+
+def first_difference(a, b, name_a, name_b):
+    la, lb = a.splitlines(), b.splitlines()
+    for i in range(max(len(la), len(lb))):
+        x = la[i] if i < len(la) else "(nothing)"
+        y = lb[i] if i < len(lb) else "(nothing)"
+        if x != y:
+            return f"line {i + 1} of the block:\n  {name_a}: {x}\n  {name_b}: {y}"
+    return ""
+
+
+def check(page_file, readme_file):
+    with open(page_file) as f:
+        page_text = f.read()
+    with open(readme_file) as f:
+        readme_text = f.read()
+    data = page_data(page_text, page_file)
+    implied = headline_block(data["headline"], data["run"])
+    in_page = block(page_text, page_file)
+    in_readme = block(readme_text, readme_file)
+    problems = []
+    if in_page != implied:
+        problems.append(f"{page_file}'s headline table is not the one its data implies (edited by hand?); "
+                        + first_difference(in_page, implied, page_file, "its data"))
+    if in_readme != implied:
+        problems.append(f"{readme_file}'s headline table differs from {page_file}'s; "
+                        + first_difference(in_readme, implied, readme_file, f"{page_file} (from its data)"))
+    if problems:
+        raise Refused("\n".join(problems) + "\nregenerate both from the recorded run: tools/results-page.py "
+                      "out/bench --write docs/results.md --readme README.md")
+    print(f"results-page: {readme_file}'s headline table is {page_file}'s, and its data's")
+
+
+def write(out_dir, page_file, readme_file):
+    run, jobs = load_run(out_dir)
+    text = page(run, jobs)
+    with open(page_file, "w") as f:
+        f.write(text)
+    print(f"results-page: wrote {page_file} ({len(jobs)} jobs)")
+    if readme_file:
+        with open(readme_file) as f:
+            readme = f.read()
+        old = block(readme, readme_file)
+        new = block(text, page_file)
+        with open(readme_file, "w") as f:
+            f.write(readme.replace(old, new))
+        print(f"results-page: {'rewrote' if old != new else 'kept'} the headline table in {readme_file}")
+
+
+def main(argv):
+    command = []
+    if "--" in argv:
+        i = argv.index("--")
+        argv, command = argv[:i], argv[i + 1:]
+    p = argparse.ArgumentParser(description=__doc__.split("\n\n")[0],
+                                formatter_class=argparse.RawDescriptionHelpFormatter, epilog=__doc__)
+    p.add_argument("dir", nargs="?", help="the bench's output folder (agaa-bench --out DIR)")
+    p.add_argument("--record", metavar="DIR", help="run the command after -- and record it in DIR/run.json")
+    p.add_argument("--write", metavar="FILE", help="write the results page to FILE")
+    p.add_argument("--readme", metavar="FILE", help="the README whose headline block to rewrite or check")
+    p.add_argument("--check", action="store_true", help="check the README's headline table against the page")
+    p.add_argument("--page", metavar="FILE", default=os.path.join(ROOT, "docs", "results.md"),
+                   help="the results page --check reads (default docs/results.md)")
+    a = p.parse_args(argv)
+    try:
+        if a.record:
+            return record(a.record, command)
+        if a.check:
+            check(a.page, a.readme or os.path.join(ROOT, "README.md"))
+            return 0
+        if not a.dir or not a.write:
+            p.error("give DIR --write FILE, --check, or --record DIR -- COMMAND")
+        write(a.dir, a.write, a.readme)
+        return 0
+    except Refused as e:
+        print(f"results-page: {e}", file=sys.stderr)
+        return 1
+    except OSError as e:
+        print(f"results-page: {e}", file=sys.stderr)
+        return 1
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1:]))
