@@ -22,6 +22,7 @@ layout(push_constant) uniform Push { SbaaParams params; } pc;
 
 #define GBUFFER_MS 1
 #include "common/gbuffer_lighting.glsl"
+#include "common/half.glsl"
 
 void main() {
     ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
@@ -60,10 +61,10 @@ void main() {
         uint mask = surfaces[w + kSbaaWordMask];
         if (mask == 0u) continue;
         uint rep = surfaces[w + kSbaaWordSampleAndPrimitive] & 0xFFu;
-        vec2 albedoRg = unpackHalf2x16(surfaces[w + kSbaaWordAlbedoRg]);
-        vec2 albedoBMetal = unpackHalf2x16(surfaces[w + kSbaaWordAlbedoBMetal]);
-        vec2 emissiveRg = unpackHalf2x16(surfaces[w + kSbaaWordEmissiveRg]);
-        vec2 emissiveBRoughness = unpackHalf2x16(surfaces[w + kSbaaWordEmissiveBRoughness]);
+        vec2 albedoRg = unpackHalf2x16Exact(surfaces[w + kSbaaWordAlbedoRg]);
+        vec2 albedoBMetal = unpackHalf2x16Exact(surfaces[w + kSbaaWordAlbedoBMetal]);
+        vec2 emissiveRg = unpackHalf2x16Exact(surfaces[w + kSbaaWordEmissiveRg]);
+        vec2 emissiveBRoughness = unpackHalf2x16Exact(surfaces[w + kSbaaWordEmissiveBRoughness]);
         SurfaceInputs surface;
         surface.normal = decodeOctahedral(unpackSnorm2x16(surfaces[w + kSbaaWordNormal]));
         surface.albedo = vec3(albedoRg, albedoBMetal.x);

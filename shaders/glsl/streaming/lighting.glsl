@@ -20,6 +20,7 @@ layout(push_constant) uniform Push { StreamingParams params; } pc;
 
 #define GBUFFER_MS 1
 #include "common/gbuffer_lighting.glsl"
+#include "common/half.glsl"
 
 void main() {
     ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
@@ -57,10 +58,10 @@ void main() {
         uint w = first + k * kStreamingSurfaceWords;
         uint weightSamples = bitCount(surfaces[w + kStreamingWordDepthTested]);
         if (weightSamples == 0u) continue; // an empty slot, or a surface fully occluded
-        vec2 albedoRg = unpackHalf2x16(surfaces[w + kStreamingWordAlbedoRg]);
-        vec2 albedoBMetal = unpackHalf2x16(surfaces[w + kStreamingWordAlbedoBMetal]);
-        vec2 emissiveRg = unpackHalf2x16(surfaces[w + kStreamingWordEmissiveRg]);
-        vec2 emissiveBRoughness = unpackHalf2x16(surfaces[w + kStreamingWordEmissiveBRoughness]);
+        vec2 albedoRg = unpackHalf2x16Exact(surfaces[w + kStreamingWordAlbedoRg]);
+        vec2 albedoBMetal = unpackHalf2x16Exact(surfaces[w + kStreamingWordAlbedoBMetal]);
+        vec2 emissiveRg = unpackHalf2x16Exact(surfaces[w + kStreamingWordEmissiveRg]);
+        vec2 emissiveBRoughness = unpackHalf2x16Exact(surfaces[w + kStreamingWordEmissiveBRoughness]);
         SurfaceInputs surface;
         surface.normal = decodeOctahedral(unpackSnorm2x16(surfaces[w + kStreamingWordNormal]));
         surface.albedo = vec3(albedoRg, albedoBMetal.x);
