@@ -431,9 +431,9 @@ def main(argv):
     except Refused as e:
         print(f"results-page: {e}", file=sys.stderr)
         return 1
-    except OSError as e:
+    except OSError as e:  # a file named on the command line that cannot be read or written
         print(f"results-page: {e}", file=sys.stderr)
-        return 1
+        return 2
 
 
 if __name__ == "__main__":
