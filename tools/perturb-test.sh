@@ -1,34 +1,36 @@
 #!/usr/bin/env bash
-# Proof that the golden suite can fail (issue 17): builds test_golden twice with a deliberate
-# shader error (AGAA_TEST_PERTURB, top-level CMakeLists.txt), runs the golden test against the
-# stored images and asserts what it must catch. Both variants reuse one build folder, the plain
-# one of tools/test.sh ($AGAA_BUILD_DIR, default build/test; configured as tools/test.sh does when
-# it does not exist yet): reconfigured per variant, it recompiles the shaders and only the sources
-# that embed a shader whose SPIR-V changed, then relinks test_golden; on exit (also on failure) it
-# is reconfigured with AGAA_TEST_PERTURB=none and test_golden rebuilt, so it is left a plain build.
-#   brdf      every BRDF 1 % darker: the reference, no-AA, Simple/Complex and both AGAA paths
-#             fail on every built-in scene (they are all lit);
-#   metadata  sample 0's aggregate-id bit flipped in every pixel (c >= 2): every AGAA c = 2 and
-#             c = 4 golden at n = 4 and 8 of the built-in scenes fails, and every golden the
-#             metadata cannot touch (reference, no-AA, FXAA, Simple/Complex, AGAA c = 1) still
-#             passes. (At n = 32 a flat pixel may already hold two aggregates of one plane, lit
-#             alike: moving sample 0 between them changes the image by rounding only, measured
-#             on plane: 3 to 5 pixels by at most 2.5e-4; so n = 32 is reported, not required.)
-# Only the built-in scenes' goldens run (what both checks are about; the hard and glTF scenes'
-# goldens would add half the stage's time and no claim).
-# Exit status 0 when both are caught; it prints how many goldens each variant failed.
-#   tools/perturb-test.sh [brdf|metadata]...
+# Proof that the golden suite can fail (issues 17 and 37): builds test_golden with a deliberate
+# shader error (AGAA_TEST_PERTURB, top-level CMakeLists.txt), runs every golden against the stored
+# images and asserts what each variant must catch:
+#   brdf     every BRDF 1 % darker: every golden whose pixels the change reaches at all fails;
+#   methods  one error in each method family's own logic (AGAA: sample 0's aggregate-id bit
+#            flipped; FXAA: the end-of-edge blend lost; SBAA and streaming: no merge;
+#            Simple/Complex: every pixel simple): every FXAA, SBAA, streaming and Simple/Complex
+#            golden of the built-in scenes but plane (flat: nothing to merge, classify or blend)
+#            fails, and every AGAA c = 2 and 4 golden at n = 4 and 8 of the built-in scenes; every
+#            golden no error can reach (reference, no-AA, AGAA c = 1) is still bit for bit its own.
+#            (At n = 32 a flat pixel may already hold two aggregates of one plane, lit alike:
+#            moving sample 0 between them changes plane's image by rounding only.)
+#   scene    every vertex 1/16 pixel right and the constant sky 1 % darker, run on the scenes
+#            that hold a golden neither brdf nor methods failed (the emissive strands on black,
+#            the sky seen alone).
+# With all three run, every golden must have failed under one of them, or be black (no light
+# reaches the camera: no perturbation of shading can move it; any light at all fails it).
+# Each variant rebuilds test_golden in the plain build folder of tools/test.sh ($AGAA_BUILD_DIR,
+# default build/test; configured as tools/test.sh does when it does not exist yet): only the
+# shaders and the sources that embed a shader whose SPIR-V changed recompile. On exit (also on
+# failure) the folder is reconfigured with AGAA_TEST_PERTURB=none and test_golden rebuilt.
+# Exit status 0 when everything is caught; each variant's per-golden numbers are kept in
+# <build>/perturb-results-<variant>.txt.
+#   tools/perturb-test.sh [brdf|methods|scene]...
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
 cd "$root"
 lvp="$(ls /usr/share/vulkan/icd.d/lvp_icd.*.json 2>/dev/null | head -n1)"
 export VK_ICD_FILENAMES="${VK_ICD_FILENAMES:-$lvp}"
 variants=("$@")
-[ ${#variants[@]} -gt 0 ] || variants=(brdf metadata)
-# glints is not in the proof: a 1 % BRDF change moves its AGAA goldens (a dark ball of few
-# highlights) by display RMSE 2.5e-5 to 3.7e-5, under the golden threshold of 1e-4, although 300
-# to 840 of their pixels change (measured with glints in this list; issue 37's per-pixel metric).
-builtins="furball metal foliage bamboo railings plane default spikes"
+[ ${#variants[@]} -gt 0 ] || variants=(brdf methods scene)
+builtins="furball metal foliage bamboo railings default spikes glints" # plane apart (above)
 build="${AGAA_BUILD_DIR:-build/test}"
 case "$build" in /*) ;; *) build="$root/$build" ;; esac
 tmp="$(mktemp -d)"
@@ -48,13 +50,31 @@ check() { # check DESCRIPTION COUNT: COUNT must be 0
     fail=1
   fi
 }
+count() { grep -cE "$1" "$2" || true; }
+# The scenes holding a golden that no variant so far failed, as a gtest filter ('' when none).
+uncaught_filter() {
+  cat "$tmp"/*.result 2>/dev/null | sed -n 's/^\([^:]*\):.* FAIL$/\1/p' | LC_ALL=C sort -u >"$tmp/caught"
+  cut -d: -f1 "$tmp/brdf.result" | LC_ALL=C sort -u | LC_ALL=C comm -23 - "$tmp/caught" | cut -d/ -f1 | uniq |
+    sed 's/-/_/g; s|^|Every/Golden.*/|' | paste -sd: -
+}
 for variant in "${variants[@]}"; do
+  case "$variant" in brdf | methods | scene) ;; *)
+    echo "perturb-test: unknown variant '$variant': allowed values are brdf, methods, scene" >&2
+    exit 2 ;;
+  esac
+  filter="*"
+  if [ "$variant" = scene ] && [ -f "$tmp/brdf.result" ] && [ -f "$tmp/methods.result" ]; then
+    filter="$(uncaught_filter)"
+    if [ -z "$filter" ]; then
+      echo "perturb-test: scene: every golden already failed; not run"
+      continue
+    fi
+  fi
   start=$SECONDS
   cmake -S . -B "$build" -DAGAA_TEST_PERTURB="$variant" >/dev/null
   cmake --build "$build" --target test_golden -j"$(nproc)" >/dev/null
   echo "perturb-test: $variant: rebuilt test_golden in $((SECONDS - start)) s"
-  filter=""
-  for scene in $builtins; do filter="$filter${filter:+:}Every/Golden.*/$scene"; done
+  start=$SECONDS
   for shard in 0 1; do
     GTEST_TOTAL_SHARDS=2 GTEST_SHARD_INDEX=$shard "$build/tests/golden/test_golden" --gtest_filter="$filter" \
       >"$tmp/$variant.$shard" 2>&1 &
@@ -63,28 +83,41 @@ for variant in "${variants[@]}"; do
   for job in $(jobs -p); do
     wait "$job" || status=1
   done
-  grep -h '^\[ golden \]' "$tmp/$variant.0" "$tmp/$variant.1" | sed 's/^\[ golden \] //' | LC_ALL=C sort >"$tmp/$variant"
-  cp "$tmp/$variant" "$build/perturb-results-$variant.txt" # every golden's numbers, for the record
-  total=$(wc -l <"$tmp/$variant")
-  failed=$(grep -c ' FAIL$' "$tmp/$variant" || true)
-  echo "perturb-test: $variant: $failed of $total goldens fail"
+  result="$tmp/$variant.result"
+  grep -h '^\[ golden \]' "$tmp/$variant.0" "$tmp/$variant.1" | sed 's/^\[ golden \] //' | LC_ALL=C sort >"$result"
+  cp "$result" "$build/perturb-results-$variant.txt" # every golden's numbers, for the record
+  total=$(wc -l <"$result")
+  echo "perturb-test: $variant: $(count ' FAIL$' "$result") of $total goldens fail ($((SECONDS - start)) s)"
   check "$variant: the golden test did not fail" "$((1 - status))"
   check "$variant: no golden ran" "$((total == 0))"
-  for scene in $builtins; do
-    case "$variant" in
-      brdf)
-        missed=$(grep -E "^$scene/(reference|noaa|simple-complex|agaa-accumulate|agaa-samples)-" "$tmp/$variant" | grep -c ' PASS$' || true)
-        check "brdf: $scene goldens the 1 % BRDF change did not fail" "$missed" ;;
-      metadata)
-        missed=$(grep -E "^$scene/agaa-[a-z]+-n[48]-c[24]:" "$tmp/$variant" | grep -c ' PASS$' || true)
-        check "metadata: $scene AGAA c >= 2 goldens the flipped bit did not fail" "$missed" ;;
-    esac
-  done
-  if [ "$variant" = metadata ]; then
-    wrong=$(grep -vE "^[^/]+/agaa-[a-z]+-n[0-9]+-c[24]:" "$tmp/$variant" | grep -c ' FAIL$' || true)
-    check "metadata: goldens the metadata cannot reach failed" "$wrong"
-  fi
-  echo "perturb-test: $variant: the goldens that still pass are listed in $build/perturb-results-$variant.txt"
-  grep ' PASS$' "$tmp/$variant" | cut -d: -f1 | cut -d/ -f1 | uniq -c | sed 's/^/  still passing, per scene: /' || true
+  case "$variant" in
+    brdf)
+      check "brdf: goldens the 1 % BRDF change reached that still pass" \
+        "$(grep ' PASS$' "$result" | grep -vc ' 0 pixels differ' || true)" ;;
+    methods)
+      check "methods: reference, no-AA or AGAA c = 1 goldens changed" \
+        "$(grep -E '^[^/]+/(reference|noaa)-|^[^/]+/agaa-[a-z]+-n[0-9]+-c1:' "$result" | grep -vc ' 0 pixels differ' || true)"
+      for scene in $builtins plane; do
+        check "methods: $scene AGAA c >= 2 goldens at n = 4, 8 that still pass" \
+          "$(count "^$scene/agaa-[a-z]+-n[48]-c[24]:.* PASS$" "$result")"
+      done
+      for scene in $builtins; do
+        check "methods: $scene FXAA, SBAA, streaming or Simple/Complex goldens that still pass" \
+          "$(count "^$scene/(fxaa|sbaa|streaming|simple-complex)-.* PASS$" "$result")"
+      done ;;
+  esac
+  echo "perturb-test: $variant: still passing, per scene:"
+  grep ' PASS$' "$result" | cut -d/ -f1 | uniq -c | sed 's/^/  /' || true
 done
+if [ -f "$tmp/brdf.result" ] && [ -f "$tmp/methods.result" ]; then
+  # Every golden failed under some variant, unless it is black.
+  uncaught="$(cut -d: -f1 "$tmp/brdf.result" | LC_ALL=C sort -u | LC_ALL=C comm -23 - \
+    <(cat "$tmp"/*.result | sed -n 's/^\([^:]*\):.* FAIL$/\1/p' | LC_ALL=C sort -u))"
+  black="$(grep -h ', golden black' "$tmp/brdf.result" | cut -d: -f1 || true)"
+  missed="$(LC_ALL=C comm -23 <(echo "$uncaught" | sed '/^$/d') <(echo "$black" | sed '/^$/d'))"
+  echo "perturb-test: $(echo "$black" | sed '/^$/d' | wc -l) black goldens (no light reaches the camera):" \
+    "$(echo "$black" | cut -d/ -f1 | uniq | paste -sd' ' -)"
+  [ -z "$missed" ] || echo "$missed" | sed 's/^/  no variant failed: /' >&2
+  check "goldens no variant failed, not black" "$(echo "$missed" | sed '/^$/d' | wc -l)"
+fi
 exit "$fail"

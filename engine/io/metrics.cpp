@@ -186,6 +186,25 @@ double percentileAbsError(const ImageF& a, const ImageF& b, double p) {
     return errors[rank - 1];
 }
 
+double shareAboveRelativeError(const ImageF& a, const ImageF& b, double bound, double floor) {
+    if (!(bound >= 0.0) || !std::isfinite(bound) || !(floor > 0.0) || !std::isfinite(floor)) {
+        throw IoError(
+            "shareAboveRelativeError: bound must be finite and >= 0 and floor finite and > 0, got " +
+            std::to_string(bound) + " and " + std::to_string(floor));
+    }
+    checkPair("shareAboveRelativeError", a, b);
+    size_t above = 0;
+    for (size_t i = 0; i < pixelCount(a); ++i) {
+        double e = 0.0;
+        for (size_t c = 0; c < 3; ++c) {
+            const double x = a.rgba[4 * i + c], y = b.rgba[4 * i + c];
+            e = std::max(e, std::abs(x - y) / std::max({std::abs(x), std::abs(y), floor}));
+        }
+        above += e > bound ? 1 : 0;
+    }
+    return double(above) / double(pixelCount(a));
+}
+
 ImageF errorHeatmap(const ImageF& a, const ImageF& b, float scale) {
     if (!(scale > 0.0f) || !std::isfinite(scale)) {
         throw IoError("errorHeatmap: scale must be finite and > 0, got " + std::to_string(scale));

@@ -31,6 +31,11 @@ double ssim(const ImageF& a, const ImageF& b);
 // (p = 0 gives the minimum, p = 100 the maximum). p in [0, 100].
 double percentileAbsError(const ImageF& a, const ImageF& b, double p);
 
+// The share of pixels (0 to 1) whose relative error max over R, G, B of
+// |a - b| / max(|a|, |b|, floor) is greater than bound >= 0; floor > 0 keeps black pixels finite.
+// Unlike an absolute error it weighs a dark pixel's change like a bright one's.
+double shareAboveRelativeError(const ImageF& a, const ImageF& b, double bound, double floor);
+
 // Per-pixel error (the e of percentileAbsError) times scale, clamped to [0,1], on a colour ramp:
 // 0 black -> 0.25 blue -> 0.5 red -> 0.75 yellow -> 1 white, linear between stops; alpha 1.
 // The result is already display-encoded: save it with quantizeToU8 + writePng, not toneMapToSrgb8.

@@ -92,11 +92,14 @@ std::string machine(const eng::vk::Device& device) {
 }
 
 std::string describe(const agaa::golden::GoldenError& e) {
-    char line[160];
-    std::snprintf(line, sizeof line, "display RMSE %.3g, p%.0f %.3g, max %.3g, %zu pixels differ", e.rmse,
-                  agaa::golden::GoldenThresholds{}.percentile, e.percentileError, e.maxError,
-                  e.differingPixels);
-    return line;
+    const agaa::golden::GoldenThresholds t;
+    char line[240];
+    std::snprintf(
+        line, sizeof line,
+        "display RMSE %.3g, p%.0f %.3g, max %.3g, %.2f %% of pixels over %.2g %% relative, %zu pixels differ",
+        e.rmse, t.percentile, e.percentileError, e.maxError, 100.0 * e.shareOverRelative,
+        100.0 * t.relativeBound, e.differingPixels);
+    return line + std::string(e.goldenBlack ? ", golden black" : "");
 }
 
 class Golden : public ::testing::TestWithParam<GoldenScene> {};
@@ -152,8 +155,10 @@ TEST_P(Golden, MatchesStoredImages) {
         eng::io::writePng(out.string() + ".heatmap.png", eng::io::quantizeToU8(heat));
         ADD_FAILURE() << stem << " differs from its golden: " << describe(e) << " (thresholds: RMSE "
                       << agaa::golden::GoldenThresholds{}.rmse << ", p99 "
-                      << agaa::golden::GoldenThresholds{}.percentileError
-                      << ")\n  golden:  " << (goldenDir / (stem + ".png")).string()
+                      << agaa::golden::GoldenThresholds{}.percentileError << ", "
+                      << 100.0 * agaa::golden::GoldenThresholds{}.relativeShare << " % of pixels over "
+                      << 100.0 * agaa::golden::GoldenThresholds{}.relativeBound
+                      << " % relative)\n  golden:  " << (goldenDir / (stem + ".png")).string()
                       << "\n  actual:  " << out.string() << ".actual.png (.exr)\n  heatmap: " << out.string()
                       << ".heatmap.png (error x20: 0.05 is white)\n  machine: " << machine(*device);
     }

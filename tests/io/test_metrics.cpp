@@ -208,6 +208,32 @@ TEST(PercentileAbsError, UniformHundredValues) {
     EXPECT_EQ(percentileAbsError(a, b, 99.5), 100.0 / 128.0) << "ceil(99.5) = 100";
 }
 
+TEST(ShareAboveRelativeError, WeighsDarkAndBrightPixelsAlike) {
+    // Relative errors (max over RGB): 1 % on a bright pixel, 1 % on a dark one, 0.1 % on a mid one,
+    // an absolute 1e-7 on black (under the floor 1e-4: 1e-3 relative), and none.
+    const ImageF a = makeGrey(5, 1, 0.0f);
+    ImageF b = a, c = a;
+    setPixel(b, 0, 0, {0.8f, 0.8f, 0.8f, 1.0f});
+    setPixel(c, 0, 0, {0.8f, 0.808f, 0.8f, 1.0f});
+    setPixel(b, 1, 0, {0.002f, 0.001f, 0.003f, 1.0f});
+    setPixel(c, 1, 0, {0.002f, 0.001f, 0.00303f, 1.0f});
+    setPixel(b, 2, 0, {0.5f, 0.5f, 0.5f, 1.0f});
+    setPixel(c, 2, 0, {0.5005f, 0.5f, 0.5f, 0.0f}); // alpha must be ignored
+    setPixel(c, 3, 0, {0.0f, 1e-7f, 0.0f, 1.0f});
+    EXPECT_EQ(shareAboveRelativeError(b, c, 0.005, 1e-4), 2.0 / 5.0) << "the 1 % pixels, bright and dark";
+    EXPECT_EQ(shareAboveRelativeError(c, b, 0.005, 1e-4), 2.0 / 5.0) << "symmetric";
+    EXPECT_EQ(shareAboveRelativeError(b, c, 0.0005, 1e-4), 4.0 / 5.0)
+        << "and the 0.1 % pixel and black's 1e-3";
+    EXPECT_EQ(shareAboveRelativeError(b, c, 0.02, 1e-4), 0.0);
+    EXPECT_EQ(shareAboveRelativeError(a, a, 0.0, 1e-4), 0.0) << "black against black: nothing over any bound";
+    EXPECT_THROW(shareAboveRelativeError(b, c, -1e-9, 1e-4), IoError);
+    EXPECT_THROW(shareAboveRelativeError(b, c, 0.01, 0.0), IoError) << "a zero floor divides 0 by 0";
+    EXPECT_THROW(shareAboveRelativeError(b, c, std::nan(""), 1e-4), IoError);
+    c.rgba[2] = std::numeric_limits<float>::quiet_NaN();
+    EXPECT_THROW(shareAboveRelativeError(b, c, 0.01, 1e-4), IoError)
+        << "a NaN pixel is neither over nor under";
+}
+
 TEST(PercentileAbsError, RefusesPOutsideZeroToHundred) {
     const ImageF a = makeGrey(2, 2, 0.0f);
     EXPECT_THROW(percentileAbsError(a, a, -1.0), IoError);

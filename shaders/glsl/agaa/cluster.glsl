@@ -77,7 +77,7 @@ void main() {
     }
     uint ids[kMaxSamples];
     uint count = clusterSamples(n, c, kDistance, agaa.clustering.y, px, py, pz, nx, ny, nz, model, valid, ids);
-#ifdef AGAA_TEST_PERTURB_METADATA
+#ifdef AGAA_TEST_PERTURB_METHODS
     if (c > 1u) ids[0] ^= 1u; // tools/perturb-test.sh: metadata bit 0 (sample 0's aggregate id) flipped
 #endif
     const uint words = (kSamples * metadataBits(kAggregates) + 31u) / 32u;

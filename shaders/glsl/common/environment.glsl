@@ -97,6 +97,9 @@ vec3 environmentLighting(SurfaceInputs s, vec3 V, float roughness) {
 // What an uncovered sample of `pixel` sees, before exposure: the environment on the pixel
 // centre's ray in every method (the map is far smoother than a pixel), else the constant sky.
 vec3 skyRadiance(ivec2 pixel) {
+#ifdef AGAA_TEST_PERTURB_SCENE
+    if (kEnvironment == 0u) return 0.99 * frame.skyRadiance.rgb; // tools/perturb-test.sh: the sky 1 % darker
+#endif
     if (kEnvironment == 0u) return frame.skyRadiance.rgb;
     vec3 ray = viewPositionAtDistance(vec2(pixel) + 0.5, 1.0, frame.extent, frame.projParams);
     return environmentRadiance(environmentDirection(normalize(ray)), 0.0);

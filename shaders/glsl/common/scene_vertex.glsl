@@ -14,6 +14,9 @@ invariant gl_Position;
 vec4 sceneClipPosition(vec3 worldPosition, uint layer, FrameConstants frame) {
     vec4 clip = frame.viewProj * vec4(worldPosition, 1.0);
     clip.xy += frame.layerOffsets[layer].xy * 2.0 * frame.extent.zw * clip.w;
+#ifdef AGAA_TEST_PERTURB_SCENE
+    clip.x += 0.0625 * 2.0 * frame.extent.z * clip.w; // tools/perturb-test.sh: every vertex 1/16 pixel right
+#endif
     return clip;
 }
 #endif

@@ -138,6 +138,9 @@ void main() {
     bool nearerN = dstN < dstP;
     bool goodSpan = ((nearerN ? lumaEndN : lumaEndP) < 0.0) != centreBelow;
     float pixelOffset = -min(dstN, dstP) / (dstN + dstP) + 0.5;
+#ifdef AGAA_TEST_PERTURB_METHODS
+    goodSpan = false; // tools/perturb-test.sh: the end-of-edge search's blend lost
+#endif
     float offset = max(goodSpan ? pixelOffset : 0.0, subpixBlend);
     ivec2 neighbour = pixel + (negativeSide ? -across : across);
     vec3 color = colorM + (colorAt(neighbour) - colorM) * offset;

@@ -53,7 +53,11 @@ void main() {
     uint count = 0u;
     for (uint g = 0u; g < groups; ++g) {
         uint target = count;
+#ifdef AGAA_TEST_PERTURB_METHODS
+        if (false) { // tools/perturb-test.sh: no primitive merges into an earlier surface
+#else
         if (pc.params.counts.y != 0u) {
+#endif
             float tb = viewDistanceFromDepth(SBAA_FETCH(gDepth, pixel, groupRep[g]).r, frame.depthParams.x,
                                              frame.depthParams.y);
             vec3 nb = sbaaGeometricNormal(pixel, groupRep[g]);

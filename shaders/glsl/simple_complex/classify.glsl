@@ -29,6 +29,9 @@ float planeDepthTolerance(vec2 pixelPos0, float t0, vec3 n0, float slopeScale) {
 
 // Sky samples differ from geometry; two sky samples are equal.
 bool isComplexPixel(ivec2 pixel, float minNormalCos, float slopeScale) {
+#ifdef AGAA_TEST_PERTURB_METHODS
+    return false; // tools/perturb-test.sh: every pixel simple, shaded once
+#endif
     uint n = frame.counts.x;
     float d0 = gbufferDepth(pixel, 0u);
     bool sky0 = isSky(d0);

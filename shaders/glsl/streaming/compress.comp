@@ -80,6 +80,9 @@ Surface fragmentOf(ivec2 pixel, uint rep, uint mask) {
 
 // Section 3.1: all three conditions.
 bool canMerge(Surface s, Surface f) {
+#ifdef AGAA_TEST_PERTURB_METHODS
+    return false; // tools/perturb-test.sh: no fragment merges into a surface
+#endif
     return (s.coverage & f.coverage) == 0u && zMin(s) <= zMax(f) && zMin(f) <= zMax(s) &&
            dot(s.normal, f.normal) > pc.params.merge.x;
 }
