@@ -4,6 +4,7 @@
 //
 // Exit codes: 0 success; 2 bad arguments or bad input; 3 the device lacks something required.
 
+#include "agaa/method_settings.h"
 #include "agaa/methods.h"
 #include "engine/frame/exposure.h"
 #include "engine/frame/sample_pattern.h"
@@ -62,102 +63,65 @@ struct Options {
     std::optional<std::string> truthCache;
 };
 
-const char* kUsage =
-    "usage: agaa-render [--scene FILE | --builtin NAME] [--method NAME] [--samples N] [--aggregates C]\n"
-    "                   [--surfaces S] [--streaming-normal-angle DEG]\n"
-    "                   [--width W] [--height H] [--camera I] [--exposure auto|E] [--ev100 V] [--out PREFIX] "
-    "[--debug "
-    "VIEW]\n"
-    "                   [--lights auto|scene|fill|default|both] [--extra-lights K] [--environment FILE.exr]\n"
-    "                   [--stats FILE.json] [--graph FILE.dot] [--frames K] [--warmup K]\n"
-    "                   [--characteristic-length K] [--seed-threshold T] [--agaa-position mean|centre]\n"
-    "                   [--agaa-ndf auto|sggx|toksvig] [--agaa-lighting auto|compact|registers]\n"
-    "                   [--agaa-routing samples|fragment] [--agaa-atomics auto|32|64]\n"
-    "                   [--agaa-subgroup-reduce auto|on|off] [--agaa-distance position|plane]\n"
-    "                   [--agaa-generation auto|accumulate|samples|coverage] [--sample-rate-shading on|off]\n"
-    "                   [--curvature-roughness on|off]\n"
-    "                   [--effects scene|all] [--shadow-taps N] [--shadow-footprint F] [--shadow-map-size N] "
-    "[--shadow-casters scene|none]\n"
-    "                   [--truth K] [--truth-cache DIR]\n"
-    "                   [--validate] [--device NAME] [--caps] [--help]\n"
-    "\n"
-    "  --scene FILE      glTF 2.0 scene (.gltf or .glb)\n"
-    "  --builtin NAME    procedural scene (default: 'default')\n"
-    "  --method NAME     anti-aliasing method (default: reference)\n"
-    "  --samples N       visibility samples per pixel: 1, 4 native; 8, 16, 32 emulated (default 8)\n"
-    "  --aggregates C    AGAA aggregates per pixel, 1..4 (default 2)\n"
-    "  --surfaces S      surfaces kept per pixel: sbaa 1..6 (default 4), streaming 1..3 (default 3)\n"
-    "  --streaming-normal-angle DEG  streaming's merge threshold on normals, degrees in (0, 90]\n"
-    "                    (default 45: the paper's pi/4; the authors' code uses cos = 0.785, about 38.2)\n"
-    "  --width/--height  image size in pixels, 1..8192 (default 256x256)\n"
-    "  --camera I        scene camera index (default 0)\n"
-    "  --exposure auto|E  linear exposure E (1e-6..1e6), or auto: metered from the log-average luminance\n"
-    "                    of a no-AA frame's covered pixels (EV100 = log2(L S / K), S = 100, K = 12.5);\n"
-    "                    default: the scene's own (built-in scenes: 1), else auto\n"
-    "  --ev100 V         a physical camera's exposure value at ISO 100, -20..30 (sunny 16: 15):\n"
-    "                    exposure = 1 / (1.2 * 2^V)\n"
-    "  --lights auto|scene|fill|default|both  scene: the file's lights only; fill: them and a sky at\n"
-    "                    1/4 of their illuminance; default: a 100 klux sun with shadows and a procedural\n"
-    "                    sky instead; both: all of them; auto (default): fill when the scene has lights,\n"
-    "                    else default\n"
-    "  --extra-lights K  K generated point lights, 0..1000 (default 0): a Halton (2, 3, 5) sequence in\n"
-    "                    the bounds grown by a tenth of their diagonal, each lighting its neighbourhood\n"
-    "                    (half the mean spacing) like the key light; no shadows\n"
-    "  --environment FILE.exr  equirectangular (2:1) environment lighting every method (diffuse SH +\n"
-    "                    pre-filtered specular) and shown as the sky; replaces the default sky and its sun\n"
-    "  --debug VIEW      a method's debug view instead of the lit frame (agaa: aggregates; simple-complex: "
-    "complex)\n"
-    "  --characteristic-length K, --seed-threshold T\n"
-    "                    AGAA clustering (Equation 1): k in metres (default 0.1), t (default 0.05)\n"
-    "  --agaa-ndf auto|sggx|toksvig  AGAA normal distribution per aggregate: anisotropic SGGX with\n"
-    "                   the two-point tone-mapped resolve, the paper's isotropic Toksvig, or auto\n"
-    "                   (default): SGGX when glossy metals are at least half of the drawn materials,\n"
-    "                   else Toksvig\n"
-    "  --agaa-lighting auto|compact|registers  AGAA lighting schedule: further aggregates of a tile\n"
-    "                    packed into a shared-memory list (compact), or each pixel shading its own\n"
-    "                    (registers); auto (default): compact for c >= 2 on GPUs, registers on CPU\n"
-    "                    devices such as lavapipe\n"
-    "  --agaa-routing samples|fragment  AGAA generation: each visible sample feeds its own aggregate\n"
-    "                    (default), or the whole fragment its first visible sample's (Algorithm 2)\n"
-    "  --agaa-atomics auto|32|64  AGAA generation atomics: 64-bit pairs of words where the device has\n"
-    "                    shaderBufferInt64Atomics (auto, default), or 32-bit words\n"
-    "  --agaa-subgroup-reduce auto|on|off  AGAA generation: sum the atomics of fragments that hit one\n"
-    "                    pixel across the subgroup first (auto: on for GPUs, off on CPU devices)\n"
-    "  --agaa-distance position|plane  AGAA clustering: Equation 1 (default), or the samples' distance\n"
-    "                    to each other's tangent plane (a flat surface stays one aggregate)\n"
-    "  --agaa-generation auto|accumulate|samples|coverage  AGAA generation path: the accumulation\n"
-    "                    kernel after a visibility prepass, or one per-sample G-buffer pass aggregated at\n"
-    "                    the top of each lighting tile (UE4); coverage routing needs mixed samples and\n"
-    "                    the sample-mask override and is not built (exit 3); auto (default): samples for\n"
-    "                    n <= 16, else accumulate\n"
-    "  --sample-rate-shading on|off  per-sample G-buffer fill at sample rate: materials and normal maps\n"
-    "                    supersampled (reference, simple-complex, AGAA samples path; default off)\n"
-    "  --curvature-roughness on|off  AGAA samples path: Kaplanyan curvature roughness in the fill pass\n"
-    "                    (max footprint 0.3, boost 2.0; default off)\n"
-    "  --agaa-position mean|centre  AGAA shading point: mean of the samples (default) or UE4's\n"
-    "                    mean depth on the pixel-centre ray\n"
-    "  --effects scene|all  passes and shader variants from the scene's features (default), or every\n"
-    "                    effect forced on (shadows, alpha-to-coverage, emissive, normal maps, light "
-    "culling)\n"
-    "  --shadow-taps N   AGAA shadow taps inside each aggregate's footprint, 1..8 (default 4)\n"
-    "  --shadow-footprint adaptive|statistics|samples  AGAA shadow taps along the aggregate's depth\n"
-    "                    variance (statistics), at its own sample positions (samples), or along the\n"
-    "                    variance and, where those taps disagree, at every one of its samples\n"
-    "                    (adaptive, the default)\n"
-    "  --shadow-map-size N  texels per side of each shadow map, 64..4096 (default 1024)\n"
-    "  --shadow-casters scene|none  none: the scene's lights cast no shadows (a scene without shadows)\n"
-    "  --truth K         the converged ground truth instead of --method: the reference at n = 32 with\n"
-    "                    materials shaded per sample, at K times the width and height in K^2 tiles,\n"
-    "                    each K x K block averaged (32 K^2 samples a pixel), K in 1..16; prints its\n"
-    "                    own error estimate (its two checkerboard halves' display RMSE / 2)\n"
-    "  --truth-cache DIR  keep truths in DIR, keyed by scene, view, lights, exposure and binary\n"
-    "  --out PREFIX      writes PREFIX.exr (linear HDR) and PREFIX.png (tone-mapped sRGB)\n"
-    "  --stats FILE      per-pass GPU times, storage, shading events, validation errors as JSON\n"
-    "  --graph FILE      compiled render graph as Graphviz DOT (and FILE.json)\n"
-    "  --frames K        timed frames, per-pass times are medians (default 1); --warmup K untimed first\n"
-    "  --validate        Khronos validation layer on (also AGAA_VALIDATE=1)\n"
-    "  --device NAME     pick the Vulkan device whose name contains NAME\n"
-    "  --caps            print the device's capabilities and exit\n";
+// The synopsis (the README's, checked by cli.readme_synopsis) and the flags' help: the method
+// settings come from their one declaration (agaa/method_settings.h).
+std::string usage() {
+    constexpr size_t kIndent = 19, kWidth = 100; // "usage: agaa-render "
+    const std::string pad(kIndent, ' ');
+    return "usage: agaa-render [--scene FILE | --builtin NAME] [--method NAME] [--width W] [--height H]\n" +
+           pad + "[--camera I] [--exposure auto|E] [--ev100 V] [--out PREFIX] [--stats FILE.json]\n" + pad +
+           "[--lights auto|scene|fill|default|both] [--extra-lights K]\n" + pad +
+           "[--environment FILE.exr] [--shadow-casters scene|none] [--graph FILE.dot]\n" + pad +
+           "[--frames K] [--warmup K] [--truth K] [--truth-cache DIR] [--validate]\n" + pad +
+           "[--device NAME] [--caps] [--help]\n" + agaa::methodOptionsSynopsis(kIndent, kWidth) +
+           "\n"
+           "\n"
+           "  --scene FILE      glTF 2.0 scene (.gltf or .glb)\n"
+           "  --builtin NAME    procedural scene (default: 'default')\n"
+           "  --method NAME     anti-aliasing method (default: reference)\n"
+           "  --width/--height  image size in pixels, 1..8192 (default 256x256)\n"
+           "  --camera I        scene camera index (default 0)\n"
+           "  --exposure auto|E  linear exposure E (1e-6..1e6), or auto: metered from the log-average "
+           "luminance\n"
+           "                    of a no-AA frame's covered pixels (EV100 = log2(L S / K), S = 100, K = "
+           "12.5);\n"
+           "                    default: the scene's own (built-in scenes: 1), else auto\n"
+           "  --ev100 V         a physical camera's exposure value at ISO 100, -20..30 (sunny 16: 15):\n"
+           "                    exposure = 1 / (1.2 * 2^V)\n"
+           "  --lights auto|scene|fill|default|both  scene: the file's lights only; fill: them and a sky at\n"
+           "                    1/4 of their illuminance; default: a 100 klux sun with shadows and a "
+           "procedural\n"
+           "                    sky instead; both: all of them; auto (default): fill when the scene has "
+           "lights,\n"
+           "                    else default\n"
+           "  --extra-lights K  K generated point lights, 0..1000 (default 0): a Halton (2, 3, 5) sequence "
+           "in\n"
+           "                    the bounds grown by a tenth of their diagonal, each lighting its "
+           "neighbourhood\n"
+           "                    (half the mean spacing) like the key light; no shadows\n"
+           "  --environment FILE.exr  equirectangular (2:1) environment lighting every method (diffuse SH +\n"
+           "                    pre-filtered specular) and shown as the sky; replaces the default sky and "
+           "its sun\n"
+           "  --shadow-casters scene|none  none: the scene's lights cast no shadows (a scene without "
+           "shadows)\n"
+           "  --truth K         the converged ground truth instead of --method: the reference at n = 32 "
+           "with\n"
+           "                    materials shaded per sample, at K times the width and height in K^2 tiles,\n"
+           "                    each K x K block averaged (32 K^2 samples a pixel), K in 1..16; prints its\n"
+           "                    own error estimate (its two checkerboard halves' display RMSE / 2)\n"
+           "  --truth-cache DIR  keep truths in DIR, keyed by scene, view, lights, exposure and binary\n"
+           "  --out PREFIX      writes PREFIX.exr (linear HDR) and PREFIX.png (tone-mapped sRGB)\n"
+           "  --stats FILE      per-pass GPU times, storage, shading events, validation errors as JSON\n"
+           "  --graph FILE      compiled render graph as Graphviz DOT (and FILE.json)\n"
+           "  --frames K        timed frames, per-pass times are medians (default 1); --warmup K untimed "
+           "first\n"
+           "  --validate        Khronos validation layer on (also AGAA_VALIDATE=1)\n"
+           "  --device NAME     pick the Vulkan device whose name contains NAME\n"
+           "  --caps            print the device's capabilities and exit\n"
+           "\n"
+           "method settings (each names the methods that read it):\n" +
+           agaa::methodOptionsHelp(kWidth);
+}
 
 uint32_t parseUint(const std::string& flag, const std::string& value, uint32_t lo, uint32_t hi) {
     uint32_t v = 0;
@@ -179,17 +143,6 @@ float parseFloat(const std::string& flag, const std::string& value, float lo, fl
                       std::to_string(hi) + "]");
 }
 
-// `value` if it is one of `allowed`, else BadArgument naming the flag and the allowed values.
-std::string oneOf(const std::string& flag, const std::string& value,
-                  std::initializer_list<const char*> allowed) {
-    std::string names;
-    for (const char* name : allowed) {
-        if (value == name) return value;
-        names += std::string(names.empty() ? "" : ", ") + name;
-    }
-    throw BadArgument(flag + " '" + value + "' is not one of: " + names);
-}
-
 Options parse(int argc, char** argv) {
     Options o;
     auto& r = o.request;
@@ -199,7 +152,16 @@ Options parse(int argc, char** argv) {
             if (i + 1 >= argc) throw BadArgument(a + " needs a value");
             return argv[++i];
         };
-        if (a == "--help" || a == "-h")
+        const agaa::MethodOption* option =
+            a.rfind("--", 0) == 0 ? agaa::findMethodOption(a.substr(2)) : nullptr;
+        if (option) {
+            const std::string v = value();
+            try {
+                agaa::setMethodOption(r.settings, *option, v);
+            } catch (const std::invalid_argument& e) {
+                throw BadArgument(e.what());
+            }
+        } else if (a == "--help" || a == "-h")
             o.help = true;
         else if (a == "--scene")
             o.sceneFile = value();
@@ -208,68 +170,6 @@ Options parse(int argc, char** argv) {
             o.builtinGiven = true;
         } else if (a == "--method")
             r.method = value();
-        else if (a == "--samples") {
-            std::string v = value();
-            r.settings.samples = parseUint(a, v, 1, 32);
-            if (!eng::frame::isSupportedSampleCount(r.settings.samples))
-                throw BadArgument("--samples '" + v + "' is not supported (allowed: " +
-                                  eng::frame::supportedSampleCounts() + ")");
-        } else if (a == "--aggregates")
-            r.settings.aggregates = parseUint(a, value(), 1, 4);
-        else if (a == "--surfaces")
-            r.settings.surfaces = parseUint(a, value(), 1, 6);
-        else if (a == "--streaming-normal-angle")
-            r.settings.streamingNormalAngle = parseFloat(a, value(), 1e-3f, 90.0f);
-        else if (a == "--debug")
-            r.settings.debug = value();
-        else if (a == "--characteristic-length")
-            r.settings.characteristicLength = parseFloat(a, value(), 1e-6f, 1e6f);
-        else if (a == "--seed-threshold")
-            r.settings.seedThreshold = parseFloat(a, value(), 0.0f, 1e6f);
-        else if (a == "--agaa-position") {
-            std::string v = value();
-            if (v != "mean" && v != "centre")
-                throw BadArgument("--agaa-position '" + v + "' is not one of: mean, centre");
-            r.settings.pixelCentrePosition = v == "centre";
-        } else if (a == "--agaa-ndf") {
-            std::string v = value();
-            if (v != "auto" && v != "sggx" && v != "toksvig")
-                throw BadArgument("--agaa-ndf '" + v + "' is not one of: auto, sggx, toksvig");
-            r.settings.ndf = v;
-        } else if (a == "--agaa-lighting") {
-            r.settings.agaaLighting = oneOf(a, value(), {"auto", "compact", "registers"});
-        } else if (a == "--agaa-routing") {
-            r.settings.agaaRouting = oneOf(a, value(), {"samples", "fragment"});
-        } else if (a == "--agaa-atomics") {
-            r.settings.agaaAtomics = oneOf(a, value(), {"auto", "32", "64"});
-        } else if (a == "--agaa-subgroup-reduce") {
-            r.settings.agaaSubgroupReduce = oneOf(a, value(), {"auto", "on", "off"});
-        } else if (a == "--agaa-distance") {
-            r.settings.agaaDistance = oneOf(a, value(), {"position", "plane"});
-        } else if (a == "--agaa-generation") {
-            r.settings.agaaGeneration = oneOf(a, value(), {"auto", "accumulate", "samples", "coverage"});
-        } else if (a == "--sample-rate-shading") {
-            r.settings.sampleRateShading = oneOf(a, value(), {"on", "off"}) == "on";
-        } else if (a == "--curvature-roughness") {
-            r.settings.curvatureRoughness = oneOf(a, value(), {"on", "off"}) == "on";
-        } else if (a == "--effects") {
-            std::string v = value();
-            if (v != "scene" && v != "all")
-                throw BadArgument("--effects '" + v + "' is not one of: scene, all");
-            r.settings.effects.forceAll = v == "all";
-        } else if (a == "--shadow-taps")
-            r.settings.effects.shadowTaps = parseUint(a, value(), 1, 8);
-        else if (a == "--shadow-footprint") {
-            std::string v = value();
-            if (v != "adaptive" && v != "statistics" && v != "samples")
-                throw BadArgument("--shadow-footprint '" + v +
-                                  "' is not one of: adaptive, statistics, samples");
-            r.settings.effects.shadowFootprint =
-                v == "samples"      ? agaa::EffectSettings::ShadowFootprint::Samples
-                : v == "statistics" ? agaa::EffectSettings::ShadowFootprint::Statistics
-                                    : agaa::EffectSettings::ShadowFootprint::Adaptive;
-        } else if (a == "--shadow-map-size")
-            r.settings.effects.shadowMapSize = parseUint(a, value(), 64, 4096);
         else if (a == "--shadow-casters") {
             std::string v = value();
             if (v != "scene" && v != "none")
@@ -549,7 +449,7 @@ int main(int argc, char** argv) {
     try {
         Options o = parse(argc, argv);
         if (o.help) {
-            std::cout << kUsage << "\nmethods:\n";
+            std::cout << usage() << "\nmethods:\n";
             for (const auto& m : agaa::knownMethods())
                 std::cout << "  " << m.name << ": " << m.summary << "\n";
             std::cout << "built-in scenes:";

@@ -1,5 +1,6 @@
 #include "tools/harness/frame_renderer.h"
 
+#include "agaa/method_settings.h"
 #include "engine/frame/exposure.h"
 #include "engine/frame/readback.h"
 #include "engine/frame/sample_pattern.h"
@@ -60,19 +61,7 @@ FrameRenderer::~FrameRenderer() {
 }
 
 Technique& FrameRenderer::technique(const RenderRequest& r) {
-    std::string key =
-        r.method + "/" + std::to_string(r.settings.samples) + "/" + std::to_string(r.settings.aggregates) +
-        "/s" + std::to_string(r.settings.surfaces) + "/angle" +
-        std::to_string(r.settings.streamingNormalAngle) + "/" + r.settings.debug + "/" +
-        std::to_string(r.settings.characteristicLength) + "/" + std::to_string(r.settings.seedThreshold) +
-        (r.settings.pixelCentrePosition ? "/centre" : "") + "/" + r.settings.ndf + "/" +
-        r.settings.agaaLighting + "/" + r.settings.agaaRouting + "/" + r.settings.agaaAtomics + "/" +
-        r.settings.agaaSubgroupReduce + "/" + r.settings.agaaDistance + "/" + r.settings.agaaGeneration +
-        (r.settings.sampleRateShading ? "/srs" : "") + (r.settings.curvatureRoughness ? "/curvature" : "") +
-        "/breakdown" + std::to_string(r.settings.agaaBreakdown) + "/effects" +
-        (r.settings.effects.forceAll ? "-all" : "") + "/" + std::to_string(r.settings.effects.shadowMapSize) +
-        "/" + std::to_string(r.settings.effects.shadowTaps) + "/" +
-        std::to_string(uint32_t(r.settings.effects.shadowFootprint));
+    const std::string key = r.method + "/" + methodSettingsKey(r.settings);
     auto it = m_techniques.find(key);
     if (it == m_techniques.end())
         it = m_techniques.emplace(key, createTechnique(r.method, m_device, m_gpuScene, r.settings)).first;

@@ -1,0 +1,305 @@
+#include "agaa/method_settings.h"
+
+#include "engine/frame/sample_pattern.h"
+
+#include <algorithm>
+#include <charconv>
+#include <cstdio>
+#include <sstream>
+#include <stdexcept>
+
+namespace agaa {
+
+namespace {
+
+using Kind = MethodOption::Kind;
+using Footprint = EffectSettings::ShadowFootprint;
+
+std::string joined(const std::vector<std::string>& values, const char* separator) {
+    std::string out;
+    for (const std::string& v : values)
+        out += (out.empty() ? "" : separator) + v;
+    return out;
+}
+
+// A number as the key and `get` print it: shortest round-trip form.
+std::string numberText(double v) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.9g", v);
+    return text;
+}
+
+MethodOption choice(std::string name, std::vector<std::string> choices, std::string defaultText,
+                    std::string methods, std::string doc,
+                    std::function<void(MethodSettings&, const std::string&)> set,
+                    std::function<std::string(const MethodSettings&)> get) {
+    MethodOption o;
+    o.name = std::move(name);
+    o.syntax = joined(choices, "|");
+    o.kind = Kind::Choice;
+    o.choices = std::move(choices);
+    o.defaultText = std::move(defaultText);
+    o.methods = std::move(methods);
+    o.doc = std::move(doc);
+    o.set = std::move(set);
+    o.get = std::move(get);
+    return o;
+}
+
+MethodOption ranged(Kind kind, std::string name, std::string syntax, double lo, double hi,
+                    std::string defaultText, std::string methods, std::string doc,
+                    std::function<void(MethodSettings&, const std::string&)> set,
+                    std::function<std::string(const MethodSettings&)> get) {
+    MethodOption o;
+    o.name = std::move(name);
+    o.syntax = std::move(syntax);
+    o.kind = kind;
+    o.lo = lo;
+    o.hi = hi;
+    o.defaultText = std::move(defaultText);
+    o.methods = std::move(methods);
+    o.doc = std::move(doc);
+    o.set = std::move(set);
+    o.get = std::move(get);
+    return o;
+}
+
+// on|off <-> bool
+std::string onOff(bool v) {
+    return v ? "on" : "off";
+}
+
+const char* footprintName(Footprint f) {
+    return f == Footprint::Samples ? "samples" : f == Footprint::Statistics ? "statistics" : "adaptive";
+}
+
+std::vector<MethodOption> declareOptions() {
+    const auto count = [](const std::string& v) { return uint32_t(std::stoul(v)); };
+    const auto number = [](const std::string& v) { return std::stof(v); };
+    // A negative float means "the method's documented default" in MethodSettings.
+    const auto orDefault = [](float v) { return v < 0.0f ? std::string("default") : numberText(v); };
+    std::vector<MethodOption> o;
+    std::vector<std::string> sampleCounts;
+    for (uint32_t n = 1; n <= 32; ++n)
+        if (eng::frame::isSupportedSampleCount(n)) sampleCounts.push_back(std::to_string(n));
+    o.push_back(choice(
+        "samples", sampleCounts, "8", "all",
+        "visibility samples per pixel: 1 and 4 native, 8, 16 and 32 emulated by layered 4x",
+        [=](MethodSettings& s, const std::string& v) { s.samples = count(v); },
+        [](const MethodSettings& s) { return std::to_string(s.samples); }));
+    o.push_back(ranged(
+        Kind::Count, "aggregates", "C", 1, 4, "2", "agaa", "aggregates per pixel",
+        [=](MethodSettings& s, const std::string& v) { s.aggregates = count(v); },
+        [](const MethodSettings& s) { return std::to_string(s.aggregates); }));
+    o.push_back(ranged(
+        Kind::Count, "surfaces", "S", 1, 6, "sbaa 4, streaming 3", "sbaa, streaming",
+        "surfaces kept per pixel: sbaa 1..6, streaming 1..3",
+        [=](MethodSettings& s, const std::string& v) { s.surfaces = count(v); },
+        [](const MethodSettings& s) {
+            return s.surfaces ? std::to_string(s.surfaces) : std::string("default");
+        }));
+    o.push_back(ranged(
+        Kind::Number, "streaming-normal-angle", "DEG", 1e-3, 90.0, "45, the paper's pi/4", "streaming",
+        "the merge threshold on normals in degrees (the authors' code uses cos = 0.785, about 38.2)",
+        [=](MethodSettings& s, const std::string& v) { s.streamingNormalAngle = number(v); },
+        [=](const MethodSettings& s) { return orDefault(s.streamingNormalAngle); }));
+    o.push_back(ranged(
+        Kind::Number, "characteristic-length", "K", 1e-6, 1e6, "0.1", "agaa",
+        "clustering (Equation 1): the characteristic length k in metres",
+        [=](MethodSettings& s, const std::string& v) { s.characteristicLength = number(v); },
+        [=](const MethodSettings& s) { return orDefault(s.characteristicLength); }));
+    o.push_back(ranged(
+        Kind::Number, "seed-threshold", "T", 0.0, 1e6, "0.05", "agaa",
+        "clustering (Equation 1): the seed threshold t",
+        [=](MethodSettings& s, const std::string& v) { s.seedThreshold = number(v); },
+        [=](const MethodSettings& s) { return orDefault(s.seedThreshold); }));
+    o.push_back(choice(
+        "agaa-position", {"mean", "centre"}, "mean", "agaa",
+        "the shading point: the mean of the aggregate's samples, or UE4's mean depth on the pixel-centre ray",
+        [](MethodSettings& s, const std::string& v) { s.pixelCentrePosition = v == "centre"; },
+        [](const MethodSettings& s) { return std::string(s.pixelCentrePosition ? "centre" : "mean"); }));
+    o.push_back(choice(
+        "agaa-ndf", {"auto", "sggx", "toksvig"}, "auto", "agaa",
+        "the normal distribution per aggregate: anisotropic SGGX with the two-point tone-mapped resolve, "
+        "or the paper's isotropic Toksvig; auto: SGGX when glossy metals are at least half of the drawn "
+        "materials, else Toksvig",
+        [](MethodSettings& s, const std::string& v) { s.ndf = v; },
+        [](const MethodSettings& s) { return s.ndf; }));
+    o.push_back(choice(
+        "agaa-lighting", {"auto", "compact", "registers"}, "auto", "agaa",
+        "the lighting schedule: a tile's further aggregates packed into a shared-memory list (compact), "
+        "or each pixel shading its own (registers); auto: compact for c >= 2 on GPUs, registers on CPU "
+        "devices such as lavapipe",
+        [](MethodSettings& s, const std::string& v) { s.agaaLighting = v; },
+        [](const MethodSettings& s) { return s.agaaLighting; }));
+    o.push_back(choice(
+        "agaa-routing", {"samples", "fragment"}, "samples", "agaa",
+        "generation: each visible sample feeds its own aggregate, or the whole fragment its first visible "
+        "sample's (Algorithm 2)",
+        [](MethodSettings& s, const std::string& v) { s.agaaRouting = v; },
+        [](const MethodSettings& s) { return s.agaaRouting; }));
+    o.push_back(choice(
+        "agaa-atomics", {"auto", "32", "64"}, "auto", "agaa",
+        "generation atomics: 64-bit pairs of words where the device has shaderBufferInt64Atomics (auto), "
+        "or 32-bit words",
+        [](MethodSettings& s, const std::string& v) { s.agaaAtomics = v; },
+        [](const MethodSettings& s) { return s.agaaAtomics; }));
+    o.push_back(choice(
+        "agaa-subgroup-reduce", {"auto", "on", "off"}, "auto", "agaa",
+        "generation: sum the atomics of fragments that hit one pixel across the subgroup first; auto: on "
+        "for GPUs, off on CPU devices",
+        [](MethodSettings& s, const std::string& v) { s.agaaSubgroupReduce = v; },
+        [](const MethodSettings& s) { return s.agaaSubgroupReduce; }));
+    o.push_back(choice(
+        "agaa-distance", {"position", "plane"}, "position", "agaa",
+        "clustering: Equation 1, or the samples' distance to each other's tangent plane (a flat surface "
+        "stays one aggregate)",
+        [](MethodSettings& s, const std::string& v) { s.agaaDistance = v; },
+        [](const MethodSettings& s) { return s.agaaDistance; }));
+    o.push_back(choice(
+        "agaa-generation", {"auto", "accumulate", "samples", "coverage"}, "auto", "agaa",
+        "the generation path: the accumulation kernel after a visibility prepass, or one per-sample "
+        "G-buffer pass aggregated at the top of each lighting tile (UE4); coverage routing needs mixed "
+        "samples and the sample-mask override and is not built (exit 3); auto: samples for n <= 16, else "
+        "accumulate",
+        [](MethodSettings& s, const std::string& v) { s.agaaGeneration = v; },
+        [](const MethodSettings& s) { return s.agaaGeneration; }));
+    o.push_back(choice(
+        "sample-rate-shading", {"on", "off"}, "off", "reference, simple-complex, agaa",
+        "the per-sample G-buffer filled at sample rate: materials and normal maps supersampled",
+        [](MethodSettings& s, const std::string& v) { s.sampleRateShading = v == "on"; },
+        [](const MethodSettings& s) { return onOff(s.sampleRateShading); }));
+    o.push_back(choice(
+        "curvature-roughness", {"on", "off"}, "off", "agaa",
+        "the samples path: Kaplanyan curvature roughness in the fill pass (max footprint 0.3, boost 2.0)",
+        [](MethodSettings& s, const std::string& v) { s.curvatureRoughness = v == "on"; },
+        [](const MethodSettings& s) { return onOff(s.curvatureRoughness); }));
+    o.push_back(choice(
+        "effects", {"scene", "all"}, "scene", "all",
+        "passes and shader variants from the scene's features, or every effect forced on (shadows, "
+        "alpha-to-coverage, emissive, normal maps, light culling)",
+        [](MethodSettings& s, const std::string& v) { s.effects.forceAll = v == "all"; },
+        [](const MethodSettings& s) { return std::string(s.effects.forceAll ? "all" : "scene"); }));
+    o.push_back(ranged(
+        Kind::Count, "shadow-taps", "N", 1, 8, "4", "agaa", "shadow taps inside each aggregate's footprint",
+        [=](MethodSettings& s, const std::string& v) { s.effects.shadowTaps = count(v); },
+        [](const MethodSettings& s) { return std::to_string(s.effects.shadowTaps); }));
+    o.push_back(choice(
+        "shadow-footprint", {"adaptive", "statistics", "samples"}, "adaptive", "agaa",
+        "shadow taps along the aggregate's depth variance (statistics), at its own sample positions "
+        "(samples), or along the variance and, where those taps disagree, at every one of its samples "
+        "(adaptive)",
+        [](MethodSettings& s, const std::string& v) {
+            s.effects.shadowFootprint = v == "samples"      ? Footprint::Samples
+                                        : v == "statistics" ? Footprint::Statistics
+                                                            : Footprint::Adaptive;
+        },
+        [](const MethodSettings& s) { return std::string(footprintName(s.effects.shadowFootprint)); }));
+    o.push_back(ranged(
+        Kind::Count, "shadow-map-size", "N", 64, 4096, "1024", "all", "texels per side of each shadow map",
+        [=](MethodSettings& s, const std::string& v) { s.effects.shadowMapSize = count(v); },
+        [](const MethodSettings& s) { return std::to_string(s.effects.shadowMapSize); }));
+    MethodOption debug = ranged(
+        Kind::Text, "debug", "VIEW", 0, 0, "none", "agaa, simple-complex",
+        "a method's debug view instead of the lit frame (agaa: aggregates; simple-complex: complex)",
+        [](MethodSettings& s, const std::string& v) { s.debug = v; },
+        [](const MethodSettings& s) { return s.debug; });
+    o.push_back(debug);
+    return o;
+}
+
+// `text` wrapped at `width` columns; lines after the first start with `indent` spaces.
+std::string wrapped(const std::string& text, size_t indent, size_t width, size_t firstColumn) {
+    std::istringstream words(text);
+    std::string out, word;
+    size_t column = firstColumn;
+    bool lineEmpty = true;
+    while (words >> word) {
+        if (!lineEmpty && column + 1 + word.size() > width) {
+            out += "\n" + std::string(indent, ' ');
+            column = indent;
+            lineEmpty = true;
+        }
+        if (!lineEmpty) {
+            out += ' ';
+            ++column;
+        }
+        out += word;
+        column += word.size();
+        lineEmpty = false;
+    }
+    return out;
+}
+
+} // namespace
+
+const std::vector<MethodOption>& methodOptions() {
+    static const std::vector<MethodOption> options = declareOptions();
+    return options;
+}
+
+const MethodOption* findMethodOption(std::string_view name) {
+    for (const MethodOption& o : methodOptions())
+        if (o.name == name) return &o;
+    return nullptr;
+}
+
+void setMethodOption(MethodSettings& settings, const MethodOption& option, const std::string& value) {
+    const std::string flag = "--" + option.name;
+    switch (option.kind) {
+    case Kind::Choice:
+        for (const std::string& c : option.choices)
+            if (value == c) return option.set(settings, value);
+        throw std::invalid_argument(flag + " '" + value + "' is not one of: " + joined(option.choices, ", "));
+    case Kind::Count: {
+        unsigned long v = 0;
+        const auto [end, error] = std::from_chars(value.data(), value.data() + value.size(), v);
+        if (error != std::errc() || end != value.data() + value.size() || double(v) < option.lo ||
+            double(v) > option.hi)
+            throw std::invalid_argument(flag + " '" + value + "' is not an integer in " +
+                                        numberText(option.lo) + ".." + numberText(option.hi));
+        return option.set(settings, value);
+    }
+    case Kind::Number: {
+        double v = 0.0;
+        const auto [end, error] = std::from_chars(value.data(), value.data() + value.size(), v);
+        if (error != std::errc() || end != value.data() + value.size() || !(v >= option.lo && v <= option.hi))
+            throw std::invalid_argument(flag + " '" + value + "' is not a number in [" +
+                                        numberText(option.lo) + ", " + numberText(option.hi) + "]");
+        return option.set(settings, value);
+    }
+    case Kind::Text:
+        return option.set(settings, value);
+    }
+}
+
+std::string methodSettingsKey(const MethodSettings& settings) {
+    std::string key;
+    for (const MethodOption& o : methodOptions())
+        key += o.name + "=" + o.get(settings) + ";";
+    return key + "breakdown=" + std::to_string(settings.agaaBreakdown);
+}
+
+// Joins a flag and its value in the synopsis so that lines wrap between flags only.
+constexpr char kGlue = '\x1f';
+
+std::string methodOptionsSynopsis(size_t indent, size_t width) {
+    std::string flags;
+    for (const MethodOption& o : methodOptions())
+        flags += (flags.empty() ? "" : " ") + ("[--" + o.name + kGlue + o.syntax + "]");
+    std::string out = wrapped(flags, indent, width, indent);
+    std::replace(out.begin(), out.end(), kGlue, ' ');
+    return std::string(indent, ' ') + out;
+}
+
+std::string methodOptionsHelp(size_t width) {
+    std::string out;
+    for (const MethodOption& o : methodOptions()) {
+        const std::string head = "  --" + o.name + " " + o.syntax;
+        const std::string body = o.doc + " (" + o.methods + "; default " + o.defaultText + ")";
+        out += head + "\n" + std::string(20, ' ') + wrapped(body, 20, width, 20) + "\n";
+    }
+    return out;
+}
+
+} // namespace agaa

@@ -1,0 +1,117 @@
+// The method settings' one declaration (agaa/method_settings.h): every option round-trips, every
+// option moves the render cache's key, and bad values are refused with the flag and the allowed
+// values. No device.
+
+#include "agaa/method_settings.h"
+
+#include <gtest/gtest.h>
+
+#include <set>
+#include <stdexcept>
+
+namespace {
+
+using agaa::MethodOption;
+using agaa::MethodSettings;
+
+// A valid value of `o` other than the one `settings` holds.
+std::string otherValue(const MethodOption& o, const MethodSettings& settings) {
+    const std::string current = o.get(settings);
+    switch (o.kind) {
+    case MethodOption::Kind::Choice:
+        for (const std::string& c : o.choices)
+            if (c != current) return c;
+        break;
+    case MethodOption::Kind::Count:
+        return std::to_string(uint64_t(o.lo) == std::stoull(current == "default" ? "0" : current)
+                                  ? uint64_t(o.hi)
+                                  : uint64_t(o.lo));
+    case MethodOption::Kind::Number:
+        return current == "1" ? "2" : "1";
+    case MethodOption::Kind::Text:
+        return current + "x";
+    }
+    ADD_FAILURE() << o.name << " has a single value";
+    return current;
+}
+
+TEST(MethodSettings, EveryOptionIsDeclaredOnceWithItsDocAndMethods) {
+    std::set<std::string> names;
+    for (const MethodOption& o : agaa::methodOptions()) {
+        EXPECT_TRUE(names.insert(o.name).second) << o.name << " is declared twice";
+        EXPECT_FALSE(o.doc.empty()) << o.name;
+        EXPECT_FALSE(o.methods.empty()) << o.name;
+        EXPECT_FALSE(o.defaultText.empty()) << o.name;
+        EXPECT_EQ(agaa::findMethodOption(o.name), &o);
+    }
+    EXPECT_EQ(agaa::findMethodOption("no-such-option"), nullptr);
+    EXPECT_EQ(agaa::findMethodOption("--samples"), nullptr) << "names are given without the dashes";
+}
+
+TEST(MethodSettings, EveryOptionRoundTripsAndMovesTheCacheKey) {
+    const MethodSettings defaults;
+    const std::string defaultKey = agaa::methodSettingsKey(defaults);
+    for (const MethodOption& o : agaa::methodOptions()) {
+        MethodSettings s;
+        const std::string value = otherValue(o, s);
+        agaa::setMethodOption(s, o, value);
+        EXPECT_EQ(o.get(s), value) << o.name << ": get gives what set took";
+        // The key sees every option: before this table it was a hand-written concatenation that
+        // could miss one, and two techniques would then share a cache entry.
+        EXPECT_NE(agaa::methodSettingsKey(s), defaultKey) << o.name << " does not reach the key";
+        for (const MethodOption& other : agaa::methodOptions()) {
+            if (&other == &o) continue;
+            EXPECT_EQ(other.get(s), other.get(defaults)) << o.name << " moved " << other.name;
+        }
+    }
+    MethodSettings breakdown;
+    breakdown.agaaBreakdown = 1;
+    EXPECT_NE(agaa::methodSettingsKey(breakdown), defaultKey)
+        << "agaa-timings' breakdown bits are part of the key";
+}
+
+TEST(MethodSettings, BadValuesNameTheFlagAndTheAllowedValues) {
+    MethodSettings s;
+    auto message = [&](const char* name, const std::string& value) -> std::string {
+        try {
+            agaa::setMethodOption(s, *agaa::findMethodOption(name), value);
+        } catch (const std::invalid_argument& e) {
+            return e.what();
+        }
+        return "accepted";
+    };
+    EXPECT_EQ(message("samples", "3"), "--samples '3' is not one of: 1, 4, 8, 16, 32");
+    EXPECT_EQ(message("agaa-ndf", "lean"), "--agaa-ndf 'lean' is not one of: auto, sggx, toksvig");
+    EXPECT_EQ(message("aggregates", "5"), "--aggregates '5' is not an integer in 1..4");
+    EXPECT_EQ(message("aggregates", "0"), "--aggregates '0' is not an integer in 1..4");
+    EXPECT_EQ(message("aggregates", "2x"), "--aggregates '2x' is not an integer in 1..4");
+    EXPECT_EQ(message("aggregates", "-1"), "--aggregates '-1' is not an integer in 1..4");
+    EXPECT_EQ(message("shadow-map-size", ""), "--shadow-map-size '' is not an integer in 64..4096");
+    EXPECT_EQ(message("streaming-normal-angle", "91"),
+              "--streaming-normal-angle '91' is not a number in [0.001, 90]");
+    EXPECT_EQ(message("streaming-normal-angle", "nan"),
+              "--streaming-normal-angle 'nan' is not a number in [0.001, 90]");
+    EXPECT_EQ(message("seed-threshold", "0.1.2"), "--seed-threshold '0.1.2' is not a number in [0, 1000000]");
+    EXPECT_EQ(message("agaa-generation", "coverage"), "accepted") << "refused later, by the device (exit 3)";
+    EXPECT_EQ(s.agaaGeneration, "coverage");
+    EXPECT_EQ(s.aggregates, 2u) << "a refused value leaves the setting alone";
+}
+
+TEST(MethodSettings, SynopsisAndHelpHoldEveryOption) {
+    const std::string synopsis = agaa::methodOptionsSynopsis(4, 60);
+    const std::string help = agaa::methodOptionsHelp(80);
+    size_t lineStart = 0;
+    for (size_t end = synopsis.find('\n'); lineStart < synopsis.size();
+         lineStart = end + 1, end = synopsis.find('\n', lineStart)) {
+        const std::string line = synopsis.substr(lineStart, end == std::string::npos ? end : end - lineStart);
+        EXPECT_EQ(line.rfind("    [--", 0), 0u) << "indented, whole flags only: '" << line << "'";
+        EXPECT_TRUE(line.size() <= 60 || line.find("] [") == std::string::npos) << "wrapped at 60: " << line;
+        if (end == std::string::npos) break;
+    }
+    for (const MethodOption& o : agaa::methodOptions()) {
+        EXPECT_NE(synopsis.find("[--" + o.name + " " + o.syntax + "]"), std::string::npos) << o.name;
+        EXPECT_NE(help.find("  --" + o.name + " " + o.syntax + "\n"), std::string::npos) << o.name;
+    }
+}
+
+} // namespace
