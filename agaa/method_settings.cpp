@@ -1,5 +1,6 @@
 #include "agaa/method_settings.h"
 
+#include "agaa/aggregate/agaa_constants.h"
 #include "engine/frame/sample_pattern.h"
 
 #include <algorithm>
@@ -13,7 +14,14 @@ namespace agaa {
 namespace {
 
 using Kind = MethodOption::Kind;
-using Footprint = EffectSettings::ShadowFootprint;
+
+// The words of an enum's NamedValue table, in its order.
+template <typename T, size_t N> std::vector<std::string> words(const NamedValue<T> (&table)[N]) {
+    std::vector<std::string> out;
+    for (const NamedValue<T>& entry : table)
+        out.push_back(entry.name);
+    return out;
+}
 
 std::string joined(const std::vector<std::string>& values, const char* separator) {
     std::string out;
@@ -69,10 +77,6 @@ std::string onOff(bool v) {
     return v ? "on" : "off";
 }
 
-const char* footprintName(Footprint f) {
-    return f == Footprint::Samples ? "samples" : f == Footprint::Statistics ? "statistics" : "adaptive";
-}
-
 std::vector<MethodOption> declareOptions() {
     const auto count = [](const std::string& v) { return uint32_t(std::stoul(v)); };
     const auto number = [](const std::string& v) { return std::stof(v); };
@@ -114,50 +118,57 @@ std::vector<MethodOption> declareOptions() {
         [=](MethodSettings& s, const std::string& v) { s.seedThreshold = number(v); },
         [=](const MethodSettings& s) { return orDefault(s.seedThreshold); }));
     o.push_back(choice(
-        "agaa-position", {"mean", "centre"}, "mean", "agaa",
+        "agaa-position", words(kAggregatePositionNames), "mean", "agaa",
         "the shading point: the mean of the aggregate's samples, or UE4's mean depth on the pixel-centre ray",
-        [](MethodSettings& s, const std::string& v) { s.pixelCentrePosition = v == "centre"; },
-        [](const MethodSettings& s) { return std::string(s.pixelCentrePosition ? "centre" : "mean"); }));
+        [](MethodSettings& s, const std::string& v) {
+            s.pixelCentrePosition =
+                namedValue("--agaa-position", v, kAggregatePositionNames) == AggregatePosition::PixelCentre;
+        },
+        [](const MethodSettings& s) {
+            return std::string(
+                nameOf(s.pixelCentrePosition ? AggregatePosition::PixelCentre : AggregatePosition::SampleMean,
+                       kAggregatePositionNames));
+        }));
     o.push_back(choice(
-        "agaa-ndf", {"auto", "sggx", "toksvig"}, "auto", "agaa",
+        "agaa-ndf", words(kAggregateNdfNames), "auto", "agaa",
         "the normal distribution per aggregate: anisotropic SGGX with the two-point tone-mapped resolve, "
         "or the paper's isotropic Toksvig; auto: SGGX when glossy metals are at least half of the drawn "
         "materials, else Toksvig",
         [](MethodSettings& s, const std::string& v) { s.ndf = v; },
         [](const MethodSettings& s) { return s.ndf; }));
     o.push_back(choice(
-        "agaa-lighting", {"auto", "compact", "registers"}, "auto", "agaa",
+        "agaa-lighting", words(kAggregateShadingNames), "auto", "agaa",
         "the lighting schedule: a tile's further aggregates packed into a shared-memory list (compact), "
         "or each pixel shading its own (registers); auto: compact for c >= 2 on GPUs, registers on CPU "
         "devices such as lavapipe",
         [](MethodSettings& s, const std::string& v) { s.agaaLighting = v; },
         [](const MethodSettings& s) { return s.agaaLighting; }));
     o.push_back(choice(
-        "agaa-routing", {"samples", "fragment"}, "samples", "agaa",
+        "agaa-routing", words(kAggregateRoutingNames), "samples", "agaa",
         "generation: each visible sample feeds its own aggregate, or the whole fragment its first visible "
         "sample's (Algorithm 2)",
         [](MethodSettings& s, const std::string& v) { s.agaaRouting = v; },
         [](const MethodSettings& s) { return s.agaaRouting; }));
     o.push_back(choice(
-        "agaa-atomics", {"auto", "32", "64"}, "auto", "agaa",
+        "agaa-atomics", words(kAggregateAtomicsNames), "auto", "agaa",
         "generation atomics: 64-bit pairs of words where the device has shaderBufferInt64Atomics (auto), "
         "or 32-bit words",
         [](MethodSettings& s, const std::string& v) { s.agaaAtomics = v; },
         [](const MethodSettings& s) { return s.agaaAtomics; }));
     o.push_back(choice(
-        "agaa-subgroup-reduce", {"auto", "on", "off"}, "auto", "agaa",
+        "agaa-subgroup-reduce", words(kSubgroupReductionNames), "auto", "agaa",
         "generation: sum the atomics of fragments that hit one pixel across the subgroup first; auto: on "
         "for GPUs, off on CPU devices",
         [](MethodSettings& s, const std::string& v) { s.agaaSubgroupReduce = v; },
         [](const MethodSettings& s) { return s.agaaSubgroupReduce; }));
     o.push_back(choice(
-        "agaa-distance", {"position", "plane"}, "position", "agaa",
+        "agaa-distance", words(kAggregateDistanceNames), "position", "agaa",
         "clustering: Equation 1, or the samples' distance to each other's tangent plane (a flat surface "
         "stays one aggregate)",
         [](MethodSettings& s, const std::string& v) { s.agaaDistance = v; },
         [](const MethodSettings& s) { return s.agaaDistance; }));
     o.push_back(choice(
-        "agaa-generation", {"auto", "accumulate", "samples", "coverage"}, "auto", "agaa",
+        "agaa-generation", words(kAggregateGenerationNames), "auto", "agaa",
         "the generation path: the accumulation kernel after a visibility prepass, or one per-sample "
         "G-buffer pass aggregated at the top of each lighting tile (UE4); coverage routing needs mixed "
         "samples and the sample-mask override and is not built (exit 3); auto: samples for n <= 16, else "
@@ -185,16 +196,16 @@ std::vector<MethodOption> declareOptions() {
         [=](MethodSettings& s, const std::string& v) { s.effects.shadowTaps = count(v); },
         [](const MethodSettings& s) { return std::to_string(s.effects.shadowTaps); }));
     o.push_back(choice(
-        "shadow-footprint", {"adaptive", "statistics", "samples"}, "adaptive", "agaa",
+        "shadow-footprint", words(kShadowFootprintNames), "adaptive", "agaa",
         "shadow taps along the aggregate's depth variance (statistics), at its own sample positions "
         "(samples), or along the variance and, where those taps disagree, at every one of its samples "
         "(adaptive)",
         [](MethodSettings& s, const std::string& v) {
-            s.effects.shadowFootprint = v == "samples"      ? Footprint::Samples
-                                        : v == "statistics" ? Footprint::Statistics
-                                                            : Footprint::Adaptive;
+            s.effects.shadowFootprint = namedValue("--shadow-footprint", v, kShadowFootprintNames);
         },
-        [](const MethodSettings& s) { return std::string(footprintName(s.effects.shadowFootprint)); }));
+        [](const MethodSettings& s) {
+            return std::string(nameOf(s.effects.shadowFootprint, kShadowFootprintNames));
+        }));
     o.push_back(ranged(
         Kind::Count, "shadow-map-size", "N", 64, 4096, "1024", "all", "texels per side of each shadow map",
         [=](MethodSettings& s, const std::string& v) { s.effects.shadowMapSize = count(v); },

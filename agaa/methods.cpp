@@ -78,23 +78,6 @@ bool isKnownMethod(const std::string& name) {
     return false;
 }
 
-namespace {
-
-// One of an AGAA setting's named values, or std::invalid_argument listing them.
-template <typename T>
-T agaaOption(const char* what, const std::string& value,
-             std::initializer_list<std::pair<const char*, T>> allowed) {
-    std::string names;
-    for (const auto& [name, v] : allowed) {
-        if (value == name) return v;
-        names += std::string(names.empty() ? "" : ", ") + name;
-    }
-    throw std::invalid_argument(std::string("agaa: ") + what + " '" + value +
-                                "' is unknown (allowed: " + names + ")");
-}
-
-} // namespace
-
 std::unique_ptr<Technique> createTechnique(const std::string& method, eng::vk::Device& device,
                                            const eng::frame::GpuScene& scene,
                                            const MethodSettings& settings) {
@@ -143,36 +126,14 @@ std::unique_ptr<Technique> createTechnique(const std::string& method, eng::vk::D
         if (settings.characteristicLength >= 0.0f) s.characteristicLength = settings.characteristicLength;
         if (settings.seedThreshold >= 0.0f) s.seedThreshold = settings.seedThreshold;
         if (settings.pixelCentrePosition) s.position = AggregatePosition::PixelCentre;
-        if (settings.ndf == "sggx")
-            s.ndf = AggregateNdf::Sggx;
-        else if (settings.ndf == "toksvig")
-            s.ndf = AggregateNdf::Toksvig;
-        else if (settings.ndf != "auto")
-            throw std::invalid_argument("agaa: normal distribution '" + settings.ndf +
-                                        "' is unknown (allowed: auto, sggx, toksvig)");
-        s.shading = agaaOption<AggregateShading>("lighting schedule", settings.agaaLighting,
-                                                 {{"auto", AggregateShading::Auto},
-                                                  {"compact", AggregateShading::Compact},
-                                                  {"registers", AggregateShading::Registers}});
-        s.routing = agaaOption<AggregateRouting>(
-            "routing", settings.agaaRouting,
-            {{"samples", AggregateRouting::Samples}, {"fragment", AggregateRouting::Fragment}});
-        s.atomics = agaaOption<AggregateAtomics>("atomics", settings.agaaAtomics,
-                                                 {{"auto", AggregateAtomics::Auto},
-                                                  {"32", AggregateAtomics::Bits32},
-                                                  {"64", AggregateAtomics::Bits64}});
-        s.subgroupReduction = agaaOption<SubgroupReduction>("subgroup reduction", settings.agaaSubgroupReduce,
-                                                            {{"auto", SubgroupReduction::Auto},
-                                                             {"on", SubgroupReduction::On},
-                                                             {"off", SubgroupReduction::Off}});
-        s.distance = agaaOption<AggregateDistance>(
-            "clustering distance", settings.agaaDistance,
-            {{"position", AggregateDistance::Position}, {"plane", AggregateDistance::Plane}});
-        s.generation = agaaOption<AggregateGeneration>("generation", settings.agaaGeneration,
-                                                       {{"auto", AggregateGeneration::Auto},
-                                                        {"accumulate", AggregateGeneration::Accumulate},
-                                                        {"samples", AggregateGeneration::Samples},
-                                                        {"coverage", AggregateGeneration::Coverage}});
+        s.ndf = namedValue("agaa: normal distribution", settings.ndf, kAggregateNdfNames);
+        s.shading = namedValue("agaa: lighting schedule", settings.agaaLighting, kAggregateShadingNames);
+        s.routing = namedValue("agaa: routing", settings.agaaRouting, kAggregateRoutingNames);
+        s.atomics = namedValue("agaa: atomics", settings.agaaAtomics, kAggregateAtomicsNames);
+        s.subgroupReduction =
+            namedValue("agaa: subgroup reduction", settings.agaaSubgroupReduce, kSubgroupReductionNames);
+        s.distance = namedValue("agaa: clustering distance", settings.agaaDistance, kAggregateDistanceNames);
+        s.generation = namedValue("agaa: generation", settings.agaaGeneration, kAggregateGenerationNames);
         if (method != "agaa") {
             if (settings.agaaGeneration != "auto")
                 throw std::invalid_argument("--agaa-generation applies to --method agaa only; " + method +

@@ -3,6 +3,7 @@
 // constants of Equation 1 and the Toksvig reference exponent.
 
 #include "agaa/common/effects.h"
+#include "agaa/common/named_value.h"
 #include "shared/agaa.h"
 #include "shared/frame.h"
 
@@ -14,6 +15,8 @@ enum class AggregateDebugView : uint32_t { None = 0, Aggregates = 1 };
 // Where an aggregate is shaded from: the mean of its samples' view positions (default), or the
 // UE4 shortcut (seed 004): its mean depth on the pixel centre's ray.
 enum class AggregatePosition : uint32_t { SampleMean = 0, PixelCentre = 1 };
+inline constexpr NamedValue<AggregatePosition> kAggregatePositionNames[] = {
+    {"mean", AggregatePosition::SampleMean}, {"centre", AggregatePosition::PixelCentre}};
 // How an aggregate's normals are filtered (shared/agaa.h layouts, same 24 bytes each): the
 // isotropic Toksvig vector of paper section 3.5.2, or the anisotropic SGGX matrix (shared/sggx.h,
 // the paper's choice for thin glossy rods) with the two-point tone-mapped resolve.
@@ -21,6 +24,8 @@ enum class AggregatePosition : uint32_t { SampleMean = 0, PixelCentre = 1 };
 // (eng::scene::SceneFeatures::glossyMetalsDominate), Toksvig elsewhere (its mean shading normal
 // and first moment light diffuse aggregates better: measured in README, issue 14).
 enum class AggregateNdf : uint32_t { Toksvig = 0, Sggx = 1, Auto = 2 };
+inline constexpr NamedValue<AggregateNdf> kAggregateNdfNames[] = {
+    {"auto", AggregateNdf::Auto}, {"sggx", AggregateNdf::Sggx}, {"toksvig", AggregateNdf::Toksvig}};
 // How the lighting pass schedules its shading events (shaders/glsl/agaa/lighting.glsl, step 3):
 // Registers: each invocation shades its own pixel's aggregates (a SIMD group pays for its pixel
 // with the most aggregates); Compact: aggregate 0 of every pixel in registers, every further
@@ -28,23 +33,35 @@ enum class AggregateNdf : uint32_t { Toksvig = 0, Sggx = 1, Auto = 2 };
 // Auto: Compact for c >= 2 on GPUs, Registers on CPU devices (lavapipe), where the list's
 // barriers cost more than it saves (measured: agaa/aggregate/README.md, "Lighting schedule").
 enum class AggregateShading : uint32_t { Registers = 0, Compact = 1, Auto = 2 };
+inline constexpr NamedValue<AggregateShading> kAggregateShadingNames[] = {
+    {"auto", AggregateShading::Auto},
+    {"compact", AggregateShading::Compact},
+    {"registers", AggregateShading::Registers}};
 // Which aggregate a generation fragment feeds (shaders/glsl/agaa/generation.glsl): Samples, each
 // visible sample its own metadata aggregate (AG-buffer counts equal the metadata's); Fragment,
 // Algorithm 2 as the paper writes it: the whole fragment to its first visible sample's aggregate.
 enum class AggregateRouting : uint32_t { Samples = 0, Fragment = 1 };
+inline constexpr NamedValue<AggregateRouting> kAggregateRoutingNames[] = {
+    {"samples", AggregateRouting::Samples}, {"fragment", AggregateRouting::Fragment}};
 // The generation pass's integer atomics: 32-bit per word, or 64-bit on pairs of words (3 atomics
 // per aggregate instead of 5; device feature shaderBufferInt64Atomics). Auto: 64 where offered.
 enum class AggregateAtomics : uint32_t { Bits32 = 0, Bits64 = 1, Auto = 2 };
+inline constexpr NamedValue<AggregateAtomics> kAggregateAtomicsNames[] = {
+    {"auto", AggregateAtomics::Auto}, {"32", AggregateAtomics::Bits32}, {"64", AggregateAtomics::Bits64}};
 // Subgroup pre-reduction of the generation atomics that target the same pixel and aggregate.
 // Auto: on for GPUs with fragment-stage ballot + arithmetic subgroups, off on CPU devices such
 // as lavapipe, whose fragment subgroups never hold two primitives' fragments of one pixel.
 enum class SubgroupReduction : uint32_t { Off = 0, On = 1, Auto = 2 };
+inline constexpr NamedValue<SubgroupReduction> kSubgroupReductionNames[] = {
+    {"auto", SubgroupReduction::Auto}, {"on", SubgroupReduction::On}, {"off", SubgroupReduction::Off}};
 // The position term of the clustering distance (shared/clustering.h): Position, Equation 1's
 // |(p_a - p_b)/k|^2; Plane, the mean of the squared distances of each sample to the other's
 // tangent plane, ((p_a - p_b).n_a/k)^2 and ((p_a - p_b).n_b/k)^2, zero for samples on one plane
 // however far apart (SBAA's plane predicate), so a flat surface at grazing angles stays one
 // aggregate.
 enum class AggregateDistance : uint32_t { Position = 0, Plane = 1 };
+inline constexpr NamedValue<AggregateDistance> kAggregateDistanceNames[] = {
+    {"position", AggregateDistance::Position}, {"plane", AggregateDistance::Plane}};
 // How the aggregates are generated (agaa/aggregate/README.md, "Generation paths"):
 //  - Accumulate: the visibility prepass, Algorithm 1 on its depth and face normals, then the
 //    accumulation kernel rasterises the scene again and sums each fragment into the AG-buffer
@@ -59,6 +76,11 @@ enum class AggregateDistance : uint32_t { Position = 0, Plane = 1 };
 //    no device that offers both was available to test it, so it is refused by name;
 //  - Auto: the rule of AggregateAA's constructor (measured in the README).
 enum class AggregateGeneration : uint32_t { Accumulate = 0, Samples = 1, Coverage = 2, Auto = 3 };
+inline constexpr NamedValue<AggregateGeneration> kAggregateGenerationNames[] = {
+    {"auto", AggregateGeneration::Auto},
+    {"accumulate", AggregateGeneration::Accumulate},
+    {"samples", AggregateGeneration::Samples},
+    {"coverage", AggregateGeneration::Coverage}};
 // Parts a benchmark can remove (AggregateSettings::breakdown bits; specialisation constants).
 namespace AggregateBreakdown {
 inline constexpr uint32_t kLightingWithoutShading = 1;   // lighting.glsl: step 3 skipped

@@ -4,6 +4,7 @@
 // scene (engine/scene/scene_features.h) or forced on for the benchmark, and how each choice is
 // reported: a VariantChoice names the variant and the scene feature that caused it.
 
+#include "agaa/common/named_value.h"
 #include "engine/frame/gpu_scene.h"
 #include "engine/scene/scene_features.h"
 #include "engine/vk/descriptors.h"
@@ -33,6 +34,10 @@ struct EffectSettings {
         Adaptive = 2
     } shadowFootprint = ShadowFootprint::Adaptive;
 };
+inline constexpr NamedValue<EffectSettings::ShadowFootprint> kShadowFootprintNames[] = {
+    {"adaptive", EffectSettings::ShadowFootprint::Adaptive},
+    {"statistics", EffectSettings::ShadowFootprint::Statistics},
+    {"samples", EffectSettings::ShadowFootprint::Samples}};
 
 // Throws std::invalid_argument naming the setting and its range.
 void validate(const EffectSettings& settings);
