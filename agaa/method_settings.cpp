@@ -284,6 +284,17 @@ void setMethodOption(MethodSettings& settings, const MethodOption& option, const
     }
 }
 
+bool methodReadsOption(const MethodOption& option, const std::string& method) {
+    if (option.methods == "all") return true;
+    const std::string family = method.rfind("agaa", 0) == 0             ? "agaa"
+                               : method.rfind("simple-complex", 0) == 0 ? "simple-complex"
+                                                                        : method;
+    std::istringstream methods(option.methods);
+    for (std::string m; std::getline(methods >> std::ws, m, ',');)
+        if (m == family) return true;
+    return false;
+}
+
 std::string methodSettingsKey(const MethodSettings& settings) {
     std::string key;
     for (const MethodOption& o : methodOptions())

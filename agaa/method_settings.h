@@ -43,6 +43,10 @@ const MethodOption* findMethodOption(std::string_view name);
 // the value and the allowed values: "--agaa-ndf 'lean' is not one of: auto, sggx, toksvig".
 void setMethodOption(MethodSettings& settings, const MethodOption& option, const std::string& value);
 
+// Whether `method` (agaa-render's name, e.g. "agaa-samples") reads the option: its family
+// ("agaa", "simple-complex", ...) is in the option's `methods`, or they are "all".
+bool methodReadsOption(const MethodOption& option, const std::string& method);
+
 // Every setting as "name=value" (and the timings-only breakdown bits), ';'-separated: two settings
 // with the same key render the same technique.
 std::string methodSettingsKey(const MethodSettings& settings);

@@ -3,6 +3,7 @@
 // values. No device.
 
 #include "agaa/method_settings.h"
+#include "agaa/methods.h"
 
 #include <gtest/gtest.h>
 
@@ -95,6 +96,25 @@ TEST(MethodSettings, BadValuesNameTheFlagAndTheAllowedValues) {
     EXPECT_EQ(message("agaa-generation", "coverage"), "accepted") << "refused later, by the device (exit 3)";
     EXPECT_EQ(s.agaaGeneration, "coverage");
     EXPECT_EQ(s.aggregates, 2u) << "a refused value leaves the setting alone";
+}
+
+TEST(MethodSettings, EachOptionNamesTheMethodsThatReadIt) {
+    const auto reads = [](const char* option, const char* method) {
+        return agaa::methodReadsOption(*agaa::findMethodOption(option), method);
+    };
+    EXPECT_TRUE(reads("samples", "noaa")) << "all";
+    EXPECT_TRUE(reads("agaa-ndf", "agaa-samples")) << "the agaa family";
+    EXPECT_FALSE(reads("agaa-ndf", "reference"));
+    EXPECT_TRUE(reads("surfaces", "streaming"));
+    EXPECT_FALSE(reads("surfaces", "agaa"));
+    EXPECT_TRUE(reads("sample-rate-shading", "simple-complex-naive")) << "the simple-complex family";
+    EXPECT_FALSE(reads("sample-rate-shading", "fxaa"));
+    for (const MethodOption& o : agaa::methodOptions()) {
+        bool someone = false;
+        for (const agaa::MethodInfo& m : agaa::knownMethods())
+            someone = someone || agaa::methodReadsOption(o, m.name);
+        EXPECT_TRUE(someone) << o.name << " names no known method: '" << o.methods << "'";
+    }
 }
 
 TEST(MethodSettings, SynopsisAndHelpHoldEveryOption) {

@@ -6,14 +6,14 @@
 //
 //   agaa-timings [--scenes foliage,furball] [--size 640x360] [--frames 5] [--warmup 2]
 //                [--jobs reference:8,agaa:8:2,simple-complex:8] [--breakdown] [--validate] [--json FILE]
-//                [--sample-rate-shading on|off] [--extra-lights K[,K...]]
+//                [--extra-lights K[,K...]] [--METHOD-SETTING VALUE...]
 // --extra-lights: each scene once per K, with K generated point lights added
 // (engine/scene/extra_lights.h); results of K > 0 are keyed "<scene>+l<K>".
-// A job is METHOD[:N[:C]][:KEY=VALUE...] (sbaa:N:S, streaming:N:S: S surfaces); AGAA's keys are its settings
-// (lighting, routing, atomics, reduce, distance, ndf, generation, curvature), e.g.
-// agaa:8:2:lighting=registers:routing=fragment. Every method whose name starts with "agaa" (agaa,
-// agaa-accumulate, agaa-samples) is an AGAA job.
-// --sample-rate-shading applies to every job that fills a per-sample G-buffer.
+// A job is METHOD[:N[:C]][:SETTING=VALUE...] (sbaa:N:S, streaming:N:S: S surfaces), SETTING any
+// method setting the method reads (agaa/method_settings.h, as agaa-render's flags name them),
+// e.g. agaa:8:2:agaa-lighting=registers:agaa-routing=fragment. A method setting given as a flag
+// (--sample-rate-shading on) applies to every job that reads it; a job's own settings win.
+// Every method whose name starts with "agaa" (agaa, agaa-accumulate, agaa-samples) is an AGAA job.
 // For every AGAA job it prints, next to the shading/frame ratios against each peer at the same n:
 //   - lighting ms per shading event against no-AA's (needs a noaa job): what one aggregate's
 //     shading costs against one plain sample's;
@@ -26,6 +26,7 @@
 // Exit codes: 0 done; 2 bad arguments; 3 the device lacks something required.
 
 #include "agaa/aggregate/agaa_constants.h"
+#include "agaa/method_settings.h"
 #include "agaa/methods.h"
 #include "engine/scene/extra_lights.h"
 #include "engine/scene/scene_error.h"
@@ -50,7 +51,7 @@ struct Job {
     std::string method;
     uint32_t samples = 8, aggregates = 2;
     uint32_t surfaces = 0; // sbaa:N:S, streaming:N:S; 0 = the method's default (4, 3)
-    std::vector<std::pair<std::string, std::string>> options; // AGAA KEY=VALUE settings
+    std::vector<std::pair<std::string, std::string>> options; // SETTING=VALUE (agaa/method_settings.h)
     bool isAgaa() const { return method.rfind("agaa", 0) == 0; }
     std::string label() const {
         std::string l = method + " n=" + std::to_string(samples);
@@ -81,30 +82,6 @@ uint32_t number(const std::string& flag, const std::string& v, uint32_t lo, uint
     return x;
 }
 
-// The AGAA settings a job may name, each with the MethodSettings field it sets.
-std::string* agaaOption(agaa::MethodSettings& s, const std::string& key) {
-    if (key == "lighting") return &s.agaaLighting;
-    if (key == "routing") return &s.agaaRouting;
-    if (key == "atomics") return &s.agaaAtomics;
-    if (key == "reduce") return &s.agaaSubgroupReduce;
-    if (key == "distance") return &s.agaaDistance;
-    if (key == "ndf") return &s.ndf;
-    if (key == "generation") return &s.agaaGeneration;
-    return nullptr;
-}
-
-// Sets an AGAA job key: the string settings above, or curvature=on|off.
-bool setAgaaOption(agaa::MethodSettings& s, const std::string& key, const std::string& value) {
-    if (key == "curvature") {
-        if (value != "on" && value != "off") return false;
-        s.curvatureRoughness = value == "on";
-        return true;
-    }
-    std::string* field = agaaOption(s, key);
-    if (field) *field = value;
-    return field != nullptr;
-}
-
 Job parseJob(const std::string& text) {
     auto parts = split(text, ':');
     if (parts.empty() || !agaa::isKnownMethod(parts[0]))
@@ -126,13 +103,14 @@ Job parseJob(const std::string& text) {
     }
     agaa::MethodSettings probe;
     for (; i < parts.size(); ++i) {
-        size_t eq = parts[i].find('=');
-        std::string key = eq == std::string::npos ? parts[i] : parts[i].substr(0, eq);
-        if (!j.isAgaa() || eq == std::string::npos || !setAgaaOption(probe, key, parts[i].substr(eq + 1)))
-            throw std::invalid_argument(
-                "--jobs entry '" + text + "': '" + parts[i] +
-                "' is not an AGAA KEY=VALUE (keys: lighting, routing, atomics, reduce, "
-                "distance, ndf, generation, curvature=on|off)");
+        const size_t eq = parts[i].find('=');
+        const std::string key = parts[i].substr(0, eq);
+        const agaa::MethodOption* option = eq == std::string::npos ? nullptr : agaa::findMethodOption(key);
+        if (!option || !agaa::methodReadsOption(*option, j.method))
+            throw std::invalid_argument("--jobs entry '" + text + "': '" + parts[i] +
+                                        "' is not SETTING=VALUE with SETTING a method setting " + j.method +
+                                        " reads (agaa-render --help, 'method settings')");
+        agaa::setMethodOption(probe, *option, parts[i].substr(eq + 1)); // names the allowed values
         j.options.push_back({key, parts[i].substr(eq + 1)});
     }
     return j;
@@ -168,7 +146,9 @@ int main(int argc, char** argv) {
     std::vector<uint32_t> extraLights = {0};
     std::vector<Job> jobs = {{"reference", 8, 1}, {"agaa", 8, 2}};
     if (agaa::isKnownMethod("simple-complex")) jobs.push_back({"simple-complex", 8, 1});
-    bool validate = false, breakdown = false, sampleRateShading = false;
+    bool validate = false, breakdown = false;
+    agaa::MethodSettings every; // the method settings given as flags: every job that reads them
+    std::vector<const agaa::MethodOption*> given;
     std::string jsonPath;
     try {
         for (int i = 1; i < argc; ++i) {
@@ -196,11 +176,13 @@ int main(int argc, char** argv) {
                 validate = true;
             else if (a == "--breakdown")
                 breakdown = true;
-            else if (a == "--sample-rate-shading") {
-                std::string v = value();
-                if (v != "on" && v != "off")
-                    throw std::invalid_argument("--sample-rate-shading '" + v + "' is not one of: on, off");
-                sampleRateShading = v == "on";
+            else if (const agaa::MethodOption* option =
+                         a.rfind("--", 0) == 0 ? agaa::findMethodOption(a.substr(2)) : nullptr) {
+                const std::string v = value();
+                if (option->name == "samples" || option->name == "aggregates" || option->name == "surfaces")
+                    throw std::invalid_argument(a + " is a job's N, C or S: --jobs METHOD:N:C (sbaa:N:S)");
+                agaa::setMethodOption(every, *option, v);
+                given.push_back(option);
             } else if (a == "--extra-lights") {
                 extraLights.clear();
                 for (const auto& k : split(value(), ','))
@@ -209,17 +191,15 @@ int main(int argc, char** argv) {
             } else if (a == "--json")
                 jsonPath = value();
             else if (a == "--help" || a == "-h") {
-                std::printf("usage: agaa-timings [--scenes a,b] [--size WxH] [--frames K] [--warmup K]\n"
-                            "                    [--jobs METHOD[:N[:C]][:KEY=VALUE...],...] [--breakdown] "
-                            "[--validate]\n"
-                            "                    [--json FILE]\n"
-                            "                    [--sample-rate-shading on|off] [--extra-lights K[,K...]]\n"
-                            "AGAA job keys: lighting=auto|compact|registers, routing=samples|fragment,\n"
-                            "  atomics=auto|32|64, reduce=auto|on|off, distance=position|plane, "
-                            "ndf=auto|sggx|toksvig,\n"
-                            "  generation=auto|accumulate|samples, curvature=on|off\n"
-                            "methods: %s; scenes: builtin kinds\n",
-                            agaa::knownMethodNames().c_str());
+                std::printf(
+                    "usage: agaa-timings [--scenes a,b] [--size WxH] [--frames K] [--warmup K]\n"
+                    "                    [--jobs METHOD[:N[:C]][:SETTING=VALUE...],...] [--breakdown] "
+                    "[--validate]\n"
+                    "                    [--json FILE] [--extra-lights K[,K...]] [--SETTING VALUE...]\n"
+                    "SETTING: a method setting of agaa-render's, as a job's SETTING=VALUE or as a flag\n"
+                    "for every job that reads it:\n%s\n"
+                    "methods: %s; scenes: builtin kinds\n",
+                    agaa::methodOptionsSynopsis(2, 100).c_str(), agaa::knownMethodNames().c_str());
                 return 0;
             } else
                 throw std::invalid_argument("unknown argument '" + a + "' (see --help)");
@@ -246,12 +226,14 @@ int main(int argc, char** argv) {
                 auto request = [&](const Job& job) {
                     agaa::RenderRequest r;
                     r.method = job.method;
+                    for (const agaa::MethodOption* option : given)
+                        if (agaa::methodReadsOption(*option, job.method))
+                            option->set(r.settings, option->get(every));
                     r.settings.samples = job.samples;
                     r.settings.aggregates = job.aggregates;
                     r.settings.surfaces = job.surfaces;
                     for (const auto& [k, v] : job.options)
-                        setAgaaOption(r.settings, k, v);
-                    r.settings.sampleRateShading = sampleRateShading;
+                        agaa::setMethodOption(r.settings, *agaa::findMethodOption(k), v);
                     r.view.width = width;
                     r.view.height = height;
                     r.warmupFrames = warmup;
