@@ -92,7 +92,7 @@ std::vector<MethodOption> declareOptions() {
         [=](MethodSettings& s, const std::string& v) { s.samples = count(v); },
         [](const MethodSettings& s) { return std::to_string(s.samples); }));
     o.push_back(ranged(
-        Kind::Count, "aggregates", "C", 1, 4, "2", "agaa", "aggregates per pixel",
+        Kind::Count, "aggregates", "C", 1, 4, "2", "agaa*", "aggregates per pixel",
         [=](MethodSettings& s, const std::string& v) { s.aggregates = count(v); },
         [](const MethodSettings& s) { return std::to_string(s.aggregates); }));
     o.push_back(ranged(
@@ -108,17 +108,17 @@ std::vector<MethodOption> declareOptions() {
         [=](MethodSettings& s, const std::string& v) { s.streamingNormalAngle = number(v); },
         [=](const MethodSettings& s) { return orDefault(s.streamingNormalAngle); }));
     o.push_back(ranged(
-        Kind::Number, "characteristic-length", "K", 1e-6, 1e6, "0.1", "agaa",
+        Kind::Number, "characteristic-length", "K", 1e-6, 1e6, "0.1", "agaa*",
         "clustering (Equation 1): the characteristic length k in metres",
         [=](MethodSettings& s, const std::string& v) { s.characteristicLength = number(v); },
         [=](const MethodSettings& s) { return orDefault(s.characteristicLength); }));
     o.push_back(ranged(
-        Kind::Number, "seed-threshold", "T", 0.0, 1e6, "0.05", "agaa",
+        Kind::Number, "seed-threshold", "T", 0.0, 1e6, "0.05", "agaa*",
         "clustering (Equation 1): the seed threshold t",
         [=](MethodSettings& s, const std::string& v) { s.seedThreshold = number(v); },
         [=](const MethodSettings& s) { return orDefault(s.seedThreshold); }));
     o.push_back(choice(
-        "agaa-position", words(kAggregatePositionNames), "mean", "agaa",
+        "agaa-position", words(kAggregatePositionNames), "mean", "agaa*",
         "the shading point: the mean of the aggregate's samples, or UE4's mean depth on the pixel-centre ray",
         [](MethodSettings& s, const std::string& v) {
             s.pixelCentrePosition =
@@ -130,39 +130,39 @@ std::vector<MethodOption> declareOptions() {
                        kAggregatePositionNames));
         }));
     o.push_back(choice(
-        "agaa-ndf", words(kAggregateNdfNames), "auto", "agaa",
+        "agaa-ndf", words(kAggregateNdfNames), "auto", "agaa*",
         "the normal distribution per aggregate: anisotropic SGGX with the two-point tone-mapped resolve, "
         "or the paper's isotropic Toksvig; auto: SGGX when glossy metals are at least half of the drawn "
         "materials, else Toksvig",
         [](MethodSettings& s, const std::string& v) { s.ndf = v; },
         [](const MethodSettings& s) { return s.ndf; }));
     o.push_back(choice(
-        "agaa-lighting", words(kAggregateShadingNames), "auto", "agaa",
+        "agaa-lighting", words(kAggregateShadingNames), "auto", "agaa*",
         "the lighting schedule: a tile's further aggregates packed into a shared-memory list (compact), "
         "or each pixel shading its own (registers); auto: compact for c >= 2 on GPUs, registers on CPU "
         "devices such as lavapipe",
         [](MethodSettings& s, const std::string& v) { s.agaaLighting = v; },
         [](const MethodSettings& s) { return s.agaaLighting; }));
     o.push_back(choice(
-        "agaa-routing", words(kAggregateRoutingNames), "samples", "agaa",
+        "agaa-routing", words(kAggregateRoutingNames), "samples", "agaa*",
         "generation: each visible sample feeds its own aggregate, or the whole fragment its first visible "
         "sample's (Algorithm 2)",
         [](MethodSettings& s, const std::string& v) { s.agaaRouting = v; },
         [](const MethodSettings& s) { return s.agaaRouting; }));
     o.push_back(choice(
-        "agaa-atomics", words(kAggregateAtomicsNames), "auto", "agaa",
+        "agaa-atomics", words(kAggregateAtomicsNames), "auto", "agaa*",
         "generation atomics: 64-bit pairs of words where the device has shaderBufferInt64Atomics (auto), "
         "or 32-bit words",
         [](MethodSettings& s, const std::string& v) { s.agaaAtomics = v; },
         [](const MethodSettings& s) { return s.agaaAtomics; }));
     o.push_back(choice(
-        "agaa-subgroup-reduce", words(kSubgroupReductionNames), "auto", "agaa",
+        "agaa-subgroup-reduce", words(kSubgroupReductionNames), "auto", "agaa*",
         "generation: sum the atomics of fragments that hit one pixel across the subgroup first; auto: on "
         "for GPUs, off on CPU devices",
         [](MethodSettings& s, const std::string& v) { s.agaaSubgroupReduce = v; },
         [](const MethodSettings& s) { return s.agaaSubgroupReduce; }));
     o.push_back(choice(
-        "agaa-distance", words(kAggregateDistanceNames), "position", "agaa",
+        "agaa-distance", words(kAggregateDistanceNames), "position", "agaa*",
         "clustering: Equation 1, or the samples' distance to each other's tangent plane (a flat surface "
         "stays one aggregate)",
         [](MethodSettings& s, const std::string& v) { s.agaaDistance = v; },
@@ -176,12 +176,12 @@ std::vector<MethodOption> declareOptions() {
         [](MethodSettings& s, const std::string& v) { s.agaaGeneration = v; },
         [](const MethodSettings& s) { return s.agaaGeneration; }));
     o.push_back(choice(
-        "sample-rate-shading", {"on", "off"}, "off", "reference, simple-complex, agaa",
+        "sample-rate-shading", {"on", "off"}, "off", "reference, simple-complex*, sbaa, streaming, agaa*",
         "the per-sample G-buffer filled at sample rate: materials and normal maps supersampled",
         [](MethodSettings& s, const std::string& v) { s.sampleRateShading = v == "on"; },
         [](const MethodSettings& s) { return onOff(s.sampleRateShading); }));
     o.push_back(choice(
-        "curvature-roughness", {"on", "off"}, "off", "agaa",
+        "curvature-roughness", {"on", "off"}, "off", "agaa, agaa-samples",
         "the samples path: Kaplanyan curvature roughness in the fill pass (max footprint 0.3, boost 2.0)",
         [](MethodSettings& s, const std::string& v) { s.curvatureRoughness = v == "on"; },
         [](const MethodSettings& s) { return onOff(s.curvatureRoughness); }));
@@ -192,11 +192,11 @@ std::vector<MethodOption> declareOptions() {
         [](MethodSettings& s, const std::string& v) { s.effects.forceAll = v == "all"; },
         [](const MethodSettings& s) { return std::string(s.effects.forceAll ? "all" : "scene"); }));
     o.push_back(ranged(
-        Kind::Count, "shadow-taps", "N", 1, 8, "4", "agaa", "shadow taps inside each aggregate's footprint",
+        Kind::Count, "shadow-taps", "N", 1, 8, "4", "agaa*", "shadow taps inside each aggregate's footprint",
         [=](MethodSettings& s, const std::string& v) { s.effects.shadowTaps = count(v); },
         [](const MethodSettings& s) { return std::to_string(s.effects.shadowTaps); }));
     o.push_back(choice(
-        "shadow-footprint", words(kShadowFootprintNames), "adaptive", "agaa",
+        "shadow-footprint", words(kShadowFootprintNames), "adaptive", "agaa*",
         "shadow taps along the aggregate's depth variance (statistics), at its own sample positions "
         "(samples), or along the variance and, where those taps disagree, at every one of its samples "
         "(adaptive)",
@@ -211,7 +211,7 @@ std::vector<MethodOption> declareOptions() {
         [=](MethodSettings& s, const std::string& v) { s.effects.shadowMapSize = count(v); },
         [](const MethodSettings& s) { return std::to_string(s.effects.shadowMapSize); }));
     MethodOption debug = ranged(
-        Kind::Text, "debug", "VIEW", 0, 0, "none", "agaa, simple-complex",
+        Kind::Text, "debug", "VIEW", 0, 0, "none", "agaa*, simple-complex*",
         "a method's debug view instead of the lit frame (agaa: aggregates; simple-complex: complex)",
         [](MethodSettings& s, const std::string& v) { s.debug = v; },
         [](const MethodSettings& s) { return s.debug; });
@@ -286,12 +286,11 @@ void setMethodOption(MethodSettings& settings, const MethodOption& option, const
 
 bool methodReadsOption(const MethodOption& option, const std::string& method) {
     if (option.methods == "all") return true;
-    const std::string family = method.rfind("agaa", 0) == 0             ? "agaa"
-                               : method.rfind("simple-complex", 0) == 0 ? "simple-complex"
-                                                                        : method;
     std::istringstream methods(option.methods);
-    for (std::string m; std::getline(methods >> std::ws, m, ',');)
-        if (m == family) return true;
+    for (std::string m; std::getline(methods >> std::ws, m, ',');) {
+        const bool family = !m.empty() && m.back() == '*';
+        if (family ? method.rfind(m.substr(0, m.size() - 1), 0) == 0 : method == m) return true;
+    }
     return false;
 }
 

@@ -27,7 +27,9 @@ struct MethodOption {
     double lo = 0.0, hi = 0.0;
     std::string defaultText; // what the default does, in the value's own words
     std::string doc;         // one paragraph for --help
-    std::string methods;     // the methods that read it: "all", "agaa", "sbaa, streaming"
+    // The methods that read it: "all", or names, "family*" for every method whose name starts with
+    // it: "agaa*" is agaa, agaa-accumulate and agaa-samples.
+    std::string methods;
     // The setting in MethodSettings: `set` takes a value already checked against kind, choices
     // and range; `get` gives the text `set` would take for the same behaviour.
     std::function<void(MethodSettings&, const std::string&)> set;
@@ -43,8 +45,7 @@ const MethodOption* findMethodOption(std::string_view name);
 // the value and the allowed values: "--agaa-ndf 'lean' is not one of: auto, sggx, toksvig".
 void setMethodOption(MethodSettings& settings, const MethodOption& option, const std::string& value);
 
-// Whether `method` (agaa-render's name, e.g. "agaa-samples") reads the option: its family
-// ("agaa", "simple-complex", ...) is in the option's `methods`, or they are "all".
+// Whether `method` (agaa-render's name, e.g. "agaa-samples") reads the option (its `methods`).
 bool methodReadsOption(const MethodOption& option, const std::string& method);
 
 // Every setting as "name=value" (and the timings-only breakdown bits), ';'-separated: two settings

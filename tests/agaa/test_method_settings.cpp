@@ -109,6 +109,8 @@ TEST(MethodSettings, EachOptionNamesTheMethodsThatReadIt) {
     EXPECT_FALSE(reads("surfaces", "agaa"));
     EXPECT_TRUE(reads("sample-rate-shading", "simple-complex-naive")) << "the simple-complex family";
     EXPECT_FALSE(reads("sample-rate-shading", "fxaa"));
+    EXPECT_TRUE(reads("agaa-generation", "agaa"));
+    EXPECT_FALSE(reads("agaa-generation", "agaa-samples")) << "the path methods pin their own";
     for (const MethodOption& o : agaa::methodOptions()) {
         bool someone = false;
         for (const agaa::MethodInfo& m : agaa::knownMethods())

@@ -1,7 +1,7 @@
 #include "cli_options.h"
 
+#include "agaa/method_settings.h"
 #include "agaa/methods.h"
-#include "engine/frame/sample_pattern.h"
 #include "engine/scene/extra_lights.h"
 #include "engine/scene/scenegen.h"
 #include "tools/harness/converged_truth.h"
@@ -14,6 +14,17 @@
 namespace agaa::bench {
 
 namespace {
+
+// One value of an axis (n, c or S), checked by its method setting (agaa/method_settings.h).
+MethodSettings axisValue(const char* name, const std::string& value) {
+    MethodSettings s;
+    try {
+        setMethodOption(s, *findMethodOption(name), value);
+    } catch (const std::invalid_argument& e) {
+        throw BadArgument(e.what());
+    }
+    return s;
+}
 
 // The default sweep: small enough for about 5 minutes on 2 shared cores with validation off.
 constexpr uint32_t kDefaultWidth = 160, kDefaultHeight = 90;
@@ -58,9 +69,7 @@ std::string usage() {
            "                  [--surfaces 1,2,3] [--size WxH] [--frames K] [--warmup K] [--temporal K] "
            "[--full] [--job I/N]\n"
            "                  [--truth-supersampling K] [--truth-cache DIR]\n"
-           "                  [--agaa-generation auto|accumulate|samples|coverage] [--sample-rate-shading "
-           "on|off]\n"
-           "                  [--extra-lights 0,4,16,64] [--validate] [--help]\n"
+           "                  [--extra-lights 0,4,16,64] [--validate] [--help] [--SETTING VALUE...]\n"
            "       agaa-bench --out DIR --merge DIR1 DIR2 ...\n"
            "\n"
            "Renders every method and setting on every scene, measures GPU time per pass, memory, and error\n"
@@ -89,10 +98,11 @@ std::string usage() {
            "  --job I/N         run only jobs I, I+N, I+2N, ... of the plan (split a sweep; merge with "
            "--merge)\n"
            "  --merge DIR...    merge the jobs of several output directories into --out, without rendering\n"
-           "  --agaa-generation P  AGAA's generation path for method agaa (default auto); the methods\n"
-           "                    agaa-accumulate and agaa-samples sweep both paths side by side\n"
-           "  --sample-rate-shading on|off  every per-sample G-buffer fill at sample rate, the same-n\n"
-           "                    reference's too (default off; the converged truth always is)\n"
+           "  --SETTING VALUE   a method setting of agaa-render's (agaa-render --help), applied to every\n"
+           "                    job whose method reads it, the same-n reference's too (the converged truth\n"
+           "                    is always the reference at n = 32 with sample-rate shading), e.g.\n"
+           "                    --agaa-generation accumulate (the methods agaa-accumulate and agaa-samples\n"
+           "                    sweep both paths side by side) or --sample-rate-shading on\n"
            "  --truth-supersampling K  the truth's K x K sub-pixel tiles at n = 32, 1..16 (default 4: 512\n"
            "                    samples a pixel); an error difference below the truth's own error\n"
            "                    estimate is reported as undecided\n"
@@ -124,7 +134,16 @@ BenchOptions parseOptions(int argc, char** argv) {
             if (i + 1 >= argc) throw BadArgument(a + " needs a value");
             return argv[++i];
         };
-        if (a == "--help" || a == "-h")
+        const MethodOption* setting = a.rfind("--", 0) == 0 ? findMethodOption(a.substr(2)) : nullptr;
+        if (setting && setting->name != "samples" && setting->name != "aggregates" &&
+            setting->name != "surfaces") {
+            try {
+                setMethodOption(s.methodSettings, *setting, value());
+            } catch (const std::invalid_argument& e) {
+                throw BadArgument(e.what());
+            }
+            s.givenSettings.push_back(setting->name);
+        } else if (a == "--help" || a == "-h")
             o.help = true;
         else if (a == "--out")
             o.out = value();
@@ -148,36 +167,20 @@ BenchOptions parseOptions(int argc, char** argv) {
                                       ")");
         } else if (a == "--samples") {
             samples.emplace();
-            for (const std::string& v : splitList(a, value())) {
-                uint32_t n = parseUint(a, v, 1, 32);
-                if (!eng::frame::isSupportedSampleCount(n))
-                    throw BadArgument("--samples: '" + v + "' is not supported (allowed: " +
-                                      eng::frame::supportedSampleCounts() + ")");
-                samples->push_back(n);
-            }
+            for (const std::string& v : splitList(a, value()))
+                samples->push_back(axisValue("samples", v).samples);
         } else if (a == "--extra-lights") {
             s.extraLights.clear();
             for (const std::string& v : splitList(a, value()))
                 s.extraLights.push_back(parseUint(a, v, 0, eng::scene::kMaxExtraLights));
-        } else if (a == "--agaa-generation") {
-            const std::string v = value();
-            if (v != "auto" && v != "accumulate" && v != "samples" && v != "coverage")
-                throw BadArgument("--agaa-generation '" + v +
-                                  "' is not one of: auto, accumulate, samples, coverage");
-            s.agaaGeneration = v;
-        } else if (a == "--sample-rate-shading") {
-            const std::string v = value();
-            if (v != "on" && v != "off")
-                throw BadArgument("--sample-rate-shading '" + v + "' is not one of: on, off");
-            s.sampleRateShading = v == "on";
         } else if (a == "--surfaces") {
             s.surfaces.clear();
             for (const std::string& v : splitList(a, value()))
-                s.surfaces.push_back(parseUint(a, v, 1, 6));
+                s.surfaces.push_back(axisValue("surfaces", v).surfaces);
         } else if (a == "--aggregates") {
             aggregates.emplace();
             for (const std::string& v : splitList(a, value()))
-                aggregates->push_back(parseUint(a, v, 1, 4));
+                aggregates->push_back(axisValue("aggregates", v).aggregates);
         } else if (a == "--size") {
             const std::string v = value();
             const size_t x = v.find('x');

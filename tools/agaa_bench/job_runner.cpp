@@ -2,6 +2,8 @@
 
 #include "shading_lanes.h"
 
+#include "agaa/method_settings.h"
+
 #include "engine/frame/frame_constants.h"
 #include "engine/io/metrics.h"
 #include "engine/io/png.h"
@@ -69,11 +71,13 @@ RenderRequest JobRunner::request(const std::string& method, uint32_t samples, ui
                                  uint32_t surfaces) const {
     RenderRequest r;
     r.method = method;
+    for (const std::string& name : m_settings.givenSettings) {
+        const MethodOption& option = *findMethodOption(name);
+        if (methodReadsOption(option, method)) option.set(r.settings, option.get(m_settings.methodSettings));
+    }
     r.settings.samples = samples;
     r.settings.surfaces = surfaces; // 0: the method's default
     if (aggregates != kAggregatesWhenUnused) r.settings.aggregates = aggregates;
-    if (method == "agaa") r.settings.agaaGeneration = m_settings.agaaGeneration;
-    r.settings.sampleRateShading = m_settings.sampleRateShading;
     r.view.width = width;
     r.view.height = height;
     // A real scene gives no exposure: metered, the same for every method of the sweep.

@@ -4,6 +4,8 @@
 // takes). A job's id names its JSON file, so sweeps split with --job I/N land in
 // files that merge without clashes.
 
+#include "agaa/common/technique.h"
+
 #include <cstddef>
 #include <cstdint>
 #include <filesystem>
@@ -35,11 +37,12 @@ struct SweepSettings {
     float temporalStepDegrees = 0.5f;
     uint32_t temporalMaxWidth = 320; // the path renders at the sweep size scaled down to this width
     bool validate = false;
-    // Applied to every job: AGAA's generation path for method "agaa" (the agaa-accumulate and
-    // agaa-samples methods pin theirs), and sample-rate shading of every per-sample G-buffer fill
-    // (the same-n reference's included; the converged truth is always at sample rate).
-    std::string agaaGeneration = "auto";
-    bool sampleRateShading = false;
+    // The method settings given as flags (agaa/method_settings.h, agaa-render's), by name, each
+    // applied to every job whose method reads it (the same-n reference's included; the converged
+    // truth is always the reference at n = 32 with sample-rate shading). n, c and S are the
+    // plan's axes, not among them.
+    agaa::MethodSettings methodSettings;
+    std::vector<std::string> givenSettings;
 };
 
 // n and c of a method that does not take them: n is the single sample it renders, c is 0 (none).
