@@ -15,6 +15,10 @@ namespace {
 
 using Kind = MethodOption::Kind;
 
+// The word `get` gives, and `set` takes, for "the method's own default" where MethodSettings holds
+// a sentinel (0 surfaces, a negative angle, length or threshold).
+constexpr const char* kDefault = "default";
+
 // The words of an enum's NamedValue table, in its order.
 template <typename T, size_t N> std::vector<std::string> words(const NamedValue<T> (&table)[N]) {
     std::vector<std::string> out;
@@ -81,7 +85,7 @@ std::vector<MethodOption> declareOptions() {
     const auto count = [](const std::string& v) { return uint32_t(std::stoul(v)); };
     const auto number = [](const std::string& v) { return std::stof(v); };
     // A negative float means "the method's documented default" in MethodSettings.
-    const auto orDefault = [](float v) { return v < 0.0f ? std::string("default") : numberText(v); };
+    const auto orDefault = [](float v) { return v < 0.0f ? std::string(kDefault) : numberText(v); };
     std::vector<MethodOption> o;
     std::vector<std::string> sampleCounts;
     for (uint32_t n = 1; n <= 32; ++n)
@@ -98,24 +102,28 @@ std::vector<MethodOption> declareOptions() {
     o.push_back(ranged(
         Kind::Count, "surfaces", "S", 1, 6, "sbaa 4, streaming 3", "sbaa, streaming",
         "surfaces kept per pixel: sbaa 1..6, streaming 1..3",
-        [=](MethodSettings& s, const std::string& v) { s.surfaces = count(v); },
+        [=](MethodSettings& s, const std::string& v) { s.surfaces = v == kDefault ? 0 : count(v); },
         [](const MethodSettings& s) {
-            return s.surfaces ? std::to_string(s.surfaces) : std::string("default");
+            return s.surfaces ? std::to_string(s.surfaces) : std::string(kDefault);
         }));
     o.push_back(ranged(
         Kind::Number, "streaming-normal-angle", "DEG", 1e-3, 90.0, "45, the paper's pi/4", "streaming",
         "the merge threshold on normals in degrees (the authors' code uses cos = 0.785, about 38.2)",
-        [=](MethodSettings& s, const std::string& v) { s.streamingNormalAngle = number(v); },
+        [=](MethodSettings& s, const std::string& v) {
+            s.streamingNormalAngle = v == kDefault ? -1.0f : number(v);
+        },
         [=](const MethodSettings& s) { return orDefault(s.streamingNormalAngle); }));
     o.push_back(ranged(
         Kind::Number, "characteristic-length", "K", 1e-6, 1e6, "0.1", "agaa*",
         "clustering (Equation 1): the characteristic length k in metres",
-        [=](MethodSettings& s, const std::string& v) { s.characteristicLength = number(v); },
+        [=](MethodSettings& s, const std::string& v) {
+            s.characteristicLength = v == kDefault ? -1.0f : number(v);
+        },
         [=](const MethodSettings& s) { return orDefault(s.characteristicLength); }));
     o.push_back(ranged(
         Kind::Number, "seed-threshold", "T", 0.0, 1e6, "0.05", "agaa*",
         "clustering (Equation 1): the seed threshold t",
-        [=](MethodSettings& s, const std::string& v) { s.seedThreshold = number(v); },
+        [=](MethodSettings& s, const std::string& v) { s.seedThreshold = v == kDefault ? -1.0f : number(v); },
         [=](const MethodSettings& s) { return orDefault(s.seedThreshold); }));
     o.push_back(choice(
         "agaa-position", words(kAggregatePositionNames), "mean", "agaa*",
@@ -257,6 +265,7 @@ const MethodOption* findMethodOption(std::string_view name) {
 
 void setMethodOption(MethodSettings& settings, const MethodOption& option, const std::string& value) {
     const std::string flag = "--" + option.name;
+    if (value == kDefault && option.get(MethodSettings{}) == kDefault) return option.set(settings, value);
     switch (option.kind) {
     case Kind::Choice:
         for (const std::string& c : option.choices)

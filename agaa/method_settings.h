@@ -41,7 +41,9 @@ const std::vector<MethodOption>& methodOptions();
 // The option called `name` (without "--"), or nullptr.
 const MethodOption* findMethodOption(std::string_view name);
 
-// Checks `value` against the option and sets it. Throws std::invalid_argument naming the flag,
+// Checks `value` against the option and sets it; "default" restores the method's own default of
+// the options whose default depends on the method (surfaces) or is the paper's (the clustering
+// constants, streaming's angle). Throws std::invalid_argument naming the flag,
 // the value and the allowed values: "--agaa-ndf 'lean' is not one of: auto, sggx, toksvig".
 void setMethodOption(MethodSettings& settings, const MethodOption& option, const std::string& value);
 

@@ -1,5 +1,6 @@
 #include "samples/viewer/controls.h"
 
+#include "agaa/method_settings.h"
 #include "agaa/methods.h"
 #include "engine/frame/frame_constants.h"
 
@@ -53,21 +54,6 @@ void validate(const ViewerSettings& s) {
                                     " is out of range (1..4)");
     if (s.debugView > methods[s.method].debugViews.size())
         throw std::invalid_argument("debug view index out of range for " + methods[s.method].name);
-    auto names = [](const auto& list) {
-        std::string all;
-        for (const char* n : list)
-            all += (all.empty() ? "" : ", ") + std::string(n);
-        return all;
-    };
-    auto known = [](const auto& list, const std::string& v) {
-        return std::find_if(std::begin(list), std::end(list), [&](const char* n) { return v == n; }) !=
-               std::end(list);
-    };
-    if (!known(kNdfs, s.ndf))
-        throw std::invalid_argument("--ndf '" + s.ndf + "' is unknown (allowed: " + names(kNdfs) + ")");
-    if (!known(kGenerations, s.generation))
-        throw std::invalid_argument("--agaa-generation '" + s.generation +
-                                    "' is unknown (allowed: " + names(kGenerations) + ")");
     if (!(s.exposureEv >= kMinExposureEv && s.exposureEv <= kMaxExposureEv))
         throw std::invalid_argument("--exposure-ev " + std::to_string(s.exposureEv) +
                                     " is out of range (-8..8)");
@@ -80,7 +66,7 @@ void validate(const ViewerSettings& s) {
     if (!(s.splitFraction > 0.0f && s.splitFraction < 1.0f))
         throw std::invalid_argument("split position " + std::to_string(s.splitFraction) +
                                     " is out of range (0, 1)");
-    validate(s.effects);
+    validate(s.methodSettings.effects);
 }
 
 namespace {
@@ -162,6 +148,9 @@ RenderRequest Controls::request(uint32_t width, uint32_t height) const {
     const MethodInfo& method = knownMethods()[m_settings.method];
     RenderRequest r;
     r.method = method.name;
+    for (const MethodOption& option : methodOptions())
+        if (methodReadsOption(option, method.name))
+            option.set(r.settings, option.get(m_settings.methodSettings));
     r.settings.samples = m_settings.samples;
     r.settings.aggregates = m_settings.aggregates;
     r.settings.debug = m_settings.debugView ? method.debugViews[m_settings.debugView - 1] : std::string();
@@ -170,10 +159,6 @@ RenderRequest Controls::request(uint32_t width, uint32_t height) const {
     r.view.camera = 0;
     r.view.viewOverride = m_camera.view();
     r.view.exposure = std::exp2(m_settings.exposureEv);
-    const bool agaaFamily = method.usesAggregates;
-    if (agaaFamily) r.settings.ndf = m_settings.ndf;
-    if (method.name == "agaa") r.settings.agaaGeneration = m_settings.generation;
-    r.settings.effects = m_settings.effects;
     r.warmupFrames = 0;
     r.timedFrames = 1; // interactive: one frame each, the live numbers are that frame's
     return r;

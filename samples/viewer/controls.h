@@ -4,7 +4,7 @@
 // view, X compare with the reference, R reset, P screenshot). Pure logic over InputEvents: no window, no
 // device.
 
-#include "agaa/common/effects.h"
+#include "agaa/common/technique.h"
 #include "engine/scene/scene.h"
 #include "samples/viewer/window.h"
 #include "tools/harness/frame_renderer.h"
@@ -47,10 +47,6 @@ class OrbitCamera {
     float m_yaw = 0.0f, m_pitch = 0.0f, m_distance = 1.0f;
 };
 
-// The values the UI offers for the string settings of MethodSettings (agaa-render's options).
-inline constexpr const char* kNdfs[] = {"auto", "sggx", "toksvig"};
-inline constexpr const char* kGenerations[] = {"auto", "accumulate", "samples", "coverage"};
-inline constexpr uint32_t kShadowMapSizes[] = {256, 512, 1024, 2048};
 inline constexpr float kMinExposureEv = -8.0f, kMaxExposureEv = 8.0f;
 
 // Against the per-sample reference at the same n: off, split (left the method, right the
@@ -63,10 +59,10 @@ struct ViewerSettings {
     size_t method = 0; // index into knownMethods()
     uint32_t samples = 8;
     uint32_t aggregates = 2;
-    size_t debugView = 0;            // 0 = none, else knownMethods()[method].debugViews[debugView - 1]
-    std::string ndf = "auto";        // AGAA family
-    std::string generation = "auto"; // method "agaa" only (the other two fix their path)
-    EffectSettings effects;
+    size_t debugView = 0; // 0 = none, else knownMethods()[method].debugViews[debugView - 1]
+    // Every other method setting (agaa/method_settings.h: agaa-render's flags); a frame takes
+    // those its method reads, the panel lists them all.
+    MethodSettings methodSettings;
     float exposureEv = 0.0f; // exposure = 2^exposureEv, on top of the scene's 1.0
     Compare compare = Compare::Off;
     float splitFraction = 0.5f;

@@ -6,6 +6,7 @@
 // command line, scene or setting; 3 no window (GLFW cannot start: no display) or a missing device
 // capability.
 
+#include "agaa/method_settings.h"
 #include "agaa/methods.h"
 #include "engine/io/io_error.h"
 #include "engine/io/png.h"
@@ -49,14 +50,14 @@ constexpr uint32_t kEventsEvery = 16;
 
 constexpr const char* kUsage =
     R"(usage: agaa-viewer [--scene FILE.gltf|.glb | --builtin NAME] [--width W --height H]
-                   [--method NAME] [--samples N] [--aggregates C] [--debug VIEW] [--ndf NDF]
-                   [--agaa-generation PATH] [--exposure-ev EV] [--split | --difference [--difference-gain G]]
+                   [--method NAME] [--samples N] [--aggregates C] [--debug VIEW] [--SETTING VALUE...]
+                   [--exposure-ev EV] [--split | --difference [--difference-gain G]]
                    [--frames N [--screenshot FILE.png]] [--script cycle-methods --screenshot-dir DIR]
                    [--pixel-size P] [--no-ui] [--validate] [--help]
   --width/--height  window size in pixels, 1..8192 (default 640x360); rendered 1:1
   --samples         4, 8, 16 or 32 (default 8); --aggregates 1..4 (default 2)
-  --ndf             auto, sggx or toksvig (AGAA family); --agaa-generation auto, accumulate,
-                    samples or coverage (method agaa)
+  --SETTING VALUE   any other method setting of agaa-render's (agaa-render --help), e.g.
+                    --agaa-ndf sggx; the panel's "method settings" lists them all
   --exposure-ev     exposure in stops, -8..8 (default 0: exposure 1)
   --split           split view: right half the per-sample reference at the same n
   --difference      difference view: |method - reference at the same n| x gain (default 4, 1..64)
@@ -123,7 +124,16 @@ Options parse(int argc, char** argv) {
             if (i + 1 >= argc) throw BadArgument(a + " needs a value");
             return argv[++i];
         };
-        if (a == "--scene")
+        const agaa::MethodOption* setting =
+            a.rfind("--", 0) == 0 ? agaa::findMethodOption(a.substr(2)) : nullptr;
+        if (setting && setting->name != "samples" && setting->name != "aggregates" &&
+            setting->name != "debug") {
+            try {
+                agaa::setMethodOption(o.settings.methodSettings, *setting, value());
+            } catch (const std::invalid_argument& e) {
+                throw BadArgument(e.what());
+            }
+        } else if (a == "--scene")
             o.sceneFile = value();
         else if (a == "--builtin")
             o.builtin = value();
@@ -139,10 +149,6 @@ Options parse(int argc, char** argv) {
             o.settings.aggregates = parseUint(a, value(), 1, 64);
         else if (a == "--debug")
             o.debug = value();
-        else if (a == "--ndf")
-            o.settings.ndf = value();
-        else if (a == "--agaa-generation")
-            o.settings.generation = value();
         else if (a == "--exposure-ev")
             o.settings.exposureEv =
                 parseFloat(a, value(), agaa::viewer::kMinExposureEv, agaa::viewer::kMaxExposureEv);
@@ -363,11 +369,10 @@ int run(const Options& o) {
             }
             const agaa::viewer::ViewerSettings& now = controls.settings();
             const bool settingsChanged =
-                std::tie(now.method, now.samples, now.aggregates, now.debugView, now.ndf, now.generation,
-                         now.effects.forceAll, now.effects.shadowMapSize, now.effects.shadowTaps) !=
-                std::tie(previous.method, previous.samples, previous.aggregates, previous.debugView,
-                         previous.ndf, previous.generation, previous.effects.forceAll,
-                         previous.effects.shadowMapSize, previous.effects.shadowTaps);
+                std::tie(now.method, now.samples, now.aggregates, now.debugView) !=
+                    std::tie(previous.method, previous.samples, previous.aggregates, previous.debugView) ||
+                agaa::methodSettingsKey(now.methodSettings) !=
+                    agaa::methodSettingsKey(previous.methodSettings);
             previous = now;
             if (settingsChanged) error.clear(); // the refusal stays on screen until the next change
 

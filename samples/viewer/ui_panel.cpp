@@ -1,5 +1,6 @@
 #include "samples/viewer/ui_panel.h"
 
+#include "agaa/method_settings.h"
 #include "agaa/methods.h"
 
 #include <imgui.h>
@@ -31,17 +32,42 @@ void swatch(ImVec4 colour, const char* text) {
     ImGui::TextWrapped("%s", text);
 }
 
-template <class List> bool comboOf(const char* label, std::string& value, const List& list) {
-    bool changed = false;
-    if (ImGui::BeginCombo(label, value.c_str())) {
-        for (const char* item : list)
-            if (ImGui::Selectable(item, value == item)) {
-                value = item;
-                changed = true;
+// Every method setting but n, c and the debug view (their own controls above), from its one
+// declaration (agaa/method_settings.h): a combo for a choice, a text field for a number (Enter
+// applies it; a refused value shows why). Settings the method does not read are greyed out.
+void methodSettingsSection(MethodSettings& settings, const std::string& method) {
+    if (!ImGui::TreeNode("method settings")) return;
+    static std::string refusal;
+    for (const MethodOption& option : methodOptions()) {
+        if (option.name == "samples" || option.name == "aggregates" || option.name == "debug") continue;
+        ImGui::BeginDisabled(!methodReadsOption(option, method));
+        const std::string current = option.get(settings);
+        if (option.kind == MethodOption::Kind::Choice) {
+            if (ImGui::BeginCombo(option.name.c_str(), current.c_str())) {
+                for (const std::string& choice : option.choices)
+                    if (ImGui::Selectable(choice.c_str(), choice == current)) option.set(settings, choice);
+                ImGui::EndCombo();
             }
-        ImGui::EndCombo();
+        } else {
+            char text[32];
+            std::snprintf(text, sizeof text, "%s", current.c_str());
+            if (ImGui::InputText(option.name.c_str(), text, sizeof text,
+                                 ImGuiInputTextFlags_EnterReturnsTrue)) {
+                try {
+                    setMethodOption(settings, option, text);
+                    refusal.clear();
+                } catch (const std::invalid_argument& e) {
+                    refusal = e.what();
+                }
+            }
+        }
+        ImGui::EndDisabled();
+        if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
+            ImGui::SetTooltip("%s (%s; default %s)", option.doc.c_str(), option.methods.c_str(),
+                              option.defaultText.c_str());
     }
-    return changed;
+    if (!refusal.empty()) ImGui::TextWrapped("%s", refusal.c_str());
+    ImGui::TreePop();
 }
 
 void settingsSection(Controls& controls, PanelActions& actions) {
@@ -70,10 +96,6 @@ void settingsSection(Controls& controls, PanelActions& actions) {
     ImGui::BeginDisabled(!method.usesAggregates);
     int c = int(s.aggregates);
     if (ImGui::SliderInt("c aggregates", &c, 1, int(kMaxAggregates))) s.aggregates = uint32_t(c);
-    comboOf("NDF", s.ndf, kNdfs);
-    ImGui::EndDisabled();
-    ImGui::BeginDisabled(method.name != "agaa");
-    comboOf("generation", s.generation, kGenerations);
     ImGui::EndDisabled();
 
     const char* debugName = s.debugView ? method.debugViews[s.debugView - 1].c_str() : "off";
@@ -103,22 +125,7 @@ void settingsSection(Controls& controls, PanelActions& actions) {
         ImGui::SliderFloat("gain", &s.differenceGain, 1.0f, kMaxDifferenceGain, "x%.0f",
                            ImGuiSliderFlags_Logarithmic);
 
-    if (ImGui::TreeNode("effects")) {
-        ImGui::Checkbox("force all effects", &s.effects.forceAll);
-        const std::string size = std::to_string(s.effects.shadowMapSize);
-        if (ImGui::BeginCombo("shadow map", size.c_str())) {
-            for (uint32_t v : kShadowMapSizes)
-                if (ImGui::Selectable(std::to_string(v).c_str(), s.effects.shadowMapSize == v))
-                    s.effects.shadowMapSize = v;
-            ImGui::EndCombo();
-        }
-        int taps = int(s.effects.shadowTaps);
-        if (ImGui::SliderInt("shadow taps", &taps, 1, 4)) s.effects.shadowTaps = uint32_t(taps);
-        int footprint = int(s.effects.shadowFootprint);
-        if (ImGui::Combo("tap footprint", &footprint, "statistics\0samples\0adaptive\0"))
-            s.effects.shadowFootprint = EffectSettings::ShadowFootprint(footprint);
-        ImGui::TreePop();
-    }
+    methodSettingsSection(s.methodSettings, method.name);
     if (ImGui::Button("reset (R)")) actions.reset = true;
     ImGui::SameLine();
     if (ImGui::Button("screenshot (P)")) actions.screenshot = true;

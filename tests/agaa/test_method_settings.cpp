@@ -57,6 +57,10 @@ TEST(MethodSettings, EveryOptionRoundTripsAndMovesTheCacheKey) {
         const std::string value = otherValue(o, s);
         agaa::setMethodOption(s, o, value);
         EXPECT_EQ(o.get(s), value) << o.name << ": get gives what set took";
+        MethodSettings back = s;
+        agaa::setMethodOption(back, o, o.get(defaults));
+        EXPECT_EQ(agaa::methodSettingsKey(back), defaultKey)
+            << o.name << ": the default's text sets the default";
         // The key sees every option: before this table it was a hand-written concatenation that
         // could miss one, and two techniques would then share a cache entry.
         EXPECT_NE(agaa::methodSettingsKey(s), defaultKey) << o.name << " does not reach the key";
@@ -94,6 +98,9 @@ TEST(MethodSettings, BadValuesNameTheFlagAndTheAllowedValues) {
               "--streaming-normal-angle 'nan' is not a number in [0.001, 90]");
     EXPECT_EQ(message("seed-threshold", "0.1.2"), "--seed-threshold '0.1.2' is not a number in [0, 1000000]");
     EXPECT_EQ(message("agaa-generation", "coverage"), "accepted") << "refused later, by the device (exit 3)";
+    EXPECT_EQ(message("surfaces", "default"), "accepted");
+    EXPECT_EQ(message("aggregates", "default"), "--aggregates 'default' is not an integer in 1..4")
+        << "c's default does not depend on the method: it is 2";
     EXPECT_EQ(s.agaaGeneration, "coverage");
     EXPECT_EQ(s.aggregates, 2u) << "a refused value leaves the setting alone";
 }
