@@ -301,6 +301,11 @@ nlohmann::json statsJson(const Options& o, const agaa::RenderResult& r, const en
     j["exposure"] = r.exposure;
     if (r.meteredEv100) j["ev100"] = *r.meteredEv100;
     j["effects"] = o.request.settings.effects.forceAll ? "all" : "scene";
+    // Every method setting the method reads, in agaa-render's words (agaa/method_settings.h).
+    j["settings"] = nlohmann::json::object();
+    for (const agaa::MethodOption& option : agaa::methodOptions())
+        if (agaa::methodReadsOption(option, o.request.method))
+            j["settings"][option.name] = option.get(o.request.settings);
     j["variants"] = nlohmann::json::array();
     for (const agaa::VariantChoice& v : r.variants)
         j["variants"].push_back({{"effect", v.effect}, {"variant", v.variant}, {"cause", v.cause}});
