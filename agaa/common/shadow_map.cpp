@@ -1,5 +1,6 @@
 #include "agaa/common/shadow_map.h"
 
+#include "engine/frame/frame_constants.h"
 #include "engine/vk/check.h"
 #include "engine/vk/descriptors.h"
 #include "shaders/common/shadow_map_frag.h"
@@ -16,74 +17,80 @@ namespace vk = eng::vk;
 
 namespace {
 
-std::array<glm::vec3, 8> boxCorners(glm::vec3 lo, glm::vec3 hi) {
-    std::array<glm::vec3, 8> c;
+std::array<glm::dvec3, 8> boxCorners(glm::dvec3 lo, glm::dvec3 hi) {
+    std::array<glm::dvec3, 8> c;
     for (int i = 0; i < 8; ++i)
         c[i] = {(i & 1) ? hi.x : lo.x, (i & 2) ? hi.y : lo.y, (i & 4) ? hi.z : lo.z};
     return c;
 }
 
-glm::vec3 anyPerpendicular(glm::vec3 d) {
-    return std::abs(d.y) < 0.99f ? glm::vec3(0.0f, 1.0f, 0.0f) : glm::vec3(1.0f, 0.0f, 0.0f);
+glm::dvec3 anyPerpendicular(glm::dvec3 d) {
+    return std::abs(d.y) < 0.99 ? glm::dvec3(0.0, 1.0, 0.0) : glm::dvec3(1.0, 0.0, 0.0);
 }
 
 } // namespace
 
-glm::mat4 ShadowMapPass::fitLight(const eng::scene::Scene& scene, const eng::scene::Light& light,
-                                  const shared::FrameConstants* frame, float* texelMetres) {
-    glm::vec3 lo = scene.bounds.min, hi = scene.bounds.max;
-    if (!(glm::all(glm::lessThanEqual(lo, hi)))) lo = hi = glm::vec3(0.0f);
-    const glm::vec3 centre = 0.5f * (lo + hi);
-    const float radius = std::max(0.5f * glm::length(hi - lo), 1e-3f);
-    glm::vec3 d = glm::length(light.direction) > 0.0f ? glm::normalize(light.direction) : glm::vec3(0, -1, 0);
+// In double throughout: 1e5 m from the origin (hard-far) fp32 lost the fit's light view and the
+// camera frustum to cancellation, and the map moved against the scene between two frames that
+// differ only by where the origin is.
+glm::dmat4 ShadowMapPass::fitLight(const eng::scene::Scene& scene, const eng::scene::Light& light,
+                                   const shared::FrameConstants* frame, float* texelMetres) {
+    glm::dvec3 lo = scene.bounds.min, hi = scene.bounds.max;
+    if (!(glm::all(glm::lessThanEqual(lo, hi)))) lo = hi = glm::dvec3(0.0);
+    const glm::dvec3 centre = 0.5 * (lo + hi);
+    const double radius = std::max(0.5 * glm::length(hi - lo), 1e-3);
+    const glm::dvec3 position = light.position;
+    glm::dvec3 d = glm::length(light.direction) > 0.0f ? glm::normalize(glm::dvec3(light.direction))
+                                                       : glm::dvec3(0, -1, 0);
     if (light.type == eng::scene::LightType::Spot) {
-        const glm::mat4 view = glm::lookAt(light.position, light.position + d, anyPerpendicular(d));
-        float far = 0.0f;
-        for (const glm::vec3& c : boxCorners(lo, hi))
-            far = std::max(far, glm::length(c - light.position));
-        if (light.range > 0.0f) far = std::min(far, light.range);
-        far = std::max(far, 0.1f);
-        const float near = std::max(0.01f, far * 1e-3f);
-        const float fov = std::clamp(2.0f * light.outerConeAngle, 0.02f, 2.9f);
+        const glm::dmat4 view = glm::lookAt(position, position + d, anyPerpendicular(d));
+        double far = 0.0;
+        for (const glm::dvec3& c : boxCorners(lo, hi))
+            far = std::max(far, glm::length(c - position));
+        if (light.range > 0.0f) far = std::min(far, double(light.range));
+        far = std::max(far, 0.1);
+        const double near = std::max(0.01, far * 1e-3);
+        const double fov = std::clamp(2.0 * double(light.outerConeAngle), 0.02, 2.9);
         if (texelMetres)
-            *texelMetres = 2.0f * std::tan(0.5f * fov) * glm::length(centre - light.position) / 1024.0f;
-        return glm::perspectiveRH_ZO(fov, 1.0f, near, far) * view;
+            *texelMetres = float(2.0 * std::tan(0.5 * fov) * glm::length(centre - position) / 1024.0);
+        return glm::perspectiveRH_ZO(fov, 1.0, near, far) * view;
     }
-    const glm::mat4 view = glm::lookAt(centre - d * (2.0f * radius), centre, anyPerpendicular(d));
-    glm::vec3 sceneLo(1e30f), sceneHi(-1e30f);
-    for (const glm::vec3& c : boxCorners(lo, hi)) {
-        glm::vec3 p = glm::vec3(view * glm::vec4(c, 1.0f));
+    const glm::dmat4 view = glm::lookAt(centre - d * (2.0 * radius), centre, anyPerpendicular(d));
+    glm::dvec3 sceneLo(1e300), sceneHi(-1e300);
+    for (const glm::dvec3& c : boxCorners(lo, hi)) {
+        glm::dvec3 p = glm::dvec3(view * glm::dvec4(c, 1.0));
         sceneLo = glm::min(sceneLo, p);
         sceneHi = glm::max(sceneHi, p);
     }
     // The camera frustum's corners (reversed Z: ndc z 1 near, 0 far) in light space. For a tile of
     // a larger view (FrameConstants::viewTile) the whole view's: x_tile = s x - P'20, so the whole
     // view's +-1 lies at +-s - P'20 in the tile's NDC, and every tile gets the same shadow map.
-    glm::vec3 viewLo(1e30f), viewHi(-1e30f);
-    const glm::mat4 inverseViewProj = frame ? glm::inverse(frame->viewProj) : glm::mat4(0.0f);
-    const float tileScale = frame && frame->viewTile.x > 1.0f ? frame->viewTile.x : 1.0f;
-    const glm::vec2 tileOffset =
-        frame && tileScale > 1.0f ? glm::vec2(frame->projParams.z, frame->projParams.w) : glm::vec2(0.0f);
+    glm::dvec3 viewLo(1e300), viewHi(-1e300);
+    const glm::dmat4 inverseViewProj =
+        frame ? glm::inverse(glm::dmat4(frame->proj) * glm::dmat4(frame->view)) : glm::dmat4(0.0);
+    const double tileScale = frame && frame->viewTile.x > 1.0f ? frame->viewTile.x : 1.0;
+    const glm::dvec2 tileOffset =
+        frame && tileScale > 1.0 ? glm::dvec2(frame->projParams.z, frame->projParams.w) : glm::dvec2(0.0);
     for (int i = 0; frame && i < 8; ++i) {
-        glm::vec4 ndc((i & 1) ? tileScale - tileOffset.x : -tileScale - tileOffset.x,
-                      (i & 2) ? tileScale - tileOffset.y : -tileScale - tileOffset.y, (i & 4) ? 1.0f : 0.0f,
-                      1.0f);
-        glm::vec4 w = inverseViewProj * ndc;
-        if (std::abs(w.w) < 1e-12f) continue;
-        glm::vec3 p = glm::vec3(view * glm::vec4(glm::vec3(w) / w.w, 1.0f));
+        glm::dvec4 ndc((i & 1) ? tileScale - tileOffset.x : -tileScale - tileOffset.x,
+                       (i & 2) ? tileScale - tileOffset.y : -tileScale - tileOffset.y, (i & 4) ? 1.0 : 0.0,
+                       1.0);
+        glm::dvec4 w = inverseViewProj * ndc;
+        if (std::abs(w.w) < 1e-12) continue;
+        glm::dvec3 p = glm::dvec3(view * glm::dvec4(glm::dvec3(w) / w.w, 1.0));
         viewLo = glm::min(viewLo, p);
         viewHi = glm::max(viewHi, p);
     }
-    glm::vec2 xyLo = glm::max(glm::vec2(sceneLo), glm::vec2(viewLo));
-    glm::vec2 xyHi = glm::min(glm::vec2(sceneHi), glm::vec2(viewHi));
+    glm::dvec2 xyLo = glm::max(glm::dvec2(sceneLo), glm::dvec2(viewLo));
+    glm::dvec2 xyHi = glm::min(glm::dvec2(sceneHi), glm::dvec2(viewHi));
     if (!(xyLo.x < xyHi.x && xyLo.y < xyHi.y)) { // no overlap (or NaN): the whole scene
-        xyLo = glm::vec2(sceneLo);
-        xyHi = glm::vec2(sceneHi);
+        xyLo = glm::dvec2(sceneLo);
+        xyHi = glm::dvec2(sceneHi);
     }
-    const float pad = 1e-3f * radius;
+    const double pad = 1e-3 * radius;
     xyLo -= pad;
     xyHi += pad;
-    if (texelMetres) *texelMetres = std::max(xyHi.x - xyLo.x, xyHi.y - xyLo.y) / 1024.0f;
+    if (texelMetres) *texelMetres = float(std::max(xyHi.x - xyLo.x, xyHi.y - xyLo.y) / 1024.0);
     // Light view looks down -z: depth from the light is -z, in [-sceneHi.z, -sceneLo.z].
     return glm::orthoRH_ZO(xyLo.x, xyHi.x, xyLo.y, xyHi.y, -sceneHi.z - pad, -sceneLo.z + pad) * view;
 }
@@ -142,13 +149,17 @@ ShadowMaps ShadowMapPass::add(rg::Graph& graph, const FrameInputs& in) {
     // camera 0 (what makeFrameConstants builds by default); the fit then covers the whole scene.
     const glm::mat4 view =
         in.constants ? in.constants->view : (scene.cameras.empty() ? glm::mat4(1.0f) : scene.cameras[0].view);
-    const glm::mat4 viewToWorld = glm::inverse(view);
+    // In double: the product's translation is a difference of terms as large as the world
+    // coordinates (1e5 m from the origin fp32 cancels them to millimetres; FrameConstants::eye).
+    const glm::dmat4 viewToWorld = glm::inverse(glm::dmat4(view));
+    m_constants.eye = glm::vec4(glm::vec3(eng::frame::cameraEye(view)), 0.0f);
     for (uint32_t l = 0; l < m_mapCount; ++l) {
         float texel = 0.0f;
-        const glm::mat4 worldToShadow = fitLight(scene, scene.lights.at(m_lights[l]), in.constants, &texel);
+        const glm::dmat4 worldToShadow = fitLight(scene, scene.lights.at(m_lights[l]), in.constants, &texel);
         texel *= 1024.0f / float(size);
-        m_constants.worldToShadow[l] = worldToShadow;
-        m_constants.viewToShadow[l] = worldToShadow * viewToWorld;
+        m_constants.relativeToShadow[l] =
+            glm::mat4(glm::translate(worldToShadow, eng::frame::cameraEye(view)));
+        m_constants.viewToShadow[l] = glm::mat4(worldToShadow * viewToWorld);
         m_constants.lightIndex[l] = m_lights[l];
         m_constants.normalOffset[l] = 1.5f * texel;
     }

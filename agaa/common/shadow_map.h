@@ -49,10 +49,10 @@ class ShadowMapPass {
     const shared::ShadowConstants& constants() const { return m_constants; }
 
     // The light-space fit, exposed for tests: world -> shadow clip (z in [0, 1], 0 near).
-    // frame: the camera, to fit a directional map to the visible part of the scene; nullptr
-    // fits it to the whole scene bounds.
-    static glm::mat4 fitLight(const eng::scene::Scene& scene, const eng::scene::Light& light,
-                              const shared::FrameConstants* frame, float* texelMetres);
+    // frame: the camera (its view and proj), to fit a directional map to the visible part of the
+    // scene; nullptr fits it to the whole scene bounds.
+    static glm::dmat4 fitLight(const eng::scene::Scene& scene, const eng::scene::Light& light,
+                               const shared::FrameConstants* frame, float* texelMetres);
 
   private:
     void release(); // the destructor's work, also for a constructor that throws

@@ -54,6 +54,17 @@ glm::mat4 orbitView(const glm::mat4& view, const glm::vec3& pivot, float degrees
     return view * fromPivot * rotate * toPivot;
 }
 
+glm::dvec3 cameraEye(const glm::mat4& view) {
+    const glm::dmat4 v = view;
+    const glm::dmat3 rotation = glm::dmat3(v);
+    return -(glm::transpose(rotation) * glm::dvec3(v[3]));
+}
+
+void setCameraRelative(shared::FrameConstants& c) {
+    c.viewProjRelative = c.proj * glm::mat4(glm::mat3(c.view));
+    c.eye = glm::vec4(glm::vec3(cameraEye(c.view)), 0.0f);
+}
+
 shared::FrameConstants makeFrameConstants(const scene::Scene& scene, const ViewSettings& view,
                                           const SamplePattern& pattern) {
     if (!view.cameraOverride && view.camera >= scene.cameras.size())
@@ -76,6 +87,7 @@ shared::FrameConstants makeFrameConstants(const scene::Scene& scene, const ViewS
     c.proj = viewTileCrop(view.tile, view.width, view.height) *
              reversedZPerspective(cam.yfov, aspect, cam.znear, cam.zfar);
     c.viewProj = c.proj * c.view;
+    setCameraRelative(c);
     for (uint32_t l = 0; l < pattern.layers; ++l)
         c.layerOffsets[l] = glm::vec4(pattern.layerOffsets[l], 0, 0);
     for (uint32_t s = 0; s < pattern.samples; ++s)
@@ -95,7 +107,9 @@ std::vector<shared::GpuLight> makeGpuLights(const scene::Scene& scene, const glm
     std::vector<shared::GpuLight> out;
     for (const scene::Light& l : scene.lights) {
         shared::GpuLight g{};
-        glm::vec3 p = glm::vec3(view * glm::vec4(l.position, 1.0f));
+        // As the vertices (common/scene_vertex.glsl): R (p - eye), here in double.
+        const glm::vec3 p =
+            glm::vec3(glm::dmat3(glm::dmat4(view)) * (glm::dvec3(l.position) - cameraEye(view)));
         glm::vec3 d = glm::vec3(view * glm::vec4(l.direction, 0.0f));
         float dl = glm::length(d);
         d = dl > 0.0f ? d / dl : glm::vec3(0, 0, -1);

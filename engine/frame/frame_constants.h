@@ -50,6 +50,13 @@ glm::mat4 orbitView(const glm::mat4& view, const glm::vec3& pivot, float degrees
 glm::mat4 reversedZPerspective(float yfov, float aspect, float znear, float zfar);
 
 shared::FrameConstants makeFrameConstants(const scene::Scene&, const ViewSettings&, const SamplePattern&);
+// The camera's world position for a rigid view matrix, -R^T t, in double (exact for the matrix as
+// given: the fp32 view's own rounding stays, its cancellation does not grow).
+glm::dvec3 cameraEye(const glm::mat4& view);
+// Fills FrameConstants::viewProjRelative and eye from view and proj (makeFrameConstants does; a
+// host that builds FrameConstants itself calls it after setting them).
+void setCameraRelative(shared::FrameConstants&);
+// The lights in view space, each position as R (p - eye) in double: camera-relative, as the vertices.
 std::vector<shared::GpuLight> makeGpuLights(const scene::Scene&, const glm::mat4& view);
 std::vector<shared::GpuMaterial> makeGpuMaterials(const scene::Scene&);
 

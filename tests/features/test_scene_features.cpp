@@ -186,10 +186,10 @@ TEST(ShadowFit, DirectionalLightCoversTheVisibleSceneBounds) {
     frame.view = glm::mat4(1.0f);
     // Reversed-Z perspective, as the renderer's (near -> 1, far -> 0), wide enough (150 degrees)
     // to see all of the bounds: the fit may drop only what the camera cannot see.
-    glm::mat4 proj = glm::perspectiveRH_ZO(2.6f, 1.0f, 100.0f, 0.1f);
-    frame.viewProj = proj * frame.view;
+    frame.proj = glm::perspectiveRH_ZO(2.6f, 1.0f, 100.0f, 0.1f);
+    frame.viewProj = frame.proj * frame.view;
     float texel = 0.0f;
-    const glm::mat4 m = agaa::ShadowMapPass::fitLight(s, sun, &frame, &texel);
+    const glm::mat4 m(agaa::ShadowMapPass::fitLight(s, sun, &frame, &texel));
     EXPECT_GT(texel, 0.0f);
     for (int i = 0; i < 8; ++i) {
         glm::vec3 c{(i & 1) ? s.bounds.max.x : s.bounds.min.x, (i & 2) ? s.bounds.max.y : s.bounds.min.y,
@@ -214,7 +214,7 @@ TEST(ShadowFit, SpotLightLooksAlongItsDirection) {
     spot.outerConeAngle = 0.5f;
     shared::FrameConstants frame{};
     frame.viewProj = glm::perspectiveRH_ZO(1.2f, 1.0f, 100.0f, 0.1f);
-    const glm::mat4 m = agaa::ShadowMapPass::fitLight(s, spot, &frame, nullptr);
+    const glm::mat4 m(agaa::ShadowMapPass::fitLight(s, spot, &frame, nullptr));
     glm::vec4 p = m * glm::vec4(0, 0, 0, 1); // straight below the light
     ASSERT_GT(p.w, 0.0f);
     EXPECT_NEAR(p.x / p.w, 0.0f, 1e-4f);

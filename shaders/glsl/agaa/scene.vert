@@ -31,5 +31,5 @@ void main() {
     outUvs = vec4(inUv, inUv1);
     outColor = inColor;
     outLayer = layer;
-    outViewPosition = vec3(frame.view * vec4(inPosition, 1.0));
+    outViewPosition = sceneViewPosition(inPosition, frame);
 }

@@ -11,12 +11,18 @@
 
 invariant gl_Position;
 
+// Camera-relative (FrameConstants::viewProjRelative): the world position minus the eye first.
 vec4 sceneClipPosition(vec3 worldPosition, uint layer, FrameConstants frame) {
-    vec4 clip = frame.viewProj * vec4(worldPosition, 1.0);
+    vec4 clip = frame.viewProjRelative * vec4(worldPosition - frame.eye.xyz, 1.0);
     clip.xy += frame.layerOffsets[layer].xy * 2.0 * frame.extent.zw * clip.w;
 #ifdef AGAA_TEST_PERTURB_SCENE
     clip.x += 0.0625 * 2.0 * frame.extent.z * clip.w; // tools/perturb-test.sh: every vertex 1/16 pixel right
 #endif
     return clip;
+}
+
+// The view-space position of a world position, camera-relative as sceneClipPosition.
+vec3 sceneViewPosition(vec3 worldPosition, FrameConstants frame) {
+    return mat3(frame.view) * (worldPosition - frame.eye.xyz);
 }
 #endif

@@ -20,7 +20,7 @@ layout(location = 1) out vec4 outColor;
 
 void main() {
     uint layer = uint(gl_InstanceIndex);
-    gl_Position = shadow.worldToShadow[layer] * vec4(inPosition, 1.0);
+    gl_Position = shadow.relativeToShadow[layer] * vec4(inPosition - shadow.eye.xyz, 1.0);
     gl_Layer = int(layer);
     outUvs = vec4(inUv, inUv1);
     outColor = inColor;

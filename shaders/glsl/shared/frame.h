@@ -24,6 +24,13 @@ struct FrameConstants {
     mat4 view; // world -> view (looking down -Z)
     mat4 proj; // view -> clip, reversed Z (near -> 1, far -> 0), Y flipped for Vulkan
     mat4 viewProj;
+    // Camera-relative transforms: viewProjRelative = proj * the rotation of view, applied to a
+    // world position minus eye.xyz (the camera's world position; w unused). viewProj * p sums
+    // terms as large as the coordinates and cancels them: 1e5 m from the origin its fp32 rounding
+    // moved vertices by pixels (hard-far). p - eye is exact wherever p is within a factor 2 of
+    // the eye (Sterbenz), so what is left is the rounding of a short vector.
+    mat4 viewProjRelative;
+    vec4 eye;
     // Sample-rate emulation (DESIGN section 3): layer l rasterises the scene shifted by
     // layerOffsets[l].xy pixels, so its hardware sample at q sees the point q - offset.
     vec4 layerOffsets[kMaxLayers];

@@ -8,11 +8,14 @@ SHARED_BEGIN
 SHARED_CONST kMaxShadowMaps = 4u;
 
 // Written by the host with the frame (agaa/common/shadow_map.cpp), read by the shadow-map pass
-// (worldToShadow) and by lighting (viewToShadow). Shadow clip space: x, y in [-1, 1], z in
+// (relativeToShadow) and by lighting (viewToShadow). Shadow clip space: x, y in [-1, 1], z in
 // [0, 1] with 0 nearest the light (standard depth: the map is cleared to 1, tested LESS).
+// Camera-relative, as the scene's vertices (FrameConstants::eye): the shadow-map pass transforms
+// a world position minus eye, so that no fp32 product cancels terms as large as the coordinates.
 struct ShadowConstants {
-    mat4 worldToShadow[kMaxShadowMaps];
+    mat4 relativeToShadow[kMaxShadowMaps]; // (world position - eye) -> shadow clip
     mat4 viewToShadow[kMaxShadowMaps];
+    vec4 eye; // xyz the camera's world position (FrameConstants::eye); w unused
     uvec4 lightIndex; // lights[] index of map l (kMaxLights when unused)
     // x maps in use, y 1/map size (texel in uv), z depth bias (shadow clip z units), w unused
     vec4 params;
