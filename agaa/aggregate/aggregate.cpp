@@ -1,6 +1,7 @@
 // The AGAA passes as render-graph nodes (pipelines: aggregate_pipelines.cpp).
 
 #include "agaa/aggregate/aggregate.h"
+#include "agaa/common/frame_inputs.h"
 
 #include "engine/vk/descriptors.h"
 #include "shaders/agaa/sample_readback_comp.h"
@@ -27,6 +28,7 @@ uint32_t groups(uint32_t size, uint32_t group) {
 } // namespace
 
 FrameTargets AggregateAA::addPasses(rg::Graph& graph, const FrameInputs& in) {
+    checkFrameInputs(in);
     m_constants = makeAgaaConstants(m_settings, *in.constants, m_hasEmissive);
     // Per frame slot, so views and frames recorded before any executes keep their own (issue 18).
     const rg::Buffer agaaConstants =

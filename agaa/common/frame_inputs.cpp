@@ -11,6 +11,10 @@ VkDeviceSize lightBytes(const eng::scene::Scene& scene) {
 }
 } // namespace
 
+void checkFrameInputs(const FrameInputs& in) {
+    if (in.constants) eng::frame::requireCameraRelative(*in.constants);
+}
+
 FrameInputWriter::FrameInputWriter(eng::vk::Device& device, const eng::frame::GpuScene& scene)
     : m_scene(scene), m_constants(device, sizeof(shared::FrameConstants), "frame.constants"),
       m_lights(device, lightBytes(scene.scene()), "frame.lights", VK_BUFFER_USAGE_STORAGE_BUFFER_BIT) {}

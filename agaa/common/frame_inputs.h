@@ -18,6 +18,11 @@
 
 namespace agaa {
 
+// What every technique's addPasses checks first: FrameInputs::constants, where the host gives
+// them, carry camera-relative fields that follow from their view and proj (FrameConstants::eye;
+// eng::frame::requireCameraRelative). Throws std::invalid_argument naming the field.
+void checkFrameInputs(const FrameInputs&);
+
 class FrameInputWriter {
   public:
     FrameInputWriter(eng::vk::Device& device, const eng::frame::GpuScene& scene);

@@ -1,4 +1,5 @@
 #include "agaa/reference/reference.h"
+#include "agaa/common/frame_inputs.h"
 
 #include "engine/vk/check.h"
 #include "engine/vk/descriptors.h"
@@ -63,6 +64,7 @@ std::vector<VariantChoice> Reference::variants() const {
 }
 
 FrameTargets Reference::addPasses(rg::Graph& graph, const FrameInputs& in) {
+    checkFrameInputs(in);
     const SampleGBuffer g = m_gbuffer.add(graph, in);
     // Added only for a scene with a shadowed light; lighting then reads it.
     const bool shadows = m_shadow.enabled();

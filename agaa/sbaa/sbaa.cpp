@@ -1,4 +1,5 @@
 #include "agaa/sbaa/sbaa.h"
+#include "agaa/common/frame_inputs.h"
 
 #include "engine/vk/check.h"
 #include "engine/vk/descriptors.h"
@@ -122,6 +123,7 @@ std::vector<VariantChoice> Sbaa::variants() const {
 }
 
 FrameTargets Sbaa::addPasses(rg::Graph& graph, const FrameInputs& in) {
+    checkFrameInputs(in);
     const SampleGBuffer g = addGBuffer(graph, in);
     return addLighting(graph, in, g, addFill(graph, in, g, addSurfaces(graph, in, g)));
 }

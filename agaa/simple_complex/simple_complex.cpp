@@ -1,4 +1,5 @@
 #include "agaa/simple_complex/simple_complex.h"
+#include "agaa/common/frame_inputs.h"
 
 #include "engine/vk/check.h"
 #include "engine/vk/descriptors.h"
@@ -72,6 +73,7 @@ SimpleComplex::~SimpleComplex() {
 }
 
 FrameTargets SimpleComplex::addPasses(rg::Graph& graph, const FrameInputs& in) {
+    checkFrameInputs(in);
     return addLighting(graph, in, addGBuffer(graph, in));
 }
 

@@ -1,4 +1,5 @@
 #include "agaa/streaming/streaming.h"
+#include "agaa/common/frame_inputs.h"
 
 #include "engine/vk/check.h"
 #include "engine/vk/descriptors.h"
@@ -121,6 +122,7 @@ std::vector<VariantChoice> StreamingCompression::variants() const {
 }
 
 FrameTargets StreamingCompression::addPasses(rg::Graph& graph, const FrameInputs& in) {
+    checkFrameInputs(in);
     const SampleGBuffer g = addFragments(graph, in);
     return addLighting(graph, in, g, addCompression(graph, in, g));
 }

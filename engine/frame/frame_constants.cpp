@@ -65,6 +65,26 @@ void setCameraRelative(shared::FrameConstants& c) {
     c.eye = glm::vec4(glm::vec3(cameraEye(c.view)), 0.0f);
 }
 
+void requireCameraRelative(const shared::FrameConstants& c) {
+    shared::FrameConstants expected = c;
+    setCameraRelative(expected);
+    // Relative to the larger of the two: a host may compute them in its own order of operations.
+    constexpr float kCameraRelativeTolerance = 1.0e-4f;
+    auto near = [](float a, float b) {
+        return std::abs(a - b) <= kCameraRelativeTolerance * std::max({1.0f, std::abs(a), std::abs(b)});
+    };
+    for (int col = 0; col < 4; ++col)
+        for (int row = 0; row < 4; ++row)
+            if (!near(c.viewProjRelative[col][row], expected.viewProjRelative[col][row]))
+                throw std::invalid_argument(
+                    "FrameConstants::viewProjRelative does not follow from view and proj: "
+                    "call eng::frame::setCameraRelative after changing them");
+    for (int i = 0; i < 3; ++i)
+        if (!near(c.eye[i], expected.eye[i]))
+            throw std::invalid_argument("FrameConstants::eye is not the camera position of view: call "
+                                        "eng::frame::setCameraRelative after changing view");
+}
+
 shared::FrameConstants makeFrameConstants(const scene::Scene& scene, const ViewSettings& view,
                                           const SamplePattern& pattern) {
     if (!view.cameraOverride && view.camera >= scene.cameras.size())

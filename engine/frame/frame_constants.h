@@ -56,6 +56,10 @@ glm::dvec3 cameraEye(const glm::mat4& view);
 // Fills FrameConstants::viewProjRelative and eye from view and proj (makeFrameConstants does; a
 // host that builds FrameConstants itself calls it after setting them).
 void setCameraRelative(shared::FrameConstants&);
+// Throws std::invalid_argument when viewProjRelative or eye do not follow from view and proj (a
+// host that changed view or proj after makeFrameConstants without setCameraRelative): every
+// scene raster pass reads them, and stale ones draw the scene from the wrong place.
+void requireCameraRelative(const shared::FrameConstants&);
 // The lights in view space, each position as R (p - eye) in double: camera-relative, as the vertices.
 std::vector<shared::GpuLight> makeGpuLights(const scene::Scene&, const glm::mat4& view);
 std::vector<shared::GpuMaterial> makeGpuMaterials(const scene::Scene&);

@@ -6,11 +6,15 @@
 #include "engine/io/tone_map.h"
 #include "tools/harness/converged_truth.h"
 
+#include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <stdexcept>
+#include <string>
 
 namespace {
 
@@ -22,6 +26,41 @@ glm::vec2 pixelOf(const glm::mat4& proj, glm::vec3 p, uint32_t width, uint32_t h
     const glm::vec4 c = proj * glm::vec4(p, 1.0f);
     const glm::vec2 ndc(c.x / c.w, c.y / c.w);
     return (ndc + 1.0f) * 0.5f * glm::vec2(width, height);
+}
+
+// Camera-relative frame constants (FrameConstants::eye, viewProjRelative): the eye of a view
+// 1e5 m out is exact, (p - eye) through viewProjRelative is viewProj * p, and constants whose
+// view or proj changed without setCameraRelative are refused naming the field.
+TEST(CameraRelative, EyeAndRelativeTransformFollowFromViewAndProj) {
+    const glm::vec3 eye(1.0e5f, 0.0f, 0.15f);
+    shared::FrameConstants c{};
+    c.view = glm::lookAtRH(eye, eye - glm::vec3(0.0f, 0.0f, 1.0f), glm::vec3(0.0f, 1.0f, 0.0f));
+    c.proj = eng::frame::reversedZPerspective(0.7f, 1.0f, 1.0e-4f, 1.0e7f);
+    c.viewProj = c.proj * c.view;
+    eng::frame::setCameraRelative(c);
+    EXPECT_EQ(glm::vec3(c.eye), eye) << "the eye of a rigid view, recovered exactly";
+    EXPECT_NO_THROW(eng::frame::requireCameraRelative(c));
+    const glm::vec3 p = eye + glm::vec3(0.01f, -0.02f, -0.15f);
+    const glm::dvec4 exact = glm::dmat4(c.proj) * glm::dmat4(c.view) * glm::dvec4(glm::dvec3(p), 1.0);
+    const glm::vec4 relative = c.viewProjRelative * glm::vec4(p - glm::vec3(c.eye), 1.0f);
+    for (int i = 0; i < 4; ++i)
+        EXPECT_NEAR(relative[i], exact[i], 1e-6 * std::max(1.0, std::abs(exact[i]))) << "component " << i;
+
+    shared::FrameConstants moved = c;
+    moved.view = glm::translate(c.view, glm::vec3(0.0f, 0.0f, -1.0f));
+    try {
+        eng::frame::requireCameraRelative(moved);
+        ADD_FAILURE() << "a view changed without setCameraRelative was accepted";
+    } catch (const std::invalid_argument& e) {
+        EXPECT_NE(std::string(e.what()).find("FrameConstants::eye"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("setCameraRelative"), std::string::npos) << e.what();
+    }
+    shared::FrameConstants zoomed = c;
+    zoomed.proj = eng::frame::reversedZPerspective(0.35f, 1.0f, 1.0e-4f, 1.0e7f);
+    EXPECT_THROW(eng::frame::requireCameraRelative(zoomed), std::invalid_argument) << "proj changed";
+    shared::FrameConstants unset = c;
+    unset.viewProjRelative = glm::mat4(0.0f);
+    EXPECT_THROW(eng::frame::requireCameraRelative(unset), std::invalid_argument) << "never set";
 }
 
 TEST(ViewTile, ScaleOneIsTheIdentity) {
