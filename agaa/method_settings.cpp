@@ -170,7 +170,7 @@ std::vector<MethodOption> declareOptions() {
         [](MethodSettings& s, const std::string& v) { s.agaaSubgroupReduce = v; },
         [](const MethodSettings& s) { return s.agaaSubgroupReduce; }));
     o.push_back(choice(
-        "agaa-distance", words(kAggregateDistanceNames), "position", "agaa*",
+        "agaa-distance", words(kAggregateDistanceNames), "plane", "agaa*",
         "clustering: Equation 1, or the samples' distance to each other's tangent plane (a flat surface "
         "stays one aggregate)",
         [](MethodSettings& s, const std::string& v) { s.agaaDistance = v; },

@@ -103,7 +103,7 @@ struct AggregateSettings {
     AggregateRouting routing = AggregateRouting::Samples;
     AggregateAtomics atomics = AggregateAtomics::Auto;
     SubgroupReduction subgroupReduction = SubgroupReduction::Auto;
-    AggregateDistance distance = AggregateDistance::Position;
+    AggregateDistance distance = AggregateDistance::Plane;
     AggregateGeneration generation = AggregateGeneration::Auto;
     // Samples path only: sample-rate shading in the fill pass (every sample runs the material),
     // and Kaplanyan curvature roughness there (seed 004's constants; common/curvature_roughness.glsl).

@@ -86,7 +86,7 @@ struct MethodSettings {
     std::string agaaRouting = "samples";
     std::string agaaAtomics = "auto";
     std::string agaaSubgroupReduce = "auto";
-    std::string agaaDistance = "position";
+    std::string agaaDistance = "plane";
     // AGAA generation path "auto" | "accumulate" | "samples" | "coverage" (AggregateGeneration).
     std::string agaaGeneration = "auto";
     // The fill pass of the per-sample G-buffer (reference, Simple/Complex, AGAA's samples path):

@@ -2,6 +2,8 @@
 // option moves the render cache's key, and bad values are refused with the flag and the allowed
 // values. No device.
 
+#include "agaa/aggregate/agaa_constants.h"
+#include "agaa/common/named_value.h"
 #include "agaa/method_settings.h"
 #include "agaa/methods.h"
 
@@ -43,10 +45,36 @@ TEST(MethodSettings, EveryOptionIsDeclaredOnceWithItsDocAndMethods) {
         EXPECT_FALSE(o.doc.empty()) << o.name;
         EXPECT_FALSE(o.methods.empty()) << o.name;
         EXPECT_FALSE(o.defaultText.empty()) << o.name;
+        // --help and the README's synopsis print defaultText; a default changed in MethodSettings
+        // alone would make them lie. "default" and "" defer to the technique's own settings struct
+        // (the test below).
+        const std::string held = o.get(MethodSettings{});
+        if (held != "default" && !held.empty()) {
+            EXPECT_EQ(o.defaultText, held) << o.name << ": the documented default is the default";
+        }
         EXPECT_EQ(agaa::findMethodOption(o.name), &o);
     }
     EXPECT_EQ(agaa::findMethodOption("no-such-option"), nullptr);
     EXPECT_EQ(agaa::findMethodOption("--samples"), nullptr) << "names are given without the dashes";
+}
+
+// A host that fills AggregateSettings itself gets what agaa-render's defaults give.
+TEST(MethodSettings, AgaaDefaultsAreTheHostApisDefaults) {
+    const MethodSettings m;
+    const agaa::AggregateSettings a;
+    EXPECT_EQ(agaa::namedValue("distance", m.agaaDistance, agaa::kAggregateDistanceNames), a.distance);
+    EXPECT_EQ(agaa::namedValue("ndf", m.ndf, agaa::kAggregateNdfNames), a.ndf);
+    EXPECT_EQ(agaa::namedValue("lighting", m.agaaLighting, agaa::kAggregateShadingNames), a.shading);
+    EXPECT_EQ(agaa::namedValue("routing", m.agaaRouting, agaa::kAggregateRoutingNames), a.routing);
+    EXPECT_EQ(agaa::namedValue("atomics", m.agaaAtomics, agaa::kAggregateAtomicsNames), a.atomics);
+    EXPECT_EQ(agaa::namedValue("generation", m.agaaGeneration, agaa::kAggregateGenerationNames),
+              a.generation);
+    EXPECT_EQ(m.samples, a.samples);
+    EXPECT_EQ(m.aggregates, a.aggregates);
+    EXPECT_EQ(agaa::findMethodOption("characteristic-length")->defaultText, "0.1");
+    EXPECT_FLOAT_EQ(a.characteristicLength, 0.1f) << "--help's characteristic-length default";
+    EXPECT_EQ(agaa::findMethodOption("seed-threshold")->defaultText, "0.05");
+    EXPECT_FLOAT_EQ(a.seedThreshold, 0.05f) << "--help's seed-threshold default";
 }
 
 TEST(MethodSettings, EveryOptionRoundTripsAndMovesTheCacheKey) {
