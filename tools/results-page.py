@@ -67,9 +67,10 @@ def method_rank(job):
 
 # ---- recording a run ----------------------------------------------------------------------
 
-def run_text(args):
+def run_text(args, strip=True):
     try:
-        return subprocess.run(args, capture_output=True, text=True, check=True, cwd=ROOT).stdout.strip()
+        out = subprocess.run(args, capture_output=True, text=True, check=True, cwd=ROOT).stdout
+        return out.strip() if strip else out
     except (OSError, subprocess.CalledProcessError):
         return ""
 
@@ -94,7 +95,8 @@ def machine():
 def commit():
     head = run_text(["git", "rev-parse", "HEAD"])
     # What the working tree held beyond the commit, pages (*.md) aside: the binary may include it.
-    status = run_text(["git", "status", "--porcelain"])
+    # Not stripped: each porcelain line starts with its two status columns, which may be blank.
+    status = run_text(["git", "status", "--porcelain"], strip=False)
     changed = sorted(line[3:] for line in status.splitlines() if line[3:] and not line.endswith(".md"))
     return {"commit": head or "unknown", "uncommitted_changes": changed}
 

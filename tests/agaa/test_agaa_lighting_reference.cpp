@@ -20,6 +20,7 @@
 #include "agaa/aggregate/aggregate.h"
 #include "agaa_layout_reference.h"
 #include "agaa_test_support.h"
+#include "aggregate_export.h"
 #include "engine/frame/readback.h"
 #include "filtered_diffuse_reference.h"
 #include "gpu_test_support.h"
@@ -41,7 +42,7 @@ namespace {
 namespace vk = eng::vk;
 using glm::dvec3;
 
-constexpr uint32_t kRecordFloats = 16; // lighting.glsl exportRecord
+constexpr uint32_t kRecordFloats = agaa::test::kExportRecordFloats;
 constexpr double kPi = 3.14159265358979323846;
 // The BRDF's alpha range (the renderer's documented guard, common/epsilon.glsl: a mirror has no
 // finite GGX peak, and alpha above 0.9 is clamped there too).
@@ -344,21 +345,7 @@ dvec3 shadeSggx(const double S[6], double materialAlpha, const dvec3& base, doub
 std::vector<float> renderExport(vk::Device& device, agaa::FrameRenderer& renderer,
                                 const agaa::RenderRequest& r, agaa::RenderResult& result,
                                 shared::AgaaConstants& constants) {
-    const uint32_t pixels = r.view.width * r.view.height;
-    const VkDeviceSize bytes =
-        VkDeviceSize(pixels) * (r.settings.samples + r.settings.aggregates) * kRecordFloats * sizeof(float);
-    vk::Buffer host = vk::createBuffer(device, bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
-                                       vk::MemoryUse::Readback, "test.export");
-    auto& technique = dynamic_cast<agaa::AggregateAA&>(renderer.technique(r));
-    technique.setAggregateExportTarget(&host);
-    result = renderer.render(r);
-    vkDeviceWaitIdle(device.device());
-    std::vector<float> out(bytes / sizeof(float));
-    std::memcpy(out.data(), host.mapped, bytes);
-    constants = technique.constants();
-    technique.setAggregateExportTarget(nullptr);
-    vk::destroyBuffer(device, host);
-    return out;
+    return agaa::test::renderAggregateExport(device, renderer, r, &result, &constants);
 }
 
 TEST(AgaaLightingReference, AggregateShadingMatchesADoublePrecisionCpuShading) {

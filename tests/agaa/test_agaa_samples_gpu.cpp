@@ -13,6 +13,7 @@
 #include "agaa/aggregate/aggregate.h"
 #include "agaa/methods.h"
 #include "agaa_test_support.h"
+#include "aggregate_export.h"
 #include "engine/frame/readback.h"
 #include "engine/scene/camera_framing.h"
 #include "engine/scene/gltf_loader.h"
@@ -33,7 +34,7 @@ namespace {
 
 namespace vk = eng::vk;
 
-constexpr uint32_t kRecordFloats = 16; // lighting.glsl exportRecord
+constexpr uint32_t kRecordFloats = agaa::test::kExportRecordFloats;
 
 using agaa::test::request;
 
@@ -44,24 +45,9 @@ eng::scene::Scene unshadowed(eng::scene::Scene scene) {
     return scene;
 }
 
-// One frame of the samples path with the aggregate export on: sample records, then aggregates.
 std::vector<float> renderExport(vk::Device& device, agaa::FrameRenderer& renderer,
                                 const agaa::RenderRequest& r, shared::AgaaConstants* constants = nullptr) {
-    const uint32_t pixels = r.view.width * r.view.height;
-    const VkDeviceSize bytes =
-        VkDeviceSize(pixels) * (r.settings.samples + r.settings.aggregates) * kRecordFloats * sizeof(float);
-    vk::Buffer host = vk::createBuffer(device, bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
-                                       vk::MemoryUse::Readback, "test.export");
-    auto& technique = dynamic_cast<agaa::AggregateAA&>(renderer.technique(r));
-    technique.setAggregateExportTarget(&host);
-    renderer.render(r);
-    vkDeviceWaitIdle(device.device());
-    std::vector<float> out(bytes / sizeof(float));
-    std::memcpy(out.data(), host.mapped, bytes);
-    if (constants) *constants = technique.constants();
-    technique.setAggregateExportTarget(nullptr);
-    vk::destroyBuffer(device, host);
-    return out;
+    return agaa::test::renderAggregateExport(device, renderer, r, nullptr, constants);
 }
 
 // The filtered GGX alpha of a Toksvig length, from paper section 3.5.2 in double.

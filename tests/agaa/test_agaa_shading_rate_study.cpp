@@ -1,0 +1,211 @@
+// Issue 35, step 1: which statistic of a pixel's own samples predicts where AGAA's pre-filter fails?
+//
+// On the samples path AGAA and the reference read the same per-sample G-buffer, so the pixels
+// where they differ are exactly the pre-filter's error: an aggregate lit once where its samples,
+// lit one by one, give another colour. A pixel shaded per sample takes the reference's value. So
+// the image an error-driven shading rate would give, flagging a set of pixels, is AGAA's image
+// with those pixels taken from the reference (8), and its error against the converged truth can
+// be computed before any shader exists.
+//
+// Each candidate statistic comes from the lighting pass's export of what step 1 read: every
+// sample's normal, roughness, metallic and view position, and its aggregate. For each, the pixels
+// are ranked by it and the top 5, 10 and 20 % flagged. Printed per scene:
+//   - the share of the pre-filter's squared display error (AGAA against the reference (8)) that
+//     the flagged pixels hold;
+//   - the display RMSE against the converged truth of AGAA with the flagged pixels per sample.
+// The oracle (ranking by the pre-filter error itself) bounds what any statistic can do.
+// docs/decisions/shading-rate-estimate.md records the figures and the choice.
+//
+// Shadows are off (the export variant has none). 64x64, n = 8, c = 2.
+
+#include "agaa_test_support.h"
+#include "aggregate_export.h"
+#include "engine/io/metrics.h"
+#include "engine/io/tone_map.h"
+#include "gpu_test_support.h"
+#include "tools/harness/converged_truth.h"
+#include "tools/harness/frame_renderer.h"
+#include "tools/scenes/adversarial_scenes.h"
+
+#include <gtest/gtest.h>
+
+#include <glm/glm.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <numeric>
+#include <string>
+#include <vector>
+
+namespace {
+
+constexpr uint32_t kSize = 64, kSamples = 8, kAggregates = 2;
+constexpr size_t kRecord = agaa::test::kExportRecordFloats;
+// Below this GGX alpha a lobe is taken as this wide: the shared BRDF's own floor (kMinGgxAlpha).
+constexpr double kMinAlpha = 1.0e-3;
+
+// A pixel's candidate statistics, each the largest over the pixel's aggregates.
+enum Statistic : size_t {
+    kNormalSpread,   // 1 - |mean of the members' unit normals|
+    kSpreadOverLobe, // that spread against the sharpest member's lobe: 2 (1 - |N|) / alpha_min^2
+    kMetalMix,       // max - min metallic among the members (0 on the samples path, which never
+                     // puts metal and dielectric in one aggregate: the bookkeeping shows it)
+    kDepthSpread,    // max - min view depth among the members, in units of k (0.1 m)
+    kBrightness,     // AGAA's own display value: how near the tone map's shoulder
+    kOracle,         // the pre-filter's error itself: the bound
+    kStatistics
+};
+constexpr std::array<const char*, kStatistics> kStatisticNames = {
+    "normal spread", "spread / lobe", "metal mix", "depth spread / k", "brightness", "oracle"};
+
+struct Member {
+    glm::dvec3 normal{0.0};
+    double alphaMin = 1.0, metallicMin = 1.0, metallicMax = 0.0, depthMin = 1e30, depthMax = -1e30;
+    uint32_t count = 0;
+};
+
+std::array<std::vector<double>, kStatistics> statistics(const std::vector<float>& exported,
+                                                        const eng::io::ImageF& agaaDisplay,
+                                                        const std::vector<double>& prefilterError) {
+    const size_t pixels = size_t(kSize) * kSize;
+    std::array<std::vector<double>, kStatistics> out;
+    for (auto& v : out)
+        v.assign(pixels, 0.0);
+    for (size_t p = 0; p < pixels; ++p) {
+        std::array<Member, kAggregates> members{};
+        for (uint32_t s = 0; s < kSamples; ++s) {
+            const float* rec = &exported[(p * kSamples + s) * kRecord];
+            if (rec[12] == 0.0f) continue; // sky
+            const uint32_t a = uint32_t(rec[11]);
+            if (a >= kAggregates) continue; // c = 1's off-layer samples
+            Member& m = members[a];
+            const glm::dvec3 n(rec[0], rec[1], rec[2]);
+            const double roughness = rec[3], alpha = std::max(roughness * roughness, kMinAlpha);
+            m.normal += glm::length(n) > 0.0 ? glm::normalize(n) : n;
+            m.alphaMin = std::min(m.alphaMin, alpha);
+            m.metallicMin = std::min(m.metallicMin, double(rec[7]));
+            m.metallicMax = std::max(m.metallicMax, double(rec[7]));
+            m.depthMin = std::min(m.depthMin, -double(rec[10]));
+            m.depthMax = std::max(m.depthMax, -double(rec[10]));
+            ++m.count;
+        }
+        for (const Member& m : members) {
+            if (m.count < 2) continue;
+            const double spread = 1.0 - glm::length(m.normal) / double(m.count);
+            out[kNormalSpread][p] = std::max(out[kNormalSpread][p], spread);
+            out[kSpreadOverLobe][p] =
+                std::max(out[kSpreadOverLobe][p], 2.0 * spread / (m.alphaMin * m.alphaMin));
+            out[kMetalMix][p] = std::max(out[kMetalMix][p], m.metallicMax - m.metallicMin);
+            out[kDepthSpread][p] = std::max(out[kDepthSpread][p], (m.depthMax - m.depthMin) / 0.1);
+        }
+        const float* d = &agaaDisplay.rgba[4 * p];
+        out[kBrightness][p] = std::max({d[0], d[1], d[2]});
+        out[kOracle][p] = prefilterError[p];
+    }
+    return out;
+}
+
+// Per pixel, the squared display difference summed over r, g, b.
+std::vector<double> squaredError(const eng::io::ImageF& a, const eng::io::ImageF& b) {
+    std::vector<double> e(size_t(a.width) * a.height);
+    for (size_t i = 0; i < e.size(); ++i)
+        for (size_t c = 0; c < 3; ++c) {
+            const double d = double(a.rgba[4 * i + c]) - double(b.rgba[4 * i + c]);
+            e[i] += d * d;
+        }
+    return e;
+}
+
+double rmseOf(const std::vector<double>& squared) {
+    return std::sqrt(std::accumulate(squared.begin(), squared.end(), 0.0) / (3.0 * double(squared.size())));
+}
+
+struct Flagged {
+    double share = 0.0;    // of the pixels
+    double captured = 0.0; // of the pre-filter's squared error
+    double rmse = 0.0;     // against the truth, flagged pixels per sample
+};
+
+// The top `share` of the pixels by `score` (only pixels whose score is above zero), flagged.
+Flagged flagTop(const std::vector<double>& score, double share, const std::vector<double>& prefilter,
+                const std::vector<double>& agaaError, const std::vector<double>& referenceError) {
+    std::vector<size_t> order(score.size());
+    std::iota(order.begin(), order.end(), size_t(0));
+    std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) { return score[a] > score[b]; });
+    const size_t limit = size_t(std::lround(share * double(score.size())));
+    std::vector<double> mixed = agaaError;
+    double captured = 0.0;
+    size_t flagged = 0;
+    for (size_t i = 0; i < limit && score[order[i]] > 0.0; ++i, ++flagged) {
+        mixed[order[i]] = referenceError[order[i]];
+        captured += prefilter[order[i]];
+    }
+    const double total = std::accumulate(prefilter.begin(), prefilter.end(), 0.0);
+    return {double(flagged) / double(score.size()), total > 0.0 ? captured / total : 0.0, rmseOf(mixed)};
+}
+
+TEST(ShadingRateStudy, WhichStatisticPredictsThePrefiltersError) {
+    auto device = agaa::test::makeValidatedDevice();
+    const char* scenes[] = {"furball",     "metal",      "foliage",         "bamboo",       "railings",
+                            "default",     "spikes",     "glints",          "hard-vgroove", "hard-fold",
+                            "hard-mirror", "hard-dense", "hard-many-lights"};
+    const double shares[] = {0.05, 0.10, 0.20};
+    // Per statistic and share: the scenes where it captures at least half the pre-filter's error.
+    std::array<std::array<int, 3>, kStatistics> half{};
+    int scenesWithError = 0;
+    for (const char* name : scenes) {
+        eng::scene::Scene scene = eng::scene::loadTestScene(name);
+        for (eng::scene::Light& l : scene.lights)
+            l.castsShadows = false;
+        agaa::FrameRenderer renderer(*device, scene);
+        const agaa::TruthCache cache(agaa::truthCacheDir(AGAA_TEST_TRUTH_CACHE));
+        const agaa::ConvergedTruth truth = agaa::renderConvergedTruth(
+            renderer, agaa::test::request("reference", kSamples, 1, kSize), agaa::TruthSettings{}, &cache);
+        const agaa::RenderResult reference =
+            renderer.render(agaa::test::request("reference", kSamples, 1, kSize));
+        agaa::RenderResult aggregate;
+        const std::vector<float> exported = agaa::test::renderAggregateExport(
+            *device, renderer, agaa::test::request("agaa-samples", kSamples, kAggregates, kSize), &aggregate);
+        const eng::io::ImageF truthDisplay = eng::io::srgbEncoded(truth.display);
+        const eng::io::ImageF agaaDisplay = eng::io::srgbEncoded(aggregate.display);
+        const eng::io::ImageF referenceDisplay = eng::io::srgbEncoded(reference.display);
+        const std::vector<double> prefilter = squaredError(agaaDisplay, referenceDisplay);
+        const std::vector<double> agaaError = squaredError(agaaDisplay, truthDisplay);
+        const std::vector<double> referenceError = squaredError(referenceDisplay, truthDisplay);
+        const auto stats = statistics(exported, agaaDisplay, prefilter);
+        std::printf(
+            "[ measured ] %-16s truth's own error %.4f; AGAA (8, 2) %.4f, reference (8) %.4f, pre-filter "
+            "(AGAA vs reference) %.4f\n",
+            name, truth.errorEstimate, rmseOf(agaaError), rmseOf(referenceError), rmseOf(prefilter));
+        // Every pixel flagged is the reference (8), whatever the ranking: the bookkeeping's check.
+        const Flagged all = flagTop(stats[kOracle], 1.0, prefilter, agaaError, referenceError);
+        EXPECT_NEAR(all.rmse, rmseOf(referenceError), 1e-12) << name;
+        const bool hasError = rmseOf(prefilter) > truth.errorEstimate;
+        scenesWithError += hasError ? 1 : 0;
+        for (size_t k = 0; k < kStatistics; ++k) {
+            std::printf("[ measured ] %-16s   %-16s", name, kStatisticNames[k]);
+            for (size_t i = 0; i < std::size(shares); ++i) {
+                const Flagged f = flagTop(stats[k], shares[i], prefilter, agaaError, referenceError);
+                std::printf(" | %2.0f %%: %5.1f %% of it, %.4f", 100.0 * f.share, 100.0 * f.captured, f.rmse);
+                if (hasError && f.captured >= 0.5) ++half[k][i];
+            }
+            std::printf("\n");
+        }
+    }
+    std::printf("[ measured ] scenes whose pre-filter error is above the truth's own: %d of %zu\n",
+                scenesWithError, std::size(scenes));
+    for (size_t k = 0; k < kStatistics; ++k)
+        std::printf(
+            "[ measured ] %-16s captures half of it in 5 / 10 / 20 %% of the pixels on %d / %d / %d\n",
+            kStatisticNames[k], half[k][0], half[k][1], half[k][2]);
+    // The oracle is the bound: no statistic can capture more at the same share. If it captured
+    // less than a statistic, the ranking or the bookkeeping above would be wrong.
+    for (size_t k = 0; k < kStatistics; ++k)
+        for (size_t i = 0; i < 3; ++i)
+            EXPECT_LE(half[k][i], half[kOracle][i]) << kStatisticNames[k];
+    agaa::test::expectNoValidationErrors(*device);
+}
+
+} // namespace
