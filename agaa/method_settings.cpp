@@ -175,6 +175,21 @@ std::vector<MethodOption> declareOptions() {
         "stays one aggregate)",
         [](MethodSettings& s, const std::string& v) { s.agaaDistance = v; },
         [](const MethodSettings& s) { return s.agaaDistance; }));
+    {
+        MethodOption t = ranged(
+            Kind::Number, "agaa-tolerance", "never|T", 0.0, 1e7, "never", "agaa, agaa-samples",
+            "the error-driven shading rate: a pixel whose aggregates' normal spread, against their sharpest "
+            "member's lobe, reaches T is shaded per sample as the reference shades it (0: every pixel, the "
+            "reference's image; docs/decisions/shading-rate-estimate.md); the samples path only",
+            [=](MethodSettings& s, const std::string& v) {
+                s.agaaTolerance = v == "never" ? kToleranceNever : number(v);
+            },
+            [](const MethodSettings& s) {
+                return s.agaaTolerance < 0.0f ? std::string("never") : numberText(s.agaaTolerance);
+            });
+        t.word = "never";
+        o.push_back(std::move(t));
+    }
     o.push_back(choice(
         "agaa-generation", words(kAggregateGenerationNames), "auto", "agaa",
         "the generation path: the accumulation kernel after a visibility prepass, or one per-sample "
@@ -281,11 +296,13 @@ void setMethodOption(MethodSettings& settings, const MethodOption& option, const
         return option.set(settings, value);
     }
     case Kind::Number: {
+        if (!option.word.empty() && value == option.word) return option.set(settings, value);
         double v = 0.0;
         const auto [end, error] = std::from_chars(value.data(), value.data() + value.size(), v);
         if (error != std::errc() || end != value.data() + value.size() || !(v >= option.lo && v <= option.hi))
             throw std::invalid_argument(flag + " '" + value + "' is not a number in [" +
-                                        numberText(option.lo) + ", " + numberText(option.hi) + "]");
+                                        numberText(option.lo) + ", " + numberText(option.hi) + "]" +
+                                        (option.word.empty() ? "" : " or " + option.word));
         return option.set(settings, value);
     }
     case Kind::Text:

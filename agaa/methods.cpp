@@ -143,6 +143,7 @@ std::unique_ptr<Technique> createTechnique(const std::string& method, eng::vk::D
         }
         s.sampleRateShading = settings.sampleRateShading;
         s.curvatureRoughness = settings.curvatureRoughness;
+        s.tolerance = settings.agaaTolerance;
         s.breakdown = settings.agaaBreakdown;
         return std::make_unique<AggregateAA>(device, scene, s);
     }

@@ -2,6 +2,7 @@
 
 #include "shared/clustering.h"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
@@ -24,6 +25,8 @@ void validate(const AggregateSettings& s) {
         throw std::invalid_argument("agaa: curvature max footprint must be in [0, 1] (GGX alpha^2)");
     if (!(s.curvatureBoost >= 0.0f) || !std::isfinite(s.curvatureBoost))
         throw std::invalid_argument("agaa: curvature boost must be a finite number >= 0");
+    if (std::isnan(s.tolerance) || std::isinf(s.tolerance))
+        throw std::invalid_argument("agaa: --agaa-tolerance must be a finite number >= 0, or never");
 }
 
 shared::AgaaConstants makeAgaaConstants(const AggregateSettings& s, const shared::FrameConstants& frame,
@@ -47,6 +50,7 @@ shared::AgaaConstants makeAgaaConstants(const AggregateSettings& s, const shared
     c.toksvig = {smax, kMinGgxAlpha, kMaxGgxAlpha, 0.0f};
     c.options = {uint32_t(s.debugView), uint32_t(s.position), hasEmissive ? 1u : 0u, uint32_t(s.ndf)};
     c.modes = {uint32_t(s.distance), uint32_t(s.routing), 0u, 0u};
+    c.shadingRate = {std::max(s.tolerance, 0.0f), 0.0f, 0.0f, 0.0f};
     return c;
 }
 

@@ -89,6 +89,9 @@ inline constexpr uint32_t kGenerationEmpty = 4;          // generation.glsl: an 
 inline constexpr uint32_t kVisibilityWithoutNormals = 8; // visibility.frag: no face-normal encoding
 } // namespace AggregateBreakdown
 
+// AggregateSettings::tolerance: no pixel is shaded per sample.
+inline constexpr float kToleranceNever = -1.0f;
+
 struct AggregateSettings {
     uint32_t samples = 8;              // n
     uint32_t aggregates = 2;           // c
@@ -110,6 +113,11 @@ struct AggregateSettings {
     bool sampleRateShading = false;
     bool curvatureRoughness = false;
     float curvatureMaxFootprint = 0.3f;
+    // The error-driven shading rate (samples path; docs/decisions/shading-rate-estimate.md): a
+    // pixel whose aggregates' normal spread, against their sharpest member's lobe, reaches this is
+    // shaded per sample as the reference shades it; 0 shades every pixel so. Below 0: never (AGAA
+    // as the paper has it).
+    float tolerance = kToleranceNever;
     float curvatureBoost = 2.0f;
     // Benchmark support (agaa-timings --breakdown): AggregateBreakdown bits, each removing one
     // part of one pass so that the difference to a full run is that part's cost. Not an image.

@@ -28,12 +28,19 @@
 #include "shaders/agaa/scene_vert.h"
 #include "shaders/agaa/visibility_frag.h"
 
+#include <cstdio>
 #include <stdexcept>
 
 namespace agaa {
 namespace vk = eng::vk;
 
 namespace {
+
+std::string shortNumber(float v) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%g", double(v));
+    return text;
+}
 constexpr VkDescriptorType kUbo = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
 constexpr VkDescriptorType kSsbo = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
 constexpr VkDescriptorType kSampled = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
@@ -162,8 +169,20 @@ void AggregateAA::resolveGeneration() {
             " offers mixed samples and the coverage override, but the blend-based route was never run on "
             "such a device (allowed: accumulate, samples, auto)");
     }
+    // The per-sample rate shades flagged pixels from their own samples' materials, which only the
+    // samples path keeps.
+    const bool perSampleRate = m_settings.tolerance >= 0.0f;
+    if (perSampleRate && m_settings.generation == AggregateGeneration::Accumulate)
+        throw std::invalid_argument(
+            "--agaa-tolerance needs the samples path: the accumulate path keeps no per-sample material to "
+            "shade a flagged pixel with (use --method agaa-samples or agaa, or --agaa-tolerance never)");
     if (m_settings.generation != AggregateGeneration::Auto) {
         m_generationCause = "setting --agaa-generation";
+        return;
+    }
+    if (perSampleRate) {
+        m_settings.generation = AggregateGeneration::Samples;
+        m_generationCause = "--agaa-tolerance: flagged pixels are shaded from the per-sample G-buffer";
         return;
     }
     // Rule (agaa/aggregate/README.md, "Generation paths"; agaa-timings at 320x180 and 640x360 on
@@ -213,7 +232,8 @@ VkPipeline AggregateAA::lightingPipeline(bool exporting) {
          {shared::kSpecLightingSkipShading, skipShading ? 1u : 0u},
          {shared::kSpecLightingNdf, uint32_t(m_settings.ndf)},
          {shared::kSpecLightingRouting, uint32_t(m_settings.routing)},
-         {shared::kSpecLightingViewFootprint, m_features.hasNearMirrors() ? 1u : 0u}});
+         {shared::kSpecLightingViewFootprint, m_features.hasNearMirrors() ? 1u : 0u},
+         {shared::kSpecLightingShadingRate, m_settings.tolerance >= 0.0f ? 1u : 0u}});
     return vk::createComputePipeline(m_device, code,
                                      exporting ? m_exportLayout.layout : m_lightingLayout.layout, spec,
                                      exporting ? "agaa.lighting.export" : "agaa.lighting");
@@ -424,6 +444,13 @@ std::vector<VariantChoice> AggregateAA::variants() const {
                      "setting --sample-rate-shading"});
         v.push_back({"curvature-roughness", m_settings.curvatureRoughness ? "on" : "off",
                      "setting --curvature-roughness"});
+        v.push_back(
+            {"shading-rate",
+             m_settings.tolerance >= 0.0f
+                 ? "per sample where the aggregates' normal spread over their sharpest lobe exceeds " +
+                       shortNumber(m_settings.tolerance)
+                 : std::string("one shading event per aggregate"),
+             "setting --agaa-tolerance"});
         v.push_back(
             {"clustering-distance",
              m_settings.distance == AggregateDistance::Plane ? "tangent-plane distance" : "Equation 1",

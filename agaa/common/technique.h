@@ -94,6 +94,9 @@ struct MethodSettings {
     bool sampleRateShading = false;
     // AGAA samples path: Kaplanyan curvature roughness in the fill pass (seed 004).
     bool curvatureRoughness = false;
+    // AGAA samples path: the error-driven shading rate's tolerance (AggregateSettings::tolerance);
+    // below 0: never.
+    float agaaTolerance = -1.0f;
     uint32_t agaaBreakdown = 0; // agaa-timings --breakdown only (AggregateBreakdown bits)
     EffectSettings effects;     // scene-driven shadows, alpha-to-coverage, emissive, normal maps
 };

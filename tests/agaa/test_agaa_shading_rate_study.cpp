@@ -209,3 +209,41 @@ TEST(ShadingRateStudy, WhichStatisticPredictsThePrefiltersError) {
 }
 
 } // namespace
+
+namespace {
+
+// Step 2: the built shading rate (--agaa-tolerance) against the converged truth, shadows on, at
+// tolerances from never to 0: display RMSE and shading events per pixel. A tolerance of 0 is the
+// reference (8) (ShadingRate.ZeroIsTheReferenceAtTheSameSampleCount); the figures say what each
+// step between costs and buys. docs/decisions/shading-rate-estimate.md.
+TEST(ShadingRateStudy, TheToleranceTradesShadingEventsForError) {
+    auto device = agaa::test::makeValidatedDevice();
+    const char* scenes[] = {"furball", "metal",  "foliage",     "railings",   "default",
+                            "spikes",  "glints", "hard-mirror", "hard-dense", "hard-many-lights"};
+    const float tolerances[] = {-1.0f, 3000.0f, 1000.0f, 300.0f, 100.0f, 30.0f, 10.0f, 0.0f};
+    for (const char* name : scenes) {
+        eng::scene::Scene scene = eng::scene::loadTestScene(name);
+        agaa::FrameRenderer renderer(*device, scene);
+        const agaa::TruthCache cache(agaa::truthCacheDir(AGAA_TEST_TRUTH_CACHE));
+        const agaa::ConvergedTruth truth = agaa::renderConvergedTruth(
+            renderer, agaa::test::request("reference", kSamples, 1, kSize), agaa::TruthSettings{}, &cache);
+        const eng::io::ImageF truthDisplay = eng::io::srgbEncoded(truth.display);
+        std::printf("[ measured ] %-16s truth's own error %.4f |", name, truth.errorEstimate);
+        double previousEvents = 0.0;
+        for (float t : tolerances) {
+            agaa::RenderRequest r = agaa::test::request("agaa-samples", kSamples, kAggregates, kSize);
+            r.settings.agaaTolerance = t;
+            const agaa::RenderResult frame = renderer.render(r);
+            const double error = eng::io::rmse(eng::io::srgbEncoded(frame.display), truthDisplay);
+            std::printf(" %s: %.4f, %.2f ev |", t < 0.0f ? "never" : std::to_string(int(t)).c_str(), error,
+                        frame.shadingEventsMean);
+            // A smaller tolerance flags a superset of the pixels.
+            EXPECT_GE(frame.shadingEventsMean, previousEvents) << name << " tolerance " << t;
+            previousEvents = frame.shadingEventsMean;
+        }
+        std::printf("\n");
+    }
+    agaa::test::expectNoValidationErrors(*device);
+}
+
+} // namespace

@@ -71,6 +71,7 @@ TEST(MethodSettings, AgaaDefaultsAreTheHostApisDefaults) {
               a.generation);
     EXPECT_EQ(m.samples, a.samples);
     EXPECT_EQ(m.aggregates, a.aggregates);
+    EXPECT_EQ(m.agaaTolerance, a.tolerance);
     EXPECT_EQ(agaa::findMethodOption("characteristic-length")->defaultText, "0.1");
     EXPECT_FLOAT_EQ(a.characteristicLength, 0.1f) << "--help's characteristic-length default";
     EXPECT_EQ(agaa::findMethodOption("seed-threshold")->defaultText, "0.05");

@@ -12,6 +12,9 @@
 //      (agaa/lighting/schedule.glsl);
 //   4. resolve: each shading event tone-mapped and weighted by its samples
 //      (agaa/lighting/resolve.glsl).
+// With a tolerance (--agaa-tolerance, samples path), a pixel whose aggregates' normal spread the
+// estimate distrusts (agaa/lighting/prefilter_estimate.glsl) skips steps 3 and 4's aggregates and
+// has each sample lit and resolved on its own (agaa/lighting/per_sample.glsl).
 #extension GL_GOOGLE_include_directive : require
 #include "shared/ag_buffer.h"
 #include "shared/agaa.h"
@@ -76,6 +79,7 @@ layout(set = 0, binding = 9, r32ui) uniform writeonly uimage2D outShadingEvents;
 
 #include "agaa/lighting/moments.glsl"
 #include "agaa/lighting/export.glsl"
+#include "agaa/lighting/prefilter_estimate.glsl"
 #if AGAA_GBUFFER
 #include "agaa/lighting/load_samples.glsl"
 #else
@@ -89,6 +93,7 @@ layout(set = 0, binding = 9, r32ui) uniform writeonly uimage2D outShadingEvents;
 #include "agaa/lighting/shade.glsl"
 #include "agaa/lighting/schedule.glsl"
 #include "agaa/lighting/resolve.glsl"
+#include "agaa/lighting/per_sample.glsl"
 
 void main() {
     ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
@@ -99,6 +104,7 @@ void main() {
     // 1. Aggregate at the top of the tile: one walk over the pixel's samples, then each
     //    aggregate's means normalised into the surface it is shaded as.
     clearMaterialSums();
+    clearSpreadSums();
     walkPixelSamples(pixel, pixelIndex, inside);
     uint presentCount = 0u;
     for (uint a = 0u; a < kAggregates; ++a) {
@@ -111,6 +117,14 @@ void main() {
     if (kOffLayerOwnColour && walk.offLayerSamples > 0u)
         offLayerMeans = loadOffLayerMeans(pixelIndex, walk.offLayerSamples);
     OffLayer offLayer = offLayerSurface(offLayerMeans);
+    // The shading rate: a pixel whose pre-filter the estimate distrusts has no aggregates to
+    // shade; steps 3 and 4 take its samples one by one instead.
+    bool perSample = shadePerSample(inside);
+    if (perSample) {
+        for (uint a = 0u; a < kAggregates; ++a)
+            aggregates[a].present = false;
+        presentCount = 0u;
+    }
 
     // 2. Tile depth bounds and light culling; the pixel's slots in the tile's list.
     tileListBegin();
@@ -126,8 +140,9 @@ void main() {
     if (!inside) return;
 
     // 4. Resolve.
-    Resolved resolved = resolvePixel(pixel, offLayer, offLayerShaded);
+    Resolved resolved =
+        perSample ? resolvePerSample(pixel, pixelIndex) : resolvePixel(pixel, offLayer, offLayerShaded);
     imageStore(outHdr, pixel, vec4(resolved.hdr, 1.0));
     imageStore(outDisplay, pixel, vec4(resolved.display, 1.0));
-    imageStore(outShadingEvents, pixel, uvec4(presentCount));
+    imageStore(outShadingEvents, pixel, uvec4(perSample ? kSamples - walk.skySamples : presentCount));
 }

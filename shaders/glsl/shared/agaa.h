@@ -88,6 +88,9 @@ struct AgaaConstants {
     // 1 per fragment); z, w unused. The shaders take both as specialisation constants; the CPU
     // references read them here.
     uvec4 modes;
+    // x the shading rate's tolerance (AggregateSettings::tolerance; agaa/lighting/shading_rate.glsl):
+    // a pixel whose estimate exceeds it is shaded per sample; y, z, w unused.
+    vec4 shadingRate;
 };
 
 SHARED_END

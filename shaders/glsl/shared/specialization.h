@@ -27,6 +27,7 @@ SHARED_CONST kSpecLightingSkipShading = 8u;   // agaa-timings --breakdown: 1 ski
 SHARED_CONST kSpecLightingNdf = 9u;           // AggregateNdf: kNdfToksvig or kNdfSggx
 SHARED_CONST kSpecLightingRouting = 10u;      // AggregateRouting: 1 whole fragments
 SHARED_CONST kSpecLightingViewFootprint = 11u; // SceneFeatures::hasNearMirrors
+SHARED_CONST kSpecLightingShadingRate = 12u;  // AggregateSettings::tolerance: 1 the per-sample rate
 
 SHARED_END
 #endif

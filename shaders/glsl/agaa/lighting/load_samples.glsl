@@ -43,12 +43,28 @@ void clearMaterialSums() {
     material.offLayerF0Alpha = vec4(0.0);
 }
 
+// One sample's G-buffer material.
+struct SampleMaterial {
+    vec3 normal; // unit, view space
+    vec4 albedoMetal;
+    float roughness;
+};
+
+SampleMaterial loadSampleMaterial(ivec2 pixel, uint s) {
+    ivec3 at = ivec3(pixel, s / 4u);
+    SampleMaterial m;
+    m.normal = decodeOctahedral(texelFetch(gNormal, at, int(s % 4u)).rg);
+    m.albedoMetal = texelFetch(gAlbedoMetal, at, int(s % 4u));
+    m.roughness = texelFetch(gEmissiveRoughness, at, int(s % 4u)).a;
+    return m;
+}
+
 // Sample s of the pixel, covered, in aggregate a (offLayer: c = 1, off aggregate 0's layer).
 void sumSampleMaterial(ivec2 pixel, uint pixelIndex, uint s, uint a, bool offLayer, vec3 P) {
-    ivec3 at = ivec3(pixel, s / 4u);
-    vec3 N = decodeOctahedral(texelFetch(gNormal, at, int(s % 4u)).rg);
-    vec4 albedoMetal = texelFetch(gAlbedoMetal, at, int(s % 4u));
-    float roughness = texelFetch(gEmissiveRoughness, at, int(s % 4u)).a;
+    SampleMaterial sm = loadSampleMaterial(pixel, s);
+    vec3 N = sm.normal;
+    vec4 albedoMetal = sm.albedoMetal;
+    float roughness = sm.roughness;
     float alpha = roughness * roughness;
     exportSample(pixelIndex, s, vec4(N, roughness), albedoMetal,
                  vec4(P, offLayer ? float(kAggregates) : float(a)), vec4(1.0, 0.0, 0.0, 0.0));
@@ -72,6 +88,7 @@ void sumSampleMaterial(ivec2 pixel, uint pixelIndex, uint s, uint a, bool offLay
     }
     material.materialAlpha[a] += clamp(alpha, kMinGgxAlpha, kMaxGgxAlpha);
     material.materialAlphaRaw[a] += min(alpha, kMaxGgxAlpha);
+    addSpreadSample(a, N, alpha); // the shading rate's estimate (prefilter_estimate.glsl)
 }
 
 OffLayerMeans loadOffLayerMeans(uint pixelIndex, uint samples) {

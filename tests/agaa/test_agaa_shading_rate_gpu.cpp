@@ -1,0 +1,214 @@
+// Issue 35: AGAA's error-driven shading rate (--agaa-tolerance; shaders/glsl/agaa/lighting/
+// prefilter_estimate.glsl and per_sample.glsl). A pixel whose aggregates' normal spread, against
+// their sharpest member's lobe, reaches the tolerance is shaded per sample.
+//   - Nothing flagged is AGAA bit for bit: the machinery changes no other pixel.
+//   - A tolerance of 0 is the reference at the same n.
+//   - The GPU flags the pixels a CPU estimate, written here in double from the lighting pass's
+//     export of each sample's normal, roughness and aggregate, flags; the two differ only where
+//     an estimate lies within rounding of the tolerance.
+//   - The estimate's floor (kNormalSpreadFloor): a flat surface is never flagged above 0.
+
+#include "agaa_test_support.h"
+#include "aggregate_export.h"
+#include "engine/io/metrics.h"
+#include "engine/io/tone_map.h"
+#include "gpu_test_support.h"
+#include "tools/harness/frame_renderer.h"
+#include "tools/scenes/adversarial_scenes.h"
+
+#include <gtest/gtest.h>
+
+#include <glm/glm.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+namespace {
+
+using agaa::test::request;
+
+constexpr uint32_t kSize = 64;
+constexpr float kNothingFlagged = 1.0e7f; // above any estimate: 2 * 2 / kMinGgxAlpha^2 = 4e6
+
+agaa::RenderRequest withTolerance(const std::string& method, uint32_t n, uint32_t c, float tolerance) {
+    agaa::RenderRequest r = request(method, n, c, kSize);
+    r.settings.agaaTolerance = tolerance;
+    return r;
+}
+
+double maxAbsDifference(const eng::io::ImageF& a, const eng::io::ImageF& b) {
+    double m = 0.0;
+    for (size_t i = 0; i < a.rgba.size(); ++i)
+        m = std::max(m, std::abs(double(a.rgba[i]) - double(b.rgba[i])));
+    return m;
+}
+
+TEST(ShadingRate, NothingFlaggedIsAgaaBitForBit) {
+    auto device = agaa::test::makeValidatedDevice();
+    struct Case {
+        const char* scene;
+        uint32_t c;
+    };
+    // Shadows (metal, spikes), emission (hard-emissive), SGGX (metal), c = 1's off-layer samples.
+    for (const Case k : {Case{"metal", 2}, Case{"spikes", 4}, Case{"hard-emissive", 2}, Case{"furball", 1}}) {
+        eng::scene::Scene scene = eng::scene::loadTestScene(k.scene);
+        agaa::FrameRenderer renderer(*device, scene);
+        const agaa::RenderResult never = renderer.render(request("agaa-samples", 8, k.c, kSize));
+        const agaa::RenderResult none =
+            renderer.render(withTolerance("agaa-samples", 8, k.c, kNothingFlagged));
+        EXPECT_EQ(maxAbsDifference(never.hdr, none.hdr), 0.0) << k.scene << " c=" << k.c;
+        EXPECT_EQ(maxAbsDifference(never.display, none.display), 0.0) << k.scene << " c=" << k.c;
+        EXPECT_EQ(never.shadingEvents, none.shadingEvents) << k.scene << " c=" << k.c;
+    }
+    agaa::test::expectNoValidationErrors(*device);
+}
+
+// The reference's per-sample lighting and AGAA's one-sample aggregate evaluate the same BRDF in a
+// different order of operations: measured 4e-6 to 9e-6 display RMSE, 1e-4 allows ten times that.
+constexpr double kPerSampleAgreement = 1.0e-4;
+
+TEST(ShadingRate, ZeroIsTheReferenceAtTheSameSampleCount) {
+    auto device = agaa::test::makeValidatedDevice();
+    for (const char* name : {"metal", "default", "spikes", "hard-mirror", "hard-emissive", "furball"}) {
+        eng::scene::Scene scene = eng::scene::loadTestScene(name);
+        agaa::FrameRenderer renderer(*device, scene);
+        const agaa::RenderResult reference = renderer.render(request("reference", 8, 1, kSize));
+        const agaa::RenderResult never = renderer.render(request("agaa-samples", 8, 2, kSize));
+        const agaa::RenderResult zero = renderer.render(withTolerance("agaa-samples", 8, 2, 0.0f));
+        const double error =
+            eng::io::rmse(eng::io::srgbEncoded(zero.display), eng::io::srgbEncoded(reference.display));
+        const double before =
+            eng::io::rmse(eng::io::srgbEncoded(never.display), eng::io::srgbEncoded(reference.display));
+        std::printf(
+            "[ measured ] %-14s tolerance 0 against the reference (8): display RMSE %.2e (never: %.4f); "
+            "events/px %.2f\n",
+            name, error, before, zero.shadingEventsMean);
+        EXPECT_LE(error, kPerSampleAgreement) << name;
+        // Every covered sample is a shading event.
+        for (size_t p = 0; p < zero.shadingEvents.size(); ++p)
+            ASSERT_LE(zero.shadingEvents[p], 8u) << name << " pixel " << p;
+        EXPECT_GT(zero.shadingEventsMean, never.shadingEventsMean) << name;
+    }
+    agaa::test::expectNoValidationErrors(*device);
+}
+
+// The estimate in double, from the export (prefilter_estimate.glsl's formula, written here from
+// its description): per aggregate of two or more samples, s = 1 - |mean unit normal|, 0 below the
+// floor, else 2 s / max(alpha_min, 1e-3)^2; the pixel's is the largest.
+constexpr double kSpreadFloor = 1.0e-5;  // kNormalSpreadFloor
+constexpr double kAlphaFloor = 1.0e-3;   // kMinGgxAlpha
+constexpr double kRoundingBand = 2.0e-3; // relative: an estimate this near the tolerance may go either way
+
+struct CpuEstimate {
+    double value = 0.0;
+    bool covered = false;
+    uint32_t coveredSamples = 0;
+};
+
+std::vector<CpuEstimate> cpuEstimates(const std::vector<float>& exported, uint32_t n, uint32_t c) {
+    const size_t pixels = size_t(kSize) * kSize;
+    const size_t record = agaa::test::kExportRecordFloats;
+    std::vector<CpuEstimate> out(pixels);
+    for (size_t p = 0; p < pixels; ++p) {
+        std::array<glm::dvec3, 4> sum{};
+        std::array<double, 4> alphaMin{1.0, 1.0, 1.0, 1.0};
+        std::array<uint32_t, 4> count{};
+        for (uint32_t s = 0; s < n; ++s) {
+            const float* rec = &exported[(p * n + s) * record];
+            if (rec[12] == 0.0f) continue; // sky
+            ++out[p].coveredSamples;
+            const uint32_t a = uint32_t(rec[11]);
+            if (a >= c) continue; // c = 1's off-layer samples
+            sum[a] += glm::dvec3(rec[0], rec[1], rec[2]);
+            alphaMin[a] = std::min(alphaMin[a], std::max(double(rec[3]) * double(rec[3]), kAlphaFloor));
+            ++count[a];
+        }
+        out[p].covered = out[p].coveredSamples > 0;
+        for (uint32_t a = 0; a < c; ++a) {
+            if (count[a] < 2) continue;
+            const double spread = 1.0 - glm::length(sum[a]) / double(count[a]);
+            if (spread <= kSpreadFloor) continue;
+            out[p].value = std::max(out[p].value, 2.0 * spread / (alphaMin[a] * alphaMin[a]));
+        }
+    }
+    return out;
+}
+
+TEST(ShadingRate, TheGpuFlagsWhatACpuEstimateFlags) {
+    auto device = agaa::test::makeValidatedDevice();
+    struct Case {
+        const char* scene;
+        uint32_t c;
+    };
+    const Case cases[] = {{"metal", 2},   {"metal", 4},    {"furball", 2},
+                          {"default", 2}, {"railings", 1}, {"hard-mirror", 2}};
+    for (const Case& k : cases) {
+        eng::scene::Scene scene = eng::scene::loadTestScene(k.scene);
+        for (eng::scene::Light& l : scene.lights)
+            l.castsShadows = false; // the export variant has no shadow maps
+        agaa::FrameRenderer renderer(*device, scene);
+        // The tolerance: the median of the scene's non-zero estimates, so that about half the pixels
+        // with any spread are flagged.
+        std::vector<double> values;
+        const std::vector<float> unflagged =
+            agaa::test::renderAggregateExport(*device, renderer, request("agaa-samples", 8, k.c, kSize));
+        for (const CpuEstimate& e : cpuEstimates(unflagged, 8, k.c))
+            if (e.value > 0.0) values.push_back(e.value);
+        ASSERT_FALSE(values.empty()) << k.scene;
+        std::nth_element(values.begin(), values.begin() + values.size() / 2, values.end());
+        const float tolerance = float(values[values.size() / 2]);
+        agaa::RenderResult frame;
+        const std::vector<float> exported = agaa::test::renderAggregateExport(
+            *device, renderer, withTolerance("agaa-samples", 8, k.c, tolerance), &frame);
+        const std::vector<CpuEstimate> cpu = cpuEstimates(exported, 8, k.c);
+        uint32_t flagged = 0, compared = 0, mismatches = 0, nearTolerance = 0;
+        for (size_t p = 0; p < cpu.size(); ++p) {
+            // A flagged pixel has one event per covered sample, an unflagged one at most c: the two
+            // tell apart wherever more than c samples are covered.
+            if (cpu[p].coveredSamples <= k.c) continue;
+            ++compared;
+            const bool gpu = frame.shadingEvents[p] == cpu[p].coveredSamples;
+            const bool expected = cpu[p].value >= double(tolerance);
+            flagged += gpu ? 1u : 0u;
+            if (gpu == expected) continue;
+            if (std::abs(cpu[p].value - double(tolerance)) <= kRoundingBand * double(tolerance)) {
+                ++nearTolerance;
+                continue;
+            }
+            if (++mismatches <= 3)
+                ADD_FAILURE() << k.scene << " c=" << k.c << " pixel " << p << ": GPU " << (gpu ? "" : "not ")
+                              << "flagged, CPU estimate " << cpu[p].value << " against " << tolerance;
+        }
+        std::printf("[ measured ] %-12s c=%u tolerance %g: %u of %u pixels flagged, %u mismatches, %u within "
+                    "rounding of the tolerance\n",
+                    k.scene, k.c, double(tolerance), flagged, compared, mismatches, nearTolerance);
+        EXPECT_EQ(mismatches, 0u) << k.scene;
+        EXPECT_GT(flagged, 0u) << k.scene << ": the case should flag some pixels";
+        EXPECT_LT(flagged, compared) << k.scene << ": and leave some";
+    }
+    agaa::test::expectNoValidationErrors(*device);
+}
+
+// kNormalSpreadFloor's edge: a flat surface's samples share one normal, and the fp32 rounding of
+// their sum must not read as a spread. The tolerance just above 0 flags no pixel of hard-flat,
+// hard-zfight (two coplanar surfaces) or plane; 0 flags every covered one.
+TEST(ShadingRate, AFlatSurfaceIsNeverFlaggedAboveZero) {
+    auto device = agaa::test::makeValidatedDevice();
+    for (const char* name : {"hard-flat", "hard-zfight", "plane"}) {
+        eng::scene::Scene scene = eng::scene::loadTestScene(name);
+        agaa::FrameRenderer renderer(*device, scene);
+        const agaa::RenderResult never = renderer.render(request("agaa-samples", 8, 2, kSize));
+        const agaa::RenderResult tiny = renderer.render(withTolerance("agaa-samples", 8, 2, 1.0e-6f));
+        EXPECT_EQ(never.shadingEvents, tiny.shadingEvents) << name << ": a flat pixel was flagged";
+        EXPECT_EQ(maxAbsDifference(never.display, tiny.display), 0.0) << name;
+        const agaa::RenderResult zero = renderer.render(withTolerance("agaa-samples", 8, 2, 0.0f));
+        EXPECT_GT(zero.shadingEventsMean, never.shadingEventsMean) << name;
+    }
+    agaa::test::expectNoValidationErrors(*device);
+}
+
+} // namespace
