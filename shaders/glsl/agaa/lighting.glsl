@@ -91,9 +91,9 @@ layout(set = 0, binding = 9, r32ui) uniform writeonly uimage2D outShadingEvents;
 #include "agaa/lighting/light.glsl"
 #include "agaa/lighting/shadowed_lights.glsl"
 #include "agaa/lighting/shade.glsl"
+#include "agaa/lighting/per_sample.glsl"
 #include "agaa/lighting/schedule.glsl"
 #include "agaa/lighting/resolve.glsl"
-#include "agaa/lighting/per_sample.glsl"
 
 void main() {
     ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
@@ -129,19 +129,19 @@ void main() {
     // 2. Tile depth bounds and light culling; the pixel's slots in the tile's list.
     tileListBegin();
     tileBoundsBegin(); // its barrier orders the list's reset before the appends
-    uint firstEntry = tileListAppend(presentCount);
+    uint firstEntry = tileListAppend(presentCount, perSample);
     tileBoundsAdd(walk.tmin, walk.tmax);
     tileCullLights();
     barrier();
 
     // 3. Light each aggregate once per light.
     OffLayerShading offLayerShaded;
-    shadeAggregates(offLayer, inside, firstEntry, offLayerShaded);
+    shadeAggregates(offLayer, inside, perSample, firstEntry, offLayerShaded);
     if (!inside) return;
 
     // 4. Resolve.
-    Resolved resolved =
-        perSample ? resolvePerSample(pixel, pixelIndex) : resolvePixel(pixel, offLayer, offLayerShaded);
+    Resolved resolved = perSample ? Resolved(sampleResolve.display, sampleResolve.hdr)
+                                  : resolvePixel(pixel, offLayer, offLayerShaded);
     imageStore(outHdr, pixel, vec4(resolved.hdr, 1.0));
     imageStore(outDisplay, pixel, vec4(resolved.display, 1.0));
     imageStore(outShadingEvents, pixel, uvec4(perSample ? kSamples - walk.skySamples : presentCount));

@@ -1,15 +1,44 @@
-// Steps 3 and 4 for a pixel the shading rate flags (prefilter_estimate.glsl): each covered sample
-// lit on its own, with its own G-buffer material and position, and tone-mapped on its own, as the
-// reference shades and resolves it. Samples path only: the accumulate path keeps no per-sample
-// material (AggregateAA refuses --agaa-tolerance there).
+// A pixel the shading rate flags (prefilter_estimate.glsl) skips its aggregates: each covered
+// sample is lit on its own, with its own G-buffer material and position, and tone-mapped on its
+// own, as the reference shades and resolves it. On the compacted schedule its samples join the
+// tile's list (schedule.glsl), so that a flagged pixel's n events spread over the tile's lanes;
+// on the per-pixel schedule its invocation shades them in turn. Samples path only: the accumulate
+// path keeps no per-sample material (AggregateAA refuses --agaa-tolerance there).
 
 // Whether the pixel is shaded per sample: one of its aggregates' estimates reaches the tolerance
 // (at 0, every covered pixel: the reference at the same n).
 bool shadePerSample(bool inside) {
     if (kShadingRate == 0u || !inside) return false;
     for (uint a = 0u; a < kAggregates; ++a)
-        if (walk.samplesIn[a] > 0u && prefilterEstimate(a, walk.samplesIn[a]) >= agaa.shadingRate.x) return true;
+        if (walk.samplesIn[a] > 0u && prefilterEstimate(a, walk.samplesIn[a]) >= agaa.shadingRate.x)
+            return true;
     return false;
+}
+
+// The flagged pixel's resolve, summed as its samples' shadings arrive (module state).
+struct SampleResolve {
+    vec3 display; // tone-mapped per sample, weighted 1/n
+    vec3 hdr;     // exposed linear radiance, weighted 1/n
+};
+SampleResolve sampleResolve;
+
+// The sky's share of the resolve, before any sample's shading is added.
+void beginSampleResolve(ivec2 pixel) {
+    float weight = float(walk.skySamples) / float(kSamples);
+    vec3 sky = skyRadiance(pixel) * frame.depthParams.z;
+    sampleResolve.display = weight * toneMapAces(sky);
+    sampleResolve.hdr = weight * sky;
+}
+
+// Sample s's radiance (before exposure): its emission added, exposed, tone-mapped, summed.
+void addSampleShading(ivec2 pixel, uint s, vec3 radiance) {
+#if AGAA_EMISSIVE
+    radiance += texelFetch(emissiveSamples, ivec3(pixel, s / 4u), int(s % 4u)).rgb;
+#endif
+    vec3 L = min(radiance * frame.depthParams.z, vec3(kMaxRadiance));
+    float weight = 1.0 / float(kSamples);
+    sampleResolve.display += weight * toneMapAces(L);
+    sampleResolve.hdr += weight * L;
 }
 
 #if AGAA_GBUFFER
@@ -26,6 +55,7 @@ Aggregate oneSampleAggregate(ivec2 pixel, uint pixelIndex, uint s, vec3 P) {
     ag.samples = 1u;
     ag.accumulated = 1u;
     ag.present = true;
+    ag.oneSample = true;
     ag.surface.normal = sm.normal;
     ag.surface.roughness = sqrt(alpha); // the BRDF squares it back
     ag.surface.albedo = sm.albedoMetal.rgb;
@@ -41,35 +71,21 @@ Aggregate oneSampleAggregate(ivec2 pixel, uint pixelIndex, uint s, vec3 P) {
     ag.screenSpread = vec3(0.0);
     return ag;
 }
+#else
+Aggregate oneSampleAggregate(ivec2 pixel, uint pixelIndex, uint s, vec3 P) {
+    return aggregates[0]; // never called: the accumulate path never flags a pixel
+}
+#endif
 
-Resolved resolvePerSample(ivec2 pixel, uint pixelIndex) {
-    float exposure = frame.depthParams.z;
-    float weight = 1.0 / float(kSamples);
-    vec3 sky = skyRadiance(pixel) * exposure;
-    Resolved r = Resolved(vec3(0.0), vec3(0.0));
+// The per-pixel schedule's way: this invocation shades its pixel's covered samples in turn.
+void shadeSamplesInRegisters(ivec2 pixel, uint pixelIndex) {
     for (uint s = 0u; s < kSamples; ++s) {
         float d = sampleDepth(pixel, s);
-        if (isSky(d)) {
-            r.display += weight * toneMapAces(sky);
-            r.hdr += weight * sky;
-            continue;
-        }
+        if (isSky(d)) continue;
         Aggregate ag = oneSampleAggregate(pixel, pixelIndex, s, sampleViewPosition(pixel, s, d));
         Shading shading;
         OffLayerShading unused;
         shadeAggregate(ag, noOffLayer(ag), shading, unused);
-        vec3 L = shading.radiance;
-#if AGAA_EMISSIVE
-        L += texelFetch(emissiveSamples, ivec3(pixel, s / 4u), int(s % 4u)).rgb;
-#endif
-        L = exposedRadiance(L, exposure);
-        r.display += weight * toneMapAces(L);
-        r.hdr += weight * L;
+        addSampleShading(pixel, s, shading.radiance);
     }
-    return r;
 }
-#else
-Resolved resolvePerSample(ivec2 pixel, uint pixelIndex) {
-    return Resolved(vec3(0.0), vec3(0.0));
-}
-#endif
