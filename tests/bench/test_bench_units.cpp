@@ -95,6 +95,26 @@ TEST(SweepPlan, SurfacesAxisKeepsEachMethodsRange) {
     EXPECT_THROW(planSweep(s), std::invalid_argument) << "no value in streaming's 1..3";
 }
 
+// Issue 35: the tolerance axis runs each value for the methods that read --agaa-tolerance (agaa,
+// agaa-samples) and leaves the others' jobs, and their ids, as they were; "never" is the job the
+// sweep has without the axis.
+TEST(SweepPlan, ToleranceAxisIsAgaasSamplesPathOnly) {
+    SweepSettings s;
+    s.scenes = {"plane"};
+    s.methods = {"reference", "agaa-accumulate", "agaa-samples"};
+    s.samples = {8};
+    s.aggregates = {2};
+    s.tolerances = {"never", "30", "0"};
+    std::vector<std::string> ids;
+    for (const Job& j : planSweep(s))
+        ids.push_back(j.id());
+    EXPECT_EQ(ids,
+              (std::vector<std::string>{"plane__reference__n8__c0", "plane__agaa-accumulate__n8__c2",
+                                        "plane__agaa-samples__n8__c2", "plane__agaa-samples__n8__c2__t30",
+                                        "plane__agaa-samples__n8__c2__t0"}));
+    EXPECT_EQ(jobId("plane", "agaa", 8, 2, 0, "30"), "plane__agaa__n8__c2__t30");
+}
+
 TEST(ShadingLanes, EachLaneGroupCostsItsWorstPixel) {
     // One row of 10 pixels in 8-lane groups: the first group's worst pixel has 5 events, the
     // second (2 pixels) 2: (8 * 5 + 2 * 2) / 10.

@@ -66,7 +66,8 @@ std::string joined(const std::vector<std::string>& v) {
 
 std::string usage() {
     return "usage: agaa-bench --out DIR [--scenes a,b] [--methods a,b] [--samples 8,32] [--aggregates 1,2]\n"
-           "                  [--surfaces 1,2,3] [--size WxH] [--frames K] [--warmup K] [--temporal K] "
+           "                  [--surfaces 1,2,3] [--tolerances never,30,0] [--size WxH] [--frames K] "
+           "[--warmup K] [--temporal K] "
            "[--full] [--job I/N]\n"
            "                  [--truth-supersampling K] [--truth-cache DIR]\n"
            "                  [--extra-lights 0,4,16,64] [--validate] [--help] [--SETTING VALUE...]\n"
@@ -88,6 +89,8 @@ std::string usage() {
            "  --aggregates 1,2  c for methods that take it: 1..4 (default 1,2)\n"
            "  --surfaces 1,3    S for the methods that take it, 1..6, each method keeping the values in\n"
            "                    its range (sbaa 1..6, streaming 1..3); default: each method's own (4, 3)\n"
+           "  --tolerances never,30,0  AGAA's shading-rate axis (--agaa-tolerance: never, or T >= 0, 0 the\n"
+           "                    reference) for agaa and agaa-samples; jobs are named ...__t<T>\n"
            "  --size WxH        image size, 1..8192 each (default 160x90)\n"
            "  --frames K        timed frames per job, 1..1000 (default 3); times are medians with min/max\n"
            "  --warmup K        untimed frames first, 0..1000 (default 1)\n"
@@ -177,6 +180,11 @@ BenchOptions parseOptions(int argc, char** argv) {
             s.surfaces.clear();
             for (const std::string& v : splitList(a, value()))
                 s.surfaces.push_back(axisValue("surfaces", v).surfaces);
+        } else if (a == "--tolerances") {
+            s.tolerances.clear();
+            const MethodOption& tolerance = *findMethodOption("agaa-tolerance");
+            for (const std::string& v : splitList(a, value()))
+                s.tolerances.push_back(tolerance.get(axisValue("agaa-tolerance", v))); // the value's own text
         } else if (a == "--aggregates") {
             aggregates.emplace();
             for (const std::string& v : splitList(a, value()))

@@ -67,8 +67,8 @@ void JobRunner::selectScene(const std::string& name) {
 }
 
 RenderRequest JobRunner::request(const std::string& method, uint32_t samples, uint32_t aggregates,
-                                 uint32_t width, uint32_t height, float orbitDegrees,
-                                 uint32_t surfaces) const {
+                                 uint32_t width, uint32_t height, float orbitDegrees, uint32_t surfaces,
+                                 const std::string& tolerance) const {
     RenderRequest r;
     r.method = method;
     for (const std::string& name : m_settings.givenSettings) {
@@ -77,6 +77,7 @@ RenderRequest JobRunner::request(const std::string& method, uint32_t samples, ui
     }
     r.settings.samples = samples;
     r.settings.surfaces = surfaces; // 0: the method's default
+    if (!tolerance.empty()) setMethodOption(r.settings, *findMethodOption("agaa-tolerance"), tolerance);
     if (aggregates != kAggregatesWhenUnused) r.settings.aggregates = aggregates;
     r.view.width = width;
     r.view.height = height;
@@ -142,13 +143,15 @@ const std::vector<eng::io::ImageF>& JobRunner::pathTruth() {
 }
 
 std::vector<eng::io::ImageF> JobRunner::renderPath(const std::string& method, uint32_t samples,
-                                                   uint32_t aggregates, uint32_t surfaces) {
+                                                   uint32_t aggregates, uint32_t surfaces,
+                                                   const std::string& tolerance) {
     uint32_t w = 0, h = 0;
     temporalSize(m_settings, w, h);
     std::vector<eng::io::ImageF> frames;
     for (uint32_t t = 0; t < m_settings.temporalFrames; ++t) {
-        RenderResult r = m_scene.renderer->render(
-            request(method, samples, aggregates, w, h, float(t) * m_settings.temporalStepDegrees, surfaces));
+        RenderResult r =
+            m_scene.renderer->render(request(method, samples, aggregates, w, h,
+                                             float(t) * m_settings.temporalStepDegrees, surfaces, tolerance));
         frames.push_back(srgbEncoded(r.display));
     }
     return frames;
@@ -160,7 +163,7 @@ JobResult JobRunner::run(const Job& job) {
     const uint32_t validationBefore = m_device.validationErrors();
 
     RenderRequest req = request(job.method, job.samples, job.aggregates, m_settings.width, m_settings.height,
-                                0.0f, job.surfaces);
+                                0.0f, job.surfaces, job.tolerance);
     req.warmupFrames = m_settings.warmupFrames;
     req.timedFrames = m_settings.timedFrames;
     RenderResult rendered = m_scene.renderer->render(req);
@@ -168,7 +171,7 @@ JobResult JobRunner::run(const Job& job) {
         throw std::runtime_error(job.id() + ": the frame contains NaN or Inf");
     std::vector<eng::io::ImageF> path;
     if (m_settings.temporalFrames >= 2)
-        path = renderPath(job.method, job.samples, job.aggregates, job.surfaces);
+        path = renderPath(job.method, job.samples, job.aggregates, job.surfaces, job.tolerance);
     uint32_t validationErrors = m_device.validationErrors() - validationBefore;
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 

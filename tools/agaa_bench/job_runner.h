@@ -50,12 +50,13 @@ class JobRunner {
 
     void selectScene(const std::string& name);
     RenderRequest request(const std::string& method, uint32_t samples, uint32_t aggregates, uint32_t width,
-                          uint32_t height, float orbitDegrees, uint32_t surfaces = 0) const;
+                          uint32_t height, float orbitDegrees, uint32_t surfaces = 0,
+                          const std::string& tolerance = "") const;
     const eng::io::ImageF& referenceAtSamples(uint32_t samples);
     const ConvergedTruth& truth();
     const std::vector<eng::io::ImageF>& pathTruth();
     std::vector<eng::io::ImageF> renderPath(const std::string& method, uint32_t samples, uint32_t aggregates,
-                                            uint32_t surfaces);
+                                            uint32_t surfaces, const std::string& tolerance);
     RenderResult renderTruth(const RenderRequest& request);
     ConvergedTruth renderConverged(const RenderRequest& request);
 

@@ -91,17 +91,17 @@ std::vector<LightAxisTable> lightAxisTables(const std::vector<JobResult>& result
         const auto column = [&](uint32_t k) {
             return size_t(std::find(t.lightCounts.begin(), t.lightCounts.end(), k) - t.lightCounts.begin());
         };
-        using Key = std::tuple<std::string, uint32_t, uint32_t, uint32_t>;
+        using Key = std::tuple<std::string, uint32_t, uint32_t, uint32_t, std::string>;
         std::map<Key, size_t> rowOf;
         std::map<std::pair<uint32_t, uint32_t>, Spread> peer; // (n, K) -> Simple/Complex frame ms
         for (const JobResult& r : results) {
             const SceneVariant v = parseSceneVariant(r.job.scene);
             if (v.base != scene) continue;
-            const Key key{r.job.method, r.job.samples, r.job.aggregates, r.job.surfaces};
+            const Key key{r.job.method, r.job.samples, r.job.aggregates, r.job.surfaces, r.job.tolerance};
             auto [it, added] = rowOf.emplace(key, t.rows.size());
             if (added) {
                 LightAxisRow row;
-                row.method = r.job.method;
+                row.method = r.job.method + (r.job.tolerance.empty() ? "" : " T" + r.job.tolerance);
                 row.samples = r.job.samples;
                 row.aggregates = r.job.aggregates;
                 row.surfaces = r.job.surfaces;

@@ -86,6 +86,7 @@ std::string setting(const Job& j) {
     if (j.usesSamples) s += "n" + std::to_string(j.samples);
     if (j.usesAggregates) s += (s.empty() ? "" : " ") + std::string("c") + std::to_string(j.aggregates);
     if (j.surfaces) s += (s.empty() ? "" : " ") + std::string("S") + std::to_string(j.surfaces);
+    if (!j.tolerance.empty()) s += (s.empty() ? "" : " ") + std::string("T") + j.tolerance;
     return s;
 }
 
@@ -144,7 +145,8 @@ json benchData(const std::vector<JobResult>& results) {
              {"label", label(r.job)},
              {"setting", setting(r.job)},
              {"series", r.job.method + (r.job.usesAggregates ? " c" + std::to_string(r.job.aggregates) : "") +
-                            (r.job.surfaces ? " S" + std::to_string(r.job.surfaces) : "")},
+                            (r.job.surfaces ? " S" + std::to_string(r.job.surfaces) : "") +
+                            (r.job.tolerance.empty() ? "" : " T" + r.job.tolerance)},
              {"n", r.job.samples},
              {"c", r.job.aggregates},
              {"usesSamples", r.job.usesSamples},

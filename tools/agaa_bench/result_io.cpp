@@ -94,6 +94,7 @@ json toJson(const JobResult& r) {
     j["samples"] = r.job.samples;
     j["aggregates"] = r.job.aggregates;
     j["surfaces"] = r.job.surfaces;
+    j["tolerance"] = r.job.tolerance;
     j["uses_samples"] = r.job.usesSamples;
     j["uses_aggregates"] = r.job.usesAggregates;
     j["plan_index"] = r.job.index;
@@ -149,7 +150,8 @@ JobResult jobFromJson(const json& j) {
         r.job.method = j.at("method").get<std::string>();
         r.job.samples = j.at("samples").get<uint32_t>();
         r.job.aggregates = j.at("aggregates").get<uint32_t>();
-        r.job.surfaces = j.value("surfaces", 0u); // absent in results written before the S axis
+        r.job.surfaces = j.value("surfaces", 0u);              // absent in results written before the S axis
+        r.job.tolerance = j.value("tolerance", std::string()); // and before the tolerance axis
         r.job.usesSamples = j.at("uses_samples").get<bool>();
         r.job.usesAggregates = j.at("uses_aggregates").get<bool>();
         r.job.index = j.at("plan_index").get<size_t>();
@@ -245,7 +247,7 @@ void writeResultsCsv(const std::filesystem::path& file, const std::vector<JobRes
          "frame_ms_min,frame_ms_max,frame_ms_q1,frame_ms_q3,bytes_per_pixel,shading_events_mean,"
          "shading_events_max,rmse_same_n,psnr_same_n,ssim_same_n,p99_same_n,rmse_truth,psnr_truth,ssim_truth,"
          "p99_truth,truth_error_estimate,temporal_error_change,validation_errors,passes,surfaces,"
-         "shading_events_worst_lane,mean_luminance,truth_mean_luminance,truth_supersampling\n";
+         "shading_events_worst_lane,mean_luminance,truth_mean_luminance,truth_supersampling,tolerance\n";
     for (const JobResult& r : results) {
         auto err = [&](const std::optional<ErrorMetrics>& e) {
             if (!e) return std::string(",,,");
@@ -265,7 +267,7 @@ void writeResultsCsv(const std::filesystem::path& file, const std::vector<JobRes
           << (r.temporal ? csvNumber(r.temporal->meanErrorChange) : "") << "," << r.validationErrors << ","
           << csvField(passes) << "," << r.job.surfaces << "," << csvNumber(r.shadingEventsWorstLane) << ","
           << csvNumber(r.meanLuminance) << "," << csvNumber(r.truth.meanLuminance) << ","
-          << r.truth.supersampling << "\n";
+          << r.truth.supersampling << "," << csvField(r.job.tolerance) << "\n";
     }
     writeTextFile(file, s.str());
 }

@@ -1,5 +1,6 @@
 #include "sweep_plan.h"
 
+#include "agaa/method_settings.h"
 #include "agaa/methods.h"
 
 #include <algorithm>
@@ -33,13 +34,13 @@ bool parseUint(const std::string& s, uint32_t& out) {
 } // namespace
 
 std::string jobId(const std::string& scene, const std::string& method, uint32_t samples, uint32_t aggregates,
-                  uint32_t surfaces) {
+                  uint32_t surfaces, const std::string& tolerance) {
     return scene + "__" + method + "__n" + std::to_string(samples) + "__c" + std::to_string(aggregates) +
-           (surfaces ? "__s" + std::to_string(surfaces) : "");
+           (surfaces ? "__s" + std::to_string(surfaces) : "") + (tolerance.empty() ? "" : "__t" + tolerance);
 }
 
 std::string Job::id() const {
-    return jobId(scene, method, samples, aggregates, surfaces);
+    return jobId(scene, method, samples, aggregates, surfaces, tolerance);
 }
 
 std::string sceneWithLights(const std::string& scene, uint32_t extraLights) {
@@ -83,20 +84,28 @@ std::vector<Job> planSweep(const SweepSettings& settings) {
                     throw std::invalid_argument("--surfaces: none of the values is in " + method + "'s 1.." +
                                                 std::to_string(info.maxSurfaces));
             }
+            std::vector<std::string> ts = {""};
+            if (!settings.tolerances.empty() &&
+                methodReadsOption(*findMethodOption("agaa-tolerance"), method))
+                ts = settings.tolerances;
             for (uint32_t n : ns) {
                 for (uint32_t c : cs) {
                     for (uint32_t s : ss) {
-                        Job job;
-                        job.scene = scene;
-                        job.method = method;
-                        job.samples = n;
-                        job.aggregates = c;
-                        job.surfaces = s;
-                        job.usesSamples = info.usesSamples;
-                        job.usesAggregates = info.usesAggregates;
-                        if (!seen.insert(job.id()).second) continue;
-                        job.index = jobs.size();
-                        jobs.push_back(job);
+                        for (const std::string& t : ts) {
+                            Job job;
+                            job.scene = scene;
+                            job.method = method;
+                            job.samples = n;
+                            job.aggregates = c;
+                            job.surfaces = s;
+                            // "never" is AGAA as published: the job the sweep has without the axis.
+                            job.tolerance = t == "never" ? "" : t;
+                            job.usesSamples = info.usesSamples;
+                            job.usesAggregates = info.usesAggregates;
+                            if (!seen.insert(job.id()).second) continue;
+                            job.index = jobs.size();
+                            jobs.push_back(job);
+                        }
                     }
                 }
             }

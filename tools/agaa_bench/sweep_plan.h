@@ -23,6 +23,9 @@ struct SweepSettings {
     // S, for methods that take it (SBAA, streaming), each kept to the method's range; empty: each
     // method's default.
     std::vector<uint32_t> surfaces;
+    // AGAA's shading-rate tolerance (--tolerances; --agaa-tolerance's values, "never" or T), for
+    // the methods that read it; empty: not an axis.
+    std::vector<std::string> tolerances;
     // The light-count axis (--extra-lights): every scene once per K, with K generated point lights.
     std::vector<uint32_t> extraLights = {0};
     uint32_t width = 160;
@@ -58,13 +61,15 @@ struct Job {
     bool usesSamples = false;
     bool usesAggregates = false;
     uint32_t surfaces = 0; // S of the methods that take it (SBAA, streaming); 0 = none
+    std::string tolerance; // AGAA's --agaa-tolerance on the tolerance axis; empty: not on it
 
-    // "<scene>__<method>__n<N>__c<C>", then "__s<S>" for methods that take S
+    // "<scene>__<method>__n<N>__c<C>", then "__s<S>" for methods that take S, "__t<T>" on the
+    // tolerance axis
     std::string id() const;
 };
 
 std::string jobId(const std::string& scene, const std::string& method, uint32_t samples, uint32_t aggregates,
-                  uint32_t surfaces = 0);
+                  uint32_t surfaces = 0, const std::string& tolerance = "");
 
 // The light-count axis: a scene with K generated point lights (engine/scene/extra_lights.h) is the
 // scene variant "<scene>+l<K>" in job ids, results and the report; K = 0 is the scene itself, so
