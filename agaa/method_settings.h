@@ -25,7 +25,7 @@ struct MethodOption {
     Kind kind = Kind::Choice;
     std::vector<std::string> choices;
     double lo = 0.0, hi = 0.0;
-    std::string word; // Number: a word it also takes instead of a number ("never"), or empty
+    std::string word;        // Number: a word it also takes instead of a number ("never"), or empty
     std::string defaultText; // what the default does, in the value's own words
     std::string doc;         // one paragraph for --help
     // The methods that read it: "all", or names, "family*" for every method whose name starts with

@@ -50,7 +50,7 @@ const std::vector<MethodInfo>& knownMethods() {
          "(--agaa-generation picks the path; auto by default)",
          true,
          true,
-         {"aggregates"}},
+         {"aggregates", "shading-rate"}},
         {"agaa-accumulate",
          "agaa with the accumulate path: visibility prepass + accumulation kernel into the AG-buffer",
          true,
@@ -60,7 +60,7 @@ const std::vector<MethodInfo>& knownMethods() {
          "agaa with the samples path: one per-sample G-buffer pass, aggregated at the top of each tile",
          true,
          true,
-         {"aggregates"}},
+         {"aggregates", "shading-rate"}},
     };
     return methods;
 }
@@ -121,8 +121,9 @@ std::unique_ptr<Technique> createTechnique(const std::string& method, eng::vk::D
         s.samples = settings.samples;
         s.aggregates = settings.aggregates;
         s.effects = settings.effects;
-        s.debugView =
-            settings.debug == "aggregates" ? AggregateDebugView::Aggregates : AggregateDebugView::None;
+        s.debugView = settings.debug == "aggregates"     ? AggregateDebugView::Aggregates
+                      : settings.debug == "shading-rate" ? AggregateDebugView::ShadingRate
+                                                         : AggregateDebugView::None;
         if (settings.characteristicLength >= 0.0f) s.characteristicLength = settings.characteristicLength;
         if (settings.seedThreshold >= 0.0f) s.seedThreshold = settings.seedThreshold;
         if (settings.pixelCentrePosition) s.position = AggregatePosition::PixelCentre;

@@ -27,6 +27,9 @@ void validate(const AggregateSettings& s) {
         throw std::invalid_argument("agaa: curvature boost must be a finite number >= 0");
     if (std::isnan(s.tolerance) || std::isinf(s.tolerance))
         throw std::invalid_argument("agaa: --agaa-tolerance must be a finite number >= 0, or never");
+    if (s.debugView == AggregateDebugView::ShadingRate && s.tolerance < 0.0f)
+        throw std::invalid_argument("agaa: --debug shading-rate shows the pixels --agaa-tolerance shades per "
+                                    "sample; give a tolerance (a number >= 0)");
 }
 
 shared::AgaaConstants makeAgaaConstants(const AggregateSettings& s, const shared::FrameConstants& frame,

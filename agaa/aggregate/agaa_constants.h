@@ -11,7 +11,9 @@
 
 namespace agaa {
 
-enum class AggregateDebugView : uint32_t { None = 0, Aggregates = 1 };
+// Aggregates: the clustering made visible instead of the lighting; ShadingRate: the lit image in
+// grey, the pixels --agaa-tolerance shades per sample in red.
+enum class AggregateDebugView : uint32_t { None = 0, Aggregates = 1, ShadingRate = 2 };
 // Where an aggregate is shaded from: the mean of its samples' view positions (default), or the
 // UE4 shortcut (seed 004): its mean depth on the pixel centre's ray.
 enum class AggregatePosition : uint32_t { SampleMean = 0, PixelCentre = 1 };

@@ -272,7 +272,7 @@ FrameTargets AggregateAA::addPasses(rg::Graph& graph, const FrameInputs& in) {
     // ---- 4. tiled lighting, aggregating at the top of each tile ------------------------------
     struct Lighting {
         rg::Buffer frame, lights, agaa, metadata, agBuffer, shadowConstants, exported;
-        rg::Texture depth, count, emissive, shadowMap, hdr, display, events;
+        rg::Texture depth, count, emissive, shadowMap, hdr, display, events, perSampleShaded;
         rg::Texture normal, albedoMetal; // samples path: the G-buffer (emissive: its emissive + roughness)
     };
     rg::Buffer exportTarget;
@@ -281,6 +281,7 @@ FrameTargets AggregateAA::addPasses(rg::Graph& graph, const FrameInputs& in) {
             graph.importBuffer("agaa.aggregateExport", {m_exportTarget->buffer, m_exportTarget->size},
                                std::nullopt, std::nullopt);
     const bool exporting = m_exportTarget != nullptr;
+    const bool shadingRate = m_settings.tolerance >= 0.0f; // the samples path's (resolveGeneration)
     const Lighting& lit = graph.addCompute<Lighting>(
         "agaa.lighting",
         [&](rg::Builder& b, Lighting& d) {
@@ -309,6 +310,13 @@ FrameTargets AggregateAA::addPasses(rg::Graph& graph, const FrameInputs& in) {
             d.hdr = b.write(b.create("agaa.hdr", outDesc), rg::Use::StorageImageWriteCompute);
             d.display = b.write(b.create("agaa.display", outDesc), rg::Use::StorageImageWriteCompute);
             d.events = b.write(b.create("agaa.shadingEvents", eventsDesc), rg::Use::StorageImageWriteCompute);
+            // Without a tolerance the shader never writes it, but binding 18 is in the layout (the
+            // validation layer counts it as used whatever the specialisation): one texel then.
+            const rg::TextureDesc flagsDesc =
+                shadingRate ? eventsDesc
+                            : rg::TextureDesc{VK_FORMAT_R32_UINT, 1, 1, 1, VK_SAMPLE_COUNT_1_BIT};
+            d.perSampleShaded =
+                b.write(b.create("agaa.perSampleShaded", flagsDesc), rg::Use::StorageImageWriteCompute);
         },
         [=, this](const rg::Context& ctx, const Lighting& d) {
             VkCommandBuffer cmd = ctx.cmd();
@@ -324,6 +332,7 @@ FrameTargets AggregateAA::addPasses(rg::Graph& graph, const FrameInputs& in) {
                 .storageImage(7, ctx.texture(d.hdr).view)
                 .storageImage(8, ctx.texture(d.display).view)
                 .storageImage(9, ctx.texture(d.events).view);
+            pd.storageImage(18, ctx.texture(d.perSampleShaded).view);
             if (samplesPath) {
                 pd.sampled(6, m_fetchSampler, ctx.texture(d.normal).sampledView)
                     .sampled(10, m_fetchSampler, ctx.texture(d.emissive).sampledView)
@@ -341,7 +350,8 @@ FrameTargets AggregateAA::addPasses(rg::Graph& graph, const FrameInputs& in) {
                     exporting ? m_exportLayout.layout : m_lightingLayout.layout);
             vkCmdDispatch(cmd, groups(in.width, shared::kTileSize), groups(in.height, shared::kTileSize), 1);
         });
-    return {lit.hdr, lit.display, lit.events, {}, lightingDepth};
+    return {lit.hdr, lit.display,   lit.events,
+            {},      lightingDepth, shadingRate ? lit.perSampleShaded : rg::Texture{}};
 }
 
 void AggregateAA::addSampleReadback(rg::Graph& graph, const FrameInputs& in, const vk::Buffer& host) {

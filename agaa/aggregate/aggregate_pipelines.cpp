@@ -233,7 +233,9 @@ VkPipeline AggregateAA::lightingPipeline(bool exporting) {
          {shared::kSpecLightingNdf, uint32_t(m_settings.ndf)},
          {shared::kSpecLightingRouting, uint32_t(m_settings.routing)},
          {shared::kSpecLightingViewFootprint, m_features.hasNearMirrors() ? 1u : 0u},
-         {shared::kSpecLightingShadingRate, m_settings.tolerance >= 0.0f ? 1u : 0u}});
+         {shared::kSpecLightingShadingRate, m_settings.tolerance >= 0.0f ? 1u : 0u},
+         {shared::kSpecLightingShadingRateView,
+          m_settings.debugView == AggregateDebugView::ShadingRate ? 1u : 0u}});
     return vk::createComputePipeline(m_device, code,
                                      exporting ? m_exportLayout.layout : m_lightingLayout.layout, spec,
                                      exporting ? "agaa.lighting.export" : "agaa.lighting");
@@ -267,6 +269,7 @@ eng::vk::LayoutDesc AggregateAA::lightingLayoutDesc(bool exporting) const {
     lighting.pushBindings.push_back({12, kUbo, kCs});
     if (samplesPath) lighting.pushBindings.push_back({13, kSampled, kCs}); // the G-buffer's albedo + metallic
     if (exporting) lighting.pushBindings.push_back({14, kSsbo, kCs});      // the test export
+    lighting.pushBindings.push_back({18, kImage, kCs}); // the shading rate's per-sample pixels
     for (const vk::Binding& b : environmentBindings())
         lighting.pushBindings.push_back(b);
     return lighting;

@@ -58,6 +58,9 @@ struct FrameTargets {
     // with n/4 layers for n >= 4, one sample for n = 1; D32, with stencil on AGAA's accumulate
     // path. For writing a host's depth target (agaa/common/host_targets.h).
     eng::rg::Texture depth;
+    // R32_UINT, only from AGAA with a shading-rate tolerance (AggregateSettings::tolerance): 1 where
+    // the pixel was shaded per sample, 0 elsewhere. Invalid otherwise.
+    eng::rg::Texture perSampleShaded;
 };
 
 // Settings every method understands; a method ignores the ones it has no use for.

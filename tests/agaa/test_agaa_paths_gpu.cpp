@@ -192,6 +192,7 @@ TEST(AgaaPathsGpu, PlaneDistanceLightsAFlatFloorOnce) {
     eng::scene::Scene scene = eng::scene::loadTestScene("default");
     agaa::FrameRenderer renderer(*device, scene);
     agaa::RenderRequest position = agaaRequest(8, 2, 96);
+    position.settings.agaaDistance = "position"; // the default is the plane distance
     agaa::RenderRequest plane = position;
     plane.settings.agaaDistance = "plane";
     agaa::RenderRequest reference = agaaRequest(8, 1, 96);

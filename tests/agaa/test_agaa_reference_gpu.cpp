@@ -117,6 +117,10 @@ TEST(AgaaClusteringReferenceGpu, GpuMetadataMatchesAlgorithm1InDouble) {
                 shared::AgaaConstants constants{};
                 agaa::RenderRequest r = agaa::test::request("agaa-accumulate", n, c, size);
                 r.settings.debug = "aggregates"; // clustering only: the graph culls generation
+                // Algorithm 1 with Equation 1, which the double reference implements; the plane
+                // distance (the default) is checked bit for bit against shared/clustering.h by
+                // AgaaClusteringGpu.MetadataMatchesTheCpuReferenceBitForBit.
+                r.settings.agaaDistance = "position";
                 r.extraPasses = [&](eng::rg::Graph& graph, agaa::Technique& tech,
                                     const agaa::FrameInputs& in) {
                     auto& aggregate = dynamic_cast<agaa::AggregateAA&>(tech);

@@ -63,6 +63,9 @@ TEST(ShadingRate, NothingFlaggedIsAgaaBitForBit) {
         EXPECT_EQ(maxAbsDifference(never.hdr, none.hdr), 0.0) << k.scene << " c=" << k.c;
         EXPECT_EQ(maxAbsDifference(never.display, none.display), 0.0) << k.scene << " c=" << k.c;
         EXPECT_EQ(never.shadingEvents, none.shadingEvents) << k.scene << " c=" << k.c;
+        EXPECT_FALSE(never.perSampleShading.has_value()) << "never has no per-sample target";
+        ASSERT_TRUE(none.perSampleShading.has_value());
+        EXPECT_EQ(none.perSampleShading->pixels, 0.0) << k.scene;
     }
     agaa::test::expectNoValidationErrors(*device);
 }
@@ -206,6 +209,41 @@ TEST(ShadingRate, TheGpuFlagsWhatACpuEstimateFlags) {
         EXPECT_GT(flagged, 0u) << k.scene << ": the case should flag some pixels";
         EXPECT_LT(flagged, compared) << k.scene << ": and leave some";
     }
+    agaa::test::expectNoValidationErrors(*device);
+}
+
+// --debug shading-rate: the flagged pixels red, the others grey. A pixel with more than c shading
+// events was shaded per sample, so it must be red; a grey one had at most c.
+TEST(ShadingRate, TheDebugViewShowsTheFlaggedPixels) {
+    auto device = agaa::test::makeValidatedDevice();
+    eng::scene::Scene scene = eng::scene::loadTestScene("metal");
+    agaa::FrameRenderer renderer(*device, scene);
+    agaa::RenderRequest r = withTolerance("agaa-samples", 8, 2, 100.0f);
+    r.settings.debug = "shading-rate";
+    const agaa::RenderResult view = renderer.render(r);
+    uint32_t red = 0, grey = 0;
+    for (size_t p = 0; p < view.shadingEvents.size(); ++p) {
+        const float* px = &view.display.rgba[4 * p];
+        const bool isRed = px[0] > px[1];
+        const bool isGrey = px[0] == px[1] && px[1] == px[2];
+        ASSERT_TRUE(isRed || isGrey) << "pixel " << p;
+        if (view.shadingEvents[p] > 2) {
+            EXPECT_TRUE(isRed) << "pixel " << p << ": shaded per sample, not red";
+        }
+        if (isGrey) {
+            EXPECT_LE(view.shadingEvents[p], 2u) << "pixel " << p;
+        }
+        (isRed ? red : grey) += 1;
+    }
+    EXPECT_GT(red, 0u);
+    EXPECT_GT(grey, 0u);
+    // The stats' share (FrameTargets::perSampleShaded) counts the same pixels.
+    ASSERT_TRUE(view.perSampleShading.has_value());
+    EXPECT_DOUBLE_EQ(view.perSampleShading->pixels, double(red) / double(view.shadingEvents.size()));
+    EXPECT_GT(view.perSampleShading->events, view.perSampleShading->pixels)
+        << "a flagged pixel takes more events";
+    r.settings.agaaTolerance = -1.0f; // never: nothing to show
+    EXPECT_THROW(renderer.render(r), std::invalid_argument);
     agaa::test::expectNoValidationErrors(*device);
 }
 

@@ -276,6 +276,9 @@ nlohmann::json statsJson(const Options& o, const agaa::RenderResult& r, const en
     if (r.lostCoverageFraction)
         j["lost_coverage"] = {{"fraction_of_samples", *r.lostCoverageFraction},
                               {"pixels", r.pixelsWithLostCoverage}};
+    if (r.perSampleShading)
+        j["shading_rate"] = {{"per_sample_pixels", r.perSampleShading->pixels},
+                             {"per_sample_events", r.perSampleShading->events}};
     j["frames_timed"] = o.frames;
     j["frames_warmup"] = o.warmup;
     j["passes"] = nlohmann::json::array();

@@ -139,15 +139,16 @@ RenderResult FrameRenderer::render(const RenderRequest& original) {
     // Owned for this call only; released on every path out (a graph error throws mid-way).
     struct HostBuffers {
         vk::Device& device;
-        vk::Buffer hdr, display, events, lost;
+        vk::Buffer hdr, display, events, lost, perSample;
         ~HostBuffers() {
             vkDeviceWaitIdle(device.device());
             vk::destroyBuffer(device, hdr);
             vk::destroyBuffer(device, display);
             vk::destroyBuffer(device, events);
             if (lost.buffer) vk::destroyBuffer(device, lost);
+            if (perSample.buffer) vk::destroyBuffer(device, perSample);
         }
-    } host{m_device, {}, {}, {}, {}};
+    } host{m_device, {}, {}, {}, {}, {}};
     // One at a time into the owner: one that fails leaves the ones before it to ~HostBuffers.
     host.hdr =
         eng::frame::createReadbackBuffer(m_device, w, h, VK_FORMAT_R32G32B32A32_SFLOAT, "readback.hdr");
@@ -177,6 +178,12 @@ RenderResult FrameRenderer::render(const RenderRequest& original) {
     if (targets.lostSamples.valid()) {
         host.lost = eng::frame::createReadbackBuffer(m_device, w, h, VK_FORMAT_R32_UINT, "readback.lost");
         eng::frame::addReadbackPass(graph, targets.lostSamples, host.lost, "readback.lost");
+    }
+    if (targets.perSampleShaded.valid()) {
+        host.perSample =
+            eng::frame::createReadbackBuffer(m_device, w, h, VK_FORMAT_R32_UINT, "readback.perSampleShaded");
+        eng::frame::addReadbackPass(graph, targets.perSampleShaded, host.perSample,
+                                    "readback.perSampleShaded");
     }
     graph.compile();
 
@@ -246,6 +253,19 @@ RenderResult FrameRenderer::render(const RenderRequest& original) {
             result.pixelsWithLostCoverage += l > 0 ? 1 : 0;
         }
         result.lostCoverageFraction = double(lostSum) / (pixels * double(tech.samples()));
+    }
+    if (targets.perSampleShaded.valid()) {
+        vk::invalidateBuffer(m_device, host.perSample);
+        std::vector<uint32_t> flags(size_t(w) * h);
+        std::memcpy(flags.data(), host.perSample.mapped, flags.size() * 4);
+        uint64_t flagged = 0, flaggedEvents = 0;
+        for (size_t p = 0; p < flags.size(); ++p)
+            if (flags[p]) {
+                ++flagged;
+                flaggedEvents += result.shadingEvents[p];
+            }
+        result.perSampleShading = RenderResult::PerSampleShading{
+            double(flagged) / pixels, sum ? double(flaggedEvents) / double(sum) : 0.0};
     }
     return result;
 }

@@ -62,6 +62,12 @@ struct RenderResult {
     // that were covered but whose surface was not kept, and how many pixels lost any.
     std::optional<double> lostCoverageFraction;
     uint64_t pixelsWithLostCoverage = 0;
+    // AGAA with a shading-rate tolerance (FrameTargets::perSampleShaded): the share of the pixels
+    // shaded per sample, and the share of the frame's shading events they took.
+    struct PerSampleShading {
+        double pixels = 0.0, events = 0.0;
+    };
+    std::optional<PerSampleShading> perSampleShading;
     uint32_t samples = 0;
     std::string graphDot, graphJson;
     // The shader/pass variants the technique chose from the scene's features, with their causes

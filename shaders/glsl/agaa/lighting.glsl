@@ -59,6 +59,9 @@ layout(set = 0, binding = 5, r8ui) uniform readonly uimage2D aggregateCount;
 layout(set = 0, binding = 7, rgba32f) uniform writeonly image2D outHdr;
 layout(set = 0, binding = 8, rgba32f) uniform writeonly image2D outDisplay;
 layout(set = 0, binding = 9, r32ui) uniform writeonly uimage2D outShadingEvents;
+// With a tolerance (kShadingRate, prefilter_estimate.glsl): 1 where the pixel was shaded per
+// sample (FrameTargets::perSampleShaded); the layout has it only then.
+layout(set = 0, binding = 18, r32ui) uniform writeonly uimage2D outPerSampleShaded;
 #ifndef AGAA_SHADOWS
 #define AGAA_SHADOWS 0
 #endif
@@ -142,7 +145,9 @@ void main() {
     // 4. Resolve.
     Resolved resolved = perSample ? Resolved(sampleResolve.display, sampleResolve.hdr)
                                   : resolvePixel(pixel, offLayer, offLayerShaded);
+    if (kShadingRateView != 0u) resolved.display = shadingRateView(resolved.display, perSample);
     imageStore(outHdr, pixel, vec4(resolved.hdr, 1.0));
     imageStore(outDisplay, pixel, vec4(resolved.display, 1.0));
     imageStore(outShadingEvents, pixel, uvec4(perSample ? kSamples - walk.skySamples : presentCount));
+    if (kShadingRate != 0u) imageStore(outPerSampleShaded, pixel, uvec4(perSample ? 1u : 0u));
 }

@@ -28,6 +28,7 @@ SHARED_CONST kSpecLightingNdf = 9u;           // AggregateNdf: kNdfToksvig or kN
 SHARED_CONST kSpecLightingRouting = 10u;      // AggregateRouting: 1 whole fragments
 SHARED_CONST kSpecLightingViewFootprint = 11u; // SceneFeatures::hasNearMirrors
 SHARED_CONST kSpecLightingShadingRate = 12u;  // AggregateSettings::tolerance: 1 the per-sample rate
+SHARED_CONST kSpecLightingShadingRateView = 13u; // --debug shading-rate
 
 SHARED_END
 #endif

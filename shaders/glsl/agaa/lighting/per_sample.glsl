@@ -77,6 +77,16 @@ Aggregate oneSampleAggregate(ivec2 pixel, uint pixelIndex, uint s, vec3 P) {
 }
 #endif
 
+// --debug shading-rate (AggregateDebugView::ShadingRate): the lit image's luminance, in red where the
+// pixel was shaded per sample and in grey elsewhere.
+layout(constant_id = kSpecLightingShadingRateView) const uint kShadingRateView = 0u;
+
+vec3 shadingRateView(vec3 display, bool perSample) {
+    float luminance = dot(display, vec3(0.2126, 0.7152, 0.0722));
+    float shade = 0.25 + 0.75 * luminance; // flagged dark pixels stay visible
+    return perSample ? shade * vec3(1.0, 0.15, 0.1) : vec3(0.6 * luminance);
+}
+
 // The per-pixel schedule's way: this invocation shades its pixel's covered samples in turn.
 void shadeSamplesInRegisters(ivec2 pixel, uint pixelIndex) {
     for (uint s = 0u; s < kSamples; ++s) {

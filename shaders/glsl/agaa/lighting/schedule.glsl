@@ -43,7 +43,8 @@ void tileListBegin() {
 // The slots of this pixel's further aggregates in the tile's list; a pixel the shading rate
 // flags (per_sample.glsl) takes one for each covered sample instead.
 uint tileListAppend(uint presentCount, bool perSample) {
-    uint extraCount = perSample ? kSamples - walk.skySamples : presentCount - (aggregates[0].present ? 1u : 0u);
+    uint extraCount =
+        perSample ? kSamples - walk.skySamples : presentCount - (aggregates[0].present ? 1u : 0u);
     return kCompactShading != 0u && extraCount > 0u ? atomicAdd(sEntryCount, extraCount) : 0u;
 }
 
@@ -53,7 +54,8 @@ void storeListEntry(uint e, Aggregate ag) {
     sAlbedo[e] = vec4(ag.surface.albedo, ag.surface.metallic);
     sTangent[e] = vec4(ag.tangent, ag.alphas.x);
     sBitangent[e] = vec4(ag.bitangent, ag.alphas.y);
-    sOwner[e] = gl_LocalInvocationIndex | (ag.id << 8u) | (ag.samples << 10u) | (ag.oneSample ? kOneSampleEntry : 0u);
+    sOwner[e] = gl_LocalInvocationIndex | (ag.id << 8u) | (ag.samples << 10u) |
+                (kShadingRate != 0u && ag.oneSample ? kOneSampleEntry : 0u);
     sSpread[e] = vec2(ag.spread, ag.environmentRoughness);
     sScreenSpread[e] = ag.screenSpread;
 }
@@ -97,7 +99,8 @@ void shadeTileList(uint firstEntry, bool perSample) {
             float d = sampleDepth(pixel, s);
             if (isSky(d)) continue;
             if (slot >= lo && slot < lo + kListRound)
-                storeListEntry(slot - lo, oneSampleAggregate(pixel, pixelIndex, s, sampleViewPosition(pixel, s, d)));
+                storeListEntry(slot - lo,
+                               oneSampleAggregate(pixel, pixelIndex, s, sampleViewPosition(pixel, s, d)));
             slot += 1u;
         }
         for (uint a = 1u; a < kAggregates; ++a) {
@@ -138,9 +141,10 @@ void shadeTileList(uint firstEntry, bool perSample) {
 }
 
 // Step 3: every present aggregate of the pixel shaded once; c = 1's off-layer samples with
-// aggregate 0.
-// A pixel the shading rate flags has no aggregate present: its samples are shaded instead.
-void shadeAggregates(OffLayer off, bool inside, bool perSample, uint firstEntry, out OffLayerShading offShaded) {
+// aggregate 0. A pixel the shading rate flags has no aggregate present: its samples are shaded
+// instead (per_sample.glsl).
+void shadeAggregates(OffLayer off, bool inside, bool perSample, uint firstEntry,
+                     out OffLayerShading offShaded) {
     shaded = Shading[](noShading(), noShading(), noShading(), noShading());
     offShaded = noOffLayerShading();
     if (perSample) beginSampleResolve(aggregates[0].pixel);

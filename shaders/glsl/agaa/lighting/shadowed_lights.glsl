@@ -82,8 +82,9 @@ void addShadowedLights(Aggregate ag, OffLayer off, vec3 V, float viewWeight, ino
         vec3 L, irradiance;
         if (!lightIncidence(lights[i], ag.position, L, irradiance)) continue;
         // A flagged pixel's sample: one tap at its own position, as the reference takes.
-        irradiance *= kShadingRate != 0u && ag.oneSample ? shadowVisibilityPoint(i, ag.position, ag.surface.normal)
-                                                         : shadowVisibilityFootprint(i, ag, pixelSize);
+        irradiance *= kShadingRate != 0u && ag.oneSample
+                          ? shadowVisibilityPoint(i, ag.position, ag.surface.normal)
+                          : shadowVisibilityFootprint(i, ag, pixelSize);
         addAggregateLight(ag, V, viewWeight, L, irradiance, shading);
     }
 }
