@@ -115,12 +115,12 @@ struct AggregateSettings {
     bool sampleRateShading = false;
     bool curvatureRoughness = false;
     float curvatureMaxFootprint = 0.3f;
+    float curvatureBoost = 2.0f;
     // The error-driven shading rate (samples path; docs/decisions/shading-rate-estimate.md): a
     // pixel whose aggregates' normal spread, against their sharpest member's lobe, reaches this is
     // shaded per sample as the reference shades it; 0 shades every pixel so. Below 0: never (AGAA
     // as the paper has it).
     float tolerance = kToleranceNever;
-    float curvatureBoost = 2.0f;
     // Benchmark support (agaa-timings --breakdown): AggregateBreakdown bits, each removing one
     // part of one pass so that the difference to a full run is that part's cost. Not an image.
     uint32_t breakdown = 0;

@@ -41,6 +41,7 @@ std::string shortNumber(float v) {
     std::snprintf(text, sizeof text, "%g", double(v));
     return text;
 }
+
 constexpr VkDescriptorType kUbo = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
 constexpr VkDescriptorType kSsbo = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
 constexpr VkDescriptorType kSampled = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
@@ -450,7 +451,7 @@ std::vector<VariantChoice> AggregateAA::variants() const {
         v.push_back(
             {"shading-rate",
              m_settings.tolerance >= 0.0f
-                 ? "per sample where the aggregates' normal spread over their sharpest lobe exceeds " +
+                 ? "per sample where the aggregates' normal spread over their sharpest lobe reaches " +
                        shortNumber(m_settings.tolerance)
                  : std::string("one shading event per aggregate"),
              "setting --agaa-tolerance"});
