@@ -183,8 +183,13 @@ BenchOptions parseOptions(int argc, char** argv) {
         } else if (a == "--tolerances") {
             s.tolerances.clear();
             const MethodOption& tolerance = *findMethodOption("agaa-tolerance");
-            for (const std::string& v : splitList(a, value()))
-                s.tolerances.push_back(tolerance.get(axisValue("agaa-tolerance", v))); // the value's own text
+            for (const std::string& v : splitList(a, value())) {
+                try {
+                    s.tolerances.push_back(tolerance.get(axisValue("agaa-tolerance", v))); // its own text
+                } catch (const BadArgument& e) {
+                    throw BadArgument("--tolerances: " + std::string(e.what())); // the flag given
+                }
+            }
         } else if (a == "--aggregates") {
             aggregates.emplace();
             for (const std::string& v : splitList(a, value()))
