@@ -4,7 +4,6 @@
 #include "agaa/common/frame_inputs.h"
 
 #include "engine/vk/descriptors.h"
-#include "shaders/agaa/sample_readback_comp.h"
 #include "shared/ag_buffer.h"
 #include "shared/clustering.h"
 
@@ -136,6 +135,7 @@ FrameTargets AggregateAA::addPasses(rg::Graph& graph, const FrameInputs& in) {
         });
     m_resources.depth = sampleDepth;
     m_resources.normal = sampleNormal;
+    m_resources.gbuffer = gbuffer;
     m_resources.metadata = cl.metadata;
     m_resources.aggregateCount = cl.count;
 
@@ -203,34 +203,12 @@ FrameTargets AggregateAA::addPasses(rg::Graph& graph, const FrameInputs& in) {
             [](const rg::Context& ctx, const Clear& d) {
                 vkCmdFillBuffer(ctx.cmd(), ctx.buffer(d.agBuffer).buffer, 0, VK_WHOLE_SIZE, 0);
             });
-        rg::Buffer records;
-        if (m_recordTarget) {
-            struct ClearRecords {
-                rg::Buffer records;
-            };
-            rg::Buffer imported =
-                graph.importBuffer("agaa.fragmentRecords", {m_recordTarget->buffer, m_recordTarget->size},
-                                   std::nullopt, std::nullopt);
-            records =
-                graph
-                    .addPass<ClearRecords>(
-                        "agaa.clearRecords", rg::PassKind::Transfer,
-                        [&](rg::Builder& b, ClearRecords& d) {
-                            d.records = b.write(imported, rg::Use::TransferDst);
-                        },
-                        [](const rg::Context& ctx, const ClearRecords& d) {
-                            vkCmdFillBuffer(ctx.cmd(), ctx.buffer(d.records).buffer, 0, 4, 0); // count only
-                        })
-                    .records;
-        }
         struct Generation {
-            rg::Buffer frame, agaa, materials, metadata, agBuffer, records;
+            rg::Buffer frame, agaa, materials, metadata, agBuffer;
             rg::Texture depth, emissive;
         };
-        const bool recording = m_recordTarget != nullptr;
         const bool int64 = m_settings.atomics == AggregateAtomics::Bits64;
-        const VkPipelineLayout generationLayout =
-            recording ? m_recordLayout.layout : m_generationLayout.layout;
+        const VkPipelineLayout generationLayout = m_generationLayout.layout;
         const Generation& gen = graph.addGraphics<Generation>(
             "agaa.generation",
             [&](rg::Builder& b, Generation& d) {
@@ -245,7 +223,6 @@ FrameTargets AggregateAA::addPasses(rg::Graph& graph, const FrameInputs& in) {
                                          loadDepth); // EQUAL test, stencil written
                 if (emissive)
                     d.emissive = b.color(b.create("agaa.emissive", desc(VK_FORMAT_B10G11R11_UFLOAT_PACK32)));
-                if (recording) d.records = b.readWrite(records, rg::Use::StorageReadWriteFragment);
             },
             [=, this](const rg::Context& ctx, const Generation& d) {
                 VkCommandBuffer cmd = ctx.cmd();
@@ -255,10 +232,7 @@ FrameTargets AggregateAA::addPasses(rg::Graph& graph, const FrameInputs& in) {
                     .uniform(2, ctx.buffer(d.agaa).buffer)
                     .storage(3, ctx.buffer(d.metadata).buffer)
                     .storage(4, ctx.buffer(d.agBuffer).buffer);
-                if (recording)
-                    pd.storage(5, ctx.buffer(d.records).buffer);
-                else if (int64)
-                    pd.storage(6, ctx.buffer(d.agBuffer).buffer); // the same buffer as 64-bit words
+                if (int64) pd.storage(6, ctx.buffer(d.agBuffer).buffer); // the same buffer as 64-bit words
                 pd.push(m_device, cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, generationLayout);
                 drawScene(cmd, generationLayout, generationPipelines);
             });
@@ -271,16 +245,10 @@ FrameTargets AggregateAA::addPasses(rg::Graph& graph, const FrameInputs& in) {
 
     // ---- 4. tiled lighting, aggregating at the top of each tile ------------------------------
     struct Lighting {
-        rg::Buffer frame, lights, agaa, metadata, agBuffer, shadowConstants, exported;
+        rg::Buffer frame, lights, agaa, metadata, agBuffer, shadowConstants;
         rg::Texture depth, count, emissive, shadowMap, hdr, display, events, perSampleShaded;
         rg::Texture normal, albedoMetal; // samples path: the G-buffer (emissive: its emissive + roughness)
     };
-    rg::Buffer exportTarget;
-    if (m_exportTarget)
-        exportTarget =
-            graph.importBuffer("agaa.aggregateExport", {m_exportTarget->buffer, m_exportTarget->size},
-                               std::nullopt, std::nullopt);
-    const bool exporting = m_exportTarget != nullptr;
     const bool shadingRate = m_settings.tolerance >= 0.0f; // the samples path's (resolveGeneration)
     const Lighting& lit = graph.addCompute<Lighting>(
         "agaa.lighting",
@@ -295,10 +263,6 @@ FrameTargets AggregateAA::addPasses(rg::Graph& graph, const FrameInputs& in) {
                 d.normal = b.read(gbuffer.normal, rg::Use::SampledCompute);
                 d.albedoMetal = b.read(gbuffer.albedoMetal, rg::Use::SampledCompute);
                 d.emissive = b.read(gbuffer.emissiveRoughness, rg::Use::SampledCompute);
-                if (exporting) {
-                    d.exported = b.write(exportTarget, rg::Use::StorageWriteCompute);
-                    b.sideEffect();
-                }
             } else {
                 d.agBuffer = b.read(agBuffer, rg::Use::StorageReadCompute);
                 if (emissive) d.emissive = b.read(emissiveSamples, rg::Use::SampledCompute);
@@ -320,8 +284,7 @@ FrameTargets AggregateAA::addPasses(rg::Graph& graph, const FrameInputs& in) {
         },
         [=, this](const rg::Context& ctx, const Lighting& d) {
             VkCommandBuffer cmd = ctx.cmd();
-            vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE,
-                              exporting ? m_exportPipeline : m_lightingPipeline);
+            vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, m_lightingPipeline);
             vk::PushDescriptors pd;
             pd.uniform(0, ctx.buffer(d.frame).buffer)
                 .storage(1, ctx.buffer(d.lights).buffer)
@@ -337,7 +300,6 @@ FrameTargets AggregateAA::addPasses(rg::Graph& graph, const FrameInputs& in) {
                 pd.sampled(6, m_fetchSampler, ctx.texture(d.normal).sampledView)
                     .sampled(10, m_fetchSampler, ctx.texture(d.emissive).sampledView)
                     .sampled(13, m_fetchSampler, ctx.texture(d.albedoMetal).sampledView);
-                if (exporting) pd.storage(14, ctx.buffer(d.exported).buffer);
             } else {
                 pd.storage(6, ctx.buffer(d.agBuffer).buffer);
                 if (emissive) pd.sampled(10, m_fetchSampler, ctx.texture(d.emissive).sampledView);
@@ -346,49 +308,11 @@ FrameTargets AggregateAA::addPasses(rg::Graph& graph, const FrameInputs& in) {
                 pd.sampled(11, m_shadow->sampler(), ctx.texture(d.shadowMap).sampledView)
                     .uniform(12, ctx.buffer(d.shadowConstants).buffer);
             pushEnvironment(pd, *in.scene);
-            pd.push(m_device, cmd, VK_PIPELINE_BIND_POINT_COMPUTE,
-                    exporting ? m_exportLayout.layout : m_lightingLayout.layout);
+            pd.push(m_device, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, m_lightingLayout.layout);
             vkCmdDispatch(cmd, groups(in.width, shared::kTileSize), groups(in.height, shared::kTileSize), 1);
         });
     return {lit.hdr, lit.display,   lit.events,
             {},      lightingDepth, shadingRate ? lit.perSampleShaded : rg::Texture{}};
-}
-
-void AggregateAA::addSampleReadback(rg::Graph& graph, const FrameInputs& in, const vk::Buffer& host) {
-    if (m_settings.generation == AggregateGeneration::Samples)
-        throw std::logic_error(
-            "agaa: the sample readback reads the visibility prepass (accumulate path only)");
-    if (!m_readbackPipeline)
-        m_readbackPipeline = vk::createComputePipeline(m_device, kAgaaSampleReadbackComp,
-                                                       m_readbackLayout.layout, {}, "agaa.sampleReadback");
-    rg::Buffer target =
-        graph.importBuffer("agaa.sampleReadback.host", {host.buffer, host.size}, std::nullopt, std::nullopt);
-    struct Data {
-        rg::Buffer frame, agaa, target;
-        rg::Texture depth, normal;
-    };
-    graph.addCompute<Data>(
-        "agaa.sampleReadback",
-        [&](rg::Builder& b, Data& d) {
-            d.frame = b.read(in.frameConstants, rg::Use::UniformRead);
-            d.agaa = b.read(m_resources.agaaConstants, rg::Use::UniformRead);
-            d.depth = b.read(m_resources.depth, rg::Use::SampledCompute);
-            d.normal = b.read(m_resources.normal, rg::Use::SampledCompute);
-            d.target = b.write(target, rg::Use::StorageWriteCompute);
-            b.sideEffect();
-        },
-        [=, this](const rg::Context& ctx, const Data& d) {
-            VkCommandBuffer cmd = ctx.cmd();
-            vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, m_readbackPipeline);
-            vk::PushDescriptors()
-                .uniform(0, ctx.buffer(d.frame).buffer)
-                .uniform(1, ctx.buffer(d.agaa).buffer)
-                .sampled(2, m_fetchSampler, ctx.texture(d.depth).sampledView)
-                .sampled(3, m_fetchSampler, ctx.texture(d.normal).sampledView)
-                .storage(4, ctx.buffer(d.target).buffer)
-                .push(m_device, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, m_readbackLayout.layout);
-            vkCmdDispatch(cmd, groups(in.width, 8), groups(in.height, 8), 1);
-        });
 }
 
 } // namespace agaa

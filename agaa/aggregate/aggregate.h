@@ -24,6 +24,7 @@
 #include <array>
 #include <map>
 #include <memory>
+#include <span>
 
 namespace agaa {
 
@@ -35,6 +36,7 @@ struct AggregateResources {
     eng::rg::Texture aggregateCount;
     eng::rg::Buffer agBuffer; // after generation (accumulate path only)
     eng::rg::Buffer agaaConstants;
+    SampleGBuffer gbuffer; // samples path only
 };
 
 class AggregateAA final : public Technique {
@@ -57,31 +59,18 @@ class AggregateAA final : public Technique {
     const shared::AgaaConstants& constants() const { return m_constants; }
     VkFormat depthFormat() const { return m_depthFormat; }
 
-    // Test support: the generation pass records the fragments of the central 16x16 pixels
-    // (22 words each after an 8-byte header {count, capacity}: pixel, layer, mask, the 11 quantised
-    // fields, then the material inputs as float bits: normal xyz, roughness, albedo rgb, metallic;
-    // shaders/glsl/agaa/generation.glsl AGAA_RECORD) into `host`, which must be a
-    // Readback buffer whose second word the caller sets to the record capacity. Set before
-    // the first addPasses() (it selects the generation pipeline variant); nullptr turns it off.
-    void setFragmentRecordTarget(const eng::vk::Buffer* host) { m_recordTarget = host; }
-
-    // Test support, samples path without emissive or shadows: the lighting pass writes what its
-    // step 1 read and built (shaders/glsl/agaa/lighting.glsl AGAA_EXPORT: 16 floats per sample,
-    // then 16 per aggregate) into `host`, a buffer of pixels * (n + c) * 64 bytes. Set before the
-    // first addPasses(); nullptr turns it off.
-    void setAggregateExportTarget(const eng::vk::Buffer* host);
-
-    // Test support: copies the clustering kernel's per-sample inputs (uvec2 per sample: depth
-    // bits, theta | phi << 8) into `host` (pixels * n * 8 bytes). Call after addPasses().
-    void addSampleReadback(eng::rg::Graph& graph, const FrameInputs& inputs, const eng::vk::Buffer& host);
+    // The lighting pass's SPIR-V and specialisation for this path, scene and settings: what a
+    // host's pipeline cache keys on, and what a test build of the pass must match.
+    std::span<const uint32_t> lightingCode() const;
+    eng::vk::Specialization lightingVariant() const;
+    // The accumulate path's generation pipeline for a material's sidedness, as this scene and
+    // device run it (a test build of the pass draws with the same state).
+    eng::vk::GraphicsPipelineDesc generationPipelineDesc(bool doubleSided) const;
 
   private:
     VkPipeline visibilityPipeline(AlphaPath alpha, bool doubleSided);
     VkPipeline generationPipeline(bool doubleSided);
-    VkPipeline lightingPipeline(bool exporting); // the lighting variant for this path and scene
-    // The lighting pass's bindings; exporting adds the test export's (binding 14), which the
-    // shipping layout does not have.
-    eng::vk::LayoutDesc lightingLayoutDesc(bool exporting) const;
+    std::span<const uint32_t> generationCode() const; // this scene's and device's variant
     void resolveGeneration(); // Auto -> a path, or MissingCapability for a path the device lacks
     void createLayouts(const eng::frame::GpuScene& scene);
     void release(); // the destructor's work, also for a constructor that throws
@@ -96,19 +85,16 @@ class AggregateAA final : public Technique {
     bool m_hasEmissive = false;
     VkFormat m_depthFormat = VK_FORMAT_D32_SFLOAT_S8_UINT;
     shared::AgaaConstants m_constants{};
-    eng::vk::PipelineLayout m_visibilityLayout, m_generationLayout, m_recordLayout, m_clusterLayout,
-        m_lightingLayout, m_exportLayout, m_debugLayout, m_readbackLayout;
+    eng::vk::PipelineLayout m_visibilityLayout, m_generationLayout, m_clusterLayout, m_lightingLayout,
+        m_debugLayout;
     std::array<VkPipeline, 2 * kAlphaPaths> m_visibilityPipelines{}; // [alpha path][double-sided]
     std::unique_ptr<ShadowMapPass> m_shadow;
     std::unique_ptr<SampleGBufferPass> m_gbuffer;      // samples path only
-    std::array<VkPipeline, 4> m_generationPipelines{}; // [recording][double-sided]
+    std::array<VkPipeline, 2> m_generationPipelines{}; // [double-sided]
     VkPipeline m_clusterPipeline = VK_NULL_HANDLE, m_lightingPipeline = VK_NULL_HANDLE,
-               m_exportPipeline = VK_NULL_HANDLE, m_debugPipeline = VK_NULL_HANDLE,
-               m_readbackPipeline = VK_NULL_HANDLE;
+               m_debugPipeline = VK_NULL_HANDLE;
     VkSampler m_fetchSampler = VK_NULL_HANDLE;
     AggregateResources m_resources;
-    const eng::vk::Buffer* m_recordTarget = nullptr;
-    const eng::vk::Buffer* m_exportTarget = nullptr;
     std::string m_generationCause; // why this path (stats variants)
 };
 

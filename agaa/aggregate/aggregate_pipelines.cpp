@@ -3,6 +3,7 @@
 #include "agaa/aggregate/aggregate.h"
 
 #include "engine/vk/check.h"
+#include "engine/vk/reflection.h"
 #include "shaders/agaa/cluster_comp.h"
 #include "shaders/agaa/cluster_gbuffer_comp.h"
 #include "shaders/agaa/debug_aggregates_comp.h"
@@ -13,7 +14,6 @@
 #include "shaders/agaa/generation_frag.h"
 #include "shaders/agaa/generation_int64_frag.h"
 #include "shaders/agaa/generation_int64_subgroup_frag.h"
-#include "shaders/agaa/generation_record_frag.h"
 #include "shaders/agaa/generation_subgroup_frag.h"
 #include "shaders/agaa/lighting_comp.h"
 #include "shaders/agaa/lighting_emissive_comp.h"
@@ -21,10 +21,8 @@
 #include "shaders/agaa/lighting_gbuffer_comp.h"
 #include "shaders/agaa/lighting_gbuffer_emissive_comp.h"
 #include "shaders/agaa/lighting_gbuffer_emissive_shadow_comp.h"
-#include "shaders/agaa/lighting_gbuffer_export_comp.h"
 #include "shaders/agaa/lighting_gbuffer_shadow_comp.h"
 #include "shaders/agaa/lighting_shadow_comp.h"
-#include "shaders/agaa/sample_readback_comp.h"
 #include "shaders/agaa/scene_vert.h"
 #include "shaders/agaa/visibility_frag.h"
 
@@ -41,14 +39,6 @@ std::string shortNumber(float v) {
     std::snprintf(text, sizeof text, "%g", double(v));
     return text;
 }
-
-constexpr VkDescriptorType kUbo = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
-constexpr VkDescriptorType kSsbo = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
-constexpr VkDescriptorType kSampled = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
-constexpr VkDescriptorType kImage = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
-constexpr VkShaderStageFlags kCs = VK_SHADER_STAGE_COMPUTE_BIT;
-constexpr VkShaderStageFlags kFs = VK_SHADER_STAGE_FRAGMENT_BIT;
-constexpr VkShaderStageFlags kVsFs = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
 
 const char* shadowFootprintName(EffectSettings::ShadowFootprint footprint) {
     switch (footprint) {
@@ -143,7 +133,8 @@ AggregateAA::AggregateAA(vk::Device& device, const eng::frame::GpuScene& scene,
             device, samplesPath ? std::span<const uint32_t>(kAgaaClusterGbufferComp) : kAgaaClusterComp,
             m_clusterLayout.layout, {{settings.samples, settings.aggregates, uint32_t(settings.distance)}},
             "agaa.cluster");
-        m_lightingPipeline = lightingPipeline(false);
+        m_lightingPipeline = vk::createComputePipeline(device, lightingCode(), m_lightingLayout.layout,
+                                                       lightingVariant(), "agaa.lighting");
         m_debugPipeline = vk::createComputePipeline(device, kAgaaDebugAggregatesComp, m_debugLayout.layout,
                                                     {}, "agaa.debug.aggregates");
     } catch (...) {
@@ -202,24 +193,19 @@ void AggregateAA::resolveGeneration() {
                                  : ": the per-sample G-buffer would be 1.7x the accumulate path's memory");
 }
 
-VkPipeline AggregateAA::lightingPipeline(bool exporting) {
+std::span<const uint32_t> AggregateAA::lightingCode() const {
     const bool shadows = m_shadow->enabled();
-    std::span<const uint32_t> code;
-    if (m_settings.generation == AggregateGeneration::Samples) {
-        if (exporting && (m_hasEmissive || shadows))
-            throw std::logic_error(
-                "agaa: the aggregate export supports scenes without emissive or shadows only");
-        code = exporting       ? std::span<const uint32_t>(kAgaaLightingGbufferExportComp)
-               : m_hasEmissive ? (shadows ? std::span<const uint32_t>(kAgaaLightingGbufferEmissiveShadowComp)
-                                          : kAgaaLightingGbufferEmissiveComp)
-                               : (shadows ? std::span<const uint32_t>(kAgaaLightingGbufferShadowComp)
-                                          : kAgaaLightingGbufferComp);
-    } else {
-        code = m_hasEmissive
-                   ? (shadows ? std::span<const uint32_t>(kAgaaLightingEmissiveShadowComp)
-                              : kAgaaLightingEmissiveComp)
-                   : (shadows ? std::span<const uint32_t>(kAgaaLightingShadowComp) : kAgaaLightingComp);
-    }
+    if (m_settings.generation == AggregateGeneration::Samples)
+        return m_hasEmissive ? (shadows ? std::span<const uint32_t>(kAgaaLightingGbufferEmissiveShadowComp)
+                                        : kAgaaLightingGbufferEmissiveComp)
+                             : (shadows ? std::span<const uint32_t>(kAgaaLightingGbufferShadowComp)
+                                        : kAgaaLightingGbufferComp);
+    return m_hasEmissive ? (shadows ? std::span<const uint32_t>(kAgaaLightingEmissiveShadowComp)
+                                    : kAgaaLightingEmissiveComp)
+                         : (shadows ? std::span<const uint32_t>(kAgaaLightingShadowComp) : kAgaaLightingComp);
+}
+
+eng::vk::Specialization AggregateAA::lightingVariant() const {
     static_assert(shared::kSpecLightingSamples == 0 && shared::kSpecLightingAggregates == 1,
                   "effectSpecialization's ids 0 and 1 are n and c");
     vk::Specialization spec = lightingSpecialization(
@@ -237,82 +223,39 @@ VkPipeline AggregateAA::lightingPipeline(bool exporting) {
          {shared::kSpecLightingShadingRate, m_settings.tolerance >= 0.0f ? 1u : 0u},
          {shared::kSpecLightingShadingRateView,
           m_settings.debugView == AggregateDebugView::ShadingRate ? 1u : 0u}});
-    return vk::createComputePipeline(m_device, code,
-                                     exporting ? m_exportLayout.layout : m_lightingLayout.layout, spec,
-                                     exporting ? "agaa.lighting.export" : "agaa.lighting");
-}
-
-void AggregateAA::setAggregateExportTarget(const vk::Buffer* host) {
-    m_exportTarget = host;
-    if (!host || m_exportPipeline) return;
-    m_exportLayout =
-        vk::createPipelineLayout(m_device, lightingLayoutDesc(true), "agaa.lighting.export.layout");
-    m_exportPipeline = lightingPipeline(true);
-}
-
-eng::vk::LayoutDesc AggregateAA::lightingLayoutDesc(bool exporting) const {
-    const bool samplesPath = m_settings.generation == AggregateGeneration::Samples;
-    // Binding 6: the AG-buffer (accumulate) or the G-buffer's normals (samples); 10 the per-sample
-    // emissive (accumulate, emissive scenes) or the G-buffer's emissive + roughness (samples).
-    vk::LayoutDesc lighting;
-    lighting.pushBindings = {{0, kUbo, kCs},
-                             {1, kSsbo, kCs},
-                             {2, kUbo, kCs},
-                             {3, kSampled, kCs},
-                             {4, kSsbo, kCs},
-                             {5, kImage, kCs},
-                             {6, samplesPath ? kSampled : kSsbo, kCs},
-                             {7, kImage, kCs},
-                             {8, kImage, kCs},
-                             {9, kImage, kCs}};
-    if (m_hasEmissive || samplesPath) lighting.pushBindings.push_back({10, kSampled, kCs});
-    lighting.pushBindings.push_back({11, kSampled, kCs}); // shadow maps (pushed for shadowed scenes only)
-    lighting.pushBindings.push_back({12, kUbo, kCs});
-    if (samplesPath) lighting.pushBindings.push_back({13, kSampled, kCs}); // the G-buffer's albedo + metallic
-    if (exporting) lighting.pushBindings.push_back({14, kSsbo, kCs});      // the test export
-    lighting.pushBindings.push_back({18, kImage, kCs}); // the shading rate's per-sample pixels
-    for (const vk::Binding& b : environmentBindings())
-        lighting.pushBindings.push_back(b);
-    return lighting;
+    return spec;
 }
 
 void AggregateAA::createLayouts(const eng::frame::GpuScene& scene) {
+    // Set 0 of every layout is read from the SPIR-V the layout serves (engine/vk/reflection.h).
+    constexpr auto kVs = VK_SHADER_STAGE_VERTEX_BIT;
+    constexpr auto kFs = VK_SHADER_STAGE_FRAGMENT_BIT;
+    constexpr auto kCs = VK_SHADER_STAGE_COMPUTE_BIT;
     vk::LayoutDesc visibility;
-    visibility.pushBindings = {{0, kUbo, kVsFs}, {1, kSsbo, kFs}, {2, kUbo, kFs}};
+    visibility.pushBindings = vk::reflectBindings({{kAgaaSceneVert, kVs}, {kAgaaVisibilityFrag, kFs}});
     visibility.extraSets = {scene.textureSetLayout()};
     visibility.pushConstantBytes = 4;
     m_visibilityLayout = vk::createPipelineLayout(m_device, visibility, "agaa.visibility.layout");
 
     vk::LayoutDesc generation;
-    generation.pushBindings = {
-        {0, kUbo, kVsFs}, {1, kSsbo, kFs}, {2, kUbo, kFs}, {3, kSsbo, kFs}, {4, kSsbo, kFs}};
     generation.extraSets = {scene.textureSetLayout()};
     generation.pushConstantBytes = 4;
-    vk::LayoutDesc record = generation;
-    record.pushBindings.push_back({5, kSsbo, kFs});
-    m_recordLayout = vk::createPipelineLayout(m_device, record, "agaa.generation.record.layout");
-    // The 64-bit view of the AG-buffer (shaders/glsl/agaa/generation.glsl AGAA_INT64).
-    if (m_settings.atomics == AggregateAtomics::Bits64) generation.pushBindings.push_back({6, kSsbo, kFs});
+    generation.pushBindings = vk::reflectBindings({{kAgaaSceneVert, kVs}, {generationCode(), kFs}});
     m_generationLayout = vk::createPipelineLayout(m_device, generation, "agaa.generation.layout");
 
     const bool samplesPath = m_settings.generation == AggregateGeneration::Samples;
     vk::LayoutDesc cluster;
-    cluster.pushBindings = {{0, kUbo, kCs},     {1, kUbo, kCs},  {2, kSampled, kCs},
-                            {3, kSampled, kCs}, {4, kSsbo, kCs}, {5, kImage, kCs}};
-    if (samplesPath) cluster.pushBindings.push_back({6, kSampled, kCs}); // the G-buffer's albedo + metallic
+    cluster.pushBindings = vk::reflectBindings(
+        {{samplesPath ? std::span<const uint32_t>(kAgaaClusterGbufferComp) : kAgaaClusterComp, kCs}});
     m_clusterLayout = vk::createPipelineLayout(m_device, cluster, "agaa.cluster.layout");
 
-    m_lightingLayout = vk::createPipelineLayout(m_device, lightingLayoutDesc(false), "agaa.lighting.layout");
+    vk::LayoutDesc lighting;
+    lighting.pushBindings = vk::reflectBindings({{lightingCode(), kCs}});
+    m_lightingLayout = vk::createPipelineLayout(m_device, lighting, "agaa.lighting.layout");
 
     vk::LayoutDesc debug;
-    debug.pushBindings = {{0, kUbo, kCs},     {1, kUbo, kCs},   {2, kSsbo, kCs},  {3, kImage, kCs},
-                          {4, kSampled, kCs}, {5, kImage, kCs}, {6, kImage, kCs}, {7, kImage, kCs}};
+    debug.pushBindings = vk::reflectBindings({{kAgaaDebugAggregatesComp, kCs}});
     m_debugLayout = vk::createPipelineLayout(m_device, debug, "agaa.debug.layout");
-
-    vk::LayoutDesc readback;
-    readback.pushBindings = {
-        {0, kUbo, kCs}, {1, kUbo, kCs}, {2, kSampled, kCs}, {3, kSampled, kCs}, {4, kSsbo, kCs}};
-    m_readbackLayout = vk::createPipelineLayout(m_device, readback, "agaa.sampleReadback.layout");
 }
 
 AggregateAA::~AggregateAA() {
@@ -326,12 +269,11 @@ void AggregateAA::release() {
         if (p) vkDestroyPipeline(d, p, nullptr);
     for (VkPipeline p : m_generationPipelines)
         if (p) vkDestroyPipeline(d, p, nullptr);
-    for (VkPipeline p :
-         {m_clusterPipeline, m_lightingPipeline, m_exportPipeline, m_debugPipeline, m_readbackPipeline})
+    for (VkPipeline p : {m_clusterPipeline, m_lightingPipeline, m_debugPipeline})
         if (p) vkDestroyPipeline(d, p, nullptr);
     vkDestroySampler(d, m_fetchSampler, nullptr);
-    for (vk::PipelineLayout* l : {&m_visibilityLayout, &m_generationLayout, &m_recordLayout, &m_clusterLayout,
-                                  &m_lightingLayout, &m_exportLayout, &m_debugLayout, &m_readbackLayout})
+    for (vk::PipelineLayout* l :
+         {&m_visibilityLayout, &m_generationLayout, &m_clusterLayout, &m_lightingLayout, &m_debugLayout})
         vk::destroyPipelineLayout(m_device, *l);
 }
 
@@ -359,29 +301,25 @@ VkPipeline AggregateAA::visibilityPipeline(AlphaPath alpha, bool doubleSided) {
     return p;
 }
 
-VkPipeline AggregateAA::generationPipeline(bool doubleSided) {
-    const bool recording = m_recordTarget != nullptr;
-    VkPipeline& p = m_generationPipelines[(recording ? 2 : 0) + (doubleSided ? 1 : 0)];
-    if (p) return p;
-    if (recording && m_hasEmissive)
-        throw std::logic_error("agaa: fragment recording supports scenes without emissive materials only");
-    vk::GraphicsPipelineDesc d;
-    d.vertex = kAgaaSceneVert;
-    // [emissive][int64][subgroup]; the recording variant (a test's CPU replay) is 32-bit, per sample.
+std::span<const uint32_t> AggregateAA::generationCode() const {
+    // [emissive][int64][subgroup]
     static const std::span<const uint32_t> kVariants[2][2][2] = {
         {{kAgaaGenerationFrag, kAgaaGenerationSubgroupFrag},
          {kAgaaGenerationInt64Frag, kAgaaGenerationInt64SubgroupFrag}},
         {{kAgaaGenerationEmissiveFrag, kAgaaGenerationEmissiveSubgroupFrag},
          {kAgaaGenerationEmissiveInt64Frag, kAgaaGenerationEmissiveInt64SubgroupFrag}}};
-    d.fragment =
-        recording ? std::span<const uint32_t>(kAgaaGenerationRecordFrag)
-                  : kVariants[m_hasEmissive ? 1 : 0][m_settings.atomics == AggregateAtomics::Bits64 ? 1 : 0]
-                             [m_settings.subgroupReduction == SubgroupReduction::On ? 1 : 0];
-    d.layout = recording ? m_recordLayout.layout : m_generationLayout.layout;
+    return kVariants[m_hasEmissive ? 1 : 0][m_settings.atomics == AggregateAtomics::Bits64 ? 1 : 0]
+                    [m_settings.subgroupReduction == SubgroupReduction::On ? 1 : 0];
+}
+
+eng::vk::GraphicsPipelineDesc AggregateAA::generationPipelineDesc(bool doubleSided) const {
+    vk::GraphicsPipelineDesc d;
+    d.vertex = kAgaaSceneVert;
+    d.fragment = generationCode();
+    d.layout = m_generationLayout.layout;
     // ids 0, 1: normal distribution and routing; ids 3, 4: normal-map / emissive fetch
-    d.specialization.values = effectSpecialization(
-        m_features, uint32_t(m_settings.ndf),
-        recording ? uint32_t(AggregateRouting::Samples) : uint32_t(m_settings.routing), 1);
+    d.specialization.values =
+        effectSpecialization(m_features, uint32_t(m_settings.ndf), uint32_t(m_settings.routing), 1);
     // id 7: the benchmark's breakdown (0 the whole pass, 1 material only, 2 an empty shader)
     const uint32_t b = m_settings.breakdown;
     d.specialization.values.push_back(b & AggregateBreakdown::kGenerationEmpty            ? 2u
@@ -404,9 +342,14 @@ VkPipeline AggregateAA::generationPipeline(bool doubleSided) {
                  0xFF,
                  0xFF,
                  1};
-    p = vk::createGraphicsPipeline(m_device, d,
-                                   std::string("agaa.generation") + (recording ? ".record" : "") +
-                                       (doubleSided ? ".twoSided" : ""));
+    return d;
+}
+
+VkPipeline AggregateAA::generationPipeline(bool doubleSided) {
+    VkPipeline& p = m_generationPipelines[doubleSided ? 1 : 0];
+    if (!p)
+        p = vk::createGraphicsPipeline(m_device, generationPipelineDesc(doubleSided),
+                                       std::string("agaa.generation") + (doubleSided ? ".twoSided" : ""));
     return p;
 }
 

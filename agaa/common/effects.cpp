@@ -100,12 +100,6 @@ eng::vk::Specialization lightingSpecialization(std::vector<uint32_t> values,
     return s;
 }
 
-std::vector<eng::vk::Binding> environmentBindings() {
-    return {{15, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_COMPUTE_BIT},
-            {16, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT},
-            {17, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_COMPUTE_BIT}};
-}
-
 void pushEnvironment(eng::vk::PushDescriptors& descriptors, const eng::frame::GpuScene& scene) {
     descriptors.sampled(15, scene.environmentSampler(), scene.environmentView())
         .uniform(16, scene.environmentConstants().buffer)

@@ -78,7 +78,6 @@ inline void addMaterialSpecialization(eng::vk::Specialization& s, const eng::sce
 // scene, which holds a stand-in when it has no environment (engine/frame/gpu_scene.h).
 eng::vk::Specialization lightingSpecialization(std::vector<uint32_t> values,
                                                const eng::scene::SceneFeatures& features);
-std::vector<eng::vk::Binding> environmentBindings();
 void pushEnvironment(eng::vk::PushDescriptors& descriptors, const eng::frame::GpuScene& scene);
 
 // Alpha handling of a material in a raster pass (specialisation constant 0 of

@@ -1,6 +1,7 @@
 #include "agaa/common/host_targets.h"
 
 #include "engine/vk/descriptors.h"
+#include "engine/vk/reflection.h"
 #include "engine/vk/resources.h"
 #include "shaders/common/depth_resolve_ms_comp.h"
 #include "shaders/common/depth_resolve_ss_comp.h"
@@ -13,8 +14,10 @@ namespace vk = eng::vk;
 
 HostTargetWriter::HostTargetWriter(vk::Device& device) : m_device(device) {
     vk::LayoutDesc layout;
-    layout.pushBindings = {{0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_COMPUTE_BIT},
-                           {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT}};
+    // One layout for both resolves: the same bindings, sampled 1x or MS.
+    layout.pushBindings =
+        vk::mergeBindings(vk::reflectBindings({{kCommonDepthResolveSsComp, VK_SHADER_STAGE_COMPUTE_BIT}}),
+                          vk::reflectBindings({{kCommonDepthResolveMsComp, VK_SHADER_STAGE_COMPUTE_BIT}}));
     m_layout = vk::createPipelineLayout(device, layout, "host.depth.layout");
     m_resolve[0] = vk::createComputePipeline(device, kCommonDepthResolveSsComp, m_layout.layout, {},
                                              "host.depth.resolve");

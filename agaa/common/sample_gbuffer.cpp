@@ -3,6 +3,7 @@
 #include "engine/frame/sample_pattern.h"
 #include "engine/vk/check.h"
 #include "engine/vk/descriptors.h"
+#include "engine/vk/reflection.h"
 #include "shaders/reference/gbuffer_frag.h"
 #include "shaders/reference/gbuffer_primitive_frag.h"
 #include "shaders/reference/gbuffer_primitive_sample_rate_frag.h"
@@ -43,9 +44,8 @@ SampleGBufferPass::SampleGBufferPass(vk::Device& device, const eng::frame::GpuSc
                                     std::to_string(scene.scene().triangleCount()) +
                                     " triangles; primitive ids per sample are exact below 2^24 - 1");
     vk::LayoutDesc layout;
-    layout.pushBindings = {
-        {0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT},
-        {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_FRAGMENT_BIT}};
+    layout.pushBindings = vk::reflectBindings({{kReferenceGbufferVert, VK_SHADER_STAGE_VERTEX_BIT},
+                                               {fragmentCode(), VK_SHADER_STAGE_FRAGMENT_BIT}});
     layout.extraSets = {scene.textureSetLayout()};
     layout.pushConstantBytes = m_options.primitiveIds ? 8 : 4; // material index (, first triangle)
     m_layout = vk::createPipelineLayout(device, layout, m_name + ".gbuffer.layout");
@@ -59,20 +59,24 @@ SampleGBufferPass::~SampleGBufferPass() {
     vk::destroyPipelineLayout(m_device, m_layout);
 }
 
+std::span<const uint32_t> SampleGBufferPass::fragmentCode() const {
+    const bool sampleRate = m_options.sampleRateShading && m_samples > 1;
+    return m_options.visibilityOnly ? (sampleRate ? std::span<const uint32_t>(kSbaaPrepassSampleRateFrag)
+                                                  : std::span<const uint32_t>(kSbaaPrepassFrag))
+           : m_options.primitiveIds
+               ? (sampleRate ? std::span<const uint32_t>(kReferenceGbufferPrimitiveSampleRateFrag)
+                             : std::span<const uint32_t>(kReferenceGbufferPrimitiveFrag))
+               : (sampleRate ? std::span<const uint32_t>(kReferenceGbufferSampleRateFrag)
+                             : kReferenceGbufferFrag);
+}
+
 VkPipeline SampleGBufferPass::pipeline(AlphaPath alpha, bool doubleSided) {
     VkPipeline& p = m_pipelines[uint32_t(alpha) * 2 + (doubleSided ? 1 : 0)];
     if (p) return p;
     vk::GraphicsPipelineDesc d;
     d.vertex = kReferenceGbufferVert;
     const bool sampleRate = m_options.sampleRateShading && m_samples > 1;
-    d.fragment = m_options.visibilityOnly
-                     ? (sampleRate ? std::span<const uint32_t>(kSbaaPrepassSampleRateFrag)
-                                   : std::span<const uint32_t>(kSbaaPrepassFrag))
-                 : m_options.primitiveIds
-                     ? (sampleRate ? std::span<const uint32_t>(kReferenceGbufferPrimitiveSampleRateFrag)
-                                   : std::span<const uint32_t>(kReferenceGbufferPrimitiveFrag))
-                     : (sampleRate ? std::span<const uint32_t>(kReferenceGbufferSampleRateFrag)
-                                   : kReferenceGbufferFrag);
+    d.fragment = fragmentCode();
     d.layout = m_layout.layout;
     d.specialization.values = effectSpecialization(m_features, uint32_t(alpha), 0, 1);
     d.specialization.values.resize(8, 0u); // id 7: unused by the fill pass
@@ -161,41 +165,12 @@ SampleGBuffer SampleGBufferPass::add(rg::Graph& graph, const FrameInputs& in) {
     return out.g;
 }
 
-std::vector<eng::vk::Binding> SampleGBufferPass::lightingBindings() {
-    constexpr VkShaderStageFlags cs = VK_SHADER_STAGE_COMPUTE_BIT;
-    return {{0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, cs},
-            {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs},
-            {2, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, cs},
-            {3, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, cs},
-            {4, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, cs},
-            {5, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, cs},
-            {6, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs},
-            {7, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs},
-            {8, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs},
-            {9, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, cs},
-            {10, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, cs},
-            {15, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
-             cs}, // the environment (effects.h environmentBindings)
-            {16, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, cs},
-            {17, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, cs}};
-}
-
 void pushSampleGBuffer(eng::vk::PushDescriptors& pd, const eng::rg::Context& ctx, VkSampler sampler,
                        const SampleGBuffer& g) {
     pd.sampled(2, sampler, ctx.texture(g.depth).sampledView)
         .sampled(3, sampler, ctx.texture(g.normal).sampledView)
         .sampled(4, sampler, ctx.texture(g.albedoMetal).sampledView)
         .sampled(5, sampler, ctx.texture(g.emissiveRoughness).sampledView);
-}
-
-std::vector<eng::vk::Binding> sampleGBufferFetchBindings() {
-    constexpr VkShaderStageFlags kCompute = VK_SHADER_STAGE_COMPUTE_BIT;
-    return {{0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, kCompute},
-            {2, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, kCompute},
-            {3, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, kCompute},
-            {4, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, kCompute},
-            {5, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, kCompute},
-            {11, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, kCompute}};
 }
 
 } // namespace agaa

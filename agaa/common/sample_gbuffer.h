@@ -13,6 +13,7 @@
 #include "engine/vk/pipeline.h"
 
 #include <array>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -33,9 +34,6 @@ struct SampleGBuffer {
 // depth, normal, albedo + metallic, emissive + roughness, each through `sampler`.
 void pushSampleGBuffer(eng::vk::PushDescriptors& pd, const eng::rg::Context& ctx, VkSampler sampler,
                        const SampleGBuffer& g);
-// The push bindings of a compute pass that reads the frame constants (0), the G-buffer (2..5)
-// and the primitive ids (11): SBAA's surface selection and streaming's replay, and their exports.
-std::vector<eng::vk::Binding> sampleGBufferFetchBindings();
 
 // How the fill pass runs. The defaults are the reference's: one material evaluation per pixel
 // written to every covered sample, and the material's own roughness.
@@ -83,11 +81,6 @@ class SampleGBufferPass {
     SampleGBufferPass(const SampleGBufferPass&) = delete;
     SampleGBufferPass& operator=(const SampleGBufferPass&) = delete;
 
-    // Set 0 of every compute pass that lights this G-buffer through common/gbuffer_lighting.glsl
-    // (reference, Simple/Complex): 0 frame, 1 lights, 2-5 the G-buffer, 6-8 hdr/display/events,
-    // 9 shadow maps, 10 shadow constants.
-    static std::vector<eng::vk::Binding> lightingBindings();
-
     // Adds the "<name>.gbuffer" graphics pass.
     SampleGBuffer add(eng::rg::Graph& graph, const FrameInputs& inputs);
     bool isStorage(const std::string& resourceName) const;
@@ -96,6 +89,7 @@ class SampleGBufferPass {
 
   private:
     VkPipeline pipeline(AlphaPath alpha, bool doubleSided); // [alpha path][double-sided], made on first use
+    std::span<const uint32_t> fragmentCode() const;         // the fill for these options (any alpha path)
 
     eng::vk::Device& m_device;
     uint32_t m_samples;

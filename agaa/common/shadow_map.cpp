@@ -3,6 +3,7 @@
 #include "engine/frame/frame_constants.h"
 #include "engine/vk/check.h"
 #include "engine/vk/descriptors.h"
+#include "engine/vk/reflection.h"
 #include "shaders/common/shadow_map_frag.h"
 #include "shaders/common/shadow_map_vert.h"
 
@@ -105,8 +106,9 @@ ShadowMapPass::ShadowMapPass(vk::Device& device, const eng::frame::GpuScene& sce
     validate(settings);
     if (!enabled()) return;
     vk::LayoutDesc layout;
-    layout.pushBindings = {{0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_SHADER_STAGE_VERTEX_BIT},
-                           {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_FRAGMENT_BIT}};
+    // Shared by the opaque (depth-only) and the masked pipeline: the masked one's stages.
+    layout.pushBindings = vk::reflectBindings({{kCommonShadowMapVert, VK_SHADER_STAGE_VERTEX_BIT},
+                                               {kCommonShadowMapFrag, VK_SHADER_STAGE_FRAGMENT_BIT}});
     layout.extraSets = {scene.textureSetLayout()};
     layout.pushConstantBytes = 4; // material index
     m_layout = vk::createPipelineLayout(device, layout, m_name + ".shadow.layout");

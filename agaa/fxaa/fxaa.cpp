@@ -1,6 +1,7 @@
 #include "agaa/fxaa/fxaa.h"
 
 #include "engine/vk/descriptors.h"
+#include "engine/vk/reflection.h"
 #include "engine/vk/resources.h"
 #include "shaders/fxaa/fxaa_comp.h"
 #include "shared/frame.h"
@@ -36,9 +37,7 @@ Fxaa::Fxaa(vk::Device& device, const eng::frame::GpuScene& scene, const FxaaSett
     : m_device(device), m_settings(checked(settings)), m_name(std::move(name)),
       m_noaa(device, scene, ReferenceSettings{1}, m_name + ".noaa") {
     vk::LayoutDesc layout;
-    const VkShaderStageFlags cs = VK_SHADER_STAGE_COMPUTE_BIT;
-    layout.pushBindings = {{0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, cs},
-                           {1, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs}};
+    layout.pushBindings = vk::reflectBindings({{kFxaaFxaaComp, VK_SHADER_STAGE_COMPUTE_BIT}});
     layout.pushConstantBytes = sizeof(shared::FxaaParams);
     m_layout = vk::createPipelineLayout(device, layout, m_name + ".layout");
     m_pipeline = vk::createComputePipeline(device, kFxaaFxaaComp, m_layout.layout,

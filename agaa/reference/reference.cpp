@@ -3,6 +3,7 @@
 
 #include "engine/vk/check.h"
 #include "engine/vk/descriptors.h"
+#include "engine/vk/reflection.h"
 #include "engine/vk/resources.h"
 #include "shaders/reference/lighting_ms_comp.h"
 #include "shaders/reference/lighting_ms_shadow_comp.h"
@@ -24,13 +25,13 @@ Reference::Reference(vk::Device& device, const eng::frame::GpuScene& scene, cons
                 GBufferOptions{.sampleRateShading = settings.sampleRateShading}), // validates n, 4x MSAA, SRS
       m_shadow(device, scene, m_features, settings.effects, m_name) {
 
-    vk::LayoutDesc lighting;
-    lighting.pushBindings = SampleGBufferPass::lightingBindings();
-    m_lightingLayout = vk::createPipelineLayout(device, lighting, m_name + ".lighting.layout");
     const bool shadows = m_shadow.enabled();
     std::span<const uint32_t> code =
         settings.samples > 1 ? (shadows ? kReferenceLightingMsShadowComp : kReferenceLightingMsComp)
                              : (shadows ? kReferenceLightingSsShadowComp : kReferenceLightingSsComp);
+    vk::LayoutDesc lighting;
+    lighting.pushBindings = vk::reflectBindings({{code, VK_SHADER_STAGE_COMPUTE_BIT}});
+    m_lightingLayout = vk::createPipelineLayout(device, lighting, m_name + ".lighting.layout");
     // Specialisation: id 1 = n (common/gbuffer_lighting.glsl); id 0 is unused here; 2.. the
     // scene's effects, one shadow tap per shading event (agaa/common/effects.h).
     m_lightingPipeline = vk::createComputePipeline(

@@ -3,8 +3,8 @@
 
 #include "engine/vk/check.h"
 #include "engine/vk/descriptors.h"
+#include "engine/vk/reflection.h"
 #include "engine/vk/resources.h"
-#include "shaders/sbaa/export_comp.h"
 #include "shaders/sbaa/lighting_comp.h"
 #include "shaders/sbaa/lighting_shadow_comp.h"
 #include "shaders/sbaa/surfaces_comp.h"
@@ -19,7 +19,7 @@ namespace vk = eng::vk;
 
 namespace {
 
-constexpr VkShaderStageFlags kCompute = VK_SHADER_STAGE_COMPUTE_BIT;
+constexpr VkShaderStageFlagBits kCompute = VK_SHADER_STAGE_COMPUTE_BIT;
 
 const SbaaSettings& checked(const SbaaSettings& s) {
     if (s.samples < 4)
@@ -34,14 +34,6 @@ const SbaaSettings& checked(const SbaaSettings& s) {
     if (!(s.merge.depthSlopeScale >= 0.0f && s.merge.depthSlopeScale <= 1.0e3f))
         throw std::invalid_argument("sbaa: merge depthSlopeScale is out of range [0, 1000]");
     return s;
-}
-
-// sbaa/gbuffer_fetch.glsl: the frame (0), the prepass's depth (2), geometric normal (3) and primitive (11).
-std::vector<vk::Binding> prepassFetchBindings() {
-    return {{0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, kCompute},
-            {2, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, kCompute},
-            {3, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, kCompute},
-            {11, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, kCompute}};
 }
 
 void pushPrepass(vk::PushDescriptors& pd, const rg::Context& ctx, VkSampler sampler, const SampleGBuffer& g) {
@@ -67,23 +59,22 @@ Sbaa::Sbaa(vk::Device& device, const eng::frame::GpuScene& scene, const SbaaSett
       m_fill(device, scene, settings.samples, settings.surfaces, m_features, settings.sampleRateShading),
       m_shadow(device, scene, m_features, settings.effects, "sbaa") {
     vk::LayoutDesc surfaces;
-    surfaces.pushBindings = prepassFetchBindings();
-    surfaces.pushBindings.push_back({12, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kCompute});
-    surfaces.pushBindings.push_back({13, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, kCompute});
+    surfaces.pushBindings = vk::reflectBindings({{kSbaaSurfacesComp, kCompute}});
     surfaces.pushConstantBytes = sizeof(shared::SbaaParams);
     m_surfacesLayout = vk::createPipelineLayout(device, surfaces, "sbaa.surfaces.layout");
     m_surfacesPipeline =
         vk::createComputePipeline(device, kSbaaSurfacesComp, m_surfacesLayout.layout, {}, "sbaa.surfaces");
 
+    const std::span<const uint32_t> lightingCode =
+        m_shadow.enabled() ? kSbaaLightingShadowComp : kSbaaLightingComp;
     vk::LayoutDesc lighting;
-    lighting.pushBindings = SampleGBufferPass::lightingBindings();
-    lighting.pushBindings.push_back({12, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kCompute});
+    lighting.pushBindings = vk::reflectBindings({{lightingCode, kCompute}});
     lighting.pushConstantBytes = sizeof(shared::SbaaParams);
     m_lightingLayout = vk::createPipelineLayout(device, lighting, "sbaa.lighting.layout");
     // Specialisation: id 1 = n (common/gbuffer_lighting.glsl); 2.. the scene's effects, one shadow
     // tap per shading event (agaa/common/effects.h).
     m_lightingPipeline = vk::createComputePipeline(
-        device, m_shadow.enabled() ? kSbaaLightingShadowComp : kSbaaLightingComp, m_lightingLayout.layout,
+        device, lightingCode, m_lightingLayout.layout,
         lightingSpecialization(effectSpecialization(m_features, 0u, settings.samples, 1), m_features),
         "sbaa.lighting");
     m_fetchSampler = vk::createSampler(device, VK_FILTER_NEAREST, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE, 0.0f,
@@ -95,11 +86,9 @@ Sbaa::~Sbaa() {
     vkDeviceWaitIdle(d);
     vkDestroyPipeline(d, m_surfacesPipeline, nullptr);
     vkDestroyPipeline(d, m_lightingPipeline, nullptr);
-    if (m_exportPipeline) vkDestroyPipeline(d, m_exportPipeline, nullptr);
     vkDestroySampler(d, m_fetchSampler, nullptr);
     vk::destroyPipelineLayout(m_device, m_surfacesLayout);
     vk::destroyPipelineLayout(m_device, m_lightingLayout);
-    if (m_exportLayout.layout) vk::destroyPipelineLayout(m_device, m_exportLayout);
 }
 
 bool Sbaa::isStorage(const std::string& resourceName) const {
@@ -218,41 +207,6 @@ FrameTargets Sbaa::addLighting(rg::Graph& graph, const FrameInputs& in, const Sa
     t.lostSamples = surfaces.lostSamples;
     t.depth = g.depth;
     return t;
-}
-
-void Sbaa::addSampleExport(rg::Graph& graph, const FrameInputs& in, const SampleGBuffer& g,
-                           rg::Buffer target) {
-    if (!m_exportPipeline) {
-        vk::LayoutDesc layout;
-        layout.pushBindings = prepassFetchBindings();
-        layout.pushBindings.push_back({14, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kCompute});
-        m_exportLayout = vk::createPipelineLayout(m_device, layout, "sbaa.export.layout");
-        m_exportPipeline =
-            vk::createComputePipeline(m_device, kSbaaExportComp, m_exportLayout.layout, {}, "sbaa.export");
-    }
-    struct Export {
-        rg::Buffer frame, target;
-        SampleGBuffer g;
-    };
-    graph.addCompute<Export>(
-        "sbaa.sampleExport",
-        [&](rg::Builder& b, Export& d) {
-            d.frame = b.read(in.frameConstants, rg::Use::UniformRead);
-            d.g.depth = b.read(g.depth, rg::Use::SampledCompute);
-            d.g.geometricNormal = b.read(g.geometricNormal, rg::Use::SampledCompute);
-            d.g.primitive = b.read(g.primitive, rg::Use::SampledCompute);
-            d.target = b.write(target, rg::Use::StorageWriteCompute);
-        },
-        [this, w = in.width, h = in.height](const rg::Context& ctx, const Export& d) {
-            VkCommandBuffer cmd = ctx.cmd();
-            vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, m_exportPipeline);
-            vk::PushDescriptors pd;
-            pd.uniform(0, ctx.buffer(d.frame).buffer);
-            pushPrepass(pd, ctx, m_fetchSampler, d.g);
-            pd.storage(14, ctx.buffer(d.target).buffer)
-                .push(m_device, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, m_exportLayout.layout);
-            vkCmdDispatch(cmd, (w + 7) / 8, (h + 7) / 8, 1);
-        });
 }
 
 } // namespace agaa

@@ -66,9 +66,6 @@ class Sbaa final : public Technique {
     }
     FrameTargets addLighting(eng::rg::Graph& graph, const FrameInputs& inputs, const SampleGBuffer& gbuffer,
                              const Surfaces& surfaces);
-    // Test path: copies what the selection reads (SbaaSample per sample, pixel-major) into `target`.
-    void addSampleExport(eng::rg::Graph& graph, const FrameInputs& inputs, const SampleGBuffer& gbuffer,
-                         eng::rg::Buffer target);
 
   private:
     eng::vk::Device& m_device;
@@ -78,9 +75,8 @@ class Sbaa final : public Technique {
     SampleGBufferPass m_gbuffer;
     SurfaceFillPass m_fill;
     ShadowMapPass m_shadow;
-    eng::vk::PipelineLayout m_surfacesLayout, m_lightingLayout, m_exportLayout;
+    eng::vk::PipelineLayout m_surfacesLayout, m_lightingLayout;
     VkPipeline m_surfacesPipeline = VK_NULL_HANDLE, m_lightingPipeline = VK_NULL_HANDLE;
-    VkPipeline m_exportPipeline = VK_NULL_HANDLE; // made on first use
     VkSampler m_fetchSampler = VK_NULL_HANDLE;
 };
 

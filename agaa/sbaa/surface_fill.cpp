@@ -4,6 +4,7 @@
 #include "agaa/common/sample_gbuffer.h"
 #include "engine/frame/sample_pattern.h"
 #include "engine/vk/descriptors.h"
+#include "engine/vk/reflection.h"
 #include "shaders/reference/gbuffer_vert.h"
 #include "shaders/sbaa/fill_frag.h"
 #include "shaders/sbaa/fill_sample_rate_frag.h"
@@ -20,19 +21,17 @@ SurfaceFillPass::SurfaceFillPass(vk::Device& device, const eng::frame::GpuScene&
                                  uint32_t surfaces, const eng::scene::SceneFeatures& features,
                                  bool sampleRate)
     : m_device(device), m_samples(samples) {
-    vk::LayoutDesc layout;
-    layout.pushBindings = {
-        {0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT},
-        {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_FRAGMENT_BIT},
-        {2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_FRAGMENT_BIT}};
-    layout.extraSets = {scene.textureSetLayout()};
-    layout.pushConstantBytes = 8; // material index, first triangle
-    m_layout = vk::createPipelineLayout(device, layout, "sbaa.fill.layout");
-
     vk::GraphicsPipelineDesc d;
     d.vertex = kReferenceGbufferVert;
     sampleRate = sampleRate && samples > 1;
     d.fragment = sampleRate ? std::span<const uint32_t>(kSbaaFillSampleRateFrag) : kSbaaFillFrag;
+
+    vk::LayoutDesc layout;
+    layout.pushBindings = vk::reflectBindings(
+        {{d.vertex, VK_SHADER_STAGE_VERTEX_BIT}, {d.fragment, VK_SHADER_STAGE_FRAGMENT_BIT}});
+    layout.extraSets = {scene.textureSetLayout()};
+    layout.pushConstantBytes = 8; // material index, first triangle
+    m_layout = vk::createPipelineLayout(device, layout, "sbaa.fill.layout");
     d.layout = m_layout.layout;
     // Alpha path 0: the prepass already applied the alpha (its ids are what survived), and the
     // fill must not discard. Ids 8..10 (curvature roughness) off: the material's own roughness,

@@ -13,9 +13,9 @@
 
 namespace agaa {
 
-// What the selection reads per sample, as sbaa/export.comp writes it from the prepass: raw depth
-// (reversed Z, 0 = sky); the geometric normal as stored (RG8_UNORM octahedral, v * 0.5 + 0.5) x, y;
-// the primitive id as an exact float (0 = none).
+// What the selection reads per sample, as the test kernel shaders/glsl/tests/sbaa_selection_inputs.comp
+// writes it from the prepass: raw depth (reversed Z, 0 = sky); the geometric normal as stored (RG8_UNORM
+// octahedral, v * 0.5 + 0.5) x, y; the primitive id as an exact float (0 = none).
 using SbaaSample = glm::vec4;
 
 struct SbaaMergeTest {

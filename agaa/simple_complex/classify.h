@@ -12,8 +12,9 @@
 
 namespace agaa {
 
-// What the classification reads per sample, as gbuffer_export.comp writes it:
-// x raw depth (reversed Z, 0 = sky), yz the octahedral normal as fetched (RG16_SNORM).
+// What the classification reads per sample, as the test kernel
+// shaders/glsl/tests/simple_complex_classification_inputs.comp writes it: x raw depth (reversed Z, 0 = sky),
+// yz the octahedral normal as fetched (RG16_SNORM).
 using ClassificationSample = glm::vec4;
 
 struct ClassificationThresholds {

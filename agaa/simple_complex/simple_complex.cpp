@@ -3,8 +3,8 @@
 
 #include "engine/vk/check.h"
 #include "engine/vk/descriptors.h"
+#include "engine/vk/reflection.h"
 #include "engine/vk/resources.h"
-#include "shaders/simple_complex/gbuffer_export_comp.h"
 #include "shaders/simple_complex/lighting_ms_comp.h"
 #include "shaders/simple_complex/lighting_ms_shadow_comp.h"
 #include "shaders/simple_complex/lighting_ss_comp.h"
@@ -44,14 +44,14 @@ SimpleComplex::SimpleComplex(vk::Device& device, const eng::frame::GpuScene& sce
                 GBufferOptions{.sampleRateShading = settings.sampleRateShading}),
       m_shadow(device, scene, m_features, settings.effects, m_name) {
     checkSettings(settings);
-    vk::LayoutDesc lighting;
-    lighting.pushBindings = SampleGBufferPass::lightingBindings();
-    lighting.pushConstantBytes = sizeof(shared::SimpleComplexParams);
-    m_lightingLayout = vk::createPipelineLayout(device, lighting, m_name + ".lighting.layout");
     const bool shadows = m_shadow.enabled();
     std::span<const uint32_t> code =
         settings.samples > 1 ? (shadows ? kSimpleComplexLightingMsShadowComp : kSimpleComplexLightingMsComp)
                              : (shadows ? kSimpleComplexLightingSsShadowComp : kSimpleComplexLightingSsComp);
+    vk::LayoutDesc lighting;
+    lighting.pushBindings = vk::reflectBindings({{code, VK_SHADER_STAGE_COMPUTE_BIT}});
+    lighting.pushConstantBytes = sizeof(shared::SimpleComplexParams);
+    m_lightingLayout = vk::createPipelineLayout(device, lighting, m_name + ".lighting.layout");
     // One shadow tap per shading event, as the reference (agaa/common/effects.h).
     m_lightingPipeline = vk::createComputePipeline(
         device, code, m_lightingLayout.layout,
@@ -66,10 +66,8 @@ SimpleComplex::~SimpleComplex() {
     VkDevice d = m_device.device();
     vkDeviceWaitIdle(d);
     vkDestroyPipeline(d, m_lightingPipeline, nullptr);
-    if (m_exportPipeline) vkDestroyPipeline(d, m_exportPipeline, nullptr);
     vkDestroySampler(d, m_fetchSampler, nullptr);
     vk::destroyPipelineLayout(m_device, m_lightingLayout);
-    if (m_exportLayout.layout) vk::destroyPipelineLayout(m_device, m_exportLayout);
 }
 
 FrameTargets SimpleComplex::addPasses(rg::Graph& graph, const FrameInputs& in) {
@@ -136,47 +134,6 @@ FrameTargets SimpleComplex::addLighting(rg::Graph& graph, const FrameInputs& in,
                           (h + shared::kTileSize - 1) / shared::kTileSize, 1);
         });
     return {l.hdr, l.display, l.events, {}, gbuffer.depth};
-}
-
-void SimpleComplex::addClassificationExport(rg::Graph& graph, const FrameInputs& in,
-                                            const SampleGBuffer& gbuffer, rg::Buffer target) {
-    if (m_settings.samples < 4)
-        throw std::invalid_argument(
-            "simple-complex: the classification export needs n >= 4 (n = 1 is never complex)");
-    if (!m_exportPipeline) {
-        vk::LayoutDesc layout;
-        const VkShaderStageFlags cs = VK_SHADER_STAGE_COMPUTE_BIT;
-        layout.pushBindings = {{0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, cs},
-                               {1, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, cs},
-                               {2, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, cs},
-                               {3, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs}};
-        m_exportLayout = vk::createPipelineLayout(m_device, layout, m_name + ".export.layout");
-        m_exportPipeline = vk::createComputePipeline(m_device, kSimpleComplexGbufferExportComp,
-                                                     m_exportLayout.layout, {}, m_name + ".export");
-    }
-    struct Export {
-        rg::Buffer frame, target;
-        rg::Texture depth, normal;
-    };
-    graph.addCompute<Export>(
-        m_name + ".classificationExport",
-        [&](rg::Builder& b, Export& d) {
-            d.frame = b.read(in.frameConstants, rg::Use::UniformRead);
-            d.depth = b.read(gbuffer.depth, rg::Use::SampledCompute);
-            d.normal = b.read(gbuffer.normal, rg::Use::SampledCompute);
-            d.target = b.write(target, rg::Use::StorageWriteCompute);
-        },
-        [this, w = in.width, h = in.height](const rg::Context& ctx, const Export& d) {
-            VkCommandBuffer cmd = ctx.cmd();
-            vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, m_exportPipeline);
-            eng::vk::PushDescriptors()
-                .uniform(0, ctx.buffer(d.frame).buffer)
-                .sampled(1, m_fetchSampler, ctx.texture(d.depth).sampledView)
-                .sampled(2, m_fetchSampler, ctx.texture(d.normal).sampledView)
-                .storage(3, ctx.buffer(d.target).buffer)
-                .push(m_device, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, m_exportLayout.layout);
-            vkCmdDispatch(cmd, (w + 7) / 8, (h + 7) / 8, 1);
-        });
 }
 
 } // namespace agaa

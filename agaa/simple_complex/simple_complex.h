@@ -66,12 +66,6 @@ class SimpleComplex final : public Technique {
     }
     FrameTargets addLighting(eng::rg::Graph& graph, const FrameInputs& inputs, const SampleGBuffer& gbuffer);
 
-    // Test and debug path (n > 1 only): copies what the classification reads, every
-    // sample's depth and encoded normal, into `target` (ClassificationSample per sample,
-    // pixel-major, classify.h) for the CPU twin of the classification.
-    void addClassificationExport(eng::rg::Graph& graph, const FrameInputs& inputs,
-                                 const SampleGBuffer& gbuffer, eng::rg::Buffer target);
-
   private:
     eng::vk::Device& m_device;
     SimpleComplexSettings m_settings;
@@ -82,8 +76,6 @@ class SimpleComplex final : public Technique {
     ShadowMapPass m_shadow; // adds its pass in addLighting() when the scene has a shadowed light
     eng::vk::PipelineLayout m_lightingLayout;
     VkPipeline m_lightingPipeline = VK_NULL_HANDLE;
-    eng::vk::PipelineLayout m_exportLayout; // made on first use
-    VkPipeline m_exportPipeline = VK_NULL_HANDLE;
     VkSampler m_fetchSampler = VK_NULL_HANDLE;
 };
 

@@ -3,9 +3,9 @@
 
 #include "engine/vk/check.h"
 #include "engine/vk/descriptors.h"
+#include "engine/vk/reflection.h"
 #include "engine/vk/resources.h"
 #include "shaders/streaming/compress_comp.h"
-#include "shaders/streaming/export_comp.h"
 #include "shaders/streaming/lighting_comp.h"
 #include "shaders/streaming/lighting_shadow_comp.h"
 #include "shared/frame.h"
@@ -21,7 +21,7 @@ namespace vk = eng::vk;
 
 namespace {
 
-constexpr VkShaderStageFlags kCompute = VK_SHADER_STAGE_COMPUTE_BIT;
+constexpr VkShaderStageFlagBits kCompute = VK_SHADER_STAGE_COMPUTE_BIT;
 
 const StreamingSettings& checked(const StreamingSettings& s) {
     if (s.samples < 4)
@@ -56,24 +56,22 @@ StreamingCompression::StreamingCompression(vk::Device& device, const eng::frame:
                 GBufferOptions{.sampleRateShading = settings.sampleRateShading, .primitiveIds = true}),
       m_shadow(device, scene, m_features, settings.effects, "streaming") {
     vk::LayoutDesc compress;
-    compress.pushBindings = sampleGBufferFetchBindings();
-    compress.pushBindings.push_back({12, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kCompute});
-    compress.pushBindings.push_back({13, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, kCompute});
+    compress.pushBindings = vk::reflectBindings({{kStreamingCompressComp, kCompute}});
     compress.pushConstantBytes = sizeof(shared::StreamingParams);
     m_compressLayout = vk::createPipelineLayout(device, compress, "streaming.compress.layout");
     m_compressPipeline = vk::createComputePipeline(device, kStreamingCompressComp, m_compressLayout.layout,
                                                    {}, "streaming.compress");
 
+    const std::span<const uint32_t> lightingCode =
+        m_shadow.enabled() ? kStreamingLightingShadowComp : kStreamingLightingComp;
     vk::LayoutDesc lighting;
-    lighting.pushBindings = SampleGBufferPass::lightingBindings();
-    lighting.pushBindings.push_back({12, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kCompute});
+    lighting.pushBindings = vk::reflectBindings({{lightingCode, kCompute}});
     lighting.pushConstantBytes = sizeof(shared::StreamingParams);
     m_lightingLayout = vk::createPipelineLayout(device, lighting, "streaming.lighting.layout");
     // Specialisation: id 1 = n (common/gbuffer_lighting.glsl); 2.. the scene's effects, one shadow
     // tap per shading event (agaa/common/effects.h).
     m_lightingPipeline = vk::createComputePipeline(
-        device, m_shadow.enabled() ? kStreamingLightingShadowComp : kStreamingLightingComp,
-        m_lightingLayout.layout,
+        device, lightingCode, m_lightingLayout.layout,
         lightingSpecialization(effectSpecialization(m_features, 0u, settings.samples, 1), m_features),
         "streaming.lighting");
     m_fetchSampler = vk::createSampler(device, VK_FILTER_NEAREST, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE, 0.0f,
@@ -85,11 +83,9 @@ StreamingCompression::~StreamingCompression() {
     vkDeviceWaitIdle(d);
     vkDestroyPipeline(d, m_compressPipeline, nullptr);
     vkDestroyPipeline(d, m_lightingPipeline, nullptr);
-    if (m_exportPipeline) vkDestroyPipeline(d, m_exportPipeline, nullptr);
     vkDestroySampler(d, m_fetchSampler, nullptr);
     vk::destroyPipelineLayout(m_device, m_compressLayout);
     vk::destroyPipelineLayout(m_device, m_lightingLayout);
-    if (m_exportLayout.layout) vk::destroyPipelineLayout(m_device, m_exportLayout);
 }
 
 bool StreamingCompression::isStorage(const std::string& resourceName) const {
@@ -224,44 +220,6 @@ FrameTargets StreamingCompression::addLighting(rg::Graph& graph, const FrameInpu
     FrameTargets t{l.hdr, l.display, l.events};
     t.lostSamples = surfaces.lostSamples;
     return t;
-}
-
-void StreamingCompression::addSampleExport(rg::Graph& graph, const FrameInputs& in, const SampleGBuffer& g,
-                                           rg::Buffer target) {
-    if (!m_exportPipeline) {
-        vk::LayoutDesc layout;
-        layout.pushBindings = sampleGBufferFetchBindings();
-        layout.pushBindings.push_back({14, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kCompute});
-        m_exportLayout = vk::createPipelineLayout(m_device, layout, "streaming.export.layout");
-        m_exportPipeline = vk::createComputePipeline(m_device, kStreamingExportComp, m_exportLayout.layout,
-                                                     {}, "streaming.export");
-    }
-    struct Export {
-        rg::Buffer frame, target;
-        SampleGBuffer g;
-    };
-    graph.addCompute<Export>(
-        "streaming.sampleExport",
-        [&](rg::Builder& b, Export& d) {
-            d.frame = b.read(in.frameConstants, rg::Use::UniformRead);
-            d.g.depth = b.read(g.depth, rg::Use::SampledCompute);
-            d.g.normal = b.read(g.normal, rg::Use::SampledCompute);
-            d.g.albedoMetal = b.read(g.albedoMetal, rg::Use::SampledCompute);
-            d.g.emissiveRoughness = b.read(g.emissiveRoughness, rg::Use::SampledCompute);
-            d.g.primitive = b.read(g.primitive, rg::Use::SampledCompute);
-            d.target = b.write(target, rg::Use::StorageWriteCompute);
-        },
-        [this, w = in.width, h = in.height](const rg::Context& ctx, const Export& d) {
-            VkCommandBuffer cmd = ctx.cmd();
-            vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, m_exportPipeline);
-            vk::PushDescriptors pd;
-            pd.uniform(0, ctx.buffer(d.frame).buffer);
-            pushSampleGBuffer(pd, ctx, m_fetchSampler, d.g);
-            pd.sampled(11, m_fetchSampler, ctx.texture(d.g.primitive).sampledView)
-                .storage(14, ctx.buffer(d.target).buffer)
-                .push(m_device, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, m_exportLayout.layout);
-            vkCmdDispatch(cmd, (w + 7) / 8, (h + 7) / 8, 1);
-        });
 }
 
 } // namespace agaa

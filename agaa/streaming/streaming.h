@@ -64,9 +64,6 @@ class StreamingCompression final : public Technique {
     Surfaces addCompression(eng::rg::Graph& graph, const FrameInputs& inputs, const SampleGBuffer& fragments);
     FrameTargets addLighting(eng::rg::Graph& graph, const FrameInputs& inputs, const SampleGBuffer& fragments,
                              const Surfaces& surfaces);
-    // Test path: copies what the compression reads (StreamingSample per sample, pixel-major) into `target`.
-    void addSampleExport(eng::rg::Graph& graph, const FrameInputs& inputs, const SampleGBuffer& fragments,
-                         eng::rg::Buffer target);
 
   private:
     eng::vk::Device& m_device;
@@ -75,9 +72,8 @@ class StreamingCompression final : public Technique {
     eng::scene::SceneFeatures m_features; // before the passes built from it
     SampleGBufferPass m_gbuffer;
     ShadowMapPass m_shadow;
-    eng::vk::PipelineLayout m_compressLayout, m_lightingLayout, m_exportLayout;
+    eng::vk::PipelineLayout m_compressLayout, m_lightingLayout;
     VkPipeline m_compressPipeline = VK_NULL_HANDLE, m_lightingPipeline = VK_NULL_HANDLE;
-    VkPipeline m_exportPipeline = VK_NULL_HANDLE; // made on first use
     VkSampler m_fetchSampler = VK_NULL_HANDLE;
 };
 

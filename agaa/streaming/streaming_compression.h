@@ -64,9 +64,9 @@ float streamingZMax(const StreamingSurface& s);
 bool streamingCanMerge(const StreamingSurface& surface, const StreamingSurface& fragment, float normalCos);
 StreamingSurface streamingMerge(const StreamingSurface& surface, const StreamingSurface& fragment);
 
-// What the compression reads per sample, as streaming/export.comp writes it: [0] (raw depth,
-// reversed Z, 0 = sky; octahedral normal x, y as fetched; primitive id as an exact float),
-// [1] albedo, metallic, [2] emissive, roughness.
+// What the compression reads per sample, as the test kernel shaders/glsl/tests/streaming_fragments.comp
+// writes it: [0] (raw depth, reversed Z, 0 = sky; octahedral normal x, y as fetched; primitive id as an exact
+// float), [1] albedo, metallic, [2] emissive, roughness.
 using StreamingSample = std::array<glm::vec4, 3>;
 
 // The pixel's recorded fragments in primitive order (ascending id = draw order): its samples

@@ -7,6 +7,7 @@
 #include "engine/graph/graph.h"
 #include "engine/vk/descriptors.h"
 #include "engine/vk/pipeline.h"
+#include "engine/vk/reflection.h"
 #include "shaders/viewer/difference_comp.h"
 #include "shared/frame.h"
 
@@ -31,10 +32,7 @@ ViewRenderer::ViewRenderer(vk::Device& device, const eng::scene::Scene& scene)
                                                VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, vk::MemoryUse::Upload,
                                                i == 0 ? "viewer.constants" : "viewer.referenceConstants");
     vk::LayoutDesc layout;
-    const VkShaderStageFlags cs = VK_SHADER_STAGE_COMPUTE_BIT;
-    layout.pushBindings = {{0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, cs},
-                           {1, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, cs},
-                           {2, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs}};
+    layout.pushBindings = vk::reflectBindings({{kViewerDifferenceComp, VK_SHADER_STAGE_COMPUTE_BIT}});
     layout.pushConstantBytes = sizeof(float); // difference.comp: the gain
     m_differenceLayout = vk::createPipelineLayout(device, layout, "viewer.difference.layout");
     m_difference = vk::createComputePipeline(device, kViewerDifferenceComp, m_differenceLayout.layout, {},

@@ -10,6 +10,7 @@
 #include "gpu_test_support.h"
 #include "shared/ag_buffer.h"
 #include "shared/clustering.h"
+#include "tests/support/aggregate_instrumentation.h"
 #include "tools/harness/frame_renderer.h"
 #include "tools/scenes/adversarial_scenes.h"
 
@@ -46,6 +47,7 @@ struct ClusterCase {
 // Issue 3: the GPU metadata equals the CPU's, computed from the same read-back samples.
 TEST(AgaaClusteringGpu, MetadataMatchesTheCpuReferenceBitForBit) {
     auto device = agaa::test::makeValidatedDevice();
+    agaa::test::ClusteringInputReadback clusteringInputs(*device);
     const ClusterCase cases[] = {{"furball", 4, 2},
                                  {"furball", 8, 2},
                                  {"railings", 8, 4},
@@ -85,7 +87,7 @@ TEST(AgaaClusteringGpu, MetadataMatchesTheCpuReferenceBitForBit) {
         r.settings.agaaDistance = k.distance;
         r.extraPasses = [&](eng::rg::Graph& graph, agaa::Technique& tech, const agaa::FrameInputs& in) {
             auto& aggregate = dynamic_cast<agaa::AggregateAA&>(tech);
-            aggregate.addSampleReadback(graph, in, samples);
+            clusteringInputs.add(graph, aggregate, in, samples);
             eng::frame::addBufferReadbackPass(graph, aggregate.resources().metadata, metadata,
                                               "test.metadata");
             eng::frame::addReadbackPass(graph, aggregate.resources().aggregateCount, counts, "test.counts");
@@ -129,11 +131,13 @@ TEST(AgaaClusteringGpu, MetadataMatchesTheCpuReferenceBitForBit) {
 }
 
 // Issue 4: the accumulation kernel against a CPU accumulation of the same fragments. The
-// generation pass records every fragment of the central 16x16 window (pixel, layer, post-depth coverage,
+// generation pass's test build (agaa::test::FragmentRecordPass) records every fragment of the
+// central 16x16 window (pixel, layer, post-depth coverage,
 // the quantised values it adds); the CPU routes them through the read-back metadata exactly as
 // the kernel should and must reproduce the AG-buffer words bit for bit (integer sums).
 TEST(AgaaGpu, AccumulationMatchesACpuReplayOfTheSameFragments) {
     auto device = agaa::test::makeValidatedDevice();
+    agaa::test::FragmentRecordPass recorder(*device);
     struct Case {
         const char* scene;
         uint32_t n, c;
@@ -159,9 +163,9 @@ TEST(AgaaGpu, AccumulationMatchesACpuReplayOfTheSameFragments) {
                              VK_BUFFER_USAGE_TRANSFER_DST_BIT, vk::MemoryUse::Readback, "test.meta");
         agaa::RenderRequest r = request("agaa-accumulate", k.n, k.c, size);
         auto& technique = dynamic_cast<agaa::AggregateAA&>(renderer.technique(r));
-        technique.setFragmentRecordTarget(&records);
-        r.extraPasses = [&](eng::rg::Graph& graph, agaa::Technique& tech, const agaa::FrameInputs&) {
+        r.extraPasses = [&](eng::rg::Graph& graph, agaa::Technique& tech, const agaa::FrameInputs& in) {
             auto& aggregate = dynamic_cast<agaa::AggregateAA&>(tech);
+            recorder.add(graph, aggregate, in, records);
             eng::frame::addBufferReadbackPass(graph, aggregate.resources().agBuffer, ag, "test.ag");
             eng::frame::addBufferReadbackPass(graph, aggregate.resources().metadata, metadata,
                                               "test.metadata");
@@ -212,7 +216,6 @@ TEST(AgaaGpu, AccumulationMatchesACpuReplayOfTheSameFragments) {
         EXPECT_EQ(mismatches, 0u) << k.scene << ": the AG-buffer differs from the CPU accumulation";
         renderer.technique(r); // keep the technique alive until the buffers are released
         vkDeviceWaitIdle(device->device());
-        technique.setFragmentRecordTarget(nullptr);
         vk::destroyBuffer(*device, records);
         vk::destroyBuffer(*device, ag);
         vk::destroyBuffer(*device, metadata);

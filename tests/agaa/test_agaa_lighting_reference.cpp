@@ -1,15 +1,14 @@
 // AGAA's per-aggregate lighting (shaders/glsl/agaa/lighting.glsl; samples path, Toksvig and SGGX) against a
-// double-precision CPU shading of the same aggregates (issue 17). The lighting pass's export
-// (AggregateAA::setAggregateExportTarget) hands back what its step 1 built: each aggregate's mean
-// Toksvig vector, albedo and metallic, and each sample's view position and aggregate. From those
-// alone the CPU, in double and without the shader headers, builds each aggregate's normal and
-// filtered roughness (DESIGN section 4.4: s = 2/alpha^2 - 2 at the sharpest alpha, f = |N| / (|N| +
-// s (1 - |N|)), alpha' = sqrt(2 / (f s + 2))), lights it once per scene light (glTF 2.0
-// metallic-roughness BRDF, appendix B: GGX D, height-correlated Smith visibility, Schlick Fresnel
-// with F0 = mix(0.04, base colour, metallic), Lambert diffuse (1 - F)(1 - metallic) base / pi;
-// KHR_lights_punctual lights with the smooth range window (1 - (d/r)^4)^2 / d^2 of Karis 2013,
-// which the glTF sample renderers use), and resolves the pixel's linear radiance: sky fraction
-// times sky plus each aggregate's sample fraction times its radiance, times exposure.
+// double-precision CPU shading of the same aggregates (issue 17). The test build of the lighting
+// pass (tests/support/aggregate_instrumentation.h AggregateExportPass) hands back what its step 1 built: each
+// aggregate's mean Toksvig vector, albedo and metallic, and each sample's view position and aggregate. From
+// those alone the CPU, in double and without the shader headers, builds each aggregate's normal and filtered
+// roughness (DESIGN section 4.4: s = 2/alpha^2 - 2 at the sharpest alpha, f = |N| / (|N| + s (1 - |N|)),
+// alpha' = sqrt(2 / (f s + 2))), lights it once per scene light (glTF 2.0 metallic-roughness BRDF, appendix
+// B: GGX D, height-correlated Smith visibility, Schlick Fresnel with F0 = mix(0.04, base colour, metallic),
+// Lambert diffuse (1 - F)(1 - metallic) base / pi; KHR_lights_punctual lights with the smooth range window (1
+// - (d/r)^4)^2 / d^2 of Karis 2013, which the glTF sample renderers use), and resolves the pixel's linear
+// radiance: sky fraction times sky plus each aggregate's sample fraction times its radiance, times exposure.
 // SGGX aggregates (samples path) likewise from the exported mean matrix: a converged double Jacobi
 // decomposition and anisotropic GGX (shadeSggx). A second test does the Toksvig shading for the
 // accumulate path from the AG-buffer itself (no export): AccumulatePathShadingMatchesADouble-
@@ -25,6 +24,7 @@
 #include "filtered_diffuse_reference.h"
 #include "gpu_test_support.h"
 #include "shared/ag_buffer.h"
+#include "tests/support/aggregate_instrumentation.h"
 #include "tools/harness/frame_renderer.h"
 #include "tools/scenes/adversarial_scenes.h"
 
@@ -342,14 +342,15 @@ dvec3 shadeSggx(const double S[6], double materialAlpha, const dvec3& base, doub
     return radiance;
 }
 
-std::vector<float> renderExport(vk::Device& device, agaa::FrameRenderer& renderer,
+std::vector<float> renderExport(agaa::test::AggregateExportPass& exporter, agaa::FrameRenderer& renderer,
                                 const agaa::RenderRequest& r, agaa::RenderResult& result,
                                 shared::AgaaConstants& constants) {
-    return agaa::test::renderAggregateExport(device, renderer, r, &result, &constants);
+    return agaa::test::renderAggregateExport(exporter, renderer, r, &result, &constants);
 }
 
 TEST(AgaaLightingReference, AggregateShadingMatchesADoublePrecisionCpuShading) {
     auto device = agaa::test::makeValidatedDevice();
+    agaa::test::AggregateExportPass exporter(*device);
     struct Case {
         const char* scene;
         uint32_t n, c;
@@ -381,7 +382,7 @@ TEST(AgaaLightingReference, AggregateShadingMatchesADoublePrecisionCpuShading) {
         r.extraPasses = [&](eng::rg::Graph&, agaa::Technique&, const agaa::FrameInputs& in) {
             frame = *in.constants;
         };
-        const std::vector<float> e = renderExport(*device, renderer, r, result, constants);
+        const std::vector<float> e = renderExport(exporter, renderer, r, result, constants);
         const double smax = constants.toksvig.x;
         const std::vector<ViewLight> lights = viewLights(scene, scene.cameras[0].view);
         const dvec3 sky = dvec3(r.view.skyRadiance) * double(r.view.exposure);
@@ -517,6 +518,7 @@ TEST(AgaaLightingReference, AggregateShadingMatchesADoublePrecisionCpuShading) {
 TEST(AgaaLightingReference, AccumulatePathShadingMatchesADoublePrecisionCpuShading) {
     using namespace agaa::test::layout;
     auto device = agaa::test::makeValidatedDevice();
+    agaa::test::ClusteringInputReadback clusteringInputs(*device);
     struct Case {
         const char* scene;
         uint32_t n, c;
@@ -548,7 +550,7 @@ TEST(AgaaLightingReference, AccumulatePathShadingMatchesADoublePrecisionCpuShadi
         shared::AgaaConstants constants{};
         r.extraPasses = [&](eng::rg::Graph& graph, agaa::Technique& tech, const agaa::FrameInputs& in) {
             auto& aggregate = dynamic_cast<agaa::AggregateAA&>(tech);
-            aggregate.addSampleReadback(graph, in, samples);
+            clusteringInputs.add(graph, aggregate, in, samples);
             eng::frame::addBufferReadbackPass(graph, aggregate.resources().metadata, metadata,
                                               "test.metadata");
             eng::frame::addReadbackPass(graph, aggregate.resources().aggregateCount, counts, "test.counts");

@@ -17,6 +17,7 @@
 #include "engine/frame/readback.h"
 #include "gpu_test_support.h"
 #include "shared/ag_buffer.h"
+#include "tests/support/aggregate_instrumentation.h"
 #include "tools/harness/frame_renderer.h"
 #include "tools/scenes/adversarial_scenes.h"
 
@@ -97,6 +98,7 @@ struct ClusterCase {
 // Issue 17: the GPU's clustering against Algorithm 1 in double, on what the kernel read.
 TEST(AgaaClusteringReferenceGpu, GpuMetadataMatchesAlgorithm1InDouble) {
     auto device = agaa::test::makeValidatedDevice();
+    agaa::test::ClusteringInputReadback clusteringInputs(*device);
     const uint32_t size = 64, pixels = size * size;
     uint32_t totalPixels = 0, totalTies = 0, totalExact = 0, totalMismatches = 0, totalUnresolved = 0;
     for (const char* name : {"furball", "foliage", "railings", "spikes"}) {
@@ -124,7 +126,7 @@ TEST(AgaaClusteringReferenceGpu, GpuMetadataMatchesAlgorithm1InDouble) {
                 r.extraPasses = [&](eng::rg::Graph& graph, agaa::Technique& tech,
                                     const agaa::FrameInputs& in) {
                     auto& aggregate = dynamic_cast<agaa::AggregateAA&>(tech);
-                    aggregate.addSampleReadback(graph, in, samples);
+                    clusteringInputs.add(graph, aggregate, in, samples);
                     eng::frame::addBufferReadbackPass(graph, aggregate.resources().metadata, metadata,
                                                       "test.metadata");
                     eng::frame::addReadbackPass(graph, aggregate.resources().aggregateCount, counts,
@@ -263,6 +265,7 @@ std::vector<double> sampleValues(bool sggx, const double N[3], double roughness,
 // and 8 fp32 roundings of u in the shader's arithmetic. The sample counts must match exactly.
 TEST(AgaaAccumulationReferenceGpu, AgBufferMatchesDoubleSumsOfTheMaterialInputs) {
     auto device = agaa::test::makeValidatedDevice();
+    agaa::test::FragmentRecordPass recorder(*device);
     struct Case {
         const char* scene;
         uint32_t n, c;
@@ -292,9 +295,9 @@ TEST(AgaaAccumulationReferenceGpu, AgBufferMatchesDoubleSumsOfTheMaterialInputs)
         agaa::RenderRequest r = agaa::test::request("agaa-accumulate", k.n, k.c, size);
         r.settings.ndf = k.ndf;
         auto& technique = dynamic_cast<agaa::AggregateAA&>(renderer.technique(r));
-        technique.setFragmentRecordTarget(&records);
-        r.extraPasses = [&](eng::rg::Graph& graph, agaa::Technique& tech, const agaa::FrameInputs&) {
+        r.extraPasses = [&](eng::rg::Graph& graph, agaa::Technique& tech, const agaa::FrameInputs& in) {
             auto& aggregate = dynamic_cast<agaa::AggregateAA&>(tech);
+            recorder.add(graph, aggregate, in, records);
             eng::frame::addBufferReadbackPass(graph, aggregate.resources().agBuffer, ag, "test.ag");
             eng::frame::addBufferReadbackPass(graph, aggregate.resources().metadata, metadata,
                                               "test.metadata");
@@ -432,7 +435,6 @@ TEST(AgaaAccumulationReferenceGpu, AgBufferMatchesDoubleSumsOfTheMaterialInputs)
         EXPECT_EQ(outside, 0u) << k.scene << ": AG-buffer fields outside the fixed-point bound";
         EXPECT_EQ(countMismatches, 0u) << k.scene << ": sample counts differ from the metadata's routing";
         vkDeviceWaitIdle(device->device());
-        technique.setFragmentRecordTarget(nullptr);
         vk::destroyBuffer(*device, records);
         vk::destroyBuffer(*device, ag);
         vk::destroyBuffer(*device, metadata);

@@ -45,9 +45,9 @@ eng::scene::Scene unshadowed(eng::scene::Scene scene) {
     return scene;
 }
 
-std::vector<float> renderExport(vk::Device& device, agaa::FrameRenderer& renderer,
+std::vector<float> renderExport(agaa::test::AggregateExportPass& exporter, agaa::FrameRenderer& renderer,
                                 const agaa::RenderRequest& r, shared::AgaaConstants* constants = nullptr) {
-    return agaa::test::renderAggregateExport(device, renderer, r, nullptr, constants);
+    return agaa::test::renderAggregateExport(exporter, renderer, r, nullptr, constants);
 }
 
 // The filtered GGX alpha of a Toksvig length, from paper section 3.5.2 in double.
@@ -74,6 +74,7 @@ struct CpuAggregate {
 // Issue 13: the per-sample aggregation kernel against a CPU aggregation of the same samples.
 TEST(AgaaSamplesGpu, AggregationMatchesAnIndependentCpuAggregation) {
     auto device = agaa::test::makeValidatedDevice();
+    agaa::test::AggregateExportPass exporter(*device);
     struct Case {
         const char* scene;
         const char* ndf;
@@ -90,7 +91,7 @@ TEST(AgaaSamplesGpu, AggregationMatchesAnIndependentCpuAggregation) {
         agaa::RenderRequest r = request("agaa-samples", k.n, k.c, size);
         r.settings.ndf = k.ndf;
         shared::AgaaConstants constants{};
-        const std::vector<float> e = renderExport(*device, renderer, r, &constants);
+        const std::vector<float> e = renderExport(exporter, renderer, r, &constants);
         const bool sggx = std::string(k.ndf) == "sggx";
         const double smax = constants.toksvig.x, alphaMin = constants.toksvig.y,
                      alphaMax = constants.toksvig.z;
@@ -310,15 +311,16 @@ eng::scene::Scene curvatureScene(bool sphere, float distance) {
 // Kaplanyan curvature roughness in the fill pass (common/curvature_roughness.glsl).
 TEST(AgaaSamplesGpu, CurvatureRoughnessKeepsFlatSurfacesAndBoundsTheSphereBias) {
     auto device = agaa::test::makeValidatedDevice();
+    agaa::test::AggregateExportPass exporter(*device);
     const uint32_t size = 64, n = 8, c = 2;
     const double roughness = 0.2, alpha2 = std::pow(roughness, 4.0), maxFootprint = 0.3;
     {
         eng::scene::Scene scene = curvatureScene(false, 3.0f);
         agaa::FrameRenderer renderer(*device, scene);
         agaa::RenderRequest r = request("agaa-samples", n, c, size);
-        const std::vector<float> off = renderExport(*device, renderer, r);
+        const std::vector<float> off = renderExport(exporter, renderer, r);
         r.settings.curvatureRoughness = true;
-        const std::vector<float> on = renderExport(*device, renderer, r);
+        const std::vector<float> on = renderExport(exporter, renderer, r);
         uint32_t samples = 0, changed = 0;
         for (uint32_t i = 0; i < size * size * n; ++i) {
             const size_t at = size_t(i) * kRecordFloats;
@@ -335,7 +337,7 @@ TEST(AgaaSamplesGpu, CurvatureRoughnessKeepsFlatSurfacesAndBoundsTheSphereBias) 
         agaa::FrameRenderer renderer(*device, scene);
         agaa::RenderRequest r = request("agaa-samples", n, c, size);
         r.settings.curvatureRoughness = true;
-        const std::vector<float> e = renderExport(*device, renderer, r);
+        const std::vector<float> e = renderExport(exporter, renderer, r);
         uint32_t samples = 0, outside = 0;
         double biasSum = 0.0, worst = 0.0;
         for (uint32_t i = 0; i < size * size * n; ++i) {

@@ -157,6 +157,7 @@ std::vector<CpuEstimate> cpuEstimates(const std::vector<float>& exported, uint32
 
 TEST(ShadingRate, TheGpuFlagsWhatACpuEstimateFlags) {
     auto device = agaa::test::makeValidatedDevice();
+    agaa::test::AggregateExportPass exporter(*device);
     struct Case {
         const char* scene;
         uint32_t c;
@@ -172,7 +173,7 @@ TEST(ShadingRate, TheGpuFlagsWhatACpuEstimateFlags) {
         // with any spread are flagged.
         std::vector<double> values;
         const std::vector<float> unflagged =
-            agaa::test::renderAggregateExport(*device, renderer, request("agaa-samples", 8, k.c, kSize));
+            agaa::test::renderAggregateExport(exporter, renderer, request("agaa-samples", 8, k.c, kSize));
         for (const CpuEstimate& e : cpuEstimates(unflagged, 8, k.c))
             if (e.value > 0.0) values.push_back(e.value);
         ASSERT_FALSE(values.empty()) << k.scene;
@@ -180,7 +181,7 @@ TEST(ShadingRate, TheGpuFlagsWhatACpuEstimateFlags) {
         const float tolerance = float(values[values.size() / 2]);
         agaa::RenderResult frame;
         const std::vector<float> exported = agaa::test::renderAggregateExport(
-            *device, renderer, withTolerance("agaa-samples", 8, k.c, tolerance), &frame);
+            exporter, renderer, withTolerance("agaa-samples", 8, k.c, tolerance), &frame);
         const std::vector<CpuEstimate> cpu = cpuEstimates(exported, 8, k.c);
         uint32_t flagged = 0, compared = 0, mismatches = 0, nearTolerance = 0;
         for (size_t p = 0; p < cpu.size(); ++p) {

@@ -148,6 +148,7 @@ Flagged flagTop(const std::vector<double>& score, double share, const std::vecto
 
 TEST(ShadingRateStudy, WhichStatisticPredictsThePrefiltersError) {
     auto device = agaa::test::makeValidatedDevice();
+    agaa::test::AggregateExportPass exporter(*device);
     const char* scenes[] = {"furball",     "metal",      "foliage",         "bamboo",       "railings",
                             "default",     "spikes",     "glints",          "hard-vgroove", "hard-fold",
                             "hard-mirror", "hard-dense", "hard-many-lights"};
@@ -167,7 +168,8 @@ TEST(ShadingRateStudy, WhichStatisticPredictsThePrefiltersError) {
             renderer.render(agaa::test::request("reference", kSamples, 1, kSize));
         agaa::RenderResult aggregate;
         const std::vector<float> exported = agaa::test::renderAggregateExport(
-            *device, renderer, agaa::test::request("agaa-samples", kSamples, kAggregates, kSize), &aggregate);
+            exporter, renderer, agaa::test::request("agaa-samples", kSamples, kAggregates, kSize),
+            &aggregate);
         const eng::io::ImageF truthDisplay = eng::io::srgbEncoded(truth.display);
         const eng::io::ImageF agaaDisplay = eng::io::srgbEncoded(aggregate.display);
         const eng::io::ImageF referenceDisplay = eng::io::srgbEncoded(reference.display);

@@ -9,6 +9,7 @@
 #include "engine/frame/readback.h"
 #include "engine/io/metrics.h"
 #include "gpu_test_support.h"
+#include "tests/support/sample_inputs_export.h"
 #include "tools/harness/frame_renderer.h"
 #include "tools/scenes/adversarial_scenes.h"
 
@@ -215,6 +216,8 @@ TEST(SimpleComplexGpu, ClassificationMatchesTheCpuTwin) {
     agaa::SimpleComplexSettings settings;
     settings.samples = n;
     agaa::SimpleComplex sc(*device, gpuScene, settings);
+    agaa::test::SampleInputsExport classificationInputs =
+        agaa::test::simpleComplexClassificationInputs(*device);
     eng::frame::ViewSettings view;
     view.width = w;
     view.height = h;
@@ -248,7 +251,7 @@ TEST(SimpleComplexGpu, ClassificationMatchesTheCpuTwin) {
             graph.importBuffer("export", {exportBuf.buffer, exportBuf.size}, std::nullopt, std::nullopt);
         agaa::SampleGBuffer g = sc.addGBuffer(graph, in);
         agaa::FrameTargets t = sc.addLighting(graph, in, g);
-        sc.addClassificationExport(graph, in, g, target);
+        classificationInputs.add(graph, in, {{1, g.depth}, {2, g.normal}}, 3, target);
         eng::frame::addReadbackPass(graph, t.shadingEvents, eventsHost, "readback.events");
         runner.run(graph);
     }

@@ -12,6 +12,7 @@
 #include "engine/io/tone_map.h"
 #include "gpu_test_support.h"
 #include "shared/sbaa.h"
+#include "tests/support/sample_inputs_export.h"
 #include "tools/harness/frame_renderer.h"
 #include "tools/scenes/adversarial_scenes.h"
 
@@ -43,6 +44,7 @@ SbaaFrame renderSbaa(vk::Device& device, const eng::scene::Scene& scene, const a
     eng::frame::GpuScene gpuScene(device, scene);
     eng::frame::FrameRunner runner(device);
     agaa::Sbaa sbaa(device, gpuScene, settings);
+    agaa::test::SampleInputsExport selectionInputs = agaa::test::sbaaSelectionInputs(device);
     const uint32_t n = settings.samples, S = settings.surfaces;
     eng::frame::ViewSettings view;
     view.width = w;
@@ -81,7 +83,7 @@ SbaaFrame renderSbaa(vk::Device& device, const eng::scene::Scene& scene, const a
         const agaa::SampleGBuffer g = sbaa.addGBuffer(graph, in);
         const agaa::Sbaa::Surfaces s = sbaa.addFill(graph, in, g, sbaa.addSurfaces(graph, in, g));
         const agaa::FrameTargets t = sbaa.addLighting(graph, in, g, s);
-        sbaa.addSampleExport(graph, in, g, target);
+        selectionInputs.add(graph, in, {{2, g.depth}, {3, g.geometricNormal}, {11, g.primitive}}, 14, target);
         eng::frame::addBufferReadbackPass(graph, s.surfaces, surfacesHost, "readback.surfaces");
         eng::frame::addReadbackPass(graph, s.lostSamples, lostHost, "readback.lost");
         eng::frame::addReadbackPass(graph, t.display, displayHost, "readback.display");

@@ -13,6 +13,7 @@
 #include "engine/scene/scenegen.h"
 #include "gpu_test_support.h"
 #include "shared/streaming.h"
+#include "tests/support/sample_inputs_export.h"
 #include "tools/harness/frame_renderer.h"
 
 #include <glm/gtc/packing.hpp>
@@ -41,6 +42,7 @@ StreamingFrame renderStreaming(vk::Device& device, const eng::scene::Scene& scen
     eng::frame::GpuScene gpuScene(device, scene);
     eng::frame::FrameRunner runner(device);
     agaa::StreamingCompression streaming(device, gpuScene, settings);
+    agaa::test::SampleInputsExport fragmentExport = agaa::test::streamingFragments(device);
     const uint32_t n = settings.samples, S = settings.surfaces;
     eng::frame::ViewSettings view;
     view.width = w;
@@ -79,7 +81,10 @@ StreamingFrame renderStreaming(vk::Device& device, const eng::scene::Scene& scen
         const agaa::SampleGBuffer g = streaming.addFragments(graph, in);
         const agaa::StreamingCompression::Surfaces s = streaming.addCompression(graph, in, g);
         const agaa::FrameTargets t = streaming.addLighting(graph, in, g, s);
-        streaming.addSampleExport(graph, in, g, target);
+        fragmentExport.add(
+            graph, in,
+            {{2, g.depth}, {3, g.normal}, {4, g.albedoMetal}, {5, g.emissiveRoughness}, {11, g.primitive}},
+            14, target);
         eng::frame::addBufferReadbackPass(graph, s.surfaces, surfacesHost, "readback.surfaces");
         eng::frame::addReadbackPass(graph, s.lostSamples, lostHost, "readback.lost");
         eng::frame::addReadbackPass(graph, t.display, displayHost, "readback.display");

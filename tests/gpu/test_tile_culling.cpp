@@ -11,6 +11,7 @@
 #include "engine/frame/sample_pattern.h"
 #include "engine/graph/graph.h"
 #include "engine/vk/pipeline.h"
+#include "engine/vk/reflection.h"
 #include "engine/vk/resources.h"
 #include "gpu_test_support.h"
 #include "shaders/tests/tile_culling_comp.h"
@@ -89,11 +90,7 @@ std::vector<uint32_t> runKernel(vk::Device& device, const shared::FrameConstants
     vk::writeBuffer(device, lb, std::as_bytes(std::span(lights)));
     vk::writeBuffer(device, bb, std::as_bytes(std::span(bounds)));
     vk::LayoutDesc desc;
-    const VkShaderStageFlags cs = VK_SHADER_STAGE_COMPUTE_BIT;
-    desc.pushBindings = {{0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, cs},
-                         {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs},
-                         {2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs},
-                         {3, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs}};
+    desc.pushBindings = vk::reflectBindings({{kTestsTileCullingComp, VK_SHADER_STAGE_COMPUTE_BIT}});
     vk::PipelineLayout layout = vk::createPipelineLayout(device, desc, "test.tileCulling.layout");
     VkPipeline pipeline =
         vk::createComputePipeline(device, kTestsTileCullingComp, layout.layout, {}, "test.tileCulling");

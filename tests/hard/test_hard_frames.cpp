@@ -13,6 +13,7 @@
 #include "shared/ag_buffer.h"
 #include "shared/clustering.h"
 #include "shared/sggx.h"
+#include "tests/support/aggregate_instrumentation.h"
 #include "tools/harness/frame_renderer.h"
 #include "tools/scenes/adversarial_scenes.h"
 
@@ -51,6 +52,7 @@ uint32_t maxEvents(const agaa::MethodInfo& m, uint32_t n, uint32_t c) {
 // AGAA's intermediate buffers, read back in the same frame.
 struct AgaaReadback {
     vk::Device& device;
+    agaa::test::ClusteringInputReadback clusteringInputs{device};
     uint32_t w, h, n, c;
     vk::Buffer samples, metadata, ag, counts;
     shared::AgaaConstants constants{};
@@ -77,7 +79,7 @@ struct AgaaReadback {
     }
     void addPasses(eng::rg::Graph& graph, agaa::Technique& tech, const agaa::FrameInputs& in) {
         auto& aggregate = dynamic_cast<agaa::AggregateAA&>(tech);
-        if (withSamples) aggregate.addSampleReadback(graph, in, samples);
+        if (withSamples) clusteringInputs.add(graph, aggregate, in, samples);
         eng::frame::addBufferReadbackPass(graph, aggregate.resources().metadata, metadata, "test.metadata");
         eng::frame::addBufferReadbackPass(graph, aggregate.resources().agBuffer, ag, "test.ag");
         eng::frame::addReadbackPass(graph, aggregate.resources().aggregateCount, counts, "test.counts");

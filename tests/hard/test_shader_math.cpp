@@ -4,6 +4,7 @@
 #include "engine/frame/frame_runner.h"
 #include "engine/graph/graph.h"
 #include "engine/vk/pipeline.h"
+#include "engine/vk/reflection.h"
 #include "engine/vk/resources.h"
 #include "gpu_test_support.h"
 #include "shader_math_cases.h"
@@ -32,9 +33,7 @@ std::vector<MathResult> runKernel(vk::Device& device, const std::vector<MathCase
                                       vk::MemoryUse::Readback, "test.mathResults");
     vk::writeBuffer(device, in, std::as_bytes(std::span(cases)));
     vk::LayoutDesc desc;
-    const VkShaderStageFlags cs = VK_SHADER_STAGE_COMPUTE_BIT;
-    desc.pushBindings = {{0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs},
-                         {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs}};
+    desc.pushBindings = vk::reflectBindings({{kTestsShaderMathComp, VK_SHADER_STAGE_COMPUTE_BIT}});
     desc.pushConstantBytes = sizeof(uint32_t);
     vk::PipelineLayout layout = vk::createPipelineLayout(device, desc, "test.shaderMath.layout");
     VkPipeline pipeline =

@@ -11,6 +11,7 @@
 #include "engine/vk/device_setup.h"
 #include "tests/gpu/gpu_test_support.h"
 #include "tests/node/node_test_support.h"
+#include "tests/support/aggregate_instrumentation.h"
 
 #include <atomic>
 #include <cmath>
@@ -209,6 +210,7 @@ TEST(NodeHostDevice, RendersIntoTheHostsOwnColourAndDepthTargets) {
         settings.generation =
             AggregateGeneration::Accumulate; // its prepass depth can be read back per sample
         AggregateAA node(device, gpuScene, settings);
+        agaa::test::ClusteringInputReadback clusteringInputs(device);
         HostTargetWriter writer(device);
         HostImage color(host.device, host.physical, VK_FORMAT_R8G8B8A8_SRGB,
                         VK_IMAGE_USAGE_TRANSFER_DST_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
@@ -232,7 +234,7 @@ TEST(NodeHostDevice, RendersIntoTheHostsOwnColourAndDepthTargets) {
         {
             rg::Graph graph;
             FrameInputs in = frame.record(graph, node, gpuScene, 0, "host");
-            node.addSampleReadback(graph, in, samplesHost);
+            clusteringInputs.add(graph, node, in, samplesHost);
             // Fresh images: contents undefined before; the host then reads both back as a transfer.
             HostTargets targets;
             targets.color = {color.physical(), std::nullopt, rg::Use::TransferSrc};

@@ -60,11 +60,15 @@ layout(set = 0, binding = 4, std430) buffer AgBuffer { uint agBuffer[]; };
 layout(set = 0, binding = 6, std430) buffer AgBuffer64 { uint64_t agBuffer64[]; };
 #endif
 layout(set = 1, binding = 0) uniform sampler2D textures[kMaxSceneTextures];
+#ifndef AGAA_RECORD
+#define AGAA_RECORD 0
+#endif
 #if AGAA_RECORD
-// Test support (tests/agaa/test_agaa_gpu.cpp, test_agaa_reference_gpu.cpp): every fragment of the
-// pixels in the central kRecordWindow^2 block of the frame appends what it accumulates, so the CPU
-// can re-accumulate the same fragments and compare with the AG-buffer: the quantised fields (the
-// replay), then the material inputs before quantisation (the double-precision reference).
+// The test build only (tests/agaa_generation_record.frag; tests/agaa/test_agaa_gpu.cpp,
+// test_agaa_reference_gpu.cpp): every fragment of the pixels in the central kRecordWindow^2 block
+// of the frame appends what the shipping pass accumulated from it, so the CPU can re-accumulate
+// the same fragments and compare with the AG-buffer: the quantised fields (the replay), then the
+// material inputs before quantisation (the double-precision reference).
 const uint kRecordWindow = 16u;
 // pixel, layer, mask, the quantised fields, then as float bits: normal xyz, roughness, albedo rgb, metallic
 const uint kRecordWords = 3u + kQuantizedFields + 8u;
@@ -186,8 +190,6 @@ void recordFragment(uvec2 pixel, uint pixelIndex, uint mask, AgQuantized f, Mate
     records[inputs + 6u] = floatBitsToUint(m.albedo.b);
     records[inputs + 7u] = floatBitsToUint(m.metallic);
 }
-#else
-void recordFragment(uvec2 pixel, uint pixelIndex, uint mask, AgQuantized f, MaterialSample m) {}
 #endif
 
 // c = 1: the k of the fragment's samples off the aggregate's layer (shared/clustering.h
@@ -212,21 +214,10 @@ uint sampleAggregate(uint s, uint pixelIndex) {
     return words > 0u ? unpackMetadata(metadata[pixelIndex * words + (s * metadataBits(c)) / 32u], s, c) : 0u;
 }
 
-void main() {
-    if (kBreakdownPart == 2u) return;
-    GpuMaterial gm = materials[pc.material];
-    MaterialSample m = evaluateMaterial(gm, inUvs, inColor, inNormal, inTangent, gl_FrontFacing);
-#if AGAA_EMISSIVE
-    outEmissive = vec4(min(m.emissive, vec3(kMaxRadiance)), 1.0);
-#endif
-    uint mask = uint(gl_SampleMaskIn[0]) & 0xFu;
-    if (mask == 0u) return;
-    uvec2 pixel = uvec2(gl_FragCoord.xy);
-    uint pixelIndex = pixel.y * uint(frame.extent.x) + pixel.x;
+// The fragment's k covered samples into its pixel's aggregates, as the routing says.
+void accumulateFragment(uint pixelIndex, uint mask, AgQuantized f, MaterialSample m) {
     uint c = agaa.shape.x;
     uint n = agaa.shape.w;
-    AgQuantized f = quantizeFragment(m, n);
-    recordFragment(pixel, pixelIndex, mask, f, m);
     if (kBreakdownPart == 1u) {
         // Keep the material's evaluation alive without the atomics: an add no value reaches (an
         // atomic, as every other access to the AG-buffer here: a plain store would make the
@@ -257,4 +248,23 @@ void main() {
         touched &= touched - 1u;
         addToAggregate(pixelIndex * c + a, perAggregate[a], kNdf, f);
     }
+}
+
+void main() {
+    if (kBreakdownPart == 2u) return;
+    GpuMaterial gm = materials[pc.material];
+    MaterialSample m = evaluateMaterial(gm, inUvs, inColor, inNormal, inTangent, gl_FrontFacing);
+#if AGAA_EMISSIVE
+    outEmissive = vec4(min(m.emissive, vec3(kMaxRadiance)), 1.0);
+#endif
+    uint mask = uint(gl_SampleMaskIn[0]) & 0xFu;
+    if (mask == 0u) return;
+    uvec2 pixel = uvec2(gl_FragCoord.xy);
+    uint pixelIndex = pixel.y * uint(frame.extent.x) + pixel.x;
+    AgQuantized f = quantizeFragment(m, agaa.shape.w);
+#if AGAA_RECORD
+    recordFragment(pixel, pixelIndex, mask, f, m);
+#else
+    accumulateFragment(pixelIndex, mask, f, m);
+#endif
 }

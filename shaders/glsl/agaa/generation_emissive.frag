@@ -1,5 +1,4 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
 #define AGAA_EMISSIVE 1
-#define AGAA_RECORD 0
 #include "agaa/generation.glsl"

@@ -1,7 +1,6 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
 #define AGAA_EMISSIVE 1
-#define AGAA_RECORD 0
 #define AGAA_INT64 1
 #define AGAA_SUBGROUP 0
 #include "agaa/generation.glsl"

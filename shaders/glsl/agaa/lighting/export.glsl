@@ -1,5 +1,5 @@
 // Test support, compiled into the test build of the lighting pass only
-// (agaa/lighting_gbuffer_export.comp, AGAA_EXPORT 1; tests/agaa/test_agaa_samples_gpu.cpp): what
+// (tests/agaa_lighting_export.comp, AGAA_EXPORT 1; tests/support/aggregate_instrumentation.h): what
 // step 1 read and built, for a CPU aggregation written apart from this shader. 16 floats per
 // record: sample s of pixel p at p * n + s, aggregate a of pixel p at pixels * n + p * c + a.
 // The shipping variants compile the calls away and have no binding 14.

@@ -2,7 +2,7 @@
 #extension GL_GOOGLE_include_directive : require
 // Copies what SBAA's surface selection reads (every sample's depth, stored geometric normal and
 // primitive id) from the prepass into a buffer, so its CPU twin (agaa/sbaa/surface_selection.cpp)
-// runs on the same inputs. A test path: the method never runs it.
+// runs on the same inputs. A test kernel (agaa_test_shaders; tests/support/sample_inputs_export.h).
 #include "shared/frame.h"
 
 layout(local_size_x = 8, local_size_y = 8) in;

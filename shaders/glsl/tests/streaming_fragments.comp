@@ -2,8 +2,8 @@
 #extension GL_GOOGLE_include_directive : require
 // Copies the recorded fragments' samples (every sample's depth, encoded normal, primitive id,
 // albedo/metal and emissive/roughness) into a buffer, so the CPU reference
-// (agaa/streaming/streaming_compression.cpp) replays the same list. A test path: the method never
-// runs it.
+// (agaa/streaming/streaming_compression.cpp) replays the same list. A test kernel
+// (agaa_test_shaders; tests/support/sample_inputs_export.h).
 #include "shared/frame.h"
 
 layout(local_size_x = 8, local_size_y = 8) in;

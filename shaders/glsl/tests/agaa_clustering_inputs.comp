@@ -1,8 +1,9 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
-// Test support: copies what the clustering kernel reads for each sample (the depth float as
-// texelFetch returns it, and the two normal bytes) into a buffer, so the CPU reference
-// clusters exactly the same inputs (MSAA images cannot be copied to buffers directly).
+// Test support (tests/support/aggregate_instrumentation.h ClusteringInputReadback): copies what
+// AGAA's clustering kernel reads for each sample on the accumulate path (the depth float as
+// texelFetch returns it, and the two normal bytes) into a buffer, so the CPU reference clusters
+// exactly the same inputs (MSAA images cannot be copied to buffers directly).
 #include "shared/agaa.h"
 #include "shared/frame.h"
 

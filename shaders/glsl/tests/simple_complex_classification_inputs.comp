@@ -3,7 +3,7 @@
 // Copies what the simple/complex classification reads (every sample's raw depth and
 // encoded normal) from the 4x layered G-buffer into a buffer, so the CPU twin of the
 // classification (agaa/simple_complex/classify.cpp) can run on the same inputs.
-// A test and debug path: the method itself never runs it.
+// A test kernel (agaa_test_shaders; tests/support/sample_inputs_export.h).
 #include "shared/frame.h"
 
 layout(local_size_x = 8, local_size_y = 8) in;

@@ -1,0 +1,44 @@
+# Fails when test instrumentation reaches the shipping build (STYLE.md: exports, records and
+# timing switches live in test-only passes or test builds of a shader, never in the shipping
+# layout). Test builds of a shader define AGAA_EXPORT or AGAA_RECORD to 1 and live under
+# shaders/glsl/tests/, compiled into agaa_test_shaders only; the shipping shader list
+# (shaders/CMakeLists.txt) names none of them, and no shipping C++ includes one.
+# Usage: cmake -DROOT=<dir> -P no_test_builds_shipped.cmake
+if(NOT ROOT)
+  message(FATAL_ERROR "no_test_builds_shipped.cmake: pass -DROOT=<source root>")
+endif()
+set(found "")
+file(GLOB_RECURSE shaders LIST_DIRECTORIES false ${ROOT}/shaders/glsl/*.comp ${ROOT}/shaders/glsl/*.frag
+     ${ROOT}/shaders/glsl/*.vert ${ROOT}/shaders/glsl/*.glsl)
+foreach(source IN LISTS shaders)
+  file(RELATIVE_PATH relative ${ROOT} ${source})
+  if(relative MATCHES "^shaders/glsl/tests/")
+    continue()
+  endif()
+  file(STRINGS ${source} lines REGEX "^[ \t]*#[ \t]*define[ \t]+AGAA_(EXPORT|RECORD)[ \t]+1")
+  foreach(line IN LISTS lines)
+    string(STRIP "${line}" line)
+    string(APPEND found "\n  ${relative}: ${line} (a test build outside shaders/glsl/tests/)")
+  endforeach()
+endforeach()
+if(EXISTS ${ROOT}/shaders/CMakeLists.txt)
+  file(STRINGS ${ROOT}/shaders/CMakeLists.txt lines REGEX "^[ \t]*tests/")
+  foreach(line IN LISTS lines)
+    string(STRIP "${line}" line)
+    string(APPEND found "\n  shaders/CMakeLists.txt: ${line} (a test kernel in the shipping library)")
+  endforeach()
+endif()
+file(GLOB_RECURSE sources LIST_DIRECTORIES false ${ROOT}/engine/*.cpp ${ROOT}/engine/*.h ${ROOT}/agaa/*.cpp
+     ${ROOT}/agaa/*.h ${ROOT}/agaa/*.cpp.txt ${ROOT}/samples/*.cpp ${ROOT}/samples/*.h)
+foreach(source IN LISTS sources)
+  file(RELATIVE_PATH relative ${ROOT} ${source})
+  file(STRINGS ${source} lines REGEX "#include \"(shaders/tests/|tests/)")
+  foreach(line IN LISTS lines)
+    string(STRIP "${line}" line)
+    string(APPEND found "\n  ${relative}: ${line} (shipping code including test support)")
+  endforeach()
+endforeach()
+if(found)
+  message(FATAL_ERROR "test instrumentation in the shipping build:${found}")
+endif()
+message(STATUS "no test build of a shader and no test support in the shipping build under ${ROOT}")

@@ -1,0 +1,285 @@
+#include "tests/support/aggregate_instrumentation.h"
+
+#include "agaa/common/effects.h"
+#include "engine/frame/gpu_scene.h"
+#include "engine/vk/descriptors.h"
+#include "engine/vk/reflection.h"
+#include "shaders/agaa/lighting_gbuffer_comp.h"
+#include "shaders/agaa/scene_vert.h"
+#include "shaders/tests/agaa_clustering_inputs_comp.h"
+#include "shaders/tests/agaa_generation_record_frag.h"
+#include "shaders/tests/agaa_lighting_export_comp.h"
+#include "shared/frame.h"
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace agaa::test {
+namespace rg = eng::rg;
+namespace vk = eng::vk;
+
+namespace {
+
+uint32_t groups(uint32_t size, uint32_t group) {
+    return (size + group - 1) / group;
+}
+
+VkSampler fetchSampler(vk::Device& device, const char* name) {
+    return vk::createSampler(device, VK_FILTER_NEAREST, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE, 0.0f, name);
+}
+
+vk::PipelineLayout reflectedLayout(vk::Device& device, std::span<const uint32_t> code, const char* name) {
+    vk::LayoutDesc desc;
+    desc.pushBindings = vk::reflectBindings({{code, VK_SHADER_STAGE_COMPUTE_BIT}});
+    return vk::createPipelineLayout(device, desc, name);
+}
+
+// A specialisation as (id, value) pairs, the key of a pipeline made with it.
+std::vector<std::pair<uint32_t, uint32_t>> flatten(const vk::Specialization& spec) {
+    std::vector<std::pair<uint32_t, uint32_t>> out;
+    for (uint32_t i = 0; i < spec.values.size(); ++i)
+        out.push_back({i, spec.values[i]});
+    out.insert(out.end(), spec.byId.begin(), spec.byId.end());
+    std::sort(out.begin(), out.end());
+    return out;
+}
+
+} // namespace
+
+ClusteringInputReadback::ClusteringInputReadback(vk::Device& device)
+    : m_device(device),
+      m_layout(reflectedLayout(device, kTestsAgaaClusteringInputsComp, "test.clusteringInputs.layout")) {
+    m_pipeline = vk::createComputePipeline(device, kTestsAgaaClusteringInputsComp, m_layout.layout, {},
+                                           "test.clusteringInputs");
+    m_sampler = fetchSampler(device, "test.clusteringInputs.sampler");
+}
+
+ClusteringInputReadback::~ClusteringInputReadback() {
+    vkDeviceWaitIdle(m_device.device());
+    vkDestroyPipeline(m_device.device(), m_pipeline, nullptr);
+    vkDestroySampler(m_device.device(), m_sampler, nullptr);
+    vk::destroyPipelineLayout(m_device, m_layout);
+}
+
+void ClusteringInputReadback::add(rg::Graph& graph, const AggregateAA& aggregate, const FrameInputs& in,
+                                  const vk::Buffer& host) {
+    if (aggregate.settings().generation != AggregateGeneration::Accumulate)
+        throw std::logic_error(
+            "test: the clustering inputs are the visibility prepass's (accumulate path only)");
+    const AggregateResources& r = aggregate.resources();
+    rg::Buffer target = graph.importBuffer("test.clusteringInputs.host", {host.buffer, host.size},
+                                           std::nullopt, std::nullopt);
+    struct Data {
+        rg::Buffer frame, agaa, target;
+        rg::Texture depth, normal;
+    };
+    graph.addCompute<Data>(
+        "test.clusteringInputs",
+        [&](rg::Builder& b, Data& d) {
+            d.frame = b.read(in.frameConstants, rg::Use::UniformRead);
+            d.agaa = b.read(r.agaaConstants, rg::Use::UniformRead);
+            d.depth = b.read(r.depth, rg::Use::SampledCompute);
+            d.normal = b.read(r.normal, rg::Use::SampledCompute);
+            d.target = b.write(target, rg::Use::StorageWriteCompute);
+            b.sideEffect();
+        },
+        [this, w = in.width, h = in.height](const rg::Context& ctx, const Data& d) {
+            VkCommandBuffer cmd = ctx.cmd();
+            vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, m_pipeline);
+            vk::PushDescriptors()
+                .uniform(0, ctx.buffer(d.frame).buffer)
+                .uniform(1, ctx.buffer(d.agaa).buffer)
+                .sampled(2, m_sampler, ctx.texture(d.depth).sampledView)
+                .sampled(3, m_sampler, ctx.texture(d.normal).sampledView)
+                .storage(4, ctx.buffer(d.target).buffer)
+                .push(m_device, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, m_layout.layout);
+            vkCmdDispatch(cmd, groups(w, 8), groups(h, 8), 1);
+        });
+}
+
+AggregateExportPass::AggregateExportPass(vk::Device& device)
+    : m_device(device),
+      m_layout(reflectedLayout(device, kTestsAgaaLightingExportComp, "test.aggregateExport.layout")),
+      m_sampler(fetchSampler(device, "test.aggregateExport.sampler")) {}
+
+AggregateExportPass::~AggregateExportPass() {
+    vkDeviceWaitIdle(m_device.device());
+    for (auto& [key, pipeline] : m_pipelines)
+        vkDestroyPipeline(m_device.device(), pipeline, nullptr);
+    vkDestroySampler(m_device.device(), m_sampler, nullptr);
+    vk::destroyPipelineLayout(m_device, m_layout);
+}
+
+void AggregateExportPass::add(rg::Graph& graph, const AggregateAA& aggregate, const FrameInputs& in,
+                              const vk::Buffer& host) {
+    // The test build is the samples path's plain variant with the export compiled in: the technique
+    // must be running that variant for the two to have read and built the same.
+    if (aggregate.lightingCode().data() != kAgaaLightingGbufferComp.data())
+        throw std::logic_error(
+            "test: the aggregate export is the samples path's lighting without emissive or shadows; this "
+            "technique runs another variant");
+    const AggregateSettings& s = aggregate.settings();
+    const VkDeviceSize needed =
+        VkDeviceSize(in.width) * in.height * (s.samples + s.aggregates) * kExportRecordFloats * sizeof(float);
+    if (host.size < needed)
+        throw std::invalid_argument("test: the aggregate export needs " + std::to_string(needed) +
+                                    " bytes; the buffer has " + std::to_string(host.size));
+    const vk::Specialization spec = aggregate.lightingVariant();
+    const auto key = flatten(spec);
+    VkPipeline pipeline = VK_NULL_HANDLE;
+    for (const auto& [k, p] : m_pipelines)
+        if (k == key) pipeline = p;
+    if (!pipeline) {
+        pipeline = vk::createComputePipeline(m_device, kTestsAgaaLightingExportComp, m_layout.layout, spec,
+                                             "test.aggregateExport");
+        m_pipelines.push_back({key, pipeline});
+    }
+
+    const AggregateResources& r = aggregate.resources();
+    rg::Buffer target =
+        graph.importBuffer("test.aggregateExport.host", {host.buffer, host.size}, std::nullopt, std::nullopt);
+    struct Data {
+        rg::Buffer frame, lights, agaa, metadata, target;
+        rg::Texture depth, count, normal, albedoMetal, emissive, hdr, display, events, perSampleShaded;
+    };
+    const rg::TextureDesc colour{VK_FORMAT_R32G32B32A32_SFLOAT, in.width, in.height, 1,
+                                 VK_SAMPLE_COUNT_1_BIT};
+    const rg::TextureDesc counts{VK_FORMAT_R32_UINT, in.width, in.height, 1, VK_SAMPLE_COUNT_1_BIT};
+    graph.addCompute<Data>(
+        "test.aggregateExport",
+        [&](rg::Builder& b, Data& d) {
+            d.frame = b.read(in.frameConstants, rg::Use::UniformRead);
+            d.lights = b.read(in.lights, rg::Use::StorageReadCompute);
+            d.agaa = b.read(r.agaaConstants, rg::Use::UniformRead);
+            d.depth = b.read(r.depth, rg::Use::SampledCompute);
+            d.metadata = b.read(r.metadata, rg::Use::StorageReadCompute);
+            d.count = b.read(r.aggregateCount, rg::Use::StorageImageReadCompute);
+            d.normal = b.read(r.gbuffer.normal, rg::Use::SampledCompute);
+            d.albedoMetal = b.read(r.gbuffer.albedoMetal, rg::Use::SampledCompute);
+            d.emissive = b.read(r.gbuffer.emissiveRoughness, rg::Use::SampledCompute);
+            // The test build lights the frame too: scratch images nothing reads.
+            d.hdr = b.write(b.create("test.aggregateExport.hdr", colour), rg::Use::StorageImageWriteCompute);
+            d.display =
+                b.write(b.create("test.aggregateExport.display", colour), rg::Use::StorageImageWriteCompute);
+            d.events =
+                b.write(b.create("test.aggregateExport.events", counts), rg::Use::StorageImageWriteCompute);
+            d.perSampleShaded = b.write(b.create("test.aggregateExport.perSampleShaded", counts),
+                                        rg::Use::StorageImageWriteCompute);
+            d.target = b.write(target, rg::Use::StorageWriteCompute);
+            b.sideEffect();
+        },
+        [this, pipeline, scene = in.scene, w = in.width, h = in.height](const rg::Context& ctx,
+                                                                        const Data& d) {
+            VkCommandBuffer cmd = ctx.cmd();
+            vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline);
+            vk::PushDescriptors pd;
+            pd.uniform(0, ctx.buffer(d.frame).buffer)
+                .storage(1, ctx.buffer(d.lights).buffer)
+                .uniform(2, ctx.buffer(d.agaa).buffer)
+                .sampled(3, m_sampler, ctx.texture(d.depth).sampledView)
+                .storage(4, ctx.buffer(d.metadata).buffer)
+                .storageImage(5, ctx.texture(d.count).view)
+                .sampled(6, m_sampler, ctx.texture(d.normal).sampledView)
+                .storageImage(7, ctx.texture(d.hdr).view)
+                .storageImage(8, ctx.texture(d.display).view)
+                .storageImage(9, ctx.texture(d.events).view)
+                .sampled(10, m_sampler, ctx.texture(d.emissive).sampledView)
+                .sampled(13, m_sampler, ctx.texture(d.albedoMetal).sampledView)
+                .storage(14, ctx.buffer(d.target).buffer)
+                .storageImage(18, ctx.texture(d.perSampleShaded).view);
+            pushEnvironment(pd, *scene);
+            pd.push(m_device, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, m_layout.layout);
+            vkCmdDispatch(cmd, groups(w, shared::kTileSize), groups(h, shared::kTileSize), 1);
+        });
+}
+
+FragmentRecordPass::FragmentRecordPass(vk::Device& device) : m_device(device) {}
+
+FragmentRecordPass::~FragmentRecordPass() {
+    vkDeviceWaitIdle(m_device.device());
+    for (VkPipeline p : m_pipelines)
+        vkDestroyPipeline(m_device.device(), p, nullptr);
+    for (vk::PipelineLayout& l : m_layouts)
+        vk::destroyPipelineLayout(m_device, l);
+}
+
+void FragmentRecordPass::add(rg::Graph& graph, const AggregateAA& aggregate, const FrameInputs& in,
+                             const vk::Buffer& host) {
+    if (aggregate.settings().generation != AggregateGeneration::Accumulate)
+        throw std::logic_error("test: fragment records are the accumulate path's generation pass's");
+    if (aggregate.features().hasEmissive())
+        throw std::logic_error("test: the generation pass's test build has no emissive output (a scene "
+                               "without emissive materials only)");
+    const eng::frame::GpuScene& scene = *in.scene;
+    vk::LayoutDesc layoutDesc;
+    layoutDesc.pushBindings =
+        vk::reflectBindings({{kAgaaSceneVert, VK_SHADER_STAGE_VERTEX_BIT},
+                             {kTestsAgaaGenerationRecordFrag, VK_SHADER_STAGE_FRAGMENT_BIT}});
+    layoutDesc.extraSets = {scene.textureSetLayout()};
+    layoutDesc.pushConstantBytes = 4; // material index
+    m_layouts.push_back(vk::createPipelineLayout(m_device, layoutDesc, "test.fragmentRecords.layout"));
+    const VkPipelineLayout layout = m_layouts.back().layout;
+    // The shipping pass's state, its test build's shader, and a stencil that lets through the one
+    // fragment per sample the shipping pass counted (its stencil is 1 there, 0 on sky): EQUAL 1,
+    // then incremented so no later fragment of that sample passes.
+    VkPipeline sided[2] = {};
+    for (int doubleSided = 0; doubleSided < 2; ++doubleSided) {
+        vk::GraphicsPipelineDesc d = aggregate.generationPipelineDesc(doubleSided != 0);
+        d.fragment = kTestsAgaaGenerationRecordFrag;
+        d.layout = layout;
+        d.stencil.compareOp = VK_COMPARE_OP_EQUAL;
+        sided[doubleSided] = vk::createGraphicsPipeline(m_device, d, "test.fragmentRecords");
+        m_pipelines.push_back(sided[doubleSided]);
+    }
+    std::vector<VkPipeline> pipelines;
+    for (const eng::scene::Draw& draw : scene.scene().draws)
+        pipelines.push_back(sided[scene.scene().materials.at(draw.material).doubleSided ? 1 : 0]);
+
+    const AggregateResources& r = aggregate.resources();
+    rg::Buffer imported =
+        graph.importBuffer("test.fragmentRecords.host", {host.buffer, host.size}, std::nullopt, std::nullopt);
+    struct Clear {
+        rg::Buffer records;
+    };
+    const rg::Buffer records =
+        graph
+            .addPass<Clear>(
+                "test.fragmentRecords.clear", rg::PassKind::Transfer,
+                [&](rg::Builder& b, Clear& d) { d.records = b.write(imported, rg::Use::TransferDst); },
+                [](const rg::Context& ctx, const Clear& d) {
+                    vkCmdFillBuffer(ctx.cmd(), ctx.buffer(d.records).buffer, 0, 4, 0); // the count only
+                })
+            .records;
+    rg::Buffer materials =
+        graph.importBuffer("test.fragmentRecords.materials",
+                           {scene.materials().buffer, scene.materials().size}, std::nullopt, std::nullopt);
+    struct Record {
+        rg::Buffer frame, agaa, materials, records;
+        rg::Texture depth;
+    };
+    const uint32_t layers = aggregate.settings().samples / 4;
+    graph.addGraphics<Record>(
+        "test.fragmentRecords",
+        [&](rg::Builder& b, Record& d) {
+            d.frame = b.read(in.frameConstants, rg::Use::UniformRead);
+            d.agaa = b.read(r.agaaConstants, rg::Use::UniformRead);
+            d.materials = b.read(materials, rg::Use::StorageReadFragment);
+            d.records = b.readWrite(records, rg::Use::StorageReadWriteFragment);
+            rg::Attachment loadDepth;
+            loadDepth.load = VK_ATTACHMENT_LOAD_OP_LOAD;
+            d.depth = b.depthStencil(r.depth, rg::Use::DepthStencilRead, loadDepth); // EQUAL, stencil written
+            b.sideEffect();
+        },
+        [this, layout, pipelines, layers, &scene](const rg::Context& ctx, const Record& d) {
+            VkCommandBuffer cmd = ctx.cmd();
+            vk::PushDescriptors()
+                .uniform(0, ctx.buffer(d.frame).buffer)
+                .storage(1, ctx.buffer(d.materials).buffer)
+                .uniform(2, ctx.buffer(d.agaa).buffer)
+                .storage(5, ctx.buffer(d.records).buffer)
+                .push(m_device, cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout);
+            scene.recordDraws(cmd, layout, pipelines, layers);
+        });
+}
+
+} // namespace agaa::test
