@@ -131,7 +131,11 @@ AggregateAA::AggregateAA(vk::Device& device, const eng::frame::GpuScene& scene,
 
         m_clusterPipeline = vk::createComputePipeline(
             device, samplesPath ? std::span<const uint32_t>(kAgaaClusterGbufferComp) : kAgaaClusterComp,
-            m_clusterLayout.layout, {{settings.samples, settings.aggregates, uint32_t(settings.distance)}},
+            m_clusterLayout.layout,
+            {{},
+             {{shared::kSpecClusterSamples, settings.samples},
+              {shared::kSpecClusterAggregates, settings.aggregates},
+              {shared::kSpecClusterDistance, uint32_t(settings.distance)}}},
             "agaa.cluster");
         m_lightingPipeline = vk::createComputePipeline(device, lightingCode(), m_lightingLayout.layout,
                                                        lightingVariant(), "agaa.lighting");
@@ -206,16 +210,15 @@ std::span<const uint32_t> AggregateAA::lightingCode() const {
 }
 
 eng::vk::Specialization AggregateAA::lightingVariant() const {
-    static_assert(shared::kSpecLightingSamples == 0 && shared::kSpecLightingAggregates == 1,
-                  "effectSpecialization's ids 0 and 1 are n and c");
     vk::Specialization spec = lightingSpecialization(
-        effectSpecialization(m_features, m_settings.samples, m_settings.aggregates,
-                             m_settings.effects.shadowTaps, m_settings.effects.shadowFootprint),
+        effectSpecialization(m_features, m_settings.effects.shadowTaps, m_settings.effects.shadowFootprint),
         m_features);
     const bool skipShading = m_settings.breakdown & AggregateBreakdown::kLightingWithoutShading;
     spec.byId.insert(
         spec.byId.end(),
-        {{shared::kSpecLightingCompact, m_settings.shading == AggregateShading::Compact ? 1u : 0u},
+        {{shared::kSpecLightingSamples, m_settings.samples},
+         {shared::kSpecLightingAggregates, m_settings.aggregates},
+         {shared::kSpecLightingCompact, m_settings.shading == AggregateShading::Compact ? 1u : 0u},
          {shared::kSpecLightingSkipShading, skipShading ? 1u : 0u},
          {shared::kSpecLightingNdf, uint32_t(m_settings.ndf)},
          {shared::kSpecLightingRouting, uint32_t(m_settings.routing)},
@@ -286,8 +289,10 @@ VkPipeline AggregateAA::visibilityPipeline(AlphaPath alpha, bool doubleSided) {
     d.layout = m_visibilityLayout.layout;
     // Paper section 3.6: masked materials sample alpha here only, with alpha-to-coverage; the
     // generation pass inherits the coverage through its depth EQUAL test.
-    d.specialization.values = {
-        uint32_t(alpha), m_settings.breakdown & AggregateBreakdown::kVisibilityWithoutNormals ? 1u : 0u};
+    d.specialization.byId = {
+        {shared::kSpecVisibilityAlphaPath, uint32_t(alpha)},
+        {shared::kSpecVisibilitySkipNormal,
+         m_settings.breakdown & AggregateBreakdown::kVisibilityWithoutNormals ? 1u : 0u}};
     addMaterialSpecialization(d.specialization, m_features);
     d.alphaToCoverage = usesAlphaToCoverage(alpha);
     d.colorFormats = {VK_FORMAT_R8G8_UNORM};
@@ -317,14 +322,16 @@ eng::vk::GraphicsPipelineDesc AggregateAA::generationPipelineDesc(bool doubleSid
     d.vertex = kAgaaSceneVert;
     d.fragment = generationCode();
     d.layout = m_generationLayout.layout;
-    // ids 0, 1: normal distribution and routing; ids 3, 4: normal-map / emissive fetch
-    d.specialization.values =
-        effectSpecialization(m_features, uint32_t(m_settings.ndf), uint32_t(m_settings.routing), 1);
-    // id 7: the benchmark's breakdown (0 the whole pass, 1 material only, 2 an empty shader)
+    d.specialization = effectSpecialization(m_features, 1);
+    // The benchmark's breakdown: 0 the whole pass, 1 material only, 2 an empty shader.
     const uint32_t b = m_settings.breakdown;
-    d.specialization.values.push_back(b & AggregateBreakdown::kGenerationEmpty            ? 2u
-                                      : b & AggregateBreakdown::kGenerationWithoutAtomics ? 1u
-                                                                                          : 0u);
+    d.specialization.byId.insert(
+        d.specialization.byId.end(),
+        {{shared::kSpecGenerationNdf, uint32_t(m_settings.ndf)},
+         {shared::kSpecGenerationRouting, uint32_t(m_settings.routing)},
+         {shared::kSpecGenerationBreakdown, b & AggregateBreakdown::kGenerationEmpty            ? 2u
+                                            : b & AggregateBreakdown::kGenerationWithoutAtomics ? 1u
+                                                                                                : 0u}});
     addMaterialSpecialization(d.specialization, m_features);
     if (m_hasEmissive) d.colorFormats = {VK_FORMAT_B10G11R11_UFLOAT_PACK32};
     d.depthFormat = m_depthFormat;

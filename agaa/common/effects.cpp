@@ -79,24 +79,29 @@ std::vector<VariantChoice> effectVariants(const eng::scene::SceneFeatures& f, co
     return v;
 }
 
-std::vector<uint32_t> effectSpecialization(const eng::scene::SceneFeatures& f, uint32_t id0, uint32_t id1,
-                                           uint32_t shadowTaps, EffectSettings::ShadowFootprint footprint) {
-    // Positional: value i is specialisation id i (engine/vk/pipeline.h Specialization::values).
-    static_assert(kSpecTileLightCulling == 2 && kSpecNormalMaps == 3 && kSpecEmissive == 4 &&
-                  kSpecShadowTaps == 5 && kSpecShadowFootprint == 6);
-    return {id0,
-            id1,
-            f.needsLightCulling() ? 1u : 0u,
-            f.hasNormalMaps() ? 1u : 0u,
-            f.hasEmissive() ? 1u : 0u,
-            shadowTaps,
-            uint32_t(footprint)};
+eng::vk::Specialization effectSpecialization(const eng::scene::SceneFeatures& f, uint32_t shadowTaps,
+                                             EffectSettings::ShadowFootprint footprint) {
+    eng::vk::Specialization s;
+    s.byId = {{kSpecTileLightCulling, f.needsLightCulling() ? 1u : 0u},
+              {kSpecNormalMaps, f.hasNormalMaps() ? 1u : 0u},
+              {kSpecEmissive, f.hasEmissive() ? 1u : 0u},
+              {kSpecShadowTaps, shadowTaps},
+              {kSpecShadowFootprint, uint32_t(footprint)}};
+    return s;
 }
 
-eng::vk::Specialization lightingSpecialization(std::vector<uint32_t> values,
+eng::vk::Specialization lightingSpecialization(eng::vk::Specialization s,
                                                const eng::scene::SceneFeatures& features) {
-    eng::vk::Specialization s{std::move(values), {}};
     s.byId.push_back({kSpecEnvironment, features.hasEnvironment() ? 1u : 0u});
+    return s;
+}
+
+eng::vk::Specialization gbufferLightingSpecialization(const eng::scene::SceneFeatures& features,
+                                                      uint32_t samples,
+                                                      std::vector<std::pair<uint32_t, uint32_t>> own) {
+    eng::vk::Specialization s = lightingSpecialization(effectSpecialization(features, 1), features);
+    s.byId.push_back({shared::kSpecGBufferLightingSamples, samples});
+    s.byId.insert(s.byId.end(), own.begin(), own.end());
     return s;
 }
 

@@ -73,12 +73,17 @@ inline void addMaterialSpecialization(eng::vk::Specialization& s, const eng::sce
     s.byId.push_back({kSpecVertexColors, f.vertexColors ? 1u : 0u});
 }
 
-// Every lighting pass: the environment's specialisation (id 16) after `values` (ids 0..n-1), and
-// its bindings (15: pre-filtered levels, 16: constants, 17: the split sum's BRDF table), pushed from the
+// Every lighting pass: the environment's specialisation (kSpecEnvironment) added to `s`, and its
+// bindings (15: pre-filtered levels, 16: constants, 17: the split sum's BRDF table), pushed from the
 // scene, which holds a stand-in when it has no environment (engine/frame/gpu_scene.h).
-eng::vk::Specialization lightingSpecialization(std::vector<uint32_t> values,
+eng::vk::Specialization lightingSpecialization(eng::vk::Specialization s,
                                                const eng::scene::SceneFeatures& features);
 void pushEnvironment(eng::vk::PushDescriptors& descriptors, const eng::frame::GpuScene& scene);
+// A lighting pass of the per-sample G-buffer (common/gbuffer_lighting.glsl: n, one shadow tap per
+// shading event), with the pass's own ids.
+eng::vk::Specialization gbufferLightingSpecialization(const eng::scene::SceneFeatures& features,
+                                                      uint32_t samples,
+                                                      std::vector<std::pair<uint32_t, uint32_t>> own = {});
 
 // Alpha handling of a material in a raster pass (specialisation constant 0 of
 // reference/gbuffer.frag and agaa/visibility.frag; common/alpha_coverage.glsl). MASK: discard at
@@ -112,10 +117,10 @@ inline const char* alphaPathName(AlphaPath p) {
                                            : ".opaque";
 }
 
-// The ids 2..6 above, filled from the features, appended to a pass's own ids 0 and 1.
-std::vector<uint32_t>
-effectSpecialization(const eng::scene::SceneFeatures& features, uint32_t id0, uint32_t id1,
-                     uint32_t shadowTaps,
+// The scene's effects by their ids (light culling, normal maps, emissive, shadow taps and
+// footprint), to which each pass adds its own by name.
+eng::vk::Specialization
+effectSpecialization(const eng::scene::SceneFeatures& features, uint32_t shadowTaps,
                      EffectSettings::ShadowFootprint footprint = EffectSettings::ShadowFootprint::Adaptive);
 
 } // namespace agaa

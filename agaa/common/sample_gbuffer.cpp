@@ -78,11 +78,13 @@ VkPipeline SampleGBufferPass::pipeline(AlphaPath alpha, bool doubleSided) {
     const bool sampleRate = m_options.sampleRateShading && m_samples > 1;
     d.fragment = fragmentCode();
     d.layout = m_layout.layout;
-    d.specialization.values = effectSpecialization(m_features, uint32_t(alpha), 0, 1);
-    d.specialization.values.resize(8, 0u); // id 7: unused by the fill pass
-    d.specialization.values.push_back(m_options.curvatureRoughness ? 1u : 0u);                   // id 8
-    d.specialization.values.push_back(std::bit_cast<uint32_t>(m_options.curvatureMaxFootprint)); // id 9
-    d.specialization.values.push_back(std::bit_cast<uint32_t>(m_options.curvatureBoost));        // id 10
+    d.specialization = effectSpecialization(m_features, 1);
+    d.specialization.byId.insert(
+        d.specialization.byId.end(),
+        {{shared::kSpecFillAlphaPath, uint32_t(alpha)},
+         {shared::kSpecFillCurvatureRoughness, m_options.curvatureRoughness ? 1u : 0u},
+         {shared::kSpecFillCurvatureMaxFootprint, std::bit_cast<uint32_t>(m_options.curvatureMaxFootprint)},
+         {shared::kSpecFillCurvatureBoost, std::bit_cast<uint32_t>(m_options.curvatureBoost)}});
     addMaterialSpecialization(d.specialization, m_features);
     d.sampleShading = sampleRate; // minSampleShading 1: one invocation per sample
     d.alphaToCoverage = usesAlphaToCoverage(alpha);

@@ -19,9 +19,10 @@ namespace {
 vk::Specialization presetSpecialization(uint32_t preset) {
     std::span<const float> steps = fxaaPresetSteps(preset);
     vk::Specialization s;
-    s.values.push_back(uint32_t(steps.size()));
+    s.byId.push_back({shared::kSpecFxaaSearchSteps, uint32_t(steps.size())});
     for (uint32_t i = 0; i < shared::kFxaaMaxSteps; ++i)
-        s.values.push_back(std::bit_cast<uint32_t>(i < steps.size() ? steps[i] : 0.0f));
+        s.byId.push_back(
+            {shared::kSpecFxaaStepTable + i, std::bit_cast<uint32_t>(i < steps.size() ? steps[i] : 0.0f)});
     return s;
 }
 

@@ -35,8 +35,7 @@ Reference::Reference(vk::Device& device, const eng::frame::GpuScene& scene, cons
     // Specialisation: id 1 = n (common/gbuffer_lighting.glsl); id 0 is unused here; 2.. the
     // scene's effects, one shadow tap per shading event (agaa/common/effects.h).
     m_lightingPipeline = vk::createComputePipeline(
-        device, code, m_lightingLayout.layout,
-        lightingSpecialization(effectSpecialization(m_features, 0u, settings.samples, 1), m_features),
+        device, code, m_lightingLayout.layout, gbufferLightingSpecialization(m_features, settings.samples),
         m_name + ".lighting");
     m_fetchSampler = vk::createSampler(device, VK_FILTER_NEAREST, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE, 0.0f,
                                        m_name + ".fetchSampler");

@@ -75,8 +75,7 @@ Sbaa::Sbaa(vk::Device& device, const eng::frame::GpuScene& scene, const SbaaSett
     // tap per shading event (agaa/common/effects.h).
     m_lightingPipeline = vk::createComputePipeline(
         device, lightingCode, m_lightingLayout.layout,
-        lightingSpecialization(effectSpecialization(m_features, 0u, settings.samples, 1), m_features),
-        "sbaa.lighting");
+        gbufferLightingSpecialization(m_features, settings.samples), "sbaa.lighting");
     m_fetchSampler = vk::createSampler(device, VK_FILTER_NEAREST, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE, 0.0f,
                                        "sbaa.fetchSampler");
 }

@@ -13,10 +13,6 @@ namespace agaa {
 namespace rg = eng::rg;
 namespace vk = eng::vk;
 
-namespace {
-constexpr uint32_t kSpecSurfaces = 24; // reference/gbuffer.glsl kSbaaSurfaces
-}
-
 SurfaceFillPass::SurfaceFillPass(vk::Device& device, const eng::frame::GpuScene& scene, uint32_t samples,
                                  uint32_t surfaces, const eng::scene::SceneFeatures& features,
                                  bool sampleRate)
@@ -36,9 +32,11 @@ SurfaceFillPass::SurfaceFillPass(vk::Device& device, const eng::frame::GpuScene&
     // Alpha path 0: the prepass already applied the alpha (its ids are what survived), and the
     // fill must not discard. Ids 8..10 (curvature roughness) off: the material's own roughness,
     // as the per-sample G-buffer of every peer.
-    d.specialization.values = effectSpecialization(features, uint32_t(AlphaPath::Opaque), 0, 1);
-    d.specialization.values.resize(11, 0u);
-    d.specialization.byId.push_back({kSpecSurfaces, surfaces});
+    d.specialization = effectSpecialization(features, 1);
+    d.specialization.byId.insert(d.specialization.byId.end(),
+                                 {{shared::kSpecFillAlphaPath, uint32_t(AlphaPath::Opaque)},
+                                  {shared::kSpecFillCurvatureRoughness, 0u},
+                                  {shared::kSpecFillSbaaSurfaces, surfaces}});
     addMaterialSpecialization(d.specialization, features);
     d.sampleShading = sampleRate;
     d.colorFormats = {};

@@ -55,8 +55,8 @@ SimpleComplex::SimpleComplex(vk::Device& device, const eng::frame::GpuScene& sce
     // One shadow tap per shading event, as the reference (agaa/common/effects.h).
     m_lightingPipeline = vk::createComputePipeline(
         device, code, m_lightingLayout.layout,
-        lightingSpecialization(
-            effectSpecialization(m_features, uint32_t(settings.schedule), settings.samples, 1), m_features),
+        gbufferLightingSpecialization(m_features, settings.samples,
+                                      {{shared::kSpecSimpleComplexSchedule, uint32_t(settings.schedule)}}),
         m_name + ".lighting");
     m_fetchSampler = vk::createSampler(device, VK_FILTER_NEAREST, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE, 0.0f,
                                        m_name + ".fetchSampler");

@@ -14,15 +14,16 @@
 #include "shared/agaa.h"
 #include "shared/frame.h"
 #include "shared/clustering.h"
+#include "shared/specialization.h"
 
 layout(local_size_x = 8, local_size_y = 8) in;
 // n and c as specialisation constants: the per-sample loops get constant trip counts, so the
 // compiler can unroll them and keep the sample arrays in registers instead of scratch memory.
-layout(constant_id = 0) const uint kSamples = 8u;
-layout(constant_id = 1) const uint kAggregates = 2u;
+layout(constant_id = kSpecClusterSamples) const uint kSamples = 8u;
+layout(constant_id = kSpecClusterAggregates) const uint kAggregates = 2u;
 // The distance (kDistancePosition, kDistancePlane; agaa.modes.x holds the same value for the CPU
 // reference): a constant, so only one distance is compiled in.
-layout(constant_id = 2) const uint kDistance = 0u;
+layout(constant_id = kSpecClusterDistance) const uint kDistance = 0u;
 
 layout(set = 0, binding = 0) uniform Frame { FrameConstants frame; };
 layout(set = 0, binding = 1) uniform Agaa { AgaaConstants agaa; };

@@ -46,6 +46,7 @@
 #include "shared/ag_buffer.h"
 #include "shared/clustering.h"
 #include "shared/frame.h"
+#include "shared/specialization.h"
 
 layout(early_fragment_tests) in;
 layout(post_depth_coverage) in;
@@ -78,11 +79,11 @@ layout(push_constant) uniform Push { uint material; } pc;
 // Specialisation ids 0 and 1: the normal distribution (kNdfToksvig, kNdfSggx) and the routing
 // (0 per sample, 1 per fragment). Constants, not uniforms: lavapipe executes both sides of a
 // branch it cannot resolve at compile time.
-layout(constant_id = 0) const uint kNdf = 0u;
-layout(constant_id = 1) const uint kRouteFragment = 0u;
+layout(constant_id = kSpecGenerationNdf) const uint kNdf = 0u;
+layout(constant_id = kSpecGenerationRouting) const uint kRouteFragment = 0u;
 // Benchmark breakdown (agaa/aggregate/agaa_constants.h AggregateBreakdown): 1 evaluates the
 // material but adds nothing, 2 returns at once (the pass's raster, depth and stencil cost alone).
-layout(constant_id = 7) const uint kBreakdownPart = 0u;
+layout(constant_id = kSpecGenerationBreakdown) const uint kBreakdownPart = 0u;
 
 #include "common/material.glsl"
 

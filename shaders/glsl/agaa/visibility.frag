@@ -5,11 +5,12 @@
 // use the variant that samples nothing; masked ones sample base-colour alpha and discard.
 #include "shared/agaa.h"
 #include "shared/frame.h"
+#include "shared/specialization.h"
 
 // Masked materials: 0 opaque, 1 discard, 2 alpha-to-coverage (common/alpha_coverage.glsl).
-layout(constant_id = 0) const uint kAlphaPath = 0u;
+layout(constant_id = kSpecVisibilityAlphaPath) const uint kAlphaPath = 0u;
 // Benchmark breakdown (agaa/aggregate/agaa_constants.h AggregateBreakdown): 1 writes no face normal.
-layout(constant_id = 1) const uint kSkipNormal = 0u;
+layout(constant_id = kSpecVisibilitySkipNormal) const uint kSkipNormal = 0u;
 
 layout(set = 0, binding = 0) uniform Frame { FrameConstants frame; };
 layout(set = 0, binding = 1, std430) readonly buffer Materials { GpuMaterial materials[]; };

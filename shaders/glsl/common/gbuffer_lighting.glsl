@@ -45,7 +45,7 @@ layout(set = 0, binding = 5) uniform sampler2D gEmissiveRoughness;
 // n as a specialisation constant (id 1): per-sample loops get constant trip counts and unroll.
 // Sample s = layer * samplesPerLayer + hardware sample (engine/frame/sample_pattern.h); the
 // hardware rate is 4 whenever n > 1.
-layout(constant_id = 1) const uint kSampleCount = 1u;
+layout(constant_id = kSpecGBufferLightingSamples) const uint kSampleCount = 1u;
 const uint kSamplesPerLayer = kSampleCount > 1u ? 4u : 1u;
 #define FETCH_SAMPLE(tex, p, s) FETCH(tex, p, (s) / kSamplesPerLayer, (s) % kSamplesPerLayer)
 

@@ -15,22 +15,23 @@
 // would give, but exact and reproducible; the CPU twin (agaa/fxaa/fxaa_reference.cpp)
 // does the same arithmetic in the same order.
 #include "shared/fxaa.h"
+#include "shared/specialization.h"
 
 layout(local_size_x = 16, local_size_y = 16) in;
 
-layout(constant_id = 0) const uint kSearchSteps = 12u;
-layout(constant_id = 1) const float kStep0 = 1.0;
-layout(constant_id = 2) const float kStep1 = 1.5;
-layout(constant_id = 3) const float kStep2 = 2.0;
-layout(constant_id = 4) const float kStep3 = 2.0;
-layout(constant_id = 5) const float kStep4 = 2.0;
-layout(constant_id = 6) const float kStep5 = 2.0;
-layout(constant_id = 7) const float kStep6 = 2.0;
-layout(constant_id = 8) const float kStep7 = 2.0;
-layout(constant_id = 9) const float kStep8 = 2.0;
-layout(constant_id = 10) const float kStep9 = 2.0;
-layout(constant_id = 11) const float kStep10 = 4.0;
-layout(constant_id = 12) const float kStep11 = 8.0;
+layout(constant_id = kSpecFxaaSearchSteps) const uint kSearchSteps = 12u;
+layout(constant_id = kSpecFxaaStepTable + 0u) const float kStep0 = 1.0;
+layout(constant_id = kSpecFxaaStepTable + 1u) const float kStep1 = 1.5;
+layout(constant_id = kSpecFxaaStepTable + 2u) const float kStep2 = 2.0;
+layout(constant_id = kSpecFxaaStepTable + 3u) const float kStep3 = 2.0;
+layout(constant_id = kSpecFxaaStepTable + 4u) const float kStep4 = 2.0;
+layout(constant_id = kSpecFxaaStepTable + 5u) const float kStep5 = 2.0;
+layout(constant_id = kSpecFxaaStepTable + 6u) const float kStep6 = 2.0;
+layout(constant_id = kSpecFxaaStepTable + 7u) const float kStep7 = 2.0;
+layout(constant_id = kSpecFxaaStepTable + 8u) const float kStep8 = 2.0;
+layout(constant_id = kSpecFxaaStepTable + 9u) const float kStep9 = 2.0;
+layout(constant_id = kSpecFxaaStepTable + 10u) const float kStep10 = 4.0;
+layout(constant_id = kSpecFxaaStepTable + 11u) const float kStep11 = 8.0;
 
 layout(set = 0, binding = 0) uniform sampler2D inDisplay; // tone-mapped, linear [0,1]
 layout(set = 0, binding = 1, rgba32f) uniform writeonly image2D outDisplay;

@@ -4,17 +4,18 @@
 //                    sampled through an sRGB view; A metallic
 //   RT2 RGBA16F      emissive radiance (HDR), A roughness
 #include "shared/frame.h"
+#include "shared/specialization.h"
 #include "common/srgb.glsl"
 
 // Masked materials (agaa/common/effects.h AlphaPath): 0 opaque (samples nothing), 1 discard below
 // the cutoff (1 sample per pixel), 2 alpha-to-coverage (MSAA; common/alpha_coverage.glsl).
-layout(constant_id = 0) const uint kAlphaPath = 0u;
+layout(constant_id = kSpecFillAlphaPath) const uint kAlphaPath = 0u;
 // Curvature roughness (common/curvature_roughness.glsl; agaa/common/sample_gbuffer.h
 // GBufferOptions): id 8 on/off, ids 9 and 10 the talk's max footprint and boost. Off for the
 // reference and Simple/Complex, whose samples must be the material's own.
-layout(constant_id = 8) const uint kCurvatureRoughness = 0u;
-layout(constant_id = 9) const float kCurvatureMaxFootprint = 0.3;
-layout(constant_id = 10) const float kCurvatureBoost = 2.0;
+layout(constant_id = kSpecFillCurvatureRoughness) const uint kCurvatureRoughness = 0u;
+layout(constant_id = kSpecFillCurvatureMaxFootprint) const float kCurvatureMaxFootprint = 0.3;
+layout(constant_id = kSpecFillCurvatureBoost) const float kCurvatureBoost = 2.0;
 
 layout(set = 0, binding = 0) uniform Frame { FrameConstants frame; };
 layout(set = 0, binding = 1, std430) readonly buffer Materials { GpuMaterial materials[]; };
@@ -39,7 +40,7 @@ layout(set = 1, binding = 0) uniform sampler2D textures[kMaxSceneTextures];
 #if GBUFFER_SURFACE_FILL
 #include "shared/sbaa.h"
 layout(early_fragment_tests) in;
-layout(constant_id = 24) const uint kSbaaSurfaces = 4u; // S
+layout(constant_id = kSpecFillSbaaSurfaces) const uint kSbaaSurfaces = 4u; // S
 layout(set = 0, binding = 2, std430) buffer Surfaces { uint surfaces[]; };
 #endif
 #if GBUFFER_PRIMITIVE_ID || GBUFFER_SURFACE_FILL

@@ -11,10 +11,11 @@
 // shader is the reference's (reference/gbuffer.vert), so both passes rasterise the same depths
 // and the fill's EQUAL test passes exactly where this pass won.
 #include "shared/frame.h"
+#include "shared/specialization.h"
 
 // Masked materials (agaa/common/effects.h AlphaPath): 0 opaque, 1 discard below the cutoff,
 // 2 alpha-to-coverage (common/alpha_coverage.glsl).
-layout(constant_id = 0) const uint kAlphaPath = 0u;
+layout(constant_id = kSpecFillAlphaPath) const uint kAlphaPath = 0u;
 
 layout(set = 0, binding = 0) uniform Frame { FrameConstants frame; };
 layout(set = 0, binding = 1, std430) readonly buffer Materials { GpuMaterial materials[]; };

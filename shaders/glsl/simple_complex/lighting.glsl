@@ -17,9 +17,10 @@
 #extension GL_GOOGLE_include_directive : require
 #include "shared/frame.h"
 #include "shared/simple_complex.h"
+#include "shared/specialization.h"
 
 layout(local_size_x = 16, local_size_y = 16) in;
-layout(constant_id = 0) const uint kSchedule = kScheduleDeferPerSample;
+layout(constant_id = kSpecSimpleComplexSchedule) const uint kSchedule = kScheduleDeferPerSample;
 
 layout(set = 0, binding = 0) uniform Frame { FrameConstants frame; };
 layout(set = 0, binding = 1, std430) readonly buffer Lights { GpuLight lights[]; };
