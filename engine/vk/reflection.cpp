@@ -181,7 +181,8 @@ Binding describe(const std::vector<Id>& ids, const Id& variable, const std::stri
     b.binding = uint32_t(variable.binding);
     const Id* type = &at(pointer.type);
     if (type->opcode == OpTypeRuntimeArray)
-        throw ReflectionError(name + ": a runtime-sized descriptor array cannot be a push descriptor");
+        throw ReflectionError(name +
+                              ": a runtime-sized descriptor array (this layer makes fixed-size sets only)");
     if (type->opcode == OpTypeArray) {
         const Id& length = at(type->lengthId);
         if (length.opcode != OpConstant)
@@ -237,8 +238,16 @@ std::vector<Binding> reflectBindings(std::initializer_list<ShaderStage> stages, 
         const std::string where = stageName(s.stage) + " shader";
         const std::vector<Id> ids = readIds(s.spirv, where);
         for (const Id& v : ids) {
+            if (v.opcode != OpVariable) continue;
+            if (v.binding < 0) {
+                // A resource in a set needs its binding number; glslang always writes one.
+                if (v.set >= 0)
+                    throw ReflectionError(where + ": a variable in set " + std::to_string(v.set) +
+                                          " has no binding number");
+                continue;
+            }
             // GLSL's default set is 0; glslang decorates it anyway.
-            if (v.opcode != OpVariable || v.binding < 0 || std::max(v.set, 0) != int32_t(set)) continue;
+            if (std::max(v.set, 0) != int32_t(set)) continue;
             if (v.storageClass != UniformConstant && v.storageClass != Uniform &&
                 v.storageClass != StorageBuffer)
                 continue;

@@ -207,6 +207,9 @@ void FragmentRecordPass::add(rg::Graph& graph, const AggregateAA& aggregate, con
                              const vk::Buffer& host) {
     if (aggregate.settings().generation != AggregateGeneration::Accumulate)
         throw std::logic_error("test: fragment records are the accumulate path's generation pass's");
+    if (aggregate.settings().routing != AggregateRouting::Samples)
+        throw std::logic_error(
+            "test: fragment records are replayed per sample (--agaa-routing samples only)");
     if (aggregate.features().hasEmissive())
         throw std::logic_error("test: the generation pass's test build has no emissive output (a scene "
                                "without emissive materials only)");

@@ -4,13 +4,13 @@
 #include "engine/vk/reflection.h"
 
 #include "shaders/agaa/generation_int64_frag.h"
-#include "shaders/agaa/generation_record_frag.h"
 #include "shaders/agaa/lighting_comp.h"
 #include "shaders/agaa/lighting_gbuffer_comp.h"
 #include "shaders/agaa/lighting_gbuffer_shadow_comp.h"
 #include "shaders/agaa/scene_vert.h"
 #include "shaders/agaa/visibility_frag.h"
 #include "shaders/glsl/shared/frame.h"
+#include "shaders/tests/agaa_generation_record_frag.h"
 #include "shaders/tests/agaa_lighting_export_comp.h"
 
 #include <gtest/gtest.h>
@@ -86,7 +86,7 @@ TEST(Reflection, GraphicsStagesMergeAndSetsStayApart) {
 
     // The generation variants: the test record's buffer (5) and the 64-bit view of the AG-buffer (6).
     const std::vector<Binding> record =
-        reflectBindings({{kAgaaSceneVert, kVs}, {kAgaaGenerationRecordFrag, kFs}});
+        reflectBindings({{kAgaaSceneVert, kVs}, {kTestsAgaaGenerationRecordFrag, kFs}});
     const std::vector<Binding> int64 =
         reflectBindings({{kAgaaSceneVert, kVs}, {kAgaaGenerationInt64Frag, kFs}});
     EXPECT_TRUE(find(record, 5));
@@ -202,6 +202,11 @@ TEST(Reflection, MalformedModulesAreRefused) {
     runtime.op(OpTypeRuntimeArray, {6, 5}).op(OpTypePointer, {7, kUniformConstant, 6});
     runtime.op(OpVariable, {7, 10, kUniformConstant});
     refused(runtime.words, "runtime-sized");
+    Module noBinding; // a storage image in set 0 without a binding number
+    noBinding.op(OpDecorate, {10, kSet, 0}).op(OpTypeFloat, {1, 32});
+    noBinding.op(OpTypeImage, {4, 1, 1, 0, 0, 0, 2, 1}).op(OpTypePointer, {7, kUniformConstant, 4});
+    noBinding.op(OpVariable, {7, 10, kUniformConstant});
+    refused(noBinding.words, "has no binding number");
     // An empty stage (a depth-only pipeline's fragment) declares nothing.
     EXPECT_TRUE(reflectBindings({{std::span<const uint32_t>(), kFs}}).empty());
 }

@@ -19,7 +19,10 @@ SHARED_CONST kSpecEnvironment = 16u;     // common/environment.glsl: an environm
 SHARED_CONST kSpecTextureTransforms = 18u; // common/material.glsl: KHR_texture_transform
 SHARED_CONST kSpecVertexColors = 19u;      // common/material.glsl: COLOR_0
 
-// ---- Each pass's own: ids 0, 1 and 7 to 13 mean something else in each -----------------
+// ---- Each pass's own ------------------------------------------------------------------
+// An id below means something else in each pass, and may reuse an effect id above that the
+// pass's shaders do not read (the cluster's 2, the fill's 8 to 10, FXAA's 1 to 12): a pass must
+// never declare both.
 // The AGAA lighting pass (agaa/lighting.glsl)
 SHARED_CONST kSpecLightingSamples = 0u;       // n
 SHARED_CONST kSpecLightingAggregates = 1u;    // c
