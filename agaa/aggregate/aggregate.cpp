@@ -42,9 +42,9 @@ FrameTargets AggregateAA::addPasses(rg::Graph& graph, const FrameInputs& in) {
     for (const eng::scene::Draw& draw :
          samplesPath ? std::vector<eng::scene::Draw>{} : scene->scene().draws) {
         const eng::scene::Material& m = scene->scene().materials.at(draw.material);
-        visibilityPipelines.push_back(
-            visibilityPipeline(materialAlphaPath(m, m_features.forced, m_settings.samples), m.doubleSided));
-        generationPipelines.push_back(generationPipeline(m.doubleSided));
+        visibilityPipelines.push_back(m_visibilityPipelines.get(
+            {materialAlphaPath(m, m_features.forced, m_settings.samples), m.doubleSided}));
+        generationPipelines.push_back(m_generationPipelines.get({AlphaPath::Opaque, m.doubleSided}));
     }
 
     rg::Buffer materials = importScene(graph, "scene.materials", scene->materials());

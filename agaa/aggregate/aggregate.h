@@ -19,6 +19,7 @@
 #include "engine/frame/uniform_ring.h"
 #include "engine/vk/device.h"
 #include "engine/vk/pipeline.h"
+#include "engine/vk/pipeline_cache.h"
 #include "engine/vk/resources.h"
 
 #include <array>
@@ -60,7 +61,7 @@ class AggregateAA final : public Technique {
     VkFormat depthFormat() const { return m_depthFormat; }
 
     // The lighting pass's SPIR-V and specialisation for this path, scene and settings: what a
-    // host's pipeline cache keys on, and what a test build of the pass must match.
+    // test build of the pass must match (tests/support/aggregate_instrumentation.h).
     std::span<const uint32_t> lightingCode() const;
     eng::vk::Specialization lightingVariant() const;
     // The accumulate path's generation pipeline for a material's sidedness, as this scene and
@@ -68,9 +69,9 @@ class AggregateAA final : public Technique {
     eng::vk::GraphicsPipelineDesc generationPipelineDesc(bool doubleSided) const;
 
   private:
-    VkPipeline visibilityPipeline(AlphaPath alpha, bool doubleSided);
-    VkPipeline generationPipeline(bool doubleSided);
-    std::span<const uint32_t> generationCode() const; // this scene's and device's variant
+    VkPipeline makeVisibilityPipeline(const DrawVariant& variant);
+    VkPipeline makeGenerationPipeline(const DrawVariant& variant); // alpha: the prepass's, not read
+    std::span<const uint32_t> generationCode() const;              // this scene's and device's variant
     void resolveGeneration(); // Auto -> a path, or MissingCapability for a path the device lacks
     void createLayouts(const eng::frame::GpuScene& scene);
     void release(); // the destructor's work, also for a constructor that throws
@@ -87,10 +88,10 @@ class AggregateAA final : public Technique {
     shared::AgaaConstants m_constants{};
     eng::vk::PipelineLayout m_visibilityLayout, m_generationLayout, m_clusterLayout, m_lightingLayout,
         m_debugLayout;
-    std::array<VkPipeline, 2 * kAlphaPaths> m_visibilityPipelines{}; // [alpha path][double-sided]
+    // The raster passes' pipelines, one per draw variant met, made on first use.
+    eng::vk::PipelineCache<DrawVariant> m_visibilityPipelines, m_generationPipelines;
     std::unique_ptr<ShadowMapPass> m_shadow;
-    std::unique_ptr<SampleGBufferPass> m_gbuffer;      // samples path only
-    std::array<VkPipeline, 2> m_generationPipelines{}; // [double-sided]
+    std::unique_ptr<SampleGBufferPass> m_gbuffer; // samples path only
     VkPipeline m_clusterPipeline = VK_NULL_HANDLE, m_lightingPipeline = VK_NULL_HANDLE,
                m_debugPipeline = VK_NULL_HANDLE;
     VkSampler m_fetchSampler = VK_NULL_HANDLE;

@@ -59,7 +59,9 @@ AggregateAA::AggregateAA(vk::Device& device, const eng::frame::GpuScene& scene,
     : m_device(device), m_constantsRing(device, sizeof(shared::AgaaConstants), "agaa.constants"),
       m_settings(settings), m_requested(settings), m_scene(scene.scene()),
       m_features(effectiveFeatures(scene.scene(), settings.effects)), m_requestedNdf(settings.ndf),
-      m_hasEmissive(m_features.hasEmissive()) {
+      m_hasEmissive(m_features.hasEmissive()),
+      m_visibilityPipelines(device, [this](const DrawVariant& v) { return makeVisibilityPipeline(v); }),
+      m_generationPipelines(device, [this](const DrawVariant& v) { return makeGenerationPipeline(v); }) {
     validate(settings);
     if (m_settings.ndf == AggregateNdf::Auto)
         m_settings.ndf = m_features.glossyMetalsDominate() ? AggregateNdf::Sggx : AggregateNdf::Toksvig;
@@ -268,10 +270,8 @@ AggregateAA::~AggregateAA() {
 void AggregateAA::release() {
     VkDevice d = m_device.device();
     vkDeviceWaitIdle(d);
-    for (VkPipeline p : m_visibilityPipelines)
-        if (p) vkDestroyPipeline(d, p, nullptr);
-    for (VkPipeline p : m_generationPipelines)
-        if (p) vkDestroyPipeline(d, p, nullptr);
+    m_visibilityPipelines.release();
+    m_generationPipelines.release();
     for (VkPipeline p : {m_clusterPipeline, m_lightingPipeline, m_debugPipeline})
         if (p) vkDestroyPipeline(d, p, nullptr);
     vkDestroySampler(d, m_fetchSampler, nullptr);
@@ -280,9 +280,9 @@ void AggregateAA::release() {
         vk::destroyPipelineLayout(m_device, *l);
 }
 
-VkPipeline AggregateAA::visibilityPipeline(AlphaPath alpha, bool doubleSided) {
-    VkPipeline& p = m_visibilityPipelines[uint32_t(alpha) * 2 + (doubleSided ? 1 : 0)];
-    if (p) return p;
+VkPipeline AggregateAA::makeVisibilityPipeline(const DrawVariant& variant) {
+    const AlphaPath alpha = variant.alpha;
+    const bool doubleSided = variant.doubleSided;
     vk::GraphicsPipelineDesc d;
     d.vertex = kAgaaSceneVert;
     d.fragment = kAgaaVisibilityFrag;
@@ -300,10 +300,9 @@ VkPipeline AggregateAA::visibilityPipeline(AlphaPath alpha, bool doubleSided) {
     d.samples = VK_SAMPLE_COUNT_4_BIT;
     d.cullMode = doubleSided ? VK_CULL_MODE_NONE : VK_CULL_MODE_BACK_BIT;
     d.depthCompare = VK_COMPARE_OP_GREATER; // reversed Z
-    p = vk::createGraphicsPipeline(m_device, d,
-                                   std::string("agaa.visibility") + alphaPathName(alpha) +
-                                       (doubleSided ? ".twoSided" : ""));
-    return p;
+    return vk::createGraphicsPipeline(m_device, d,
+                                      std::string("agaa.visibility") + alphaPathName(alpha) +
+                                          (doubleSided ? ".twoSided" : ""));
 }
 
 std::span<const uint32_t> AggregateAA::generationCode() const {
@@ -352,12 +351,10 @@ eng::vk::GraphicsPipelineDesc AggregateAA::generationPipelineDesc(bool doubleSid
     return d;
 }
 
-VkPipeline AggregateAA::generationPipeline(bool doubleSided) {
-    VkPipeline& p = m_generationPipelines[doubleSided ? 1 : 0];
-    if (!p)
-        p = vk::createGraphicsPipeline(m_device, generationPipelineDesc(doubleSided),
-                                       std::string("agaa.generation") + (doubleSided ? ".twoSided" : ""));
-    return p;
+VkPipeline AggregateAA::makeGenerationPipeline(const DrawVariant& variant) {
+    return vk::createGraphicsPipeline(m_device, generationPipelineDesc(variant.doubleSided),
+                                      std::string("agaa.generation") +
+                                          (variant.doubleSided ? ".twoSided" : ""));
 }
 
 std::vector<VariantChoice> AggregateAA::variants() const {

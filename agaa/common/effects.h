@@ -106,6 +106,13 @@ inline AlphaPath materialAlphaPath(const eng::scene::Material& m, bool forced, u
     if (m.alphaMode == eng::scene::AlphaMode::Mask || forced) return maskedAlphaPath(samples);
     return AlphaPath::Opaque;
 }
+// The variant key of a raster pass that draws the scene's materials (a pass's pipelines come from
+// an eng::vk::PipelineCache keyed by it): the draw's alpha path and its sidedness.
+struct DrawVariant {
+    AlphaPath alpha = AlphaPath::Opaque;
+    bool doubleSided = false;
+    auto operator<=>(const DrawVariant&) const = default;
+};
 inline bool usesAlphaToCoverage(AlphaPath p) {
     return p == AlphaPath::Coverage || p == AlphaPath::BlendCoverage;
 }

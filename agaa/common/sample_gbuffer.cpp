@@ -22,8 +22,8 @@ namespace vk = eng::vk;
 SampleGBufferPass::SampleGBufferPass(vk::Device& device, const eng::frame::GpuScene& scene, uint32_t samples,
                                      std::string name, const eng::scene::SceneFeatures& features,
                                      const GBufferOptions& options)
-    : m_device(device), m_samples(samples), m_name(std::move(name)), m_features(features),
-      m_options(options) {
+    : m_device(device), m_samples(samples), m_name(std::move(name)), m_features(features), m_options(options),
+      m_pipelines(device, [this](const DrawVariant& v) { return makePipeline(v); }) {
     if (m_options.visibilityOnly) m_options.primitiveIds = true;
     if (!eng::frame::isSupportedSampleCount(samples))
         throw std::invalid_argument("--samples " + std::to_string(samples) + " is not supported (allowed: " +
@@ -54,8 +54,7 @@ SampleGBufferPass::SampleGBufferPass(vk::Device& device, const eng::frame::GpuSc
 SampleGBufferPass::~SampleGBufferPass() {
     VkDevice d = m_device.device();
     vkDeviceWaitIdle(d);
-    for (VkPipeline p : m_pipelines)
-        if (p) vkDestroyPipeline(d, p, nullptr);
+    m_pipelines.release();
     vk::destroyPipelineLayout(m_device, m_layout);
 }
 
@@ -70,9 +69,9 @@ std::span<const uint32_t> SampleGBufferPass::fragmentCode() const {
                              : kReferenceGbufferFrag);
 }
 
-VkPipeline SampleGBufferPass::pipeline(AlphaPath alpha, bool doubleSided) {
-    VkPipeline& p = m_pipelines[uint32_t(alpha) * 2 + (doubleSided ? 1 : 0)];
-    if (p) return p;
+VkPipeline SampleGBufferPass::makePipeline(const DrawVariant& variant) {
+    const AlphaPath alpha = variant.alpha;
+    const bool doubleSided = variant.doubleSided;
     vk::GraphicsPipelineDesc d;
     d.vertex = kReferenceGbufferVert;
     const bool sampleRate = m_options.sampleRateShading && m_samples > 1;
@@ -99,8 +98,7 @@ VkPipeline SampleGBufferPass::pipeline(AlphaPath alpha, bool doubleSided) {
     d.depthCompare = VK_COMPARE_OP_GREATER; // reversed Z: nearer is larger
     const char* path = alphaPathName(alpha);
     std::string name = m_name + ".gbuffer" + path + (doubleSided ? ".twoSided" : "");
-    p = vk::createGraphicsPipeline(m_device, d, name);
-    return p;
+    return vk::createGraphicsPipeline(m_device, d, name);
 }
 
 bool SampleGBufferPass::isStorage(const std::string& resourceName) const {
@@ -121,7 +119,8 @@ SampleGBuffer SampleGBufferPass::add(rg::Graph& graph, const FrameInputs& in) {
     std::vector<VkPipeline> drawPipelines;
     for (const eng::scene::Draw& draw : scene.draws) {
         const eng::scene::Material& m = scene.materials.at(draw.material);
-        drawPipelines.push_back(pipeline(materialAlphaPath(m, m_features.forced, m_samples), m.doubleSided));
+        drawPipelines.push_back(
+            m_pipelines.get({materialAlphaPath(m, m_features.forced, m_samples), m.doubleSided}));
     }
     rg::Buffer materials =
         graph.importBuffer(m_name + ".materials", {gpuScene->materials().buffer, gpuScene->materials().size},

@@ -11,6 +11,7 @@
 #include "engine/vk/descriptors.h"
 #include "engine/vk/device.h"
 #include "engine/vk/pipeline.h"
+#include "engine/vk/pipeline_cache.h"
 
 #include <array>
 #include <span>
@@ -88,8 +89,8 @@ class SampleGBufferPass {
     const GBufferOptions& options() const { return m_options; }
 
   private:
-    VkPipeline pipeline(AlphaPath alpha, bool doubleSided); // [alpha path][double-sided], made on first use
-    std::span<const uint32_t> fragmentCode() const;         // the fill for these options (any alpha path)
+    VkPipeline makePipeline(const DrawVariant& variant);
+    std::span<const uint32_t> fragmentCode() const; // the fill for these options (any alpha path)
 
     eng::vk::Device& m_device;
     uint32_t m_samples;
@@ -97,7 +98,7 @@ class SampleGBufferPass {
     eng::vk::PipelineLayout m_layout;
     eng::scene::SceneFeatures m_features;
     GBufferOptions m_options;
-    std::array<VkPipeline, 2 * kAlphaPaths> m_pipelines{}; // [alpha path][double-sided]
+    eng::vk::PipelineCache<DrawVariant> m_pipelines; // one per draw variant met, made on first use
 };
 
 } // namespace agaa
