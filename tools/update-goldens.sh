@@ -29,7 +29,9 @@ if ! grep -q '^AGAA_TEST_PERTURB:STRING=none$' "$build/CMakeCache.txt"; then
   echo "update-goldens: $build is a perturbed build (AGAA_TEST_PERTURB); refusing to write goldens from it" >&2
   exit 2
 fi
-cmake --build "$build" --target test_golden -j2
+# Without a host's case file in the environment: the build's test discovery (gtest_discover_tests,
+# after the link) lists test_golden's cases for ctest, and would list the host's instead.
+env -u AGAA_GOLDEN_HOST_CASES -u AGAA_GOLDEN_HOST_DIR cmake --build "$build" --target test_golden -j2
 lvp="$(ls /usr/share/vulkan/icd.d/lvp_icd.*.json 2>/dev/null | head -n1)"
 export VK_ICD_FILENAMES="${VK_ICD_FILENAMES:-$lvp}"
 golden="${AGAA_GOLDEN_HOST_DIR:-$root/tests/golden/images}"
