@@ -324,7 +324,13 @@ std::string methodSettingsKey(const MethodSettings& settings) {
     std::string key;
     for (const MethodOption& o : methodOptions())
         key += o.name + "=" + o.get(settings) + ";";
-    return key + "breakdown=" + std::to_string(settings.agaaBreakdown);
+    // A replaced program by its name and its code's address: two builds are two renders.
+    for (const auto& [name, code] : settings.agaaPrograms) {
+        char address[32];
+        std::snprintf(address, sizeof address, "%p", static_cast<const void*>(code.data()));
+        key += "program:" + name + "@" + address + ";";
+    }
+    return key;
 }
 
 // Joins a flag and its value in the synopsis so that lines wrap between flags only.

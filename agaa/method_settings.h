@@ -51,8 +51,8 @@ void setMethodOption(MethodSettings& settings, const MethodOption& option, const
 // Whether `method` (agaa-render's name, e.g. "agaa-samples") reads the option (its `methods`).
 bool methodReadsOption(const MethodOption& option, const std::string& method);
 
-// Every setting as "name=value" (and the timings-only breakdown bits), ';'-separated: two settings
-// with the same key render the same technique.
+// Every setting as "name=value" (and each replaced AGAA program), ';'-separated: two settings with
+// the same key render the same technique.
 std::string methodSettingsKey(const MethodSettings& settings);
 
 // "[--name SYNTAX]" for every option, wrapped at `width` columns, lines after the first indented

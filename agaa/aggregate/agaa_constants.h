@@ -4,6 +4,7 @@
 
 #include "agaa/common/effects.h"
 #include "agaa/common/named_value.h"
+#include "agaa/common/program_overrides.h"
 #include "shared/agaa.h"
 #include "shared/frame.h"
 
@@ -28,7 +29,7 @@ inline constexpr NamedValue<AggregatePosition> kAggregatePositionNames[] = {
 enum class AggregateNdf : uint32_t { Toksvig = 0, Sggx = 1, Auto = 2 };
 inline constexpr NamedValue<AggregateNdf> kAggregateNdfNames[] = {
     {"auto", AggregateNdf::Auto}, {"sggx", AggregateNdf::Sggx}, {"toksvig", AggregateNdf::Toksvig}};
-// How the lighting pass schedules its shading events (shaders/glsl/agaa/lighting.glsl, step 3):
+// How the lighting pass schedules its shading events (shaders/glsl/agaa/lighting.comp, step 3):
 // Registers: each invocation shades its own pixel's aggregates (a SIMD group pays for its pixel
 // with the most aggregates); Compact: aggregate 0 of every pixel in registers, every further
 // aggregate of the tile appended to a list in shared memory and shaded with all lanes busy.
@@ -39,7 +40,7 @@ inline constexpr NamedValue<AggregateShading> kAggregateShadingNames[] = {
     {"auto", AggregateShading::Auto},
     {"compact", AggregateShading::Compact},
     {"registers", AggregateShading::Registers}};
-// Which aggregate a generation fragment feeds (shaders/glsl/agaa/generation.glsl): Samples, each
+// Which aggregate a generation fragment feeds (shaders/glsl/agaa/generation.frag): Samples, each
 // visible sample its own metadata aggregate (AG-buffer counts equal the metadata's); Fragment,
 // Algorithm 2 as the paper writes it: the whole fragment to its first visible sample's aggregate.
 enum class AggregateRouting : uint32_t { Samples = 0, Fragment = 1 };
@@ -83,14 +84,6 @@ inline constexpr NamedValue<AggregateGeneration> kAggregateGenerationNames[] = {
     {"accumulate", AggregateGeneration::Accumulate},
     {"samples", AggregateGeneration::Samples},
     {"coverage", AggregateGeneration::Coverage}};
-// Parts a benchmark can remove (AggregateSettings::breakdown bits; specialisation constants).
-namespace AggregateBreakdown {
-inline constexpr uint32_t kLightingWithoutShading = 1;   // lighting.glsl: step 3 skipped
-inline constexpr uint32_t kGenerationWithoutAtomics = 2; // generation.glsl: material only
-inline constexpr uint32_t kGenerationEmpty = 4;          // generation.glsl: an empty fragment shader
-inline constexpr uint32_t kVisibilityWithoutNormals = 8; // visibility.frag: no face-normal encoding
-} // namespace AggregateBreakdown
-
 // AggregateSettings::tolerance: no pixel is shaded per sample.
 inline constexpr float kToleranceNever = -1.0f;
 
@@ -121,9 +114,9 @@ struct AggregateSettings {
     // shaded per sample as the reference shades it; 0 shades every pixel so. Below 0: never (AGAA
     // as the paper has it).
     float tolerance = kToleranceNever;
-    // Benchmark support (agaa-timings --breakdown): AggregateBreakdown bits, each removing one
-    // part of one pass so that the difference to a full run is that part's cost. Not an image.
-    uint32_t breakdown = 0;
+    // Builds to run in place of AGAA's shipping programs, by name (agaa/common/program_overrides.h);
+    // a name AGAA does not run is refused. Empty: the shipping builds.
+    ProgramOverrides programs;
     EffectSettings effects; // scene-driven shadows (taps: the footprint filter), alpha-to-coverage, ...
 };
 

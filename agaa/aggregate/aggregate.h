@@ -72,6 +72,7 @@ class AggregateAA final : public Technique {
     VkPipeline makeVisibilityPipeline(const DrawVariant& variant);
     VkPipeline makeGenerationPipeline(const DrawVariant& variant); // alpha: the prepass's, not read
     std::span<const uint32_t> generationCode() const;              // this scene's and device's variant
+    std::span<const uint32_t> program(const NamedProgram& shipping) const; // or its replacement
     void resolveGeneration(); // Auto -> a path, or MissingCapability for a path the device lacks
     void createLayouts(const eng::frame::GpuScene& scene);
     void release(); // the destructor's work, also for a constructor that throws

@@ -26,8 +26,11 @@
 #include "shaders/agaa/scene_vert.h"
 #include "shaders/agaa/visibility_frag.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <stdexcept>
+#include <string_view>
+#include <vector>
 
 namespace agaa {
 namespace vk = eng::vk;
@@ -52,6 +55,50 @@ const char* shadowFootprintName(EffectSettings::ShadowFootprint footprint) {
     return " along the aggregate's depth-variance vector and at its footprint's corners, at every sample "
            "where they disagree";
 }
+
+// AGAA's programs by their names in the shader table (shaders/CMakeLists.txt): the names
+// AggregateSettings::programs replaces them by.
+const NamedProgram kVisibilityProgram{"agaa/visibility.frag", kAgaaVisibilityFrag};
+const NamedProgram kClusterPrograms[2] = {{"agaa/cluster.comp", kAgaaClusterComp},
+                                          {"agaa/cluster_gbuffer.comp", kAgaaClusterGbufferComp}};
+// [emissive][int64][subgroup]
+const NamedProgram kGenerationPrograms[2][2][2] = {
+    {{{"agaa/generation.frag", kAgaaGenerationFrag},
+      {"agaa/generation_subgroup.frag", kAgaaGenerationSubgroupFrag}},
+     {{"agaa/generation_int64.frag", kAgaaGenerationInt64Frag},
+      {"agaa/generation_int64_subgroup.frag", kAgaaGenerationInt64SubgroupFrag}}},
+    {{{"agaa/generation_emissive.frag", kAgaaGenerationEmissiveFrag},
+      {"agaa/generation_emissive_subgroup.frag", kAgaaGenerationEmissiveSubgroupFrag}},
+     {{"agaa/generation_emissive_int64.frag", kAgaaGenerationEmissiveInt64Frag},
+      {"agaa/generation_emissive_int64_subgroup.frag", kAgaaGenerationEmissiveInt64SubgroupFrag}}}};
+// [gbuffer][emissive][shadows]
+const NamedProgram kLightingPrograms[2][2][2] = {
+    {{{"agaa/lighting.comp", kAgaaLightingComp}, {"agaa/lighting_shadow.comp", kAgaaLightingShadowComp}},
+     {{"agaa/lighting_emissive.comp", kAgaaLightingEmissiveComp},
+      {"agaa/lighting_emissive_shadow.comp", kAgaaLightingEmissiveShadowComp}}},
+    {{{"agaa/lighting_gbuffer.comp", kAgaaLightingGbufferComp},
+      {"agaa/lighting_gbuffer_shadow.comp", kAgaaLightingGbufferShadowComp}},
+     {{"agaa/lighting_gbuffer_emissive.comp", kAgaaLightingGbufferEmissiveComp},
+      {"agaa/lighting_gbuffer_emissive_shadow.comp", kAgaaLightingGbufferEmissiveShadowComp}}}};
+const NamedProgram kDebugProgram{"agaa/debug_aggregates.comp", kAgaaDebugAggregatesComp};
+
+// Refuses a replacement for a program AGAA does not run, by name (a misspelt name would
+// otherwise replace nothing and time the shipping build).
+void checkProgramOverrides(const ProgramOverrides& overrides) {
+    std::vector<std::string_view> known = {kVisibilityProgram.name, kClusterPrograms[0].name,
+                                           kClusterPrograms[1].name, kDebugProgram.name};
+    for (const auto& table : {kGenerationPrograms, kLightingPrograms})
+        for (int i = 0; i < 8; ++i)
+            known.push_back(table[i / 4][i / 2 % 2][i % 2].name);
+    for (const auto& [name, code] : overrides) {
+        if (std::find(known.begin(), known.end(), name) != known.end()) continue;
+        std::string list;
+        for (std::string_view k : known)
+            list += (list.empty() ? "" : ", ") + std::string(k);
+        throw std::invalid_argument("agaa: a replacement for program '" + name +
+                                    "', which AGAA does not run (its programs: " + list + ")");
+    }
+}
 } // namespace
 
 AggregateAA::AggregateAA(vk::Device& device, const eng::frame::GpuScene& scene,
@@ -63,6 +110,7 @@ AggregateAA::AggregateAA(vk::Device& device, const eng::frame::GpuScene& scene,
       m_visibilityPipelines(device, [this](const DrawVariant& v) { return makeVisibilityPipeline(v); }),
       m_generationPipelines(device, [this](const DrawVariant& v) { return makeGenerationPipeline(v); }) {
     validate(settings);
+    checkProgramOverrides(settings.programs);
     if (m_settings.ndf == AggregateNdf::Auto)
         m_settings.ndf = m_features.glossyMetalsDominate() ? AggregateNdf::Sggx : AggregateNdf::Toksvig;
     m_shadow = std::make_unique<ShadowMapPass>(device, scene, m_features, settings.effects, "agaa");
@@ -132,8 +180,7 @@ AggregateAA::AggregateAA(vk::Device& device, const eng::frame::GpuScene& scene,
         createLayouts(scene);
 
         m_clusterPipeline = vk::createComputePipeline(
-            device, samplesPath ? std::span<const uint32_t>(kAgaaClusterGbufferComp) : kAgaaClusterComp,
-            m_clusterLayout.layout,
+            device, program(kClusterPrograms[samplesPath ? 1 : 0]), m_clusterLayout.layout,
             {{},
              {{shared::kSpecClusterSamples, settings.samples},
               {shared::kSpecClusterAggregates, settings.aggregates},
@@ -141,8 +188,8 @@ AggregateAA::AggregateAA(vk::Device& device, const eng::frame::GpuScene& scene,
             "agaa.cluster");
         m_lightingPipeline = vk::createComputePipeline(device, lightingCode(), m_lightingLayout.layout,
                                                        lightingVariant(), "agaa.lighting");
-        m_debugPipeline = vk::createComputePipeline(device, kAgaaDebugAggregatesComp, m_debugLayout.layout,
-                                                    {}, "agaa.debug.aggregates");
+        m_debugPipeline = vk::createComputePipeline(device, program(kDebugProgram), m_debugLayout.layout, {},
+                                                    "agaa.debug.aggregates");
     } catch (...) {
         release();
         throw;
@@ -199,29 +246,24 @@ void AggregateAA::resolveGeneration() {
                                  : ": the per-sample G-buffer would be 1.7x the accumulate path's memory");
 }
 
+std::span<const uint32_t> AggregateAA::program(const NamedProgram& shipping) const {
+    return programCode(m_settings.programs, shipping);
+}
+
 std::span<const uint32_t> AggregateAA::lightingCode() const {
-    const bool shadows = m_shadow->enabled();
-    if (m_settings.generation == AggregateGeneration::Samples)
-        return m_hasEmissive ? (shadows ? std::span<const uint32_t>(kAgaaLightingGbufferEmissiveShadowComp)
-                                        : kAgaaLightingGbufferEmissiveComp)
-                             : (shadows ? std::span<const uint32_t>(kAgaaLightingGbufferShadowComp)
-                                        : kAgaaLightingGbufferComp);
-    return m_hasEmissive ? (shadows ? std::span<const uint32_t>(kAgaaLightingEmissiveShadowComp)
-                                    : kAgaaLightingEmissiveComp)
-                         : (shadows ? std::span<const uint32_t>(kAgaaLightingShadowComp) : kAgaaLightingComp);
+    return program(kLightingPrograms[m_settings.generation == AggregateGeneration::Samples ? 1 : 0]
+                                    [m_hasEmissive ? 1 : 0][m_shadow->enabled() ? 1 : 0]);
 }
 
 eng::vk::Specialization AggregateAA::lightingVariant() const {
     vk::Specialization spec = lightingSpecialization(
         effectSpecialization(m_features, m_settings.effects.shadowTaps, m_settings.effects.shadowFootprint),
         m_features);
-    const bool skipShading = m_settings.breakdown & AggregateBreakdown::kLightingWithoutShading;
     spec.byId.insert(
         spec.byId.end(),
         {{shared::kSpecLightingSamples, m_settings.samples},
          {shared::kSpecLightingAggregates, m_settings.aggregates},
          {shared::kSpecLightingCompact, m_settings.shading == AggregateShading::Compact ? 1u : 0u},
-         {shared::kSpecLightingSkipShading, skipShading ? 1u : 0u},
          {shared::kSpecLightingNdf, uint32_t(m_settings.ndf)},
          {shared::kSpecLightingRouting, uint32_t(m_settings.routing)},
          {shared::kSpecLightingViewFootprint, m_features.hasNearMirrors() ? 1u : 0u},
@@ -237,7 +279,8 @@ void AggregateAA::createLayouts(const eng::frame::GpuScene& scene) {
     constexpr auto kFs = VK_SHADER_STAGE_FRAGMENT_BIT;
     constexpr auto kCs = VK_SHADER_STAGE_COMPUTE_BIT;
     vk::LayoutDesc visibility;
-    visibility.pushBindings = vk::reflectBindings({{kAgaaSceneVert, kVs}, {kAgaaVisibilityFrag, kFs}});
+    visibility.pushBindings =
+        vk::reflectBindings({{kAgaaSceneVert, kVs}, {program(kVisibilityProgram), kFs}});
     visibility.extraSets = {scene.textureSetLayout()};
     visibility.pushConstantBytes = 4;
     m_visibilityLayout = vk::createPipelineLayout(m_device, visibility, "agaa.visibility.layout");
@@ -250,8 +293,7 @@ void AggregateAA::createLayouts(const eng::frame::GpuScene& scene) {
 
     const bool samplesPath = m_settings.generation == AggregateGeneration::Samples;
     vk::LayoutDesc cluster;
-    cluster.pushBindings = vk::reflectBindings(
-        {{samplesPath ? std::span<const uint32_t>(kAgaaClusterGbufferComp) : kAgaaClusterComp, kCs}});
+    cluster.pushBindings = vk::reflectBindings({{program(kClusterPrograms[samplesPath ? 1 : 0]), kCs}});
     m_clusterLayout = vk::createPipelineLayout(m_device, cluster, "agaa.cluster.layout");
 
     vk::LayoutDesc lighting;
@@ -259,7 +301,7 @@ void AggregateAA::createLayouts(const eng::frame::GpuScene& scene) {
     m_lightingLayout = vk::createPipelineLayout(m_device, lighting, "agaa.lighting.layout");
 
     vk::LayoutDesc debug;
-    debug.pushBindings = vk::reflectBindings({{kAgaaDebugAggregatesComp, kCs}});
+    debug.pushBindings = vk::reflectBindings({{program(kDebugProgram), kCs}});
     m_debugLayout = vk::createPipelineLayout(m_device, debug, "agaa.debug.layout");
 }
 
@@ -285,14 +327,11 @@ VkPipeline AggregateAA::makeVisibilityPipeline(const DrawVariant& variant) {
     const bool doubleSided = variant.doubleSided;
     vk::GraphicsPipelineDesc d;
     d.vertex = kAgaaSceneVert;
-    d.fragment = kAgaaVisibilityFrag;
+    d.fragment = program(kVisibilityProgram);
     d.layout = m_visibilityLayout.layout;
     // Paper section 3.6: masked materials sample alpha here only, with alpha-to-coverage; the
     // generation pass inherits the coverage through its depth EQUAL test.
-    d.specialization.byId = {
-        {shared::kSpecVisibilityAlphaPath, uint32_t(alpha)},
-        {shared::kSpecVisibilitySkipNormal,
-         m_settings.breakdown & AggregateBreakdown::kVisibilityWithoutNormals ? 1u : 0u}};
+    d.specialization.byId = {{shared::kSpecVisibilityAlphaPath, uint32_t(alpha)}};
     addMaterialSpecialization(d.specialization, m_features);
     d.alphaToCoverage = usesAlphaToCoverage(alpha);
     d.colorFormats = {VK_FORMAT_R8G8_UNORM};
@@ -306,14 +345,9 @@ VkPipeline AggregateAA::makeVisibilityPipeline(const DrawVariant& variant) {
 }
 
 std::span<const uint32_t> AggregateAA::generationCode() const {
-    // [emissive][int64][subgroup]
-    static const std::span<const uint32_t> kVariants[2][2][2] = {
-        {{kAgaaGenerationFrag, kAgaaGenerationSubgroupFrag},
-         {kAgaaGenerationInt64Frag, kAgaaGenerationInt64SubgroupFrag}},
-        {{kAgaaGenerationEmissiveFrag, kAgaaGenerationEmissiveSubgroupFrag},
-         {kAgaaGenerationEmissiveInt64Frag, kAgaaGenerationEmissiveInt64SubgroupFrag}}};
-    return kVariants[m_hasEmissive ? 1 : 0][m_settings.atomics == AggregateAtomics::Bits64 ? 1 : 0]
-                    [m_settings.subgroupReduction == SubgroupReduction::On ? 1 : 0];
+    return program(
+        kGenerationPrograms[m_hasEmissive ? 1 : 0][m_settings.atomics == AggregateAtomics::Bits64 ? 1 : 0]
+                           [m_settings.subgroupReduction == SubgroupReduction::On ? 1 : 0]);
 }
 
 eng::vk::GraphicsPipelineDesc AggregateAA::generationPipelineDesc(bool doubleSided) const {
@@ -322,15 +356,9 @@ eng::vk::GraphicsPipelineDesc AggregateAA::generationPipelineDesc(bool doubleSid
     d.fragment = generationCode();
     d.layout = m_generationLayout.layout;
     d.specialization = effectSpecialization(m_features, 1);
-    // The benchmark's breakdown: 0 the whole pass, 1 material only, 2 an empty shader.
-    const uint32_t b = m_settings.breakdown;
-    d.specialization.byId.insert(
-        d.specialization.byId.end(),
-        {{shared::kSpecGenerationNdf, uint32_t(m_settings.ndf)},
-         {shared::kSpecGenerationRouting, uint32_t(m_settings.routing)},
-         {shared::kSpecGenerationBreakdown, b & AggregateBreakdown::kGenerationEmpty            ? 2u
-                                            : b & AggregateBreakdown::kGenerationWithoutAtomics ? 1u
-                                                                                                : 0u}});
+    d.specialization.byId.insert(d.specialization.byId.end(),
+                                 {{shared::kSpecGenerationNdf, uint32_t(m_settings.ndf)},
+                                  {shared::kSpecGenerationRouting, uint32_t(m_settings.routing)}});
     addMaterialSpecialization(d.specialization, m_features);
     if (m_hasEmissive) d.colorFormats = {VK_FORMAT_B10G11R11_UFLOAT_PACK32};
     d.depthFormat = m_depthFormat;

@@ -13,7 +13,7 @@
 //    values, UNORM and float targets linear ones. The target must be single-sample, frame-sized,
 //    created with TRANSFER_DST usage, and of a format with BLIT_DST support (not integer).
 //  - depth (optional) <- the nearest of each pixel's visibility samples, in the node's reversed
-//    Z (1 at znear, 0 = sky; shaders/glsl/common/depth_resolve.glsl says why nearest). The host
+//    Z (1 at znear, 0 = sky; shaders/glsl/common/depth_resolve.comp says why nearest). The host
 //    drawing after the node must use the same projection (FrameConstants::proj) and a GREATER /
 //    GREATER_OR_EQUAL depth test. D32_SFLOAT or D32_SFLOAT_S8_UINT (stencil left as it was),
 //    single-sample, frame-sized, TRANSFER_DST usage.

@@ -51,7 +51,7 @@ struct GBufferOptions {
     // float (SBAA's prepass; integer MSAA colour is 1x only on lavapipe). Needs the geometryShader
     // feature (gl_PrimitiveID in a fragment shader) and fewer than 2^24 triangles.
     bool primitiveIds = false;
-    // SBAA's visibility prepass (sbaa/prepass.glsl): depth, the geometric normal and the primitive id,
+    // SBAA's visibility prepass (sbaa/prepass.frag): depth, the geometric normal and the primitive id,
     // no material (the targets normal, albedoMetal and emissiveRoughness are not made). Implies
     // primitiveIds; sampleRateShading runs the alpha test per sample.
     bool visibilityOnly = false;

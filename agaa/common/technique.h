@@ -22,6 +22,7 @@
 // returned, as execute callbacks only read state that no later addPasses() changes.
 
 #include "agaa/common/effects.h"
+#include "agaa/common/program_overrides.h"
 #include "engine/frame/gpu_scene.h"
 #include "engine/graph/graph.h"
 #include "shared/frame.h"
@@ -100,8 +101,10 @@ struct MethodSettings {
     // AGAA samples path: the error-driven shading rate's tolerance (AggregateSettings::tolerance);
     // below 0: never.
     float agaaTolerance = -1.0f;
-    uint32_t agaaBreakdown = 0; // agaa-timings --breakdown only (AggregateBreakdown bits)
-    EffectSettings effects;     // scene-driven shadows, alpha-to-coverage, emissive, normal maps
+    EffectSettings effects; // scene-driven shadows, alpha-to-coverage, emissive, normal maps
+    // AGAA: builds to run in place of its shipping programs (agaa/common/program_overrides.h), such
+    // as agaa-timings' part-removed builds. Not an option: a tool's, set in code.
+    ProgramOverrides agaaPrograms;
 };
 
 class Technique {

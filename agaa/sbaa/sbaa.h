@@ -6,7 +6,7 @@
 // paper; FrameTargets::lostSamples reports it per pixel.
 //
 // Passes, the paper's four: "sbaa.gbuffer" (the visibility prepass: depth, geometric normal and
-// primitive id per sample, no material; sbaa/prepass.glsl), "sbaa.surfaces" (the selection:
+// primitive id per sample, no material; sbaa/prepass.frag), "sbaa.surfaces" (the selection:
 // coverage, representative sample and primitive of the kept surfaces), "sbaa.fill" (the second
 // geometry pass: the material of each kept surface into the per-surface G-buffer, 32 bytes per
 // surface; surface_fill.h), "sbaa.lighting" (tiled deferred over the surfaces).

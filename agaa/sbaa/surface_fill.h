@@ -3,7 +3,7 @@
 // pass over the scene, after the surface selection. Each kept surface's record (shared/sbaa.h)
 // names its representative primitive and sample; the fragment of that primitive that covers that
 // sample evaluates the material there, exactly as the per-sample G-buffer would, and stores it in
-// the record's words 2..6 (reference/gbuffer.glsl with GBUFFER_SURFACE_FILL). So the material
+// the record's words 2..6 (reference/gbuffer.frag with GBUFFER_SURFACE_FILL). So the material
 // runs for visible fragments only (EQUAL against the prepass depth, early) and is stored S times
 // per pixel, not n times. Needs fragmentStoresAndAtomics (required by the device) and
 // gl_PrimitiveID / gl_Layer in a fragment shader (geometryShader, probed by the prepass).

@@ -1,6 +1,6 @@
 #pragma once
 // CPU twin of SBAA's surface selection (shaders/glsl/sbaa/surfaces.comp; Salvi and Vidimce 2012)
-// and of its resolve weights (sbaa/lighting.glsl), written from the algorithm, not from the shader:
+// and of its resolve weights (sbaa/lighting.comp), written from the algorithm, not from the shader:
 // the GPU output is tested against it (tests/gpu/test_sbaa.cpp).
 
 #include "shared/frame.h"
@@ -46,7 +46,7 @@ glm::vec3 storedGeometricNormal(const SbaaSample& sample);
 SbaaSelection selectSurfaces(const shared::FrameConstants& frame, const SbaaSample* samples, int px, int py,
                              uint32_t surfaces, const SbaaMergeTest& test);
 
-// Resolve weights (sbaa/lighting.glsl): per kept surface its sample count over the kept surfaces'
+// Resolve weights (sbaa/lighting.comp): per kept surface its sample count over the kept surfaces'
 // and the sky's, then the sky's weight last. The lost coverage is not in the denominator.
 std::vector<float> resolveWeights(const SbaaSelection& selection);
 

@@ -1,6 +1,6 @@
 #pragma once
 // CPU reference of streaming G-buffer compression (Kerzner and Salvi 2014, section 3; the shader
-// is shaders/glsl/streaming/compress.comp) and of its resolve weights (streaming/lighting.glsl),
+// is shaders/glsl/streaming/compress.comp) and of its resolve weights (streaming/lighting.comp),
 // written from the paper and issue 15, not from the shader: the GPU output is tested against it
 // (tests/gpu/test_streaming.cpp), the merge and evict edge cases in
 // tests/agaa/test_streaming_compression.cpp.

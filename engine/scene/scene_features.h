@@ -19,7 +19,7 @@ inline constexpr float kGlossyMetallic = 0.5f;
 inline constexpr float kGlossyRoughness = 0.4f;
 // A material counts as a near mirror below this roughness factor, or with a metallic-roughness
 // texture (which can only lower it): AGAA's lighting then takes its near-mirror view footprint
-// (agaa/lighting.glsl addLightFootprint), which starts below alpha = theta / sqrt(2) for any
+// (agaa/lighting.comp addLightFootprint), which starts below alpha = theta / sqrt(2) for any
 // footprint (sxx + syy <= 1/2): roughness 0.1, alpha 0.01, covers a 40-degree view down to 64
 // pixels (theta 0.0114). Elsewhere the pass is compiled without it: its branch alone costs lavapipe
 // about a fifth of the lighting pass.

@@ -225,7 +225,7 @@ void legendSection(const Controls& controls) {
         swatch(ImVec4(0.9f, 0.1f, 0.1f, 1), "4 aggregates");
         ImGui::TextWrapped("brightness: share of covered samples in aggregate 0");
     } else if (view == "complex") {
-        // shaders/glsl/simple_complex/lighting.glsl complexHighlight
+        // shaders/glsl/simple_complex/lighting.comp complexHighlight
         swatch(ImVec4(1.0f, 0.1f, 0.05f, 1), "complex pixel: every sample lit");
         swatch(ImVec4(0.6f, 0.6f, 0.6f, 1), "simple pixel: sample 0 only (grey luma)");
     } else {

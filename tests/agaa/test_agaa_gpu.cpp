@@ -142,7 +142,7 @@ TEST(AgaaGpu, AccumulationMatchesACpuReplayOfTheSameFragments) {
         const char* scene;
         uint32_t n, c;
     };
-    // pixel, layer, mask, the quantised fields, the 8 material inputs (generation.glsl kRecordWords)
+    // pixel, layer, mask, the quantised fields, the 8 material inputs (generation.frag kRecordWords)
     constexpr uint32_t kRecordWords = 3 + shared::kQuantizedFields + 8;
     // furball and foliage accumulate Toksvig vectors, railings (glossy metal paint) SGGX matrices.
     for (const Case& k : {Case{"furball", 8, 2}, Case{"railings", 16, 3}, Case{"foliage", 32, 4}}) {

@@ -1,4 +1,4 @@
-// AGAA's per-aggregate lighting (shaders/glsl/agaa/lighting.glsl; samples path, Toksvig and SGGX) against a
+// AGAA's per-aggregate lighting (shaders/glsl/agaa/lighting.comp; samples path, Toksvig and SGGX) against a
 // double-precision CPU shading of the same aggregates (issue 17). The test build of the lighting
 // pass (tests/support/aggregate_instrumentation.h AggregateExportPass) hands back what its step 1 built: each
 // aggregate's mean Toksvig vector, albedo and metallic, and each sample's view position and aggregate. From
@@ -178,7 +178,7 @@ dvec3 shadeToksvig(const dvec3& mean, double materialAlpha, const dvec3& base, d
     return radiance;
 }
 
-// Near mirrors (agaa/lighting.glsl addLightFootprint): the radiance from the aggregate's one view
+// Near mirrors (agaa/lighting.comp addLightFootprint): the radiance from the aggregate's one view
 // direction, blended with the mean over its samples' own view directions (the lobe and the lights
 // the aggregate's) by the weight of the footprint against the lobe (common/depth.glsl
 // viewFootprintWeight): rho = theta^2 (sxx + syy) / (4 alpha^2), theta the pixel's angle at P (its
@@ -213,7 +213,7 @@ dvec3 withViewFootprint(Shade shade, const dvec3& P, const std::vector<glm::dvec
     return glm::mix(one, each / double(positions.size()), t);
 }
 
-// c = 1's off-layer samples (lighting.glsl offLayerLight, offLayerRadiance): one surface of their
+// c = 1's off-layer samples (agaa/lighting.comp offLayerLight, offLayerRadiance): one surface of their
 // own at their mean view position P. Its normals' lobe is the mean of their unit normals, its
 // direction and its length r (opposing normals that cancel, r -> 0: the view axis +z, which the
 // spread makes all but irrelevant). Lambert of their mean diffuse colour under every light's

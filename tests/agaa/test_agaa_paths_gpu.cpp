@@ -40,7 +40,7 @@ struct Case {
 };
 
 // The compacted schedule lights the same aggregates with the same values and the same code
-// (lighting.glsl shadeAggregate); only the invocation that does it differs. Any difference in
+// (agaa/lighting.comp shadeAggregate); only the invocation that does it differs. Any difference in
 // the image is a bug in the list's bookkeeping (a lost, doubled or misrouted entry).
 TEST(AgaaPathsGpu, CompactedLightingEqualsThePerPixelScheduleBitForBit) {
     auto device = agaa::test::makeValidatedDevice();

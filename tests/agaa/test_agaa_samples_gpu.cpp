@@ -1,6 +1,6 @@
 // AGAA's samples generation path (issue 13) on lavapipe with the validation layer: one per-sample
 // G-buffer pass, Algorithm 1 on its depth and shading normal, each aggregate averaged from its
-// samples at the top of the lighting tile (shaders/glsl/agaa/lighting.glsl AGAA_GBUFFER).
+// samples at the top of the lighting tile (shaders/glsl/agaa/lighting.comp AGAA_GBUFFER).
 //  - the per-sample aggregation against a CPU aggregation written here, in double, from the
 //    formulas (not from the shader's source): Toksvig vector, SGGX matrix, albedo, metallic;
 //  - metal and dielectric samples never share an aggregate when c leaves room for both;

@@ -161,7 +161,7 @@ TEST(Toksvig, GuardsAtTheEdges) {
 
 // ---- SGGX layout (shared/agaa.h) -------------------------------------------------------
 
-// The quantised fields of one sample, as generation.glsl computes them.
+// The quantised fields of one sample, as generation.frag computes them.
 AgQuantized sggxSample(glm::vec3 n, float alpha, glm::vec3 albedo, float metallic, uint32_t samples) {
     const float a = std::clamp(alpha, agaa::kMinGgxAlpha, agaa::kMaxGgxAlpha), a2 = a * a;
     const glm::vec3 N = n * (1.0f - a2);

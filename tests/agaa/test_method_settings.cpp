@@ -98,10 +98,19 @@ TEST(MethodSettings, EveryOptionRoundTripsAndMovesTheCacheKey) {
             EXPECT_EQ(other.get(s), other.get(defaults)) << o.name << " moved " << other.name;
         }
     }
-    MethodSettings breakdown;
-    breakdown.agaaBreakdown = 1;
-    EXPECT_NE(agaa::methodSettingsKey(breakdown), defaultKey)
-        << "agaa-timings' breakdown bits are part of the key";
+    // A replaced program is part of the key, by name and by build: agaa-timings' breakdown renders
+    // the same settings with three sets of builds.
+    static const uint32_t buildA[] = {0x07230203u}, buildB[] = {0x07230203u, 0u};
+    MethodSettings replaced, replacedOther, replacedElsewhere;
+    replaced.agaaPrograms["agaa/lighting.comp"] = buildA;
+    replacedOther.agaaPrograms["agaa/lighting.comp"] = buildB;
+    replacedElsewhere.agaaPrograms["agaa/visibility.frag"] = buildA;
+    const std::string keys[] = {defaultKey, agaa::methodSettingsKey(replaced),
+                                agaa::methodSettingsKey(replacedOther),
+                                agaa::methodSettingsKey(replacedElsewhere)};
+    for (size_t i = 0; i < std::size(keys); ++i)
+        for (size_t j = i + 1; j < std::size(keys); ++j)
+            EXPECT_NE(keys[i], keys[j]) << "keys " << i << " and " << j;
 }
 
 TEST(MethodSettings, BadValuesNameTheFlagAndTheAllowedValues) {

@@ -248,7 +248,7 @@ TEST(SceneFeatures, GlossyMetalsCountAtTheThresholdsAndOnlyWhenDrawn) {
             << name;
 }
 
-// AGAA's near-mirror view footprint (agaa/lighting.glsl addLightFootprint) is compiled in only where
+// AGAA's near-mirror view footprint (agaa/lighting.comp addLightFootprint) is compiled in only where
 // a drawn material can be a near mirror: roughness below kNearMirrorRoughness, or a metallic-
 // roughness texture (it can only lower the factor); forcing every effect turns it on too.
 TEST(SceneFeatures, NearMirrorsCountBelowTheRoughnessOrWithARoughnessTexture) {

@@ -1,8 +1,10 @@
 # Fails when test instrumentation reaches the shipping build (STYLE.md: exports, records and
 # timing switches live in test-only passes or test builds of a shader, never in the shipping
-# layout). Test builds of a shader define AGAA_EXPORT or AGAA_RECORD to 1 and live under
-# shaders/glsl/tests/, compiled into agaa_test_shaders only; the shipping shader list
-# (shaders/CMakeLists.txt) names none of them, and no shipping C++ includes one.
+# layout). A test or benchmark build is a shipping source compiled with AGAA_EXPORT, AGAA_RECORD
+# or an AGAA_BREAKDOWN_* macro, declared in the tests' or agaa-timings' own program table
+# (tests/CMakeLists.txt, tools/agaa_timings/CMakeLists.txt). The shipping table
+# (shaders/CMakeLists.txt) declares none, no source defines one to 1 outside shaders/glsl/tests/,
+# and no shipping C++ includes a test kernel or test support.
 # Usage: cmake -DROOT=<dir> -P no_test_builds_shipped.cmake
 if(NOT ROOT)
   message(FATAL_ERROR "no_test_builds_shipped.cmake: pass -DROOT=<source root>")
@@ -15,7 +17,7 @@ foreach(source IN LISTS shaders)
   if(relative MATCHES "^shaders/glsl/tests/")
     continue()
   endif()
-  file(STRINGS ${source} lines REGEX "^[ \t]*#[ \t]*define[ \t]+AGAA_(EXPORT|RECORD)[ \t]+1")
+  file(STRINGS ${source} lines REGEX "^[ \t]*#[ \t]*define[ \t]+AGAA_(EXPORT|RECORD|BREAKDOWN_[A-Z_]+)[ \t]+1")
   foreach(line IN LISTS lines)
     string(STRIP "${line}" line)
     string(APPEND found "\n  ${relative}: ${line} (a test build outside shaders/glsl/tests/)")
@@ -26,6 +28,11 @@ if(EXISTS ${ROOT}/shaders/CMakeLists.txt)
   foreach(line IN LISTS lines)
     string(STRIP "${line}" line)
     string(APPEND found "\n  shaders/CMakeLists.txt: ${line} (a test kernel in the shipping library)")
+  endforeach()
+  file(STRINGS ${ROOT}/shaders/CMakeLists.txt lines REGEX "^[^#]*[:,]AGAA_(EXPORT|RECORD|BREAKDOWN_[A-Z_]+)")
+  foreach(line IN LISTS lines)
+    string(STRIP "${line}" line)
+    string(APPEND found "\n  shaders/CMakeLists.txt: ${line} (a test or benchmark build in the shipping library)")
   endforeach()
 endif()
 file(GLOB_RECURSE sources LIST_DIRECTORIES false ${ROOT}/engine/*.cpp ${ROOT}/engine/*.h ${ROOT}/agaa/*.cpp

@@ -61,7 +61,7 @@ class AggregateExportPass {
 };
 
 // The fragments the accumulate path's generation pass accumulated in the central 16x16 pixels
-// (shaders/glsl/agaa/generation.glsl kRecordWindow), recorded by the pass's test build
+// (shaders/glsl/agaa/generation.frag kRecordWindow), recorded by the pass's test build
 // (shaders/glsl/tests/agaa_generation_record.frag) drawn again over the generation's depth and
 // stencil: the stencil the shipping pass left at 1 on every sample it took a fragment for lets
 // the same first fragment per sample through once more. Into `host`: an 8-byte header {count,

@@ -20,17 +20,17 @@
 //   - visibility + generation against the per-sample G-buffer pass of Simple/Complex (or of the
 //     reference) at the same n: the cost of AGAA's two raster passes against the one they replace;
 //   - with --breakdown, where each AGAA pass's time goes, from runs that each remove one part
-//     (agaa/aggregate/agaa_constants.h AggregateBreakdown): lighting = shading + the rest;
+//     (the part-removed builds of breakdown_builds.h): lighting = shading + the rest;
 //     generation = atomics and routing + material + raster/depth/stencil; visibility = face-normal
 //     encoding + the rest. Differences of medians: read them as estimates, not exact sums.
 // Exit codes: 0 done; 2 bad arguments; 3 the device lacks something required.
 
-#include "agaa/aggregate/agaa_constants.h"
 #include "agaa/method_settings.h"
 #include "agaa/methods.h"
 #include "engine/scene/extra_lights.h"
 #include "engine/scene/scene_error.h"
 #include "engine/vk/check.h"
+#include "tools/agaa_timings/breakdown_builds.h"
 #include "tools/harness/frame_renderer.h"
 #include "tools/scenes/adversarial_scenes.h"
 
@@ -267,16 +267,16 @@ int main(int argc, char** argv) {
                         out["scenes"][name][job.label()]["lost_coverage"] = *res.lostCoverageFraction;
                     }
                     if (breakdown && job.isAgaa()) {
-                        namespace parts = agaa::AggregateBreakdown;
-                        auto without = [&](uint32_t bits) {
+                        namespace parts = agaa::timings;
+                        auto without = [&](agaa::ProgramOverrides builds) {
                             agaa::RenderRequest r = request(job);
-                            r.settings.agaaBreakdown = bits;
+                            r.settings.agaaPrograms = std::move(builds);
                             return renderer.render(r);
                         };
-                        agaa::RenderResult noShading = without(parts::kLightingWithoutShading);
+                        agaa::RenderResult noShading = without(parts::lightingWithoutShading());
                         agaa::RenderResult noAtomics =
-                            without(parts::kGenerationWithoutAtomics | parts::kVisibilityWithoutNormals);
-                        agaa::RenderResult empty = without(parts::kGenerationEmpty);
+                            without(parts::generationWithoutAtomicsVisibilityWithoutNormals());
+                        agaa::RenderResult empty = without(parts::generationEmpty());
                         const double lighting = shadingMs(res), prologue = shadingMs(noShading);
                         const double generation = passMs(res, "agaa.generation");
                         const double material = passMs(noAtomics, "agaa.generation");

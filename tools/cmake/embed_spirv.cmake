@@ -1,12 +1,19 @@
 # GLSL -> SPIR-V at build time, embedded in the binaries as uint32_t arrays so
 # they run from any directory. A shader compile error fails the build.
 #
-#   agaa_embed_shaders(TARGET name SOURCES a/b.comp ...)
+#   agaa_embed_shaders(TARGET name PROGRAMS <program> ...)
 # creates an INTERFACE library `name` whose include directory (${PROJECT_BINARY_DIR}/generated/<name>:
-# the project's own binary folder, also under a host's add_subdirectory) holds, for each
-# shaders/glsl/<dir>/<pass>.<stage>, a header shaders/<dir>/<pass>_<stage>.h defining
+# the project's own binary folder, also under a host's add_subdirectory) holds, for each program
+# <dir>/<pass>.<stage>, a header shaders/<dir>/<pass>_<stage>.h defining
 #   inline constexpr uint32_t k<Dir><Pass><Stage>[] (the SPIR-V words)
-# e.g. shaders/glsl/reference/lighting.comp -> #include "shaders/reference/lighting_comp.h", kReferenceLightingComp.
+# e.g. reference/lighting_ms.comp -> #include "shaders/reference/lighting_ms_comp.h", kReferenceLightingMsComp.
+# A program is written
+#   <dir>/<pass>.<stage>[=<source>][:<MACRO>[,<MACRO>...]]
+# and compiles shaders/glsl/<source> (default: the program's own name) with each MACRO defined to 1;
+# a source declares every macro it reads with a default of 0 (#ifndef). One source thus makes every
+# variant that changes bindings or capabilities (emission, shadows, the generation path), declared
+# here in one table rather than as a wrapper file per variant:
+#   agaa/lighting_gbuffer_shadow.comp=agaa/lighting.comp:AGAA_GBUFFER,AGAA_SHADOWS
 
 function(_agaa_camel out text)
   string(REGEX REPLACE "[-./]" "_" text "${text}")
@@ -25,7 +32,7 @@ function(_agaa_camel out text)
 endfunction()
 
 function(agaa_embed_shaders)
-  cmake_parse_arguments(ARG "" "TARGET" "SOURCES" ${ARGN})
+  cmake_parse_arguments(ARG "" "TARGET" "PROGRAMS" ${ARGN})
   set(glsl_root ${PROJECT_SOURCE_DIR}/shaders/glsl)
   set(out_root ${PROJECT_BINARY_DIR}/generated/${ARG_TARGET})
   set(raws "")
@@ -46,11 +53,30 @@ function(agaa_embed_shaders)
   if(NOT old STREQUAL "${AGAA_TEST_PERTURB}\n")
     file(WRITE ${perturb_stamp} "${AGAA_TEST_PERTURB}\n")
   endif()
-  foreach(src IN LISTS ARG_SOURCES)
-    get_filename_component(dir "${src}" DIRECTORY)
-    get_filename_component(stem "${src}" NAME_WE)
-    get_filename_component(ext "${src}" LAST_EXT)
-    string(SUBSTRING "${ext}" 1 -1 stage)
+  foreach(program IN LISTS ARG_PROGRAMS)
+    if(NOT program MATCHES "^([a-z0-9_/]+\\.(comp|frag|vert))(=([a-z0-9_/]+\\.(comp|frag|vert)))?(:([A-Z0-9_,]+))?$")
+      message(FATAL_ERROR "agaa_embed_shaders(${ARG_TARGET}): '${program}' is not "
+                          "<dir>/<pass>.<stage>[=<source>][:<MACRO>[,<MACRO>...]] (stage comp, frag or vert)")
+    endif()
+    set(name "${CMAKE_MATCH_1}")
+    set(stage "${CMAKE_MATCH_2}")
+    set(src "${CMAKE_MATCH_4}")
+    set(macros "${CMAKE_MATCH_7}")
+    if(src STREQUAL "")
+      set(src "${name}")
+    elseif(NOT CMAKE_MATCH_5 STREQUAL stage)
+      message(FATAL_ERROR "agaa_embed_shaders(${ARG_TARGET}): '${program}' compiles a ${CMAKE_MATCH_5} "
+                          "source as a ${stage} program")
+    endif()
+    set(defines "")
+    if(NOT macros STREQUAL "")
+      string(REPLACE "," ";" macros "${macros}")
+      foreach(m IN LISTS macros)
+        list(APPEND defines "-D${m}=1")
+      endforeach()
+    endif()
+    get_filename_component(dir "${name}" DIRECTORY)
+    get_filename_component(stem "${name}" NAME_WE)
     _agaa_camel(symbol "${dir}_${stem}_${stage}")
     set(symbol "k${symbol}")
     set(header ${out_root}/shaders/${dir}/${stem}_${stage}.h)
@@ -61,13 +87,13 @@ function(agaa_embed_shaders)
       OUTPUT ${raw}
       BYPRODUCTS ${header}
       COMMAND ${CMAKE_COMMAND} -E make_directory ${out_root}/shaders/${dir}
-      COMMAND ${GLSLANG_VALIDATOR} -V --target-env vulkan1.3 -I${glsl_root} -g0 ${perturb}
+      COMMAND ${GLSLANG_VALIDATOR} -V --target-env vulkan1.3 -I${glsl_root} -g0 ${perturb} ${defines}
               --vn ${symbol}Words --depfile ${raw}.d -o ${raw} ${glsl_root}/${src}
       COMMAND ${CMAKE_COMMAND} -DRAW=${raw} -DOUT=${header} -DSYMBOL=${symbol}
               -P ${PROJECT_SOURCE_DIR}/tools/cmake/wrap_spirv.cmake
       DEPENDS ${glsl_root}/${src} ${PROJECT_SOURCE_DIR}/tools/cmake/wrap_spirv.cmake ${perturb_stamp}
       DEPFILE ${raw}.d
-      COMMENT "GLSL ${src}"
+      COMMENT "GLSL ${name}"
       VERBATIM)
     list(APPEND raws ${raw})
   endforeach()

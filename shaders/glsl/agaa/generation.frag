@@ -1,4 +1,284 @@
 #version 460
+// AGAA step 3, AG-buffer generation by the accumulation kernel (paper section 3.4,
+// Algorithm 2, section 4.2). The scene is rasterised again at n samples over the prepass
+// depth: depth EQUAL without writes, early fragment tests and post-depth coverage, so
+// gl_SampleMaskIn holds exactly the samples this fragment is visible at; the stencil keeps
+// the first fragment per sample (section 4.2.2: coplanar duplicates never count twice).
+// Each fragment evaluates the material as a classic G-buffer would and adds, with integer
+// atomics on fixed-point values (order-independent: bit-identical frames), its normal
+// distribution (Toksvig vector or SGGX matrix, shared/agaa.h), albedo, metallic and sample count
+// into its pixel's aggregates.
+//
+// Routing (specialisation id 1, agaa/aggregate/agaa_constants.h AggregateRouting):
+//  - samples (default): each aggregate present in the fragment's mask receives the fragment's
+//    values weighted by its own number of samples, so the AG-buffer's sample counts equal the
+//    metadata's exactly (a fragment straddling two clusters would otherwise count all its
+//    samples in one);
+//  - fragment: Algorithm 2 as the paper writes it: the whole fragment goes to the aggregate of
+//    its first visible sample, one set of atomics per fragment. The lighting pass then weights
+//    each aggregate by the samples it received, not by the metadata's assignment.
+// Atomics (variants built from this file):
+//  - AGAA_INT64 (shaderBufferInt64Atomics): the 6 words of an aggregate as three 64-bit adds
+//    (an aggregate starts on an even word: 6 words each). No field ever carries out of its word
+//    (layout proof in shared/agaa.h), so a 64-bit add of two words equals two 32-bit adds: the
+//    AG-buffer is bit-identical.
+//  - AGAA_SUBGROUP: fragments of one subgroup that target the same (pixel, aggregate) first sum
+//    their increments with subgroupAdd, and one lane adds the sum (integer sums: order-free,
+//    bit-identical). It saves atomics only where a subgroup holds fragments of several primitives
+//    covering one pixel (GPUs pack quads of several triangles into one wave); lavapipe's fragment
+//    subgroups are the pixels of one triangle, so there it only adds the loop.
 #extension GL_GOOGLE_include_directive : require
-#define AGAA_EMISSIVE 0
-#include "agaa/generation.glsl"
+#extension GL_ARB_post_depth_coverage : require
+#ifndef AGAA_EMISSIVE
+#define AGAA_EMISSIVE 0 // 1: the emissive output (agaa_shaders' generation_emissive*)
+#endif
+#ifndef AGAA_INT64
+#define AGAA_INT64 0
+#endif
+#ifndef AGAA_SUBGROUP
+#define AGAA_SUBGROUP 0
+#endif
+#if AGAA_INT64
+#extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
+#extension GL_EXT_shader_atomic_int64 : require
+#endif
+#if AGAA_SUBGROUP
+#extension GL_KHR_shader_subgroup_ballot : require
+#extension GL_KHR_shader_subgroup_arithmetic : require
+#endif
+#include "shared/agaa.h"
+#include "shared/ag_buffer.h"
+#include "shared/clustering.h"
+#include "shared/frame.h"
+#include "shared/specialization.h"
+
+layout(early_fragment_tests) in;
+layout(post_depth_coverage) in;
+
+layout(set = 0, binding = 0) uniform Frame { FrameConstants frame; };
+layout(set = 0, binding = 1, std430) readonly buffer Materials { GpuMaterial materials[]; };
+layout(set = 0, binding = 2) uniform Agaa { AgaaConstants agaa; };
+layout(set = 0, binding = 3, std430) readonly buffer Metadata { uint metadata[]; };
+layout(set = 0, binding = 4, std430) buffer AgBuffer { uint agBuffer[]; };
+#if AGAA_INT64
+// The same AG-buffer seen as 64-bit words (bound twice: binding 6 aliases binding 4).
+layout(set = 0, binding = 6, std430) buffer AgBuffer64 { uint64_t agBuffer64[]; };
+#endif
+layout(set = 1, binding = 0) uniform sampler2D textures[kMaxSceneTextures];
+#ifndef AGAA_RECORD
+#define AGAA_RECORD 0
+#endif
+#if AGAA_RECORD
+// The test build only (tests/agaa_generation_record.frag; tests/agaa/test_agaa_gpu.cpp,
+// test_agaa_reference_gpu.cpp): every fragment of the pixels in the central kRecordWindow^2 block
+// of the frame appends what the shipping pass accumulated from it, so the CPU can re-accumulate
+// the same fragments and compare with the AG-buffer: the quantised fields (the replay), then the
+// material inputs before quantisation (the double-precision reference).
+const uint kRecordWindow = 16u;
+// pixel, layer, mask, the quantised fields, then as float bits: normal xyz, roughness, albedo rgb, metallic
+const uint kRecordWords = 3u + kQuantizedFields + 8u;
+layout(set = 0, binding = 5, std430) buffer FragmentRecords { uint recordCount; uint recordCapacity; uint records[]; };
+#endif
+layout(push_constant) uniform Push { uint material; } pc;
+// Specialisation ids 0 and 1: the normal distribution (kNdfToksvig, kNdfSggx) and the routing
+// (0 per sample, 1 per fragment). Constants, not uniforms: lavapipe executes both sides of a
+// branch it cannot resolve at compile time.
+layout(constant_id = kSpecGenerationNdf) const uint kNdf = 0u;
+layout(constant_id = kSpecGenerationRouting) const uint kRouteFragment = 0u;
+// agaa-timings --breakdown's builds (tools/agaa_timings/CMakeLists.txt): MATERIAL_ONLY evaluates
+// the material but adds nothing; EMPTY returns at once (the pass's raster, depth and stencil cost).
+#ifndef AGAA_BREAKDOWN_MATERIAL_ONLY
+#define AGAA_BREAKDOWN_MATERIAL_ONLY 0
+#endif
+#ifndef AGAA_BREAKDOWN_EMPTY
+#define AGAA_BREAKDOWN_EMPTY 0
+#endif
+
+#include "common/material.glsl"
+
+// Centroid: a fragment that covers only some samples reads its attributes inside the triangle, as
+// the reference's per-sample G-buffer does (reference/gbuffer_inputs.glsl), never extrapolated to
+// an uncovered pixel centre.
+layout(location = 0) centroid in vec3 inNormal;
+layout(location = 1) centroid in vec4 inTangent;
+layout(location = 2) centroid in vec4 inUvs; // xy TEXCOORD_0, zw TEXCOORD_1
+layout(location = 3) flat in uint inLayer;
+layout(location = 5) centroid in vec4 inColor;
+#if AGAA_EMISSIVE
+// Emissive stays per sample (seed 004: no HDR fireflies): an MSAA target, resolved per sample.
+layout(location = 0) out vec4 outEmissive;
+#endif
+
+// Adds k samples of the fragment's values to aggregate slot `slot` (pixel * c + aggregate).
+void addToAggregate(uint slot, uint k, uint ndf, AgQuantized f) {
+    uint base = slot * kAggregateWords;
+    uint inc[kAggregateWords];
+    for (uint w = 0u; w < kAggregateWords; ++w)
+        inc[w] = aggregateIncrement(ndf, w, k, f);
+#if AGAA_SUBGROUP
+    // Lanes with the same slot sum their increments; the lowest of them adds the sum. Each pass
+    // of the loop retires the lanes of the first remaining lane's slot.
+    bool retired = false, adds = false;
+    for (uint lap = 0u; lap < gl_SubgroupSize && !retired; ++lap) {
+        uint leader = subgroupBroadcastFirst(slot);
+        if (slot == leader) {
+            for (uint w = 0u; w < kAggregateWords; ++w) inc[w] = subgroupAdd(inc[w]);
+            adds = subgroupElect();
+            retired = true;
+        }
+    }
+    if (!adds) return;
+#endif
+#if AGAA_INT64
+    // base = 6 slot is even: the words pair on 8-byte boundaries.
+    for (uint p = 0u; p < kAggregateWords / 2u; ++p)
+        atomicAdd(agBuffer64[base / 2u + p], uint64_t(inc[2u * p]) | (uint64_t(inc[2u * p + 1u]) << 32u));
+#else
+    for (uint w = 0u; w < kAggregateWords; ++w) atomicAdd(agBuffer[base + w], inc[w]);
+#endif
+}
+
+// The fragment's values as the AG-buffer's fixed-point fields (shared/agaa.h), in either
+// normal-distribution layout.
+AgQuantized quantizeFragment(MaterialSample m, uint n) {
+    float alpha = m.roughness * m.roughness;
+    AgQuantized f;
+    // The sample's own lobe, for the two-point resolve and the environment's level (shared/agaa.h
+    // w5): not floored at kMinGgxAlpha, so that a near-mirror's level is its own (2^26 - 1 steps
+    // resolve alpha to 1.5e-8; the lighting pass floors the mean where the BRDF needs it).
+    f.q[10] = quantizeUnit(min(alpha, kMaxGgxAlpha), kMaterialAlphaScale);
+    if (kNdf == kNdfSggx) {
+        // The sample's GGX lobe as an SGGX matrix (shared/sggx.h), alpha in the BRDF's range.
+        float a = clamp(alpha, kMinGgxAlpha, kMaxGgxAlpha);
+        float a2 = a * a;
+        vec3 N = m.normal * (1.0 - a2); // S = (1 - a^2) n n^T + a^2 I
+        uint scale = unitScale(kSggxFieldBits, n);
+        f.q[0] = quantizeUnit(N.x * m.normal.x + a2, scale);
+        f.q[1] = quantizeUnit(N.y * m.normal.y + a2, scale);
+        f.q[2] = quantizeUnit(N.z * m.normal.z + a2, scale);
+        f.q[3] = quantizeUnit(N.x * m.normal.y + 0.5, scale); // off-diagonal: [-1/2, 1/2] + 1/2
+        f.q[4] = quantizeUnit(N.x * m.normal.z + 0.5, scale);
+        f.q[5] = quantizeUnit(N.y * m.normal.z + 0.5, scale);
+        f.q[6] = quantizeUnit(m.albedo.r, scale);
+        f.q[7] = quantizeUnit(m.albedo.g, scale);
+        f.q[8] = quantizeUnit(m.albedo.b, scale);
+        f.q[9] = quantizeUnit(m.metallic, unitScale(kSggxMetallicBits, n));
+    } else {
+        vec3 t = m.normal * toksvigLength(alpha, agaa.toksvig.x, agaa.toksvig.y, agaa.toksvig.z);
+        f.q[0] = quantizeSigned(t.x, toksvigScaleX(n));
+        f.q[1] = quantizeSigned(t.y, toksvigScaleYZ(n));
+        f.q[2] = quantizeSigned(t.z, toksvigScaleYZ(n));
+        f.q[3] = 0u;
+        f.q[4] = 0u;
+        f.q[5] = 0u;
+        f.q[6] = quantizeUnit(m.albedo.r, kUnormScale);
+        f.q[7] = quantizeUnit(m.albedo.g, kUnormScale);
+        f.q[8] = quantizeUnit(m.albedo.b, kUnormScale);
+        f.q[9] = quantizeUnit(m.metallic, kUnormScale);
+    }
+    return f;
+}
+
+#if AGAA_RECORD
+void recordFragment(uvec2 pixel, uint pixelIndex, uint mask, AgQuantized f, MaterialSample m) {
+    uvec2 origin = uvec2(frame.extent.xy) / 2u - kRecordWindow / 2u;
+    if (any(lessThan(pixel, origin)) || any(greaterThanEqual(pixel, origin + kRecordWindow))) return;
+    uint slot = atomicAdd(recordCount, 1u);
+    if (slot >= recordCapacity) return;
+    uint r = slot * kRecordWords;
+    records[r + 0u] = pixelIndex;
+    records[r + 1u] = inLayer;
+    records[r + 2u] = mask;
+    for (uint j = 0u; j < kQuantizedFields; ++j) records[r + 3u + j] = f.q[j];
+    uint inputs = r + 3u + kQuantizedFields;
+    records[inputs + 0u] = floatBitsToUint(m.normal.x);
+    records[inputs + 1u] = floatBitsToUint(m.normal.y);
+    records[inputs + 2u] = floatBitsToUint(m.normal.z);
+    records[inputs + 3u] = floatBitsToUint(m.roughness);
+    records[inputs + 4u] = floatBitsToUint(m.albedo.r);
+    records[inputs + 5u] = floatBitsToUint(m.albedo.g);
+    records[inputs + 6u] = floatBitsToUint(m.albedo.b);
+    records[inputs + 7u] = floatBitsToUint(m.metallic);
+}
+#endif
+
+// c = 1: the k of the fragment's samples off the aggregate's layer (shared/clustering.h
+// kOffLayer) add their diffuse colour, normal, F0 and alpha to the pixel's off-layer words
+// (shared/ag_buffer.h kOffLayerWords), apart from the aggregate's fields.
+void addToOffLayer(uint pixelIndex, uint k, MaterialSample m, uint n) {
+    uint scale = unitScale(kOffLayerFieldBits, n);
+    vec3 diffuse = m.albedo * (1.0 - m.metallic);
+    uint at = offLayerWord(uint(frame.extent.x) * uint(frame.extent.y), pixelIndex);
+    atomicAdd(agBuffer[at], k * quantizeUnit(diffuse.r, scale) + ((k * quantizeUnit(diffuse.g, scale)) << 16u));
+    atomicAdd(agBuffer[at + 1u], k * quantizeUnit(diffuse.b, scale) + ((k * quantizeSigned(m.normal.x, scale)) << 16u));
+    atomicAdd(agBuffer[at + 2u], k * quantizeSigned(m.normal.y, scale) + ((k * quantizeSigned(m.normal.z, scale)) << 16u));
+    vec3 f0 = mix(vec3(0.04), m.albedo, m.metallic);
+    float alpha = min(m.roughness * m.roughness, 1.0);
+    atomicAdd(agBuffer[at + 3u], k * quantizeUnit(f0.r, scale) + ((k * quantizeUnit(f0.g, scale)) << 16u));
+    atomicAdd(agBuffer[at + 4u], k * quantizeUnit(f0.b, scale) + ((k * quantizeUnit(alpha, scale)) << 16u));
+}
+
+// Sample s's aggregate id (0 where the clustering stored no metadata: c = 1 without a layer split).
+uint sampleAggregate(uint s, uint pixelIndex) {
+    uint c = agaa.shape.x, words = agaa.shape.z;
+    return words > 0u ? unpackMetadata(metadata[pixelIndex * words + (s * metadataBits(c)) / 32u], s, c) : 0u;
+}
+
+// The fragment's k covered samples into its pixel's aggregates, as the routing says.
+void accumulateFragment(uint pixelIndex, uint mask, AgQuantized f, MaterialSample m) {
+    uint c = agaa.shape.x;
+    uint n = agaa.shape.w;
+#if AGAA_BREAKDOWN_MATERIAL_ONLY
+    {
+        // Keep the material's evaluation alive without the atomics: an add no value reaches (an
+        // atomic, as every other access to the AG-buffer here: a plain store would make the
+        // synchronisation validation see writes racing between draws).
+        if (f.q[0] + f.q[6] + f.q[9] == 0xFFFFFFFFu) atomicAdd(agBuffer[0], 1u);
+        return;
+    }
+#endif
+    if (kRouteFragment != 0u) {
+        // Algorithm 2: the first visible sample's aggregate takes the whole fragment. c = 1: whole
+        // fragments cannot follow the per-sample layer flag; everything to aggregate 0 (the
+        // lighting pass still takes the aggregate's position from its layer's samples).
+        uint id = sampleAggregate(inLayer * 4u + uint(findLSB(mask)), pixelIndex);
+        addToAggregate(pixelIndex * c + min(id, c - 1u), uint(bitCount(mask)), kNdf, f);
+        return;
+    }
+    // Per sample: each covered sample to its own aggregate (c = 1: kOffLayer counts in slot 1).
+    uint perAggregate[kMaxAggregates] = uint[](0u, 0u, 0u, 0u);
+    for (uint hw = 0u; hw < 4u; ++hw) perAggregate[sampleAggregate(inLayer * 4u + hw, pixelIndex)] += (mask >> hw) & 1u;
+    if (c == 1u && perAggregate[1] > 0u) addToOffLayer(pixelIndex, perAggregate[1], m, n);
+    // Only the aggregates the fragment touches: a loop over their bits ends for a SIMD group
+    // once every lane's are done (most fragments touch one), where a loop over all c with a
+    // per-aggregate test would issue every aggregate's atomics masked (lavapipe runs both sides
+    // of a branch, and a masked atomic still walks its lanes).
+    uint touched = 0u;
+    for (uint a = 0u; a < c; ++a) touched |= perAggregate[a] > 0u ? 1u << a : 0u;
+    while (touched != 0u) {
+        uint a = uint(findLSB(touched));
+        touched &= touched - 1u;
+        addToAggregate(pixelIndex * c + a, perAggregate[a], kNdf, f);
+    }
+}
+
+void main() {
+#if AGAA_BREAKDOWN_EMPTY
+    return;
+#endif
+    GpuMaterial gm = materials[pc.material];
+    MaterialSample m = evaluateMaterial(gm, inUvs, inColor, inNormal, inTangent, gl_FrontFacing);
+#if AGAA_EMISSIVE
+    outEmissive = vec4(min(m.emissive, vec3(kMaxRadiance)), 1.0);
+#endif
+    uint mask = uint(gl_SampleMaskIn[0]) & 0xFu;
+    if (mask == 0u) return;
+    uvec2 pixel = uvec2(gl_FragCoord.xy);
+    uint pixelIndex = pixel.y * uint(frame.extent.x) + pixel.x;
+    AgQuantized f = quantizeFragment(m, agaa.shape.w);
+#if AGAA_RECORD
+    recordFragment(pixel, pixelIndex, mask, f, m);
+#else
+    accumulateFragment(pixelIndex, mask, f, m);
+#endif
+}

@@ -1,4 +1,159 @@
 #version 460
+// AGAA step 4: tiled-deferred lighting that aggregates at the top of each tile (paper section
+// 3.5, the UE4 variant of seed 004). One workgroup per 16x16 tile; main reads as the paper's step:
+//   1. aggregate: one walk over each pixel's n samples (agaa/lighting/pixel_samples.glsl) sums
+//      every aggregate's coverage, depth and position, and the generation path's loader its
+//      material: agaa/lighting/load_accumulated.glsl reads the AG-buffer the accumulation kernel
+//      summed (AGAA_GBUFFER 0), agaa/lighting/load_samples.glsl sums the per-sample G-buffer in
+//      registers (AGAA_GBUFFER 1). agaa/lighting/aggregate.glsl normalises each into a surface
+//      with a filtered normal distribution; c = 1's off-layer samples become one surface of their
+//      own (agaa/lighting/off_layer.glsl);
+//   2. tile depth bounds and light culling in shared memory (common/tile_culling.glsl);
+//   3. each aggregate lit once per light (agaa/lighting/shade.glsl) on one of two schedules
+//      (agaa/lighting/schedule.glsl);
+//   4. resolve: each shading event tone-mapped and weighted by its samples
+//      (agaa/lighting/resolve.glsl).
+// With a tolerance (--agaa-tolerance, samples path), a pixel whose aggregates' normal spread the
+// estimate distrusts (agaa/lighting/prefilter_estimate.glsl) skips steps 3 and 4's aggregates and
+// has each sample lit and resolved on its own (agaa/lighting/per_sample.glsl).
 #extension GL_GOOGLE_include_directive : require
-#define AGAA_EMISSIVE 0
-#include "agaa/lighting.glsl"
+#include "shared/ag_buffer.h"
+#include "shared/agaa.h"
+#include "shared/clustering.h"
+#include "shared/frame.h"
+#include "shared/sggx.h"
+#include "shared/specialization.h"
+#ifndef AGAA_EMISSIVE
+#define AGAA_EMISSIVE 0 // 1: the emissive term (agaa_shaders' lighting*_emissive*)
+#endif
+
+#ifndef AGAA_GBUFFER
+#define AGAA_GBUFFER 0
+#endif
+
+layout(local_size_x = 16, local_size_y = 16) in;
+// n and c as specialisation constants: constant trip counts for the per-sample loops.
+layout(constant_id = kSpecLightingSamples) const uint kSamples = 8u;
+layout(constant_id = kSpecLightingAggregates) const uint kAggregates = 2u;
+// agaa/aggregate/agaa_constants.h AggregateShading: 1 the compacted
+// per-tile list, 0 each invocation shades its own pixel's aggregates (agaa/lighting/schedule.glsl).
+layout(constant_id = kSpecLightingCompact) const uint kCompactShading = 1u;
+// agaa-timings --breakdown's build (tools/agaa_timings/CMakeLists.txt): step 3 left out.
+#ifndef AGAA_BREAKDOWN_NO_SHADING
+#define AGAA_BREAKDOWN_NO_SHADING 0
+#endif
+// The normal distribution (kNdfToksvig, kNdfSggx; agaa.options.w holds the
+// same value). A constant, not a uniform: lavapipe executes both sides of every branch whose
+// condition is not known at compile time, so a uniform choice would pay for both BRDFs.
+layout(constant_id = kSpecLightingNdf) const uint kNdf = 0u;
+const bool kSggx = kNdf == kNdfSggx;
+// AggregateRouting: 1 when the generation pass routed whole fragments
+// (Algorithm 2); an aggregate then stands for the samples it received, which need not be the
+// samples the metadata assigned it, so the resolve weights it by its accumulated count.
+layout(constant_id = kSpecLightingRouting) const uint kRouteFragment = 0u;
+// eng::scene::SceneFeatures::hasNearMirrors: 1 where a material can be a
+// near mirror, whose lobe the pixel's view footprint can outgrow (light.glsl addLightFootprint); 0
+// compiles the branch away, which alone costs lavapipe about a fifth of this pass.
+layout(constant_id = kSpecLightingViewFootprint) const uint kViewFootprint = 1u;
+
+layout(set = 0, binding = 0) uniform Frame { FrameConstants frame; };
+layout(set = 0, binding = 1, std430) readonly buffer Lights { GpuLight lights[]; };
+layout(set = 0, binding = 2) uniform Agaa { AgaaConstants agaa; };
+layout(set = 0, binding = 3) uniform sampler2DMSArray visibilityDepth;
+layout(set = 0, binding = 4, std430) readonly buffer Metadata { uint metadata[]; };
+layout(set = 0, binding = 5, r8ui) uniform readonly uimage2D aggregateCount;
+layout(set = 0, binding = 7, rgba32f) uniform writeonly image2D outHdr;
+layout(set = 0, binding = 8, rgba32f) uniform writeonly image2D outDisplay;
+layout(set = 0, binding = 9, r32ui) uniform writeonly uimage2D outShadingEvents;
+// With a tolerance (kShadingRate, prefilter_estimate.glsl): 1 where the pixel was shaded per
+// sample (FrameTargets::perSampleShaded); the layout has it only then.
+layout(set = 0, binding = 18, r32ui) uniform writeonly uimage2D outPerSampleShaded;
+#ifndef AGAA_SHADOWS
+#define AGAA_SHADOWS 0
+#endif
+#if AGAA_SHADOWS
+// The shadow maps of the scene's shadowed lights (agaa/common/shadow_map.h), before the tile
+// culling, which then keeps a mask of them (agaa/lighting/shadowed_lights.glsl).
+#define SHADOW_MAP_BINDING 11
+#define SHADOW_CONSTANTS_BINDING 12
+#include "common/shadow.glsl"
+#endif
+
+#include "common/brdf.glsl"
+#include "common/depth.glsl"
+#include "common/environment.glsl"
+#include "common/lights.glsl"
+#include "common/tile_culling.glsl"
+#include "common/tonemap.glsl"
+
+#include "agaa/lighting/moments.glsl"
+#include "agaa/lighting/export.glsl"
+#include "agaa/lighting/prefilter_estimate.glsl"
+#if AGAA_GBUFFER
+#include "agaa/lighting/load_samples.glsl"
+#else
+#include "agaa/lighting/load_accumulated.glsl"
+#endif
+#include "agaa/lighting/pixel_samples.glsl"
+#include "agaa/lighting/aggregate.glsl"
+#include "agaa/lighting/off_layer.glsl"
+#include "agaa/lighting/light.glsl"
+#include "agaa/lighting/shadowed_lights.glsl"
+#include "agaa/lighting/shade.glsl"
+#include "agaa/lighting/per_sample.glsl"
+#include "agaa/lighting/schedule.glsl"
+#include "agaa/lighting/resolve.glsl"
+
+void main() {
+    ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
+    ivec2 size = ivec2(frame.extent.xy);
+    bool inside = all(lessThan(pixel, size));
+    uint pixelIndex = inside ? uint(pixel.y * size.x + pixel.x) : 0u;
+
+    // 1. Aggregate at the top of the tile: one walk over the pixel's samples, then each
+    //    aggregate's means normalised into the surface it is shaded as.
+    clearMaterialSums();
+    clearSpreadSums();
+    walkPixelSamples(pixel, pixelIndex, inside);
+    uint presentCount = 0u;
+    for (uint a = 0u; a < kAggregates; ++a) {
+        AggregateMoments moments =
+            loadAggregateMoments(a, walk.count, walk.samplesIn[a], pixelIndex, inside);
+        aggregates[a] = normaliseAggregate(a, moments, pixel, pixelIndex);
+        presentCount += aggregates[a].present ? 1u : 0u;
+    }
+    OffLayerMeans offLayerMeans = noOffLayerMeans();
+    if (kOffLayerOwnColour && walk.offLayerSamples > 0u)
+        offLayerMeans = loadOffLayerMeans(pixelIndex, walk.offLayerSamples);
+    OffLayer offLayer = offLayerSurface(offLayerMeans);
+    // The shading rate: a pixel whose pre-filter the estimate distrusts has no aggregates to
+    // shade; steps 3 and 4 take its samples one by one instead.
+    bool perSample = shadePerSample(inside);
+    if (perSample) {
+        for (uint a = 0u; a < kAggregates; ++a)
+            aggregates[a].present = false;
+        presentCount = 0u;
+    }
+
+    // 2. Tile depth bounds and light culling; the pixel's slots in the tile's list.
+    tileListBegin();
+    tileBoundsBegin(); // its barrier orders the list's reset before the appends
+    uint firstEntry = tileListAppend(presentCount, perSample);
+    tileBoundsAdd(walk.tmin, walk.tmax);
+    tileCullLights();
+    barrier();
+
+    // 3. Light each aggregate once per light.
+    OffLayerShading offLayerShaded;
+    shadeAggregates(offLayer, inside, perSample, firstEntry, offLayerShaded);
+    if (!inside) return;
+
+    // 4. Resolve.
+    Resolved resolved = perSample ? Resolved(sampleResolve.display, sampleResolve.hdr)
+                                  : resolvePixel(pixel, offLayer, offLayerShaded);
+    if (kShadingRateView != 0u) resolved.display = shadingRateView(resolved.display, perSample);
+    imageStore(outHdr, pixel, vec4(resolved.hdr, 1.0));
+    imageStore(outDisplay, pixel, vec4(resolved.display, 1.0));
+    imageStore(outShadingEvents, pixel, uvec4(perSample ? kSamples - walk.skySamples : presentCount));
+    if (kShadingRate != 0u) imageStore(outPerSampleShaded, pixel, uvec4(perSample ? 1u : 0u));
+}

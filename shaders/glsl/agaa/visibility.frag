@@ -9,8 +9,10 @@
 
 // Masked materials: 0 opaque, 1 discard, 2 alpha-to-coverage (common/alpha_coverage.glsl).
 layout(constant_id = kSpecVisibilityAlphaPath) const uint kAlphaPath = 0u;
-// Benchmark breakdown (agaa/aggregate/agaa_constants.h AggregateBreakdown): 1 writes no face normal.
-layout(constant_id = kSpecVisibilitySkipNormal) const uint kSkipNormal = 0u;
+// agaa-timings --breakdown's build (tools/agaa_timings/CMakeLists.txt): no face-normal encoding.
+#ifndef AGAA_BREAKDOWN_NO_NORMALS
+#define AGAA_BREAKDOWN_NO_NORMALS 0
+#endif
 
 layout(set = 0, binding = 0) uniform Frame { FrameConstants frame; };
 layout(set = 0, binding = 1, std430) readonly buffer Materials { GpuMaterial materials[]; };
@@ -44,5 +46,5 @@ void main() {
         GpuMaterial m = materials[pc.material];
         coverage = maskedCoverage(kAlphaPath, materialAlpha(m, inUvs, inColor), m.emissive.w);
     }
-    outNormal = vec4(kSkipNormal != 0u ? vec2(0.0) : vec2(encodeHemisphereNormal(N, V)) / 255.0, 0.0, coverage);
+    outNormal = vec4(AGAA_BREAKDOWN_NO_NORMALS != 0 ? vec2(0.0) : vec2(encodeHemisphereNormal(N, V)) / 255.0, 0.0, coverage);
 }

@@ -146,7 +146,7 @@ vec3 specularFlake(vec3 F, vec3 N, vec3 T, vec3 B, float ax, float ay, vec3 V, v
 // normal, evaluateBrdf's value): the specular lobe is the caller's filtered roughness, the diffuse
 // filteredClampedCosine, which stays lit for lights below the mean normal's horizon that some of
 // the samples face. `specularOut` receives the specular part (AGAA's two-point resolve spreads
-// only that part over the aggregate's samples: agaa/lighting.glsl).
+// only that part over the aggregate's samples: agaa/lighting.comp).
 vec3 evaluateBrdfFilteredSplit(SurfaceInputs s, float spread, vec3 V, vec3 L, vec3 irradiance, out vec3 specularOut) {
     specularOut = vec3(0.0);
     BrdfAngles g;

@@ -49,7 +49,7 @@ const float kMinSggxEigenvalue = 0.25;
 // projection (its view-space xy, squared length) is at or below this runs along the view ray and
 // has no screen direction to measure the aggregate's samples along; the whole pixel is used.
 const float kMinScreenDirection2 = 1.0e-6;
-// Two-point tone mapping (agaa/lighting.glsl): below this specular radiance an aggregate has no
+// Two-point tone mapping (agaa/lighting.comp): below this specular radiance an aggregate has no
 // highlight to spread, and the spike (S^2 + var) / S would divide by ~0.
 const float kMinSpikeRadiance = 1.0e-8;
 // Face normal from screen-space derivatives (common/face_normal.glsl): below this sine of the

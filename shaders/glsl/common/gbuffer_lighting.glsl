@@ -4,10 +4,13 @@
 // code every per-sample deferred method shares (the reference, Simple/Complex),
 // so that they differ only in which samples they shade, never in how.
 //
-// Requires, declared by the includer before this file: GBUFFER_MS (1: 4x layered
-// G-buffer, 0: one sample per pixel), `frame` (FrameConstants, set 0 binding 0),
+// Requires, declared by the includer before this file: `frame` (FrameConstants, set 0 binding 0),
 // `lights` (GpuLight[], set 0 binding 1). Declares the G-buffer at set 0
 // bindings 2..5 and the environment at 15 and 16 (common/environment.glsl). nextTileLight() needs tileCullLights() to have run.
+// GBUFFER_MS: 1 the 4x layered G-buffer, 0 one sample per pixel.
+#ifndef GBUFFER_MS
+#define GBUFFER_MS 0
+#endif
 #include "common/brdf.glsl"
 #include "common/depth.glsl"
 #include "common/environment.glsl"

@@ -14,7 +14,7 @@ vec3 toneMapAces(vec3 x) {
 #endif
     return clamp((x * (2.51 * x + 0.03)) / (x * (2.43 * x + 0.59) + 0.14), 0.0, 1.0);
 }
-// AGAA with SGGX (agaa/lighting.glsl): E[T(L)] over an aggregate's samples instead of T(E[L]). The tone map is concave where
+// AGAA with SGGX (agaa/lighting.comp): E[T(L)] over an aggregate's samples instead of T(E[L]). The tone map is concave where
 // highlights live, so tone-mapping the mean of a glossy tube's samples (a few very bright, most
 // dark) comes out far brighter than the reference's mean of tone-mapped samples. The specular part
 // S (mean) with variance `variance` is taken as a two-point distribution, the least-informative

@@ -1,6 +1,6 @@
 #ifndef AGAA_SBAA_GBUFFER_FETCH_GLSL
 #define AGAA_SBAA_GBUFFER_FETCH_GLSL
-// SBAA's compute passes over the prepass (sbaa/prepass.glsl: depth, geometric normal, primitive id,
+// SBAA's compute passes over the prepass (sbaa/prepass.frag: depth, geometric normal, primitive id,
 // 4x layered): sample s of a pixel is hardware sample s % 4 of layer s / 4
 // (engine/frame/sample_pattern.h). Requires `frame` (FrameConstants).
 layout(set = 0, binding = 2) uniform sampler2DMSArray gDepth;

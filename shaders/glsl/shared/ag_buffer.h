@@ -94,7 +94,7 @@ inline_fn uint aggregateIncrement(uint ndf, uint w, uint k, AgQuantized f) {
 // F0b | alpha << 16, 16-bit fields of scale unitScale(16, n) (n samples at 1 never carry). The
 // lighting pass resolves those samples as a surface of their own: Lambert of that colour under the
 // irradiance through their mean normal and its spread, and GGX of that F0 through the same normal
-// with the alpha Toksvig filters from its spread (agaa/lighting.glsl offLayerLight); none of it
+// with the alpha Toksvig filters from its spread (agaa/lighting.comp offLayerLight); none of it
 // mixes into the aggregate's fields, whose albedo and metallic the BRDF is bilinear in.
 SHARED_CONST kOffLayerWords = 5u;
 SHARED_CONST kOffLayerFieldBits = 16u;

@@ -2,7 +2,7 @@
 #define AGAA_SHARED_SBAA_H
 #include "shared/glsl_cpp.h"
 // Surface Based Anti-Aliasing (Salvi and Vidimce 2012): the per-surface G-buffer record the
-// surface pass writes (sbaa/surfaces.comp) and the lighting pass reads (sbaa/lighting.glsl), and
+// surface pass writes (sbaa/surfaces.comp) and the lighting pass reads (sbaa/lighting.comp), and
 // the CPU twin of the selection (agaa/sbaa/surface_selection.cpp) reproduces.
 
 SHARED_BEGIN

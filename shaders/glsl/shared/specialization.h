@@ -23,28 +23,25 @@ SHARED_CONST kSpecVertexColors = 19u;      // common/material.glsl: COLOR_0
 // An id below means something else in each pass, and may reuse an effect id above that the
 // pass's shaders do not read (the cluster's 2, the fill's 8 to 10, FXAA's 1 to 12): a pass must
 // never declare both.
-// The AGAA lighting pass (agaa/lighting.glsl)
+// The AGAA lighting pass (agaa/lighting.comp)
 SHARED_CONST kSpecLightingSamples = 0u;       // n
 SHARED_CONST kSpecLightingAggregates = 1u;    // c
 SHARED_CONST kSpecLightingCompact = 7u;       // AggregateShading: 1 the per-tile list
-SHARED_CONST kSpecLightingSkipShading = 8u;   // agaa-timings --breakdown: 1 skips step 3
 SHARED_CONST kSpecLightingNdf = 9u;           // AggregateNdf: kNdfToksvig or kNdfSggx
 SHARED_CONST kSpecLightingRouting = 10u;      // AggregateRouting: 1 whole fragments
 SHARED_CONST kSpecLightingViewFootprint = 11u; // SceneFeatures::hasNearMirrors
 SHARED_CONST kSpecLightingShadingRate = 12u;  // AggregateSettings::tolerance: 1 the per-sample rate
 SHARED_CONST kSpecLightingShadingRateView = 13u; // --debug shading-rate
-// AGAA's clustering (agaa/cluster.glsl)
+// AGAA's clustering (agaa/cluster.comp)
 SHARED_CONST kSpecClusterSamples = 0u;    // n
 SHARED_CONST kSpecClusterAggregates = 1u; // c
 SHARED_CONST kSpecClusterDistance = 2u;   // AggregateDistance: 0 Equation 1, 1 the tangent plane
 // AGAA's visibility prepass (agaa/visibility.frag)
 SHARED_CONST kSpecVisibilityAlphaPath = 0u;  // agaa/common/effects.h AlphaPath
-SHARED_CONST kSpecVisibilitySkipNormal = 1u; // agaa-timings --breakdown: 1 writes no face normal
-// AGAA's accumulation kernel (agaa/generation.glsl)
+// AGAA's accumulation kernel (agaa/generation.frag)
 SHARED_CONST kSpecGenerationNdf = 0u;       // AggregateNdf
 SHARED_CONST kSpecGenerationRouting = 1u;   // AggregateRouting: 1 whole fragments (Algorithm 2)
-SHARED_CONST kSpecGenerationBreakdown = 7u; // agaa-timings --breakdown: 1 material only, 2 empty
-// The per-sample G-buffer fill (reference/gbuffer.glsl; SBAA's prepass and fill)
+// The per-sample G-buffer fill (reference/gbuffer.frag; SBAA's prepass and fill)
 SHARED_CONST kSpecFillAlphaPath = 0u;             // agaa/common/effects.h AlphaPath
 SHARED_CONST kSpecFillCurvatureRoughness = 8u;    // GBufferOptions::curvatureRoughness
 SHARED_CONST kSpecFillCurvatureMaxFootprint = 9u; // float bits
@@ -53,7 +50,7 @@ SHARED_CONST kSpecFillSbaaSurfaces = 24u;         // SBAA's fill: S surfaces per
 // The per-sample G-buffer's lighting (common/gbuffer_lighting.glsl: reference, Simple/Complex,
 // SBAA, streaming)
 SHARED_CONST kSpecGBufferLightingSamples = 1u;  // n
-SHARED_CONST kSpecSimpleComplexSchedule = 0u;   // SimpleComplexSchedule (simple_complex/lighting.glsl)
+SHARED_CONST kSpecSimpleComplexSchedule = 0u;   // SimpleComplexSchedule (simple_complex/lighting.comp)
 // FXAA (fxaa/fxaa.comp): the preset's search steps, then its step table
 SHARED_CONST kSpecFxaaSearchSteps = 0u;
 SHARED_CONST kSpecFxaaStepTable = 1u; // ids 1..kFxaaMaxSteps (shared/fxaa.h): each search step's offset

@@ -3,7 +3,7 @@
 #include "shared/glsl_cpp.h"
 // Streaming G-buffer compression (Kerzner and Salvi 2014, seed 001): the per-surface record the
 // compression pass writes (streaming/compress.comp), the lighting pass reads
-// (streaming/lighting.glsl), and the CPU reference (agaa/streaming/streaming_compression.cpp)
+// (streaming/lighting.comp), and the CPU reference (agaa/streaming/streaming_compression.cpp)
 // reproduces.
 
 SHARED_BEGIN

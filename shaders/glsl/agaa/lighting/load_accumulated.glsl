@@ -1,5 +1,5 @@
 // Step 1 on the accumulate path (AggregateGeneration::Accumulate): the AG-buffer the
-// accumulation kernel summed (agaa/generation.glsl) holds each aggregate's fixed-point sums
+// accumulation kernel summed (agaa/generation.frag) holds each aggregate's fixed-point sums
 // (shared/agaa.h), and at c = 1 the off-layer samples' (shared/ag_buffer.h). The walk over the
 // pixel's samples adds nothing to them.
 layout(set = 0, binding = 6, std430) readonly buffer AgBuffer { uint agBuffer[]; };
@@ -55,7 +55,7 @@ AggregateMoments loadAggregateMoments(uint a, uint count, uint samplesIn, uint p
         uint scale = unitScale(kSggxFieldBits, n);
         m.mean0 = vec3(meanUnit(w[0] & 0xFFFFu, k, scale), meanUnit(w[0] >> 16u, k, scale),
                        meanUnit(w[1] & 0xFFFFu, k, scale));
-        // Off-diagonal entries are stored offset by 1/2 (generation.glsl).
+        // Off-diagonal entries are stored offset by 1/2 (generation.frag).
         m.mean1 = vec3(meanUnit(w[1] >> 16u, k, scale) - 0.5, meanUnit(w[2] & 0xFFFFu, k, scale) - 0.5,
                        meanUnit(w[2] >> 16u, k, scale) - 0.5);
         m.albedo = vec3(meanUnit(w[3] & 0xFFFFu, k, scale), meanUnit(w[3] >> 16u, k, scale),
@@ -71,7 +71,7 @@ AggregateMoments loadAggregateMoments(uint a, uint count, uint samplesIn, uint p
                         meanUnit(w[4] & 0xFFFFu, k, kUnormScale));
         m.metallic = meanUnit(w[4] >> 16u, k, kUnormScale);
     }
-    // w5 is not floored (generation.glsl): the BRDF's range here, the raw mean for the environment.
+    // w5 is not floored (generation.frag): the BRDF's range here, the raw mean for the environment.
     m.rawMaterialAlpha = meanUnit(w[5], k, kMaterialAlphaScale);
     m.materialAlpha = max(m.rawMaterialAlpha, kMinGgxAlpha);
     return m;

@@ -2,7 +2,7 @@
 // samples also reads each sample's G-buffer (reference/gbuffer.frag, agaa/common/sample_gbuffer.h)
 // and sums its Toksvig vector or SGGX matrix, albedo, metallic and alpha into its aggregate, in
 // registers at the top of the tile, in float: no AG-buffer, no second raster pass. The per-sample
-// terms are the accumulation kernel's (agaa/generation.glsl), unquantised.
+// terms are the accumulation kernel's (agaa/generation.frag), unquantised.
 // The G-buffer's depth is binding 3 (the visibility depth).
 layout(set = 0, binding = 6) uniform sampler2DMSArray gNormal;
 layout(set = 0, binding = 13) uniform sampler2DMSArray gAlbedoMetal;

@@ -148,8 +148,8 @@ void shadeAggregates(OffLayer off, bool inside, bool perSample, uint firstEntry,
     shaded = Shading[](noShading(), noShading(), noShading(), noShading());
     offShaded = noOffLayerShading();
     if (perSample) beginSampleResolve(aggregates[0].pixel);
-    if (kSkipShading != 0u) {
-    } else if (kCompactShading != 0u) {
+#if !AGAA_BREAKDOWN_NO_SHADING // agaa-timings --breakdown's build leaves step 3 out
+    if (kCompactShading != 0u) {
         shadeTileList(firstEntry, perSample);
         // Aggregate 0 of every covered pixel: every lane of a SIMD group busy but for sky pixels.
         // After the list's rounds: no barrier follows it, so lavapipe (whose compute barriers
@@ -165,4 +165,5 @@ void shadeAggregates(OffLayer off, bool inside, bool perSample, uint firstEntry,
             shadeAggregate(aggregates[a], noOffLayer(aggregates[a]), shaded[a], unused);
         }
     }
+#endif
 }

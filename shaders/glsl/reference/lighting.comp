@@ -1,7 +1,8 @@
+#version 460
 // Tiled deferred lighting of the per-sample G-buffer: every covered sample is lit
 // by every light that touches its tile, tone-mapped, and weighted 1/n (DESIGN
-// section 6); uncovered samples get the sky. Included by lighting_ms.comp (4x
-// layered G-buffer) and lighting_ss.comp (1 sample per pixel).
+// section 6); uncovered samples get the sky. Built as lighting_ms.comp (4x
+// layered G-buffer) and lighting_ss.comp (1 sample per pixel; shaders/CMakeLists.txt).
 #extension GL_GOOGLE_include_directive : require
 #include "shared/frame.h"
 

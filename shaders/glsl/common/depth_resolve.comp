@@ -1,9 +1,13 @@
+#version 460
+#extension GL_GOOGLE_include_directive : require
 // Resolves a technique's per-sample visibility depth to one depth per pixel for a host's depth
 // target (agaa/common/host_targets.h): the nearest sample, i.e. the largest value in reversed Z
 // (1 at znear, 0 = sky). Nearest, not sample 0 or an average, because a host drawing after the
 // node depth-tests against it: a pixel any node surface covers must hide what lies behind that
 // surface, and an average of a near and a far sample is a depth no surface has.
-// Requires DEPTH_MS (1: 4x layered, 0: one sample per pixel) from the includer.
+#ifndef DEPTH_MS
+#define DEPTH_MS 0 // 1: the 4x layered depth (depth_resolve_ms.comp), 0: one sample per pixel
+#endif
 
 layout(local_size_x = 8, local_size_y = 8) in;
 #if DEPTH_MS

@@ -1,9 +1,11 @@
+#version 460
 // Simple/Complex tiled deferred lighting (Lauritzen 2010; DESIGN section 5): sample 0
 // of every pixel is lit; the other samples only of complex pixels. Resolve as in
 // DESIGN section 6: each shading event tone-mapped, weighted by the sample fraction
 // it stands for, summed; sky samples get the sky. A simple pixel's one shade stands
 // for all its samples (they are all covered or all sky, see classify.glsl), so its
-// weight is 1. Included by lighting_ms.comp (4x layered G-buffer) and lighting_ss.comp.
+// weight is 1. Built as lighting_ms.comp (4x layered G-buffer) and lighting_ss.comp
+// (shaders/CMakeLists.txt).
 //
 // Schedules (specialisation constant kSchedule):
 //  - kScheduleDeferPerSample (Lauritzen's "defer per-sample"): the extra samples of the
@@ -12,7 +14,7 @@
 //    whole workgroup, so a tile with few complex pixels keeps every invocation busy.
 //  - kScheduleNaive: each invocation loops over its own pixel's extra samples.
 // Both sum a pixel's events in sample order, the reference's order (reference/
-// lighting.glsl), with no float atomics: results are bit-reproducible, identical
+// lighting.comp), with no float atomics: results are bit-reproducible, identical
 // between the two schedules, and a complex pixel equals the reference's value.
 #extension GL_GOOGLE_include_directive : require
 #include "shared/frame.h"

@@ -1,5 +1,0 @@
-#version 460
-#extension GL_GOOGLE_include_directive : require
-#define AGAA_EMISSIVE 0
-#define AGAA_SHADOWS 1
-#include "agaa/lighting.glsl"

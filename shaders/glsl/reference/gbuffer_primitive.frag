@@ -1,5 +1,0 @@
-#version 460
-#extension GL_GOOGLE_include_directive : require
-#define GBUFFER_SAMPLE_RATE 0
-#define GBUFFER_PRIMITIVE_ID 1
-#include "reference/gbuffer.glsl"

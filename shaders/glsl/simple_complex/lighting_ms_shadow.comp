@@ -1,5 +1,0 @@
-#version 460
-#extension GL_GOOGLE_include_directive : require
-#define GBUFFER_MS 1
-#define GBUFFER_SHADOWS 1
-#include "simple_complex/lighting.glsl"
