@@ -245,11 +245,34 @@ FrameTargets AggregateAA::addPasses(rg::Graph& graph, const FrameInputs& in) {
 
     // ---- 4. tiled lighting, aggregating at the top of each tile ------------------------------
     struct Lighting {
-        rg::Buffer frame, lights, agaa, metadata, agBuffer, shadowConstants;
+        rg::Buffer frame, lights, agaa, metadata, agBuffer, shadowConstants, flaggedTiles;
         rg::Texture depth, count, emissive, shadowMap, hdr, display, events, perSampleShaded;
         rg::Texture normal, albedoMetal; // samples path: the G-buffer (emissive: its emissive + roughness)
     };
     const bool shadingRate = m_settings.tolerance >= 0.0f; // the samples path's (resolveGeneration)
+    // The tiles with a flagged pixel (agaa/lighting/shading_rate.glsl): the per-sample pass's
+    // indirect dispatch {count, 1, 1}, then one word per tile. Cleared to a dispatch of no tile.
+    const uint32_t tilesX = groups(in.width, shared::kTileSize),
+                   tilesY = groups(in.height, shared::kTileSize);
+    rg::Buffer flaggedTiles;
+    if (shadingRate) {
+        struct Clear {
+            rg::Buffer tiles;
+        };
+        flaggedTiles = graph
+                           .addPass<Clear>(
+                               "agaa.flaggedTiles.clear", rg::PassKind::Transfer,
+                               [&](rg::Builder& b, Clear& d) {
+                                   d.tiles = b.write(
+                                       b.create("agaa.flaggedTiles", {VkDeviceSize(3 + tilesX * tilesY) * 4}),
+                                       rg::Use::TransferDst);
+                               },
+                               [](const rg::Context& ctx, const Clear& d) {
+                                   vkCmdFillBuffer(ctx.cmd(), ctx.buffer(d.tiles).buffer, 0, 4, 0);
+                                   vkCmdFillBuffer(ctx.cmd(), ctx.buffer(d.tiles).buffer, 4, 8, 1);
+                               })
+                           .tiles;
+    }
     const Lighting& lit = graph.addCompute<Lighting>(
         "agaa.lighting",
         [&](rg::Builder& b, Lighting& d) {
@@ -281,6 +304,10 @@ FrameTargets AggregateAA::addPasses(rg::Graph& graph, const FrameInputs& in) {
                             : rg::TextureDesc{VK_FORMAT_R32_UINT, 1, 1, 1, VK_SAMPLE_COUNT_1_BIT};
             d.perSampleShaded =
                 b.write(b.create("agaa.perSampleShaded", flagsDesc), rg::Use::StorageImageWriteCompute);
+            // Binding 19 likewise: a 16-byte stand-in without a tolerance.
+            d.flaggedTiles = shadingRate
+                                 ? b.readWrite(flaggedTiles, rg::Use::StorageReadWriteCompute)
+                                 : b.write(b.create("agaa.flaggedTiles", {16}), rg::Use::StorageWriteCompute);
         },
         [=, this](const rg::Context& ctx, const Lighting& d) {
             VkCommandBuffer cmd = ctx.cmd();
@@ -295,7 +322,8 @@ FrameTargets AggregateAA::addPasses(rg::Graph& graph, const FrameInputs& in) {
                 .storageImage(7, ctx.texture(d.hdr).view)
                 .storageImage(8, ctx.texture(d.display).view)
                 .storageImage(9, ctx.texture(d.events).view);
-            pd.storageImage(18, ctx.texture(d.perSampleShaded).view);
+            pd.storageImage(18, ctx.texture(d.perSampleShaded).view)
+                .storage(19, ctx.buffer(d.flaggedTiles).buffer);
             if (samplesPath) {
                 pd.sampled(6, m_fetchSampler, ctx.texture(d.normal).sampledView)
                     .sampled(10, m_fetchSampler, ctx.texture(d.emissive).sampledView)
@@ -309,10 +337,59 @@ FrameTargets AggregateAA::addPasses(rg::Graph& graph, const FrameInputs& in) {
                     .uniform(12, ctx.buffer(d.shadowConstants).buffer);
             pushEnvironment(pd, *in.scene);
             pd.push(m_device, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, m_lightingLayout.layout);
-            vkCmdDispatch(cmd, groups(in.width, shared::kTileSize), groups(in.height, shared::kTileSize), 1);
+            vkCmdDispatch(cmd, tilesX, tilesY, 1);
         });
-    return {lit.hdr, lit.display,   lit.events,
-            {},      lightingDepth, shadingRate ? lit.perSampleShaded : rg::Texture{}};
+    if (!shadingRate) return {lit.hdr, lit.display, lit.events, {}, lightingDepth, {}};
+
+    // ---- the shading rate's flagged pixels, each sample lit and resolved on its own ----------
+    struct PerSample {
+        rg::Buffer frame, lights, shadowConstants, tiles;
+        rg::Texture depth, normal, albedoMetal, emissiveRoughness, shadowMap, flags, hdr, display, events;
+    };
+    const PerSample& flagged = graph.addCompute<PerSample>(
+        "agaa.lighting.perSample",
+        [&](rg::Builder& b, PerSample& d) {
+            d.frame = b.read(in.frameConstants, rg::Use::UniformRead);
+            d.lights = b.read(in.lights, rg::Use::StorageReadCompute);
+            d.depth = b.read(gbuffer.depth, rg::Use::SampledCompute);
+            d.normal = b.read(gbuffer.normal, rg::Use::SampledCompute);
+            d.albedoMetal = b.read(gbuffer.albedoMetal, rg::Use::SampledCompute);
+            d.emissiveRoughness = b.read(gbuffer.emissiveRoughness, rg::Use::SampledCompute);
+            if (shadows) {
+                d.shadowMap = b.read(shadowMaps.map, rg::Use::SampledCompute);
+                d.shadowConstants = b.read(shadowMaps.constants, rg::Use::UniformRead);
+            }
+            d.flags = b.read(lit.perSampleShaded, rg::Use::StorageImageReadCompute);
+            d.tiles = b.read(lit.flaggedTiles, rg::Use::IndirectRead);
+            b.read(lit.flaggedTiles, rg::Use::StorageReadCompute);
+            // The lighting pass's images: this pass writes the flagged pixels and keeps the rest.
+            d.hdr = b.readWrite(lit.hdr, rg::Use::StorageImageReadWriteCompute);
+            d.display = b.readWrite(lit.display, rg::Use::StorageImageReadWriteCompute);
+            d.events = b.readWrite(lit.events, rg::Use::StorageImageReadWriteCompute);
+        },
+        [=, this](const rg::Context& ctx, const PerSample& d) {
+            VkCommandBuffer cmd = ctx.cmd();
+            vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, m_perSamplePipeline);
+            vk::PushDescriptors pd;
+            pd.uniform(0, ctx.buffer(d.frame).buffer)
+                .storage(1, ctx.buffer(d.lights).buffer)
+                .sampled(2, m_fetchSampler, ctx.texture(d.depth).sampledView)
+                .sampled(3, m_fetchSampler, ctx.texture(d.normal).sampledView)
+                .sampled(4, m_fetchSampler, ctx.texture(d.albedoMetal).sampledView)
+                .sampled(5, m_fetchSampler, ctx.texture(d.emissiveRoughness).sampledView)
+                .storageImage(6, ctx.texture(d.hdr).view)
+                .storageImage(7, ctx.texture(d.display).view)
+                .storageImage(8, ctx.texture(d.events).view)
+                .storageImage(11, ctx.texture(d.flags).view)
+                .storage(12, ctx.buffer(d.tiles).buffer);
+            if (shadows)
+                pd.sampled(9, m_shadow->sampler(), ctx.texture(d.shadowMap).sampledView)
+                    .uniform(10, ctx.buffer(d.shadowConstants).buffer);
+            pushEnvironment(pd, *in.scene);
+            pd.push(m_device, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, m_perSampleLayout.layout);
+            vkCmdDispatchIndirect(cmd, ctx.buffer(d.tiles).buffer, 0); // the listed tiles only
+        });
+    return {flagged.hdr, flagged.display, flagged.events, {}, lightingDepth, lit.perSampleShaded};
 }
 
 } // namespace agaa

@@ -9,6 +9,8 @@
 //   agaa.gbuffer     the per-sample G-buffer (agaa/common/sample_gbuffer.h): the only raster pass
 //   agaa.cluster     Algorithm 1 on the G-buffer's depth and shading normal, models kept apart
 //   agaa.lighting    each aggregate averaged from its samples at the top of the tile, lit once
+//   agaa.lighting.perSample  with a tolerance (--agaa-tolerance): the pixels the lighting pass
+//                    flagged, each sample lit and resolved as the reference does
 // With --debug aggregates the lighting is replaced by a view of the clustering, and the graph
 // culls the generation passes nothing reads any more.
 
@@ -88,13 +90,15 @@ class AggregateAA final : public Technique {
     VkFormat m_depthFormat = VK_FORMAT_D32_SFLOAT_S8_UINT;
     shared::AgaaConstants m_constants{};
     eng::vk::PipelineLayout m_visibilityLayout, m_generationLayout, m_clusterLayout, m_lightingLayout,
-        m_debugLayout;
+        m_perSampleLayout, m_debugLayout;
     // The raster passes' pipelines, one per draw variant met, made on first use.
     eng::vk::PipelineCache<DrawVariant> m_visibilityPipelines, m_generationPipelines;
     std::unique_ptr<ShadowMapPass> m_shadow;
     std::unique_ptr<SampleGBufferPass> m_gbuffer; // samples path only
     VkPipeline m_clusterPipeline = VK_NULL_HANDLE, m_lightingPipeline = VK_NULL_HANDLE,
                m_debugPipeline = VK_NULL_HANDLE;
+    // The flagged pixels' per-sample shading (agaa/lighting_per_sample.comp), with a tolerance only.
+    VkPipeline m_perSamplePipeline = VK_NULL_HANDLE;
     VkSampler m_fetchSampler = VK_NULL_HANDLE;
     AggregateResources m_resources;
     std::string m_generationCause; // why this path (stats variants)

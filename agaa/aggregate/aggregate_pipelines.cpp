@@ -22,6 +22,8 @@
 #include "shaders/agaa/lighting_gbuffer_emissive_comp.h"
 #include "shaders/agaa/lighting_gbuffer_emissive_shadow_comp.h"
 #include "shaders/agaa/lighting_gbuffer_shadow_comp.h"
+#include "shaders/agaa/lighting_per_sample_comp.h"
+#include "shaders/agaa/lighting_per_sample_shadow_comp.h"
 #include "shaders/agaa/lighting_shadow_comp.h"
 #include "shaders/agaa/scene_vert.h"
 #include "shaders/agaa/visibility_frag.h"
@@ -80,13 +82,18 @@ const NamedProgram kLightingPrograms[2][2][2] = {
       {"agaa/lighting_gbuffer_shadow.comp", kAgaaLightingGbufferShadowComp}},
      {{"agaa/lighting_gbuffer_emissive.comp", kAgaaLightingGbufferEmissiveComp},
       {"agaa/lighting_gbuffer_emissive_shadow.comp", kAgaaLightingGbufferEmissiveShadowComp}}}};
+// [shadows]: the flagged pixels' per-sample shading (--agaa-tolerance).
+const NamedProgram kPerSamplePrograms[2] = {
+    {"agaa/lighting_per_sample.comp", kAgaaLightingPerSampleComp},
+    {"agaa/lighting_per_sample_shadow.comp", kAgaaLightingPerSampleShadowComp}};
 const NamedProgram kDebugProgram{"agaa/debug_aggregates.comp", kAgaaDebugAggregatesComp};
 
 // Refuses a replacement for a program AGAA does not run, by name (a misspelt name would
 // otherwise replace nothing and time the shipping build).
 void checkProgramOverrides(const ProgramOverrides& overrides) {
-    std::vector<std::string_view> known = {kVisibilityProgram.name, kClusterPrograms[0].name,
-                                           kClusterPrograms[1].name, kDebugProgram.name};
+    std::vector<std::string_view> known = {kVisibilityProgram.name,    kClusterPrograms[0].name,
+                                           kClusterPrograms[1].name,   kPerSamplePrograms[0].name,
+                                           kPerSamplePrograms[1].name, kDebugProgram.name};
     for (const auto& table : {kGenerationPrograms, kLightingPrograms})
         for (int i = 0; i < 8; ++i)
             known.push_back(table[i / 4][i / 2 % 2][i % 2].name);
@@ -190,6 +197,14 @@ AggregateAA::AggregateAA(vk::Device& device, const eng::frame::GpuScene& scene,
                                                        lightingVariant(), "agaa.lighting");
         m_debugPipeline = vk::createComputePipeline(device, program(kDebugProgram), m_debugLayout.layout, {},
                                                     "agaa.debug.aggregates");
+        if (m_settings.tolerance >= 0.0f)
+            m_perSamplePipeline = vk::createComputePipeline(
+                device, program(kPerSamplePrograms[m_shadow->enabled() ? 1 : 0]), m_perSampleLayout.layout,
+                gbufferLightingSpecialization(
+                    m_features, m_settings.samples,
+                    {{shared::kSpecPerSampleShadingRateView,
+                      m_settings.debugView == AggregateDebugView::ShadingRate ? 1u : 0u}}),
+                "agaa.lighting.perSample");
     } catch (...) {
         release();
         throw;
@@ -300,6 +315,13 @@ void AggregateAA::createLayouts(const eng::frame::GpuScene& scene) {
     lighting.pushBindings = vk::reflectBindings({{lightingCode(), kCs}});
     m_lightingLayout = vk::createPipelineLayout(m_device, lighting, "agaa.lighting.layout");
 
+    if (m_settings.tolerance >= 0.0f) {
+        vk::LayoutDesc perSample;
+        perSample.pushBindings =
+            vk::reflectBindings({{program(kPerSamplePrograms[m_shadow->enabled() ? 1 : 0]), kCs}});
+        m_perSampleLayout = vk::createPipelineLayout(m_device, perSample, "agaa.lighting.perSample.layout");
+    }
+
     vk::LayoutDesc debug;
     debug.pushBindings = vk::reflectBindings({{program(kDebugProgram), kCs}});
     m_debugLayout = vk::createPipelineLayout(m_device, debug, "agaa.debug.layout");
@@ -314,11 +336,11 @@ void AggregateAA::release() {
     vkDeviceWaitIdle(d);
     m_visibilityPipelines.release();
     m_generationPipelines.release();
-    for (VkPipeline p : {m_clusterPipeline, m_lightingPipeline, m_debugPipeline})
+    for (VkPipeline p : {m_clusterPipeline, m_lightingPipeline, m_perSamplePipeline, m_debugPipeline})
         if (p) vkDestroyPipeline(d, p, nullptr);
     vkDestroySampler(d, m_fetchSampler, nullptr);
-    for (vk::PipelineLayout* l :
-         {&m_visibilityLayout, &m_generationLayout, &m_clusterLayout, &m_lightingLayout, &m_debugLayout})
+    for (vk::PipelineLayout* l : {&m_visibilityLayout, &m_generationLayout, &m_clusterLayout,
+                                  &m_lightingLayout, &m_perSampleLayout, &m_debugLayout})
         vk::destroyPipelineLayout(m_device, *l);
 }
 

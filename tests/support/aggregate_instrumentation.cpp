@@ -139,9 +139,28 @@ void AggregateExportPass::add(rg::Graph& graph, const AggregateAA& aggregate, co
     rg::Buffer target =
         graph.importBuffer("test.aggregateExport.host", {host.buffer, host.size}, std::nullopt, std::nullopt);
     struct Data {
-        rg::Buffer frame, lights, agaa, metadata, target;
+        rg::Buffer frame, lights, agaa, metadata, target, flaggedTiles;
         rg::Texture depth, count, normal, albedoMetal, emissive, hdr, display, events, perSampleShaded;
     };
+    // The shading rate's tile list (agaa/lighting/shading_rate.glsl): the test build lists its
+    // tiles too, so it gets a cleared one of its own.
+    struct Clear {
+        rg::Buffer tiles;
+    };
+    const VkDeviceSize tileBytes =
+        VkDeviceSize(3 + groups(in.width, shared::kTileSize) * groups(in.height, shared::kTileSize)) * 4;
+    const rg::Buffer flaggedTiles =
+        graph
+            .addPass<Clear>(
+                "test.aggregateExport.flaggedTiles.clear", rg::PassKind::Transfer,
+                [&](rg::Builder& b, Clear& d) {
+                    d.tiles = b.write(b.create("test.aggregateExport.flaggedTiles", {tileBytes}),
+                                      rg::Use::TransferDst);
+                },
+                [](const rg::Context& ctx, const Clear& d) {
+                    vkCmdFillBuffer(ctx.cmd(), ctx.buffer(d.tiles).buffer, 0, VK_WHOLE_SIZE, 0);
+                })
+            .tiles;
     const rg::TextureDesc colour{VK_FORMAT_R32G32B32A32_SFLOAT, in.width, in.height, 1,
                                  VK_SAMPLE_COUNT_1_BIT};
     const rg::TextureDesc counts{VK_FORMAT_R32_UINT, in.width, in.height, 1, VK_SAMPLE_COUNT_1_BIT};
@@ -163,6 +182,7 @@ void AggregateExportPass::add(rg::Graph& graph, const AggregateAA& aggregate, co
                 b.write(b.create("test.aggregateExport.display", colour), rg::Use::StorageImageWriteCompute);
             d.events =
                 b.write(b.create("test.aggregateExport.events", counts), rg::Use::StorageImageWriteCompute);
+            d.flaggedTiles = b.readWrite(flaggedTiles, rg::Use::StorageReadWriteCompute);
             d.perSampleShaded = b.write(b.create("test.aggregateExport.perSampleShaded", counts),
                                         rg::Use::StorageImageWriteCompute);
             d.target = b.write(target, rg::Use::StorageWriteCompute);
@@ -186,7 +206,8 @@ void AggregateExportPass::add(rg::Graph& graph, const AggregateAA& aggregate, co
                 .sampled(10, m_sampler, ctx.texture(d.emissive).sampledView)
                 .sampled(13, m_sampler, ctx.texture(d.albedoMetal).sampledView)
                 .storage(14, ctx.buffer(d.target).buffer)
-                .storageImage(18, ctx.texture(d.perSampleShaded).view);
+                .storageImage(18, ctx.texture(d.perSampleShaded).view)
+                .storage(19, ctx.buffer(d.flaggedTiles).buffer);
             pushEnvironment(pd, *scene);
             pd.push(m_device, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, m_layout.layout);
             vkCmdDispatch(cmd, groups(w, shared::kTileSize), groups(h, shared::kTileSize), 1);

@@ -14,8 +14,9 @@
 //   4. resolve: each shading event tone-mapped and weighted by its samples
 //      (agaa/lighting/resolve.glsl).
 // With a tolerance (--agaa-tolerance, samples path), a pixel whose aggregates' normal spread the
-// estimate distrusts (agaa/lighting/prefilter_estimate.glsl) skips steps 3 and 4's aggregates and
-// has each sample lit and resolved on its own (agaa/lighting/per_sample.glsl).
+// estimate distrusts (agaa/lighting/prefilter_estimate.glsl) skips steps 3 and 4 here and is
+// flagged (agaa/lighting/shading_rate.glsl): the next pass, agaa/lighting_per_sample.comp, lights
+// and resolves each of its samples on its own.
 #extension GL_GOOGLE_include_directive : require
 #include "shared/ag_buffer.h"
 #include "shared/agaa.h"
@@ -100,7 +101,8 @@ layout(set = 0, binding = 18, r32ui) uniform writeonly uimage2D outPerSampleShad
 #include "agaa/lighting/light.glsl"
 #include "agaa/lighting/shadowed_lights.glsl"
 #include "agaa/lighting/shade.glsl"
-#include "agaa/lighting/per_sample.glsl"
+#include "agaa/lighting/shading_rate.glsl"
+#include "agaa/lighting/shading_rate_view.glsl"
 #include "agaa/lighting/schedule.glsl"
 #include "agaa/lighting/resolve.glsl"
 
@@ -127,7 +129,7 @@ void main() {
         offLayerMeans = loadOffLayerMeans(pixelIndex, walk.offLayerSamples);
     OffLayer offLayer = offLayerSurface(offLayerMeans);
     // The shading rate: a pixel whose pre-filter the estimate distrusts has no aggregates to
-    // shade; steps 3 and 4 take its samples one by one instead.
+    // shade; the next pass takes its samples one by one instead.
     bool perSample = shadePerSample(inside);
     if (perSample) {
         for (uint a = 0u; a < kAggregates; ++a)
@@ -137,23 +139,26 @@ void main() {
 
     // 2. Tile depth bounds and light culling; the pixel's slots in the tile's list.
     tileListBegin();
-    tileBoundsBegin(); // its barrier orders the list's reset before the appends
-    uint firstEntry = tileListAppend(presentCount, perSample);
+    tileFlagBegin();
+    tileBoundsBegin(); // its barrier orders the list's and the flag's resets before the appends
+    uint firstEntry = tileListAppend(presentCount);
+    tileFlagAdd(perSample);
     tileBoundsAdd(walk.tmin, walk.tmax);
     tileCullLights();
     barrier();
+    tileFlagEnd();
 
     // 3. Light each aggregate once per light.
     OffLayerShading offLayerShaded;
-    shadeAggregates(offLayer, inside, perSample, firstEntry, offLayerShaded);
+    shadeAggregates(offLayer, inside, firstEntry, offLayerShaded);
     if (!inside) return;
 
-    // 4. Resolve.
-    Resolved resolved = perSample ? Resolved(sampleResolve.display, sampleResolve.hdr)
-                                  : resolvePixel(pixel, offLayer, offLayerShaded);
-    if (kShadingRateView != 0u) resolved.display = shadingRateView(resolved.display, perSample);
+    // 4. Resolve; a flagged pixel is the next pass's to write.
+    if (kShadingRate != 0u) imageStore(outPerSampleShaded, pixel, uvec4(perSample ? 1u : 0u));
+    if (perSample) return;
+    Resolved resolved = resolvePixel(pixel, offLayer, offLayerShaded);
+    if (kShadingRateView != 0u) resolved.display = shadingRateView(resolved.display, false);
     imageStore(outHdr, pixel, vec4(resolved.hdr, 1.0));
     imageStore(outDisplay, pixel, vec4(resolved.display, 1.0));
-    imageStore(outShadingEvents, pixel, uvec4(perSample ? kSamples - walk.skySamples : presentCount));
-    if (kShadingRate != 0u) imageStore(outPerSampleShaded, pixel, uvec4(perSample ? 1u : 0u));
+    imageStore(outShadingEvents, pixel, uvec4(presentCount));
 }

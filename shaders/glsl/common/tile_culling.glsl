@@ -8,6 +8,11 @@
 // not appended, so every invocation walks them in increasing index order and the
 // sums are bit-identical run to run (an atomic append would order them by timing).
 // Requires: `frame` (FrameConstants) and `lights` (GpuLight[]) declared by the includer.
+// TILE_COORD: the tile's coordinates in tiles; the workgroup's own unless the includer maps
+// workgroups to tiles itself (agaa/lighting_per_sample.comp dispatches only listed tiles).
+#ifndef TILE_COORD
+#define TILE_COORD gl_WorkGroupID.xy
+#endif
 
 // Specialisation id 2 (agaa/common/effects.h): 0 when the scene has no point or spot light,
 // so every light touches every tile and the per-tile frustum box is not built.
@@ -67,7 +72,7 @@ void tileAddLight(uint i) {
     atomicOr(sLightMask[i / 32u], 1u << (i % 32u));
 }
 
-// Culls every light against this workgroup's tile.
+// Culls every light against this workgroup's tile (TILE_COORD).
 void tileCullLights() {
     if (!tileHasGeometry()) return; // sky-only tile: nothing is lit
     if (kTileLightCulling == 0u) {
@@ -77,8 +82,8 @@ void tileCullLights() {
     }
     float tmin = uintBitsToFloat(sTileMinBits);
     float tmax = uintBitsToFloat(sTileMaxBits);
-    vec2 lo = viewRayNdc(vec2(gl_WorkGroupID.xy * kTileSize), frame.extent, frame.projParams);
-    vec2 hi = viewRayNdc(vec2((gl_WorkGroupID.xy + 1u) * kTileSize), frame.extent, frame.projParams);
+    vec2 lo = viewRayNdc(vec2(TILE_COORD * kTileSize), frame.extent, frame.projParams);
+    vec2 hi = viewRayNdc(vec2((TILE_COORD + 1u) * kTileSize), frame.extent, frame.projParams);
     // View-space box of the tile's frustum slice: x = ndc.x t / P00, y = ndc.y t / P11.
     vec3 boxLo = vec3(1e30), boxHi = vec3(-1e30);
     for (int c = 0; c < 8; ++c) {

@@ -51,6 +51,7 @@ SHARED_CONST kSpecFillSbaaSurfaces = 24u;         // SBAA's fill: S surfaces per
 // SBAA, streaming)
 SHARED_CONST kSpecGBufferLightingSamples = 1u;  // n
 SHARED_CONST kSpecSimpleComplexSchedule = 0u;   // SimpleComplexSchedule (simple_complex/lighting.comp)
+SHARED_CONST kSpecPerSampleShadingRateView = 13u; // AGAA's flagged pixels (agaa/lighting_per_sample.comp)
 // FXAA (fxaa/fxaa.comp): the preset's search steps, then its step table
 SHARED_CONST kSpecFxaaSearchSteps = 0u;
 SHARED_CONST kSpecFxaaStepTable = 1u; // ids 1..kFxaaMaxSteps (shared/fxaa.h): each search step's offset

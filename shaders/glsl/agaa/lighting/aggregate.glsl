@@ -21,9 +21,6 @@ struct Aggregate {
     uint samples;     // the pixel's samples the metadata assigns it
     uint accumulated; // the samples its generation path summed (0: not present)
     bool present;
-    // One sample of a pixel the shading rate flags (per_sample.glsl): lit as the reference lights
-    // a sample, one shadow tap at its own position and one view direction.
-    bool oneSample;
 };
 
 // The pixel's aggregates, module state as the walk's (pixel_samples.glsl): the per-sample resolve
@@ -37,7 +34,6 @@ Aggregate normaliseAggregate(uint a, AggregateMoments m, ivec2 pixel, uint pixel
     ag.id = a;
     ag.samples = walk.samplesIn[a];
     ag.present = aggregatePresent(a, walk.count, m.accumulated, walk.samplesIn[a]);
-    ag.oneSample = false;
     ag.accumulated = ag.present ? m.accumulated : 0u;
     ag.tangent = vec3(0.0);
     ag.bitangent = vec3(0.0);

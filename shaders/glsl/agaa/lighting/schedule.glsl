@@ -18,8 +18,7 @@ const uint kListRound = kTilePixels;
 //   sNormal    xyz shading normal, w roughness (SGGX: the square root of the material alpha)
 //   sAlbedo    rgb albedo, a metallic
 //   sTangent   xyz tangent (SGGX), w alphas.x;  sBitangent: xyz bitangent (SGGX), w alphas.y
-//   sOwner     tile pixel index | aggregate id << 8 | the aggregate's sample count << 10 |
-//              kOneSampleEntry
+//   sOwner     tile pixel index | aggregate id << 8 | the aggregate's sample count << 10
 //   sSpread    x spread, y environment roughness
 //   sScreenSpread  the covariance (xx, xy, yy) of its samples' sub-pixel positions, pixel^2
 // Outputs, written in place by the invocation that shades the entry: sPosition.xyz radiance,
@@ -33,18 +32,15 @@ shared uint sOwner[kListRound];
 shared vec2 sSpread[kListRound];
 shared vec3 sScreenSpread[kListRound];
 shared uint sEntryCount;
-const uint kOneSampleEntry = 1u << 31; // sOwner: a sample of a flagged pixel (Aggregate::oneSample)
 
 // Before the tile's first barrier (tileBoundsBegin), which orders it before the appends.
 void tileListBegin() {
     if (kCompactShading != 0u && gl_LocalInvocationIndex == 0u) sEntryCount = 0u;
 }
 
-// The slots of this pixel's further aggregates in the tile's list; a pixel the shading rate
-// flags (per_sample.glsl) takes one for each covered sample instead.
-uint tileListAppend(uint presentCount, bool perSample) {
-    uint extraCount =
-        perSample ? kSamples - walk.skySamples : presentCount - (aggregates[0].present ? 1u : 0u);
+// The slots of this pixel's further aggregates in the tile's list.
+uint tileListAppend(uint presentCount) {
+    uint extraCount = presentCount - (aggregates[0].present ? 1u : 0u);
     return kCompactShading != 0u && extraCount > 0u ? atomicAdd(sEntryCount, extraCount) : 0u;
 }
 
@@ -54,8 +50,7 @@ void storeListEntry(uint e, Aggregate ag) {
     sAlbedo[e] = vec4(ag.surface.albedo, ag.surface.metallic);
     sTangent[e] = vec4(ag.tangent, ag.alphas.x);
     sBitangent[e] = vec4(ag.bitangent, ag.alphas.y);
-    sOwner[e] = gl_LocalInvocationIndex | (ag.id << 8u) | (ag.samples << 10u) |
-                (kShadingRate != 0u && ag.oneSample ? kOneSampleEntry : 0u);
+    sOwner[e] = gl_LocalInvocationIndex | (ag.id << 8u) | (ag.samples << 10u);
     sSpread[e] = vec2(ag.spread, ag.environmentRoughness);
     sScreenSpread[e] = ag.screenSpread;
 }
@@ -67,8 +62,7 @@ Aggregate loadListEntry(uint e) {
     ag.pixel = ivec2(gl_WorkGroupID.xy * kTileSize + uvec2(ownerIndex % kTileSize, ownerIndex / kTileSize));
     ag.pixelIndex = uint(ag.pixel.y * int(frame.extent.x) + ag.pixel.x);
     ag.id = (owner >> 8u) & 3u;
-    ag.samples = (owner & ~kOneSampleEntry) >> 10u;
-    ag.oneSample = (owner & kOneSampleEntry) != 0u;
+    ag.samples = owner >> 10u;
     ag.surface.normal = sNormal[e].xyz;
     ag.surface.roughness = sNormal[e].w;
     ag.surface.albedo = sAlbedo[e].rgb;
@@ -88,21 +82,11 @@ Aggregate loadListEntry(uint e) {
 // The compacted schedule. The slots are taken in whatever order the appends ran; an entry's
 // result depends only on its own values and the tile's lights, so the image does not depend on
 // that order. Every invocation runs the same rounds (sEntryCount is uniform over the workgroup).
-void shadeTileList(uint firstEntry, bool perSample) {
+void shadeTileList(uint firstEntry) {
     uint entries = sEntryCount;
-    ivec2 pixel = aggregates[0].pixel;
-    uint pixelIndex = aggregates[0].pixelIndex;
     for (uint listRound = 0u; listRound * kListRound < entries; ++listRound) {
         uint lo = listRound * kListRound;
         uint slot = firstEntry;
-        for (uint s = 0u; kShadingRate != 0u && perSample && s < kSamples; ++s) {
-            float d = sampleDepth(pixel, s);
-            if (isSky(d)) continue;
-            if (slot >= lo && slot < lo + kListRound)
-                storeListEntry(slot - lo,
-                               oneSampleAggregate(pixel, pixelIndex, s, sampleViewPosition(pixel, s, d)));
-            slot += 1u;
-        }
         for (uint a = 1u; a < kAggregates; ++a) {
             if (!aggregates[a].present) continue;
             if (slot >= lo && slot < lo + kListRound) storeListEntry(slot - lo, aggregates[a]);
@@ -121,11 +105,6 @@ void shadeTileList(uint firstEntry, bool perSample) {
         }
         barrier();
         slot = firstEntry;
-        for (uint s = 0u; kShadingRate != 0u && perSample && s < kSamples; ++s) {
-            if (isSky(sampleDepth(pixel, s))) continue;
-            if (slot >= lo && slot < lo + kListRound) addSampleShading(pixel, s, sPosition[slot - lo].xyz);
-            slot += 1u;
-        }
         for (uint a = 1u; a < kAggregates; ++a) {
             if (!aggregates[a].present) continue;
             if (slot >= lo && slot < lo + kListRound) {
@@ -142,21 +121,17 @@ void shadeTileList(uint firstEntry, bool perSample) {
 
 // Step 3: every present aggregate of the pixel shaded once; c = 1's off-layer samples with
 // aggregate 0. A pixel the shading rate flags has no aggregate present: its samples are shaded
-// instead (per_sample.glsl).
-void shadeAggregates(OffLayer off, bool inside, bool perSample, uint firstEntry,
-                     out OffLayerShading offShaded) {
+// by the pass after this one (agaa/lighting_per_sample.comp).
+void shadeAggregates(OffLayer off, bool inside, uint firstEntry, out OffLayerShading offShaded) {
     shaded = Shading[](noShading(), noShading(), noShading(), noShading());
     offShaded = noOffLayerShading();
-    if (perSample) beginSampleResolve(aggregates[0].pixel);
 #if !AGAA_BREAKDOWN_NO_SHADING // agaa-timings --breakdown's build leaves step 3 out
     if (kCompactShading != 0u) {
-        shadeTileList(firstEntry, perSample);
+        shadeTileList(firstEntry);
         // Aggregate 0 of every covered pixel: every lane of a SIMD group busy but for sky pixels.
         // After the list's rounds: no barrier follows it, so lavapipe (whose compute barriers
         // split the shader into coroutine segments) keeps its loop free of frame spills.
         if (inside && aggregates[0].present) shadeAggregate(aggregates[0], off, shaded[0], offShaded);
-    } else if (perSample) {
-        shadeSamplesInRegisters(aggregates[0].pixel, aggregates[0].pixelIndex);
     } else if (inside) {
         if (aggregates[0].present) shadeAggregate(aggregates[0], off, shaded[0], offShaded);
         for (uint a = 1u; a < kAggregates; ++a) {

@@ -10,7 +10,7 @@ void shadeAggregate(Aggregate ag, OffLayer off, out Shading shading, out OffLaye
     // addLightFootprint).
     float theta = pixelFootprint(-ag.position.z, frame.extent, frame.projParams) / length(ag.position);
     float viewWeight =
-        kViewFootprint != 0u && !(kShadingRate != 0u && ag.oneSample)
+        kViewFootprint != 0u
             ? viewFootprintWeight(theta, ag.screenSpread, kSggx ? min(ag.alphas.x, ag.alphas.y) : ag.alphas.x)
             : 0.0;
     // The environment through the aggregate's filtered distribution: its mean normal and its

@@ -1,6 +1,6 @@
 // The tile's shadowed lights (AGAA_SHADOWS 1): shadow maps (agaa/common/shadow_map.h) filtered
 // inside each aggregate's footprint (paper section 3.5.3, common/shadow.glsl). Without shadows the
-// variant has no shadow bindings (agaa/lighting.glsl) and addShadowedLights adds nothing.
+// variant has no shadow bindings (agaa/lighting.comp) and addShadowedLights adds nothing.
 #if AGAA_SHADOWS
 
 // agaa/common/effects.h ShadowFootprint: 0 the statistical footprint
@@ -81,10 +81,7 @@ void addShadowedLights(Aggregate ag, OffLayer off, vec3 V, float viewWeight, ino
         }
         vec3 L, irradiance;
         if (!lightIncidence(lights[i], ag.position, L, irradiance)) continue;
-        // A flagged pixel's sample: one tap at its own position, as the reference takes.
-        irradiance *= kShadingRate != 0u && ag.oneSample
-                          ? shadowVisibilityPoint(i, ag.position, ag.surface.normal)
-                          : shadowVisibilityFootprint(i, ag, pixelSize);
+        irradiance *= shadowVisibilityFootprint(i, ag, pixelSize);
         addAggregateLight(ag, V, viewWeight, L, irradiance, shading);
     }
 }

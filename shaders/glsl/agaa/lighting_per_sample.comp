@@ -1,0 +1,74 @@
+#version 460
+// AGAA's error-driven shading rate, the flagged pixels' shading (docs/decisions/
+// shading-rate-estimate.md): every pixel the lighting pass flagged (one of its aggregates'
+// estimates reached --agaa-tolerance; agaa/lighting/prefilter_estimate.glsl) has each covered
+// sample lit and tone-mapped on its own, by the code the reference shades its samples with
+// (common/gbuffer_lighting.glsl), and resolved into the lighting pass's images over that pixel.
+// A pass of its own rather than a branch in the lighting pass: on lavapipe the per-sample
+// shading's mere presence in that shader cost furball's lighting pass 10 % with no pixel flagged.
+// One workgroup per tile the lighting pass listed (agaa/lighting/shading_rate.glsl), dispatched
+// indirectly: a frame with no flagged pixel dispatches none. Samples path only (the per-sample
+// G-buffer is its input).
+#extension GL_GOOGLE_include_directive : require
+#include "shared/frame.h"
+#include "shared/specialization.h"
+
+layout(local_size_x = 16, local_size_y = 16) in;
+
+layout(set = 0, binding = 0) uniform Frame { FrameConstants frame; };
+layout(set = 0, binding = 1, std430) readonly buffer Lights { GpuLight lights[]; };
+layout(set = 0, binding = 6, rgba32f) uniform writeonly image2D outHdr;
+layout(set = 0, binding = 7, rgba32f) uniform writeonly image2D outDisplay;
+layout(set = 0, binding = 8, r32ui) uniform writeonly uimage2D outShadingEvents;
+// The lighting pass's flags (FrameTargets::perSampleShaded): 1 where this pass shades the pixel.
+layout(set = 0, binding = 11, r32ui) uniform readonly uimage2D perSampleShaded;
+// The tiles it listed: workgroup i shades tile flaggedTiles[i] (x | y << 16).
+layout(set = 0, binding = 12, std430) readonly buffer FlaggedTiles {
+    uint flaggedDispatch[3];
+    uint flaggedTiles[];
+};
+
+uvec2 flaggedTile() {
+    uint tile = flaggedTiles[gl_WorkGroupID.x];
+    return uvec2(tile & 0xFFFFu, tile >> 16u);
+}
+#define TILE_COORD flaggedTile() // the light culling's tile (common/tile_culling.glsl)
+
+#define GBUFFER_MS 1 // AGAA's samples path: the 4x layered G-buffer
+#include "common/gbuffer_lighting.glsl"
+#include "agaa/lighting/shading_rate_view.glsl"
+
+// --debug shading-rate (AggregateDebugView::ShadingRate): this pass's pixels drawn in red.
+layout(constant_id = kSpecPerSampleShadingRateView) const uint kShadingRateView = 0u;
+
+void main() {
+    ivec2 pixel = ivec2(flaggedTile() * kTileSize + gl_LocalInvocationID.xy);
+    bool inside = all(lessThan(pixel, ivec2(frame.extent.xy)));
+    bool flagged = inside && imageLoad(perSampleShaded, pixel).x != 0u;
+
+    // The tile's lights, culled against the flagged pixels' depth bounds only.
+    float tmin = 1e30, tmax = -1e30;
+    if (flagged) gbufferDistanceRange(pixel, tmin, tmax);
+    tileBoundsBegin();
+    tileBoundsAdd(tmin, tmax);
+    tileCullLights();
+    barrier();
+    if (!flagged) return;
+
+    // The reference's resolve (reference/lighting.comp): every sample weighted 1/n, the sky's too.
+    float weight = 1.0 / float(kSampleCount);
+    vec3 display = vec3(0.0);
+    vec3 hdr = vec3(0.0);
+    uint events = 0u;
+    for (uint s = 0u; s < kSampleCount; ++s) {
+        vec3 radiance, toneMapped;
+        bool covered = shadeGBufferSample(pixel, s, radiance, toneMapped);
+        display += weight * toneMapped;
+        hdr += weight * radiance;
+        events += covered ? 1u : 0u;
+    }
+    if (kShadingRateView != 0u) display = shadingRateView(display, true);
+    imageStore(outHdr, pixel, vec4(hdr, 1.0));
+    imageStore(outDisplay, pixel, vec4(display, 1.0));
+    imageStore(outShadingEvents, pixel, uvec4(events));
+}
