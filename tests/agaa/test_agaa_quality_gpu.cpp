@@ -6,8 +6,9 @@
 // AGAA_QUALITY_METAL_ROUGHNESS=R with every metal at roughness R, AGAA_QUALITY_REFERENCE_SAMPLES=N
 // against the reference at n = N,
 // AGAA_QUALITY_NDF=sggx|toksvig with one normal distribution; AGAA_QUALITY_DISTANCE=plane,
-// AGAA_QUALITY_SEED_THRESHOLD=T, AGAA_QUALITY_SHADOW_FOOTPRINT=statistics|samples and
-// AGAA_QUALITY_CURVATURE=1 AGAA's other settings: the measurements behind docs/decisions).
+// AGAA_QUALITY_SEED_THRESHOLD=T, AGAA_QUALITY_SHADOW_FOOTPRINT=statistics|samples,
+// AGAA_QUALITY_CURVATURE=1 and AGAA_QUALITY_TOLERANCE=T (the samples path's shading rate) AGAA's
+// other settings: the measurements behind docs/decisions).
 
 #include "agaa_test_support.h"
 #include "engine/io/metrics.h"
@@ -187,7 +188,8 @@ TEST_P(QualityScene, AgaaIsNeverWorseThanNoAaAndKeepsTheEnergy) {
         size == 64 && !std::getenv("AGAA_QUALITY_NO_SHADOWS") && !ndf &&
         !std::getenv("AGAA_QUALITY_DISTANCE") && !std::getenv("AGAA_QUALITY_SEED_THRESHOLD") &&
         !std::getenv("AGAA_QUALITY_SHADOW_FOOTPRINT") && !std::getenv("AGAA_QUALITY_CURVATURE") &&
-        !std::getenv("AGAA_QUALITY_EXPOSURE") && !std::getenv("AGAA_QUALITY_METAL_ROUGHNESS");
+        !std::getenv("AGAA_QUALITY_EXPOSURE") && !std::getenv("AGAA_QUALITY_METAL_ROUGHNESS") &&
+        !std::getenv("AGAA_QUALITY_TOLERANCE");
     const agaa::ConvergedTruth truth = truthOf(renderer, request(scene, "reference", n, 1, size));
     const agaa::RenderResult ref = renderer.render(request(scene, "reference", n, 1, size));
     // The same reference with materials at sample rate: what of its error is the pixel-rate material.
@@ -222,6 +224,8 @@ TEST_P(QualityScene, AgaaIsNeverWorseThanNoAaAndKeepsTheEnergy) {
                                                          ? agaa::EffectSettings::ShadowFootprint::Samples
                                                          : agaa::EffectSettings::ShadowFootprint::Statistics;
             if (std::getenv("AGAA_QUALITY_CURVATURE")) r.settings.curvatureRoughness = true;
+            if (const char* t = std::getenv("AGAA_QUALITY_TOLERANCE"); t && pathName == "agaa-samples")
+                r.settings.agaaTolerance = float(std::atof(t));
             const agaa::RenderResult ag = renderer.render(r);
             const double error = eng::io::rmse(encoded(ag.display), truthDisplay);
             const double mean = meanRadiance(ag.hdr);

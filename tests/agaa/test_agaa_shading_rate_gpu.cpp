@@ -10,6 +10,7 @@
 //     an estimate lies within rounding of the tolerance.
 //   - The estimate's floor (kNormalSpreadFloor): a flat surface is never flagged above 0.
 
+#include "agaa/aggregate/agaa_constants.h"
 #include "agaa_test_support.h"
 #include "aggregate_export.h"
 #include "engine/io/metrics.h"
@@ -57,7 +58,8 @@ TEST(ShadingRate, NothingFlaggedIsAgaaBitForBit) {
     for (const Case k : {Case{"metal", 2}, Case{"spikes", 4}, Case{"hard-emissive", 2}, Case{"furball", 1}}) {
         eng::scene::Scene scene = eng::scene::loadTestScene(k.scene);
         agaa::FrameRenderer renderer(*device, scene);
-        const agaa::RenderResult never = renderer.render(request("agaa-samples", 8, k.c, kSize));
+        const agaa::RenderResult never =
+            renderer.render(withTolerance("agaa-samples", 8, k.c, agaa::kToleranceNever));
         const agaa::RenderResult none =
             renderer.render(withTolerance("agaa-samples", 8, k.c, kNothingFlagged));
         EXPECT_EQ(maxAbsDifference(never.hdr, none.hdr), 0.0) << k.scene << " c=" << k.c;
@@ -81,7 +83,8 @@ TEST(ShadingRate, ZeroIsTheReferenceAtTheSameSampleCount) {
         eng::scene::Scene scene = eng::scene::loadTestScene(name);
         agaa::FrameRenderer renderer(*device, scene);
         const agaa::RenderResult reference = renderer.render(request("reference", 8, 1, kSize));
-        const agaa::RenderResult never = renderer.render(request("agaa-samples", 8, 2, kSize));
+        const agaa::RenderResult never =
+            renderer.render(withTolerance("agaa-samples", 8, 2, agaa::kToleranceNever));
         const agaa::RenderResult zero = renderer.render(withTolerance("agaa-samples", 8, 2, 0.0f));
         const double error =
             eng::io::rmse(eng::io::srgbEncoded(zero.display), eng::io::srgbEncoded(reference.display));
@@ -137,7 +140,8 @@ TEST(ShadingRate, AFlaggedPixelIsTheReferencesAndEveryOtherAgaas) {
         eng::scene::Scene scene = eng::scene::loadTestScene(name);
         agaa::FrameRenderer renderer(*device, scene);
         const agaa::RenderResult reference = renderer.render(request("reference", 8, 1, kSize));
-        const agaa::RenderResult never = renderer.render(request("agaa-samples", 8, 2, kSize));
+        const agaa::RenderResult never =
+            renderer.render(withTolerance("agaa-samples", 8, 2, agaa::kToleranceNever));
         const agaa::RenderRequest some = withTolerance("agaa-samples", 8, 2, 30.0f);
         const agaa::RenderResult rate = renderer.render(some);
         const std::vector<bool> flagged = flaggedPixels(renderer, some);
@@ -226,8 +230,8 @@ TEST(ShadingRate, TheGpuFlagsWhatACpuEstimateFlags) {
         // The tolerance: the median of the scene's non-zero estimates, so that about half the pixels
         // with any spread are flagged.
         std::vector<double> values;
-        const std::vector<float> unflagged =
-            agaa::test::renderAggregateExport(exporter, renderer, request("agaa-samples", 8, k.c, kSize));
+        const std::vector<float> unflagged = agaa::test::renderAggregateExport(
+            exporter, renderer, withTolerance("agaa-samples", 8, k.c, agaa::kToleranceNever));
         for (const CpuEstimate& e : cpuEstimates(unflagged, 8, k.c))
             if (e.value > 0.0) values.push_back(e.value);
         ASSERT_FALSE(values.empty()) << k.scene;
@@ -308,7 +312,8 @@ TEST(ShadingRate, AFlatSurfaceIsNeverFlaggedAboveZero) {
     for (const char* name : {"hard-flat", "hard-zfight", "plane"}) {
         eng::scene::Scene scene = eng::scene::loadTestScene(name);
         agaa::FrameRenderer renderer(*device, scene);
-        const agaa::RenderResult never = renderer.render(request("agaa-samples", 8, 2, kSize));
+        const agaa::RenderResult never =
+            renderer.render(withTolerance("agaa-samples", 8, 2, agaa::kToleranceNever));
         const agaa::RenderResult tiny = renderer.render(withTolerance("agaa-samples", 8, 2, 1.0e-6f));
         EXPECT_EQ(never.shadingEvents, tiny.shadingEvents) << name << ": a flat pixel was flagged";
         EXPECT_EQ(maxAbsDifference(never.display, tiny.display), 0.0) << name;
