@@ -1,6 +1,7 @@
 // The AGAA passes as render-graph nodes (pipelines: aggregate_pipelines.cpp).
 
 #include "agaa/aggregate/aggregate.h"
+#include "agaa/aggregate/flagged_tiles.h"
 #include "agaa/common/frame_inputs.h"
 
 #include "engine/vk/descriptors.h"
@@ -245,34 +246,16 @@ FrameTargets AggregateAA::addPasses(rg::Graph& graph, const FrameInputs& in) {
 
     // ---- 4. tiled lighting, aggregating at the top of each tile ------------------------------
     struct Lighting {
-        rg::Buffer frame, lights, agaa, metadata, agBuffer, shadowConstants, flaggedTiles;
-        rg::Texture depth, count, emissive, shadowMap, hdr, display, events, perSampleShaded;
+        rg::Buffer frame, lights, agaa, metadata, agBuffer, flaggedTiles;
+        ShadowMaps shadow;
+        rg::Texture depth, count, emissive, hdr, display, events, perSampleShaded;
         rg::Texture normal, albedoMetal; // samples path: the G-buffer (emissive: its emissive + roughness)
     };
     const bool shadingRate = m_settings.tolerance >= 0.0f; // the samples path's (resolveGeneration)
-    // The tiles with a flagged pixel (agaa/lighting/shading_rate.glsl): the per-sample pass's
-    // indirect dispatch {count, 1, 1}, then one word per tile. Cleared to a dispatch of no tile.
     const uint32_t tilesX = groups(in.width, shared::kTileSize),
                    tilesY = groups(in.height, shared::kTileSize);
-    rg::Buffer flaggedTiles;
-    if (shadingRate) {
-        struct Clear {
-            rg::Buffer tiles;
-        };
-        flaggedTiles = graph
-                           .addPass<Clear>(
-                               "agaa.flaggedTiles.clear", rg::PassKind::Transfer,
-                               [&](rg::Builder& b, Clear& d) {
-                                   d.tiles = b.write(
-                                       b.create("agaa.flaggedTiles", {VkDeviceSize(3 + tilesX * tilesY) * 4}),
-                                       rg::Use::TransferDst);
-                               },
-                               [](const rg::Context& ctx, const Clear& d) {
-                                   vkCmdFillBuffer(ctx.cmd(), ctx.buffer(d.tiles).buffer, 0, 4, 0);
-                                   vkCmdFillBuffer(ctx.cmd(), ctx.buffer(d.tiles).buffer, 4, 8, 1);
-                               })
-                           .tiles;
-    }
+    const rg::Buffer flaggedTiles =
+        shadingRate ? addFlaggedTileList(graph, in.width, in.height, "agaa.flaggedTiles") : rg::Buffer{};
     const Lighting& lit = graph.addCompute<Lighting>(
         "agaa.lighting",
         [&](rg::Builder& b, Lighting& d) {
@@ -290,10 +273,7 @@ FrameTargets AggregateAA::addPasses(rg::Graph& graph, const FrameInputs& in) {
                 d.agBuffer = b.read(agBuffer, rg::Use::StorageReadCompute);
                 if (emissive) d.emissive = b.read(emissiveSamples, rg::Use::SampledCompute);
             }
-            if (shadows) {
-                d.shadowMap = b.read(shadowMaps.map, rg::Use::SampledCompute);
-                d.shadowConstants = b.read(shadowMaps.constants, rg::Use::UniformRead);
-            }
+            if (shadows) d.shadow = ShadowMapPass::read(b, shadowMaps);
             d.hdr = b.write(b.create("agaa.hdr", outDesc), rg::Use::StorageImageWriteCompute);
             d.display = b.write(b.create("agaa.display", outDesc), rg::Use::StorageImageWriteCompute);
             d.events = b.write(b.create("agaa.shadingEvents", eventsDesc), rg::Use::StorageImageWriteCompute);
@@ -332,9 +312,7 @@ FrameTargets AggregateAA::addPasses(rg::Graph& graph, const FrameInputs& in) {
                 pd.storage(6, ctx.buffer(d.agBuffer).buffer);
                 if (emissive) pd.sampled(10, m_fetchSampler, ctx.texture(d.emissive).sampledView);
             }
-            if (shadows)
-                pd.sampled(11, m_shadow->sampler(), ctx.texture(d.shadowMap).sampledView)
-                    .uniform(12, ctx.buffer(d.shadowConstants).buffer);
+            if (shadows) m_shadow->push(pd, ctx, d.shadow, 11, 12);
             pushEnvironment(pd, *in.scene);
             pd.push(m_device, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, m_lightingLayout.layout);
             vkCmdDispatch(cmd, tilesX, tilesY, 1);
@@ -343,22 +321,18 @@ FrameTargets AggregateAA::addPasses(rg::Graph& graph, const FrameInputs& in) {
 
     // ---- the shading rate's flagged pixels, each sample lit and resolved on its own ----------
     struct PerSample {
-        rg::Buffer frame, lights, shadowConstants, tiles;
-        rg::Texture depth, normal, albedoMetal, emissiveRoughness, shadowMap, flags, hdr, display, events;
+        rg::Buffer frame, lights, tiles;
+        SampleGBuffer g;
+        ShadowMaps shadow;
+        rg::Texture flags, hdr, display, events;
     };
     const PerSample& flagged = graph.addCompute<PerSample>(
         "agaa.lighting.perSample",
         [&](rg::Builder& b, PerSample& d) {
             d.frame = b.read(in.frameConstants, rg::Use::UniformRead);
             d.lights = b.read(in.lights, rg::Use::StorageReadCompute);
-            d.depth = b.read(gbuffer.depth, rg::Use::SampledCompute);
-            d.normal = b.read(gbuffer.normal, rg::Use::SampledCompute);
-            d.albedoMetal = b.read(gbuffer.albedoMetal, rg::Use::SampledCompute);
-            d.emissiveRoughness = b.read(gbuffer.emissiveRoughness, rg::Use::SampledCompute);
-            if (shadows) {
-                d.shadowMap = b.read(shadowMaps.map, rg::Use::SampledCompute);
-                d.shadowConstants = b.read(shadowMaps.constants, rg::Use::UniformRead);
-            }
+            d.g = readSampleGBuffer(b, gbuffer);
+            if (shadows) d.shadow = ShadowMapPass::read(b, shadowMaps);
             d.flags = b.read(lit.perSampleShaded, rg::Use::StorageImageReadCompute);
             d.tiles = b.read(lit.flaggedTiles, rg::Use::IndirectRead);
             b.read(lit.flaggedTiles, rg::Use::StorageReadCompute);
@@ -371,20 +345,11 @@ FrameTargets AggregateAA::addPasses(rg::Graph& graph, const FrameInputs& in) {
             VkCommandBuffer cmd = ctx.cmd();
             vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, m_perSamplePipeline);
             vk::PushDescriptors pd;
-            pd.uniform(0, ctx.buffer(d.frame).buffer)
-                .storage(1, ctx.buffer(d.lights).buffer)
-                .sampled(2, m_fetchSampler, ctx.texture(d.depth).sampledView)
-                .sampled(3, m_fetchSampler, ctx.texture(d.normal).sampledView)
-                .sampled(4, m_fetchSampler, ctx.texture(d.albedoMetal).sampledView)
-                .sampled(5, m_fetchSampler, ctx.texture(d.emissiveRoughness).sampledView)
-                .storageImage(6, ctx.texture(d.hdr).view)
-                .storageImage(7, ctx.texture(d.display).view)
-                .storageImage(8, ctx.texture(d.events).view)
-                .storageImage(11, ctx.texture(d.flags).view)
-                .storage(12, ctx.buffer(d.tiles).buffer);
-            if (shadows)
-                pd.sampled(9, m_shadow->sampler(), ctx.texture(d.shadowMap).sampledView)
-                    .uniform(10, ctx.buffer(d.shadowConstants).buffer);
+            pd.uniform(0, ctx.buffer(d.frame).buffer).storage(1, ctx.buffer(d.lights).buffer);
+            pushSampleGBuffer(pd, ctx, m_fetchSampler, d.g);
+            pushLightingTargets(pd, ctx, d.hdr, d.display, d.events);
+            pd.storageImage(11, ctx.texture(d.flags).view).storage(12, ctx.buffer(d.tiles).buffer);
+            if (shadows) m_shadow->push(pd, ctx, d.shadow, 9, 10);
             pushEnvironment(pd, *in.scene);
             pd.push(m_device, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, m_perSampleLayout.layout);
             vkCmdDispatchIndirect(cmd, ctx.buffer(d.tiles).buffer, 0); // the listed tiles only

@@ -174,4 +174,20 @@ void pushSampleGBuffer(eng::vk::PushDescriptors& pd, const eng::rg::Context& ctx
         .sampled(5, sampler, ctx.texture(g.emissiveRoughness).sampledView);
 }
 
+void pushLightingTargets(eng::vk::PushDescriptors& pd, const eng::rg::Context& ctx, eng::rg::Texture hdr,
+                         eng::rg::Texture display, eng::rg::Texture events) {
+    pd.storageImage(6, ctx.texture(hdr).view)
+        .storageImage(7, ctx.texture(display).view)
+        .storageImage(8, ctx.texture(events).view);
+}
+
+SampleGBuffer readSampleGBuffer(eng::rg::Builder& b, const SampleGBuffer& g) {
+    SampleGBuffer read;
+    read.depth = b.read(g.depth, eng::rg::Use::SampledCompute);
+    read.normal = b.read(g.normal, eng::rg::Use::SampledCompute);
+    read.albedoMetal = b.read(g.albedoMetal, eng::rg::Use::SampledCompute);
+    read.emissiveRoughness = b.read(g.emissiveRoughness, eng::rg::Use::SampledCompute);
+    return read;
+}
+
 } // namespace agaa

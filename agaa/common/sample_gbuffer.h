@@ -35,6 +35,12 @@ struct SampleGBuffer {
 // depth, normal, albedo + metallic, emissive + roughness, each through `sampler`.
 void pushSampleGBuffer(eng::vk::PushDescriptors& pd, const eng::rg::Context& ctx, VkSampler sampler,
                        const SampleGBuffer& g);
+// Bindings 6..8 of the same passes (and AGAA's per-sample pass): the lighting's targets, HDR,
+// display and shading events, as storage images.
+void pushLightingTargets(eng::vk::PushDescriptors& pd, const eng::rg::Context& ctx, eng::rg::Texture hdr,
+                         eng::rg::Texture display, eng::rg::Texture events);
+// The four images pushSampleGBuffer binds, read by a compute pass (the primitive ids are not).
+SampleGBuffer readSampleGBuffer(eng::rg::Builder& b, const SampleGBuffer& g);
 
 // How the fill pass runs. The defaults are the reference's: one material evaluation per pixel
 // written to every covered sample, and the material's own roughness.

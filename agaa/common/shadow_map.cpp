@@ -208,4 +208,15 @@ ShadowMaps ShadowMapPass::add(rg::Graph& graph, const FrameInputs& in) {
     return {out.map, out.constants};
 }
 
+ShadowMaps ShadowMapPass::read(eng::rg::Builder& b, const ShadowMaps& maps) {
+    return {b.read(maps.map, eng::rg::Use::SampledCompute),
+            b.read(maps.constants, eng::rg::Use::UniformRead)};
+}
+
+void ShadowMapPass::push(eng::vk::PushDescriptors& pd, const eng::rg::Context& ctx, const ShadowMaps& maps,
+                         uint32_t mapBinding, uint32_t constantsBinding) const {
+    pd.sampled(mapBinding, m_sampler, ctx.texture(maps.map).sampledView)
+        .uniform(constantsBinding, ctx.buffer(maps.constants).buffer);
+}
+
 } // namespace agaa

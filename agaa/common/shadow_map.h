@@ -15,6 +15,7 @@
 #include "agaa/common/effects.h"
 #include "agaa/common/technique.h"
 #include "engine/frame/uniform_ring.h"
+#include "engine/vk/descriptors.h"
 #include "engine/vk/device.h"
 #include "engine/vk/pipeline.h"
 #include "engine/vk/resources.h"
@@ -46,6 +47,11 @@ class ShadowMapPass {
     // ring slot inputs.frameSlot (engine/frame/uniform_ring.h for its lifetime).
     ShadowMaps add(eng::rg::Graph& graph, const FrameInputs& inputs);
     VkSampler sampler() const { return m_sampler; }
+    // The maps and their constants read by a lighting pass, and pushed at the bindings its shader
+    // gives common/shadow.glsl (SHADOW_MAP_BINDING, SHADOW_CONSTANTS_BINDING).
+    static ShadowMaps read(eng::rg::Builder& b, const ShadowMaps& maps);
+    void push(eng::vk::PushDescriptors& pd, const eng::rg::Context& ctx, const ShadowMaps& maps,
+              uint32_t mapBinding, uint32_t constantsBinding) const;
     const shared::ShadowConstants& constants() const { return m_constants; }
 
     // The light-space fit, exposed for tests: world -> shadow clip (z in [0, 1], 0 near).

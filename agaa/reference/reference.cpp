@@ -72,8 +72,9 @@ FrameTargets Reference::addPasses(rg::Graph& graph, const FrameInputs& in) {
     if (shadows) shadowMaps = m_shadow.add(graph, in);
 
     struct Lighting {
-        rg::Buffer frame, lights, shadowConstants;
-        rg::Texture depth, normal, albedoMetal, emissiveRoughness, shadowMap;
+        rg::Buffer frame, lights;
+        SampleGBuffer g;
+        ShadowMaps shadow;
         rg::Texture hdr, display, events;
     };
     const rg::TextureDesc out{VK_FORMAT_R32G32B32A32_SFLOAT, in.width, in.height, 1, VK_SAMPLE_COUNT_1_BIT};
@@ -83,14 +84,8 @@ FrameTargets Reference::addPasses(rg::Graph& graph, const FrameInputs& in) {
         [&](rg::Builder& b, Lighting& d) {
             d.frame = b.read(in.frameConstants, rg::Use::UniformRead);
             d.lights = b.read(in.lights, rg::Use::StorageReadCompute);
-            d.depth = b.read(g.depth, rg::Use::SampledCompute);
-            d.normal = b.read(g.normal, rg::Use::SampledCompute);
-            d.albedoMetal = b.read(g.albedoMetal, rg::Use::SampledCompute);
-            d.emissiveRoughness = b.read(g.emissiveRoughness, rg::Use::SampledCompute);
-            if (shadows) {
-                d.shadowMap = b.read(shadowMaps.map, rg::Use::SampledCompute);
-                d.shadowConstants = b.read(shadowMaps.constants, rg::Use::UniformRead);
-            }
+            d.g = readSampleGBuffer(b, g);
+            if (shadows) d.shadow = ShadowMapPass::read(b, shadowMaps);
             d.hdr = b.write(b.create(m_name + ".hdr", out), rg::Use::StorageImageWriteCompute);
             d.display = b.write(b.create(m_name + ".display", out), rg::Use::StorageImageWriteCompute);
             d.events =
@@ -102,19 +97,11 @@ FrameTargets Reference::addPasses(rg::Graph& graph, const FrameInputs& in) {
             vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, m_lightingPipeline);
             vk::PushDescriptors pd;
             pushEnvironment(pd, *scene);
-            if (shadows)
-                pd.sampled(9, m_shadow.sampler(), ctx.texture(d.shadowMap).sampledView)
-                    .uniform(10, ctx.buffer(d.shadowConstants).buffer);
-            pd.uniform(0, ctx.buffer(d.frame).buffer)
-                .storage(1, ctx.buffer(d.lights).buffer)
-                .sampled(2, m_fetchSampler, ctx.texture(d.depth).sampledView)
-                .sampled(3, m_fetchSampler, ctx.texture(d.normal).sampledView)
-                .sampled(4, m_fetchSampler, ctx.texture(d.albedoMetal).sampledView)
-                .sampled(5, m_fetchSampler, ctx.texture(d.emissiveRoughness).sampledView)
-                .storageImage(6, ctx.texture(d.hdr).view)
-                .storageImage(7, ctx.texture(d.display).view)
-                .storageImage(8, ctx.texture(d.events).view)
-                .push(m_device, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, m_lightingLayout.layout);
+            if (shadows) m_shadow.push(pd, ctx, d.shadow, 9, 10);
+            pd.uniform(0, ctx.buffer(d.frame).buffer).storage(1, ctx.buffer(d.lights).buffer);
+            pushSampleGBuffer(pd, ctx, m_fetchSampler, d.g);
+            pushLightingTargets(pd, ctx, d.hdr, d.display, d.events);
+            pd.push(m_device, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, m_lightingLayout.layout);
             vkCmdDispatch(cmd, (w + shared::kTileSize - 1) / shared::kTileSize,
                           (h + shared::kTileSize - 1) / shared::kTileSize, 1);
         });

@@ -159,8 +159,8 @@ FrameTargets Sbaa::addLighting(rg::Graph& graph, const FrameInputs& in, const Sa
     ShadowMaps shadowMaps;
     if (shadows) shadowMaps = m_shadow.add(graph, in);
     struct Lighting {
-        rg::Buffer frame, lights, shadowConstants, surfaces;
-        rg::Texture shadowMap;
+        rg::Buffer frame, lights, surfaces;
+        ShadowMaps shadow;
         SampleGBuffer g;
         rg::Texture hdr, display, events;
     };
@@ -174,10 +174,7 @@ FrameTargets Sbaa::addLighting(rg::Graph& graph, const FrameInputs& in, const Sa
             d.lights = b.read(in.lights, rg::Use::StorageReadCompute);
             d.surfaces = b.read(surfaces.surfaces, rg::Use::StorageReadCompute);
             d.g.depth = b.read(g.depth, rg::Use::SampledCompute); // the sky and the tile's depth bounds
-            if (shadows) {
-                d.shadowMap = b.read(shadowMaps.map, rg::Use::SampledCompute);
-                d.shadowConstants = b.read(shadowMaps.constants, rg::Use::UniformRead);
-            }
+            if (shadows) d.shadow = ShadowMapPass::read(b, shadowMaps);
             d.hdr = b.write(b.create("sbaa.hdr", out), rg::Use::StorageImageWriteCompute);
             d.display = b.write(b.create("sbaa.display", out), rg::Use::StorageImageWriteCompute);
             d.events = b.write(b.create("sbaa.shadingEvents", eventsDesc), rg::Use::StorageImageWriteCompute);
@@ -188,15 +185,11 @@ FrameTargets Sbaa::addLighting(rg::Graph& graph, const FrameInputs& in, const Sa
             vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, m_lightingPipeline);
             vk::PushDescriptors pd;
             pushEnvironment(pd, *scene);
-            if (shadows)
-                pd.sampled(9, m_shadow.sampler(), ctx.texture(d.shadowMap).sampledView)
-                    .uniform(10, ctx.buffer(d.shadowConstants).buffer);
+            if (shadows) m_shadow.push(pd, ctx, d.shadow, 9, 10);
             pd.uniform(0, ctx.buffer(d.frame).buffer).storage(1, ctx.buffer(d.lights).buffer);
             pd.sampled(2, m_fetchSampler, ctx.texture(d.g.depth).sampledView);
-            pd.storageImage(6, ctx.texture(d.hdr).view)
-                .storageImage(7, ctx.texture(d.display).view)
-                .storageImage(8, ctx.texture(d.events).view)
-                .storage(12, ctx.buffer(d.surfaces).buffer)
+            pushLightingTargets(pd, ctx, d.hdr, d.display, d.events);
+            pd.storage(12, ctx.buffer(d.surfaces).buffer)
                 .push(m_device, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, m_lightingLayout.layout);
             vkCmdPushConstants(cmd, m_lightingLayout.layout, VK_SHADER_STAGE_ALL, 0, sizeof(p), &p);
             vkCmdDispatch(cmd, (w + shared::kTileSize - 1) / shared::kTileSize,

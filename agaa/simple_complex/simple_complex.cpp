@@ -86,8 +86,8 @@ FrameTargets SimpleComplex::addLighting(rg::Graph& graph, const FrameInputs& in,
     ShadowMaps shadowMaps;
     if (shadows) shadowMaps = m_shadow.add(graph, in);
     struct Lighting {
-        rg::Buffer frame, lights, shadowConstants;
-        rg::Texture shadowMap;
+        rg::Buffer frame, lights;
+        ShadowMaps shadow;
         SampleGBuffer g;
         rg::Texture hdr, display, events;
     };
@@ -101,14 +101,8 @@ FrameTargets SimpleComplex::addLighting(rg::Graph& graph, const FrameInputs& in,
         [&](rg::Builder& b, Lighting& d) {
             d.frame = b.read(in.frameConstants, rg::Use::UniformRead);
             d.lights = b.read(in.lights, rg::Use::StorageReadCompute);
-            d.g.depth = b.read(gbuffer.depth, rg::Use::SampledCompute);
-            d.g.normal = b.read(gbuffer.normal, rg::Use::SampledCompute);
-            d.g.albedoMetal = b.read(gbuffer.albedoMetal, rg::Use::SampledCompute);
-            d.g.emissiveRoughness = b.read(gbuffer.emissiveRoughness, rg::Use::SampledCompute);
-            if (shadows) {
-                d.shadowMap = b.read(shadowMaps.map, rg::Use::SampledCompute);
-                d.shadowConstants = b.read(shadowMaps.constants, rg::Use::UniformRead);
-            }
+            d.g = readSampleGBuffer(b, gbuffer);
+            if (shadows) d.shadow = ShadowMapPass::read(b, shadowMaps);
             d.hdr = b.write(b.create(m_name + ".hdr", out), rg::Use::StorageImageWriteCompute);
             d.display = b.write(b.create(m_name + ".display", out), rg::Use::StorageImageWriteCompute);
             d.events =
@@ -120,15 +114,11 @@ FrameTargets SimpleComplex::addLighting(rg::Graph& graph, const FrameInputs& in,
             vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, m_lightingPipeline);
             eng::vk::PushDescriptors pd;
             pushEnvironment(pd, *scene);
-            if (shadows)
-                pd.sampled(9, m_shadow.sampler(), ctx.texture(d.shadowMap).sampledView)
-                    .uniform(10, ctx.buffer(d.shadowConstants).buffer);
+            if (shadows) m_shadow.push(pd, ctx, d.shadow, 9, 10);
             pd.uniform(0, ctx.buffer(d.frame).buffer).storage(1, ctx.buffer(d.lights).buffer);
             pushSampleGBuffer(pd, ctx, m_fetchSampler, d.g);
-            pd.storageImage(6, ctx.texture(d.hdr).view)
-                .storageImage(7, ctx.texture(d.display).view)
-                .storageImage(8, ctx.texture(d.events).view)
-                .push(m_device, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, m_lightingLayout.layout);
+            pushLightingTargets(pd, ctx, d.hdr, d.display, d.events);
+            pd.push(m_device, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, m_lightingLayout.layout);
             vkCmdPushConstants(cmd, m_lightingLayout.layout, VK_SHADER_STAGE_ALL, 0, sizeof(params), &params);
             vkCmdDispatch(cmd, (w + shared::kTileSize - 1) / shared::kTileSize,
                           (h + shared::kTileSize - 1) / shared::kTileSize, 1);

@@ -138,10 +138,7 @@ StreamingCompression::Surfaces StreamingCompression::addCompression(rg::Graph& g
         "streaming.compress",
         [&](rg::Builder& b, Data& d) {
             d.frame = b.read(in.frameConstants, rg::Use::UniformRead);
-            d.g.depth = b.read(g.depth, rg::Use::SampledCompute);
-            d.g.normal = b.read(g.normal, rg::Use::SampledCompute);
-            d.g.albedoMetal = b.read(g.albedoMetal, rg::Use::SampledCompute);
-            d.g.emissiveRoughness = b.read(g.emissiveRoughness, rg::Use::SampledCompute);
+            d.g = readSampleGBuffer(b, g);
             d.g.primitive = b.read(g.primitive, rg::Use::SampledCompute);
             d.surfaces =
                 b.write(b.create("streaming.surfaces", rg::BufferDesc{bytes}), rg::Use::StorageWriteCompute);
@@ -169,8 +166,8 @@ FrameTargets StreamingCompression::addLighting(rg::Graph& graph, const FrameInpu
     ShadowMaps shadowMaps;
     if (shadows) shadowMaps = m_shadow.add(graph, in);
     struct Lighting {
-        rg::Buffer frame, lights, shadowConstants, surfaces;
-        rg::Texture shadowMap;
+        rg::Buffer frame, lights, surfaces;
+        ShadowMaps shadow;
         SampleGBuffer g;
         rg::Texture hdr, display, events;
     };
@@ -183,14 +180,8 @@ FrameTargets StreamingCompression::addLighting(rg::Graph& graph, const FrameInpu
             d.frame = b.read(in.frameConstants, rg::Use::UniformRead);
             d.lights = b.read(in.lights, rg::Use::StorageReadCompute);
             d.surfaces = b.read(surfaces.surfaces, rg::Use::StorageReadCompute);
-            d.g.depth = b.read(g.depth, rg::Use::SampledCompute);
-            d.g.normal = b.read(g.normal, rg::Use::SampledCompute);
-            d.g.albedoMetal = b.read(g.albedoMetal, rg::Use::SampledCompute);
-            d.g.emissiveRoughness = b.read(g.emissiveRoughness, rg::Use::SampledCompute);
-            if (shadows) {
-                d.shadowMap = b.read(shadowMaps.map, rg::Use::SampledCompute);
-                d.shadowConstants = b.read(shadowMaps.constants, rg::Use::UniformRead);
-            }
+            d.g = readSampleGBuffer(b, g);
+            if (shadows) d.shadow = ShadowMapPass::read(b, shadowMaps);
             d.hdr = b.write(b.create("streaming.hdr", out), rg::Use::StorageImageWriteCompute);
             d.display = b.write(b.create("streaming.display", out), rg::Use::StorageImageWriteCompute);
             d.events =
@@ -202,15 +193,11 @@ FrameTargets StreamingCompression::addLighting(rg::Graph& graph, const FrameInpu
             vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, m_lightingPipeline);
             vk::PushDescriptors pd;
             pushEnvironment(pd, *scene);
-            if (shadows)
-                pd.sampled(9, m_shadow.sampler(), ctx.texture(d.shadowMap).sampledView)
-                    .uniform(10, ctx.buffer(d.shadowConstants).buffer);
+            if (shadows) m_shadow.push(pd, ctx, d.shadow, 9, 10);
             pd.uniform(0, ctx.buffer(d.frame).buffer).storage(1, ctx.buffer(d.lights).buffer);
             pushSampleGBuffer(pd, ctx, m_fetchSampler, d.g);
-            pd.storageImage(6, ctx.texture(d.hdr).view)
-                .storageImage(7, ctx.texture(d.display).view)
-                .storageImage(8, ctx.texture(d.events).view)
-                .storage(12, ctx.buffer(d.surfaces).buffer)
+            pushLightingTargets(pd, ctx, d.hdr, d.display, d.events);
+            pd.storage(12, ctx.buffer(d.surfaces).buffer)
                 .push(m_device, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, m_lightingLayout.layout);
             vkCmdPushConstants(cmd, m_lightingLayout.layout, VK_SHADER_STAGE_ALL, 0, sizeof(p), &p);
             vkCmdDispatch(cmd, (w + shared::kTileSize - 1) / shared::kTileSize,

@@ -1,5 +1,6 @@
 #include "tests/support/aggregate_instrumentation.h"
 
+#include "agaa/aggregate/flagged_tiles.h"
 #include "agaa/common/effects.h"
 #include "engine/frame/gpu_scene.h"
 #include "engine/vk/descriptors.h"
@@ -142,25 +143,10 @@ void AggregateExportPass::add(rg::Graph& graph, const AggregateAA& aggregate, co
         rg::Buffer frame, lights, agaa, metadata, target, flaggedTiles;
         rg::Texture depth, count, normal, albedoMetal, emissive, hdr, display, events, perSampleShaded;
     };
-    // The shading rate's tile list (agaa/lighting/shading_rate.glsl): the test build lists its
-    // tiles too, so it gets a cleared one of its own.
-    struct Clear {
-        rg::Buffer tiles;
-    };
-    const VkDeviceSize tileBytes =
-        VkDeviceSize(3 + groups(in.width, shared::kTileSize) * groups(in.height, shared::kTileSize)) * 4;
+    // The shading rate's tile list (agaa/aggregate/flagged_tiles.h): the test build lists its
+    // tiles too, so it gets one of its own.
     const rg::Buffer flaggedTiles =
-        graph
-            .addPass<Clear>(
-                "test.aggregateExport.flaggedTiles.clear", rg::PassKind::Transfer,
-                [&](rg::Builder& b, Clear& d) {
-                    d.tiles = b.write(b.create("test.aggregateExport.flaggedTiles", {tileBytes}),
-                                      rg::Use::TransferDst);
-                },
-                [](const rg::Context& ctx, const Clear& d) {
-                    vkCmdFillBuffer(ctx.cmd(), ctx.buffer(d.tiles).buffer, 0, VK_WHOLE_SIZE, 0);
-                })
-            .tiles;
+        addFlaggedTileList(graph, in.width, in.height, "test.aggregateExport.flaggedTiles");
     const rg::TextureDesc colour{VK_FORMAT_R32G32B32A32_SFLOAT, in.width, in.height, 1,
                                  VK_SAMPLE_COUNT_1_BIT};
     const rg::TextureDesc counts{VK_FORMAT_R32_UINT, in.width, in.height, 1, VK_SAMPLE_COUNT_1_BIT};
