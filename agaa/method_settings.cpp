@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <charconv>
+#include <cmath>
 #include <cstdio>
 #include <sstream>
 #include <stdexcept>
@@ -177,18 +178,37 @@ std::vector<MethodOption> declareOptions() {
         [](const MethodSettings& s) { return s.agaaDistance; }));
     {
         MethodOption t = ranged(
-            Kind::Number, "agaa-tolerance", "never|T", 0.0, 1e7, "never", "agaa, agaa-samples",
+            Kind::Number, "agaa-tolerance", "auto|never|T", 0.0, 1e7, "auto", "agaa, agaa-samples",
             "the error-driven shading rate: a pixel whose aggregates' normal spread, against their sharpest "
             "member's lobe, reaches T is shaded per sample as the reference shades it (0: every pixel, the "
-            "reference's image; docs/decisions/shading-rate-estimate.md); the samples path only",
+            "reference's image; docs/decisions/shading-rate-estimate.md); the samples path only. auto: " +
+                numberText(kDefaultTolerance) + " on the samples path, never on the accumulate path",
             [=](MethodSettings& s, const std::string& v) {
-                s.agaaTolerance = v == "never" ? kToleranceNever : number(v);
+                s.agaaTolerance = v == "auto" ? kToleranceAuto : v == "never" ? kToleranceNever : number(v);
             },
             [](const MethodSettings& s) {
-                return s.agaaTolerance < 0.0f ? std::string("never") : numberText(s.agaaTolerance);
+                return s.agaaTolerance == kToleranceAuto ? std::string("auto")
+                       : s.agaaTolerance < 0.0f          ? std::string("never")
+                                                         : numberText(s.agaaTolerance);
             });
-        t.word = "never";
+        t.words = {"auto", "never"};
         o.push_back(std::move(t));
+    }
+    {
+        MethodOption l = ranged(
+            Kind::Number, "agaa-alias-limit", "none|L", 1.0, 1e7, numberText(kDefaultAliasLimit),
+            "agaa, agaa-samples",
+            "with a tolerance above 0, a pixel whose estimate reaches L keeps its aggregates: its lobe is so "
+            "much narrower than its normals' spread that n samples alias the highlight the aggregate's lobe "
+            "integrates (measured at n = 8 in docs/decisions/shading-rate-estimate.md)",
+            [=](MethodSettings& s, const std::string& v) {
+                s.agaaAliasLimit = v == "none" ? kAliasLimitNone : number(v);
+            },
+            [](const MethodSettings& s) {
+                return std::isinf(s.agaaAliasLimit) ? std::string("none") : numberText(s.agaaAliasLimit);
+            });
+        l.words = {"none"};
+        o.push_back(std::move(l));
     }
     o.push_back(choice(
         "agaa-generation", words(kAggregateGenerationNames), "auto", "agaa",
@@ -296,13 +316,14 @@ void setMethodOption(MethodSettings& settings, const MethodOption& option, const
         return option.set(settings, value);
     }
     case Kind::Number: {
-        if (!option.word.empty() && value == option.word) return option.set(settings, value);
+        if (std::find(option.words.begin(), option.words.end(), value) != option.words.end())
+            return option.set(settings, value);
         double v = 0.0;
         const auto [end, error] = std::from_chars(value.data(), value.data() + value.size(), v);
         if (error != std::errc() || end != value.data() + value.size() || !(v >= option.lo && v <= option.hi))
             throw std::invalid_argument(flag + " '" + value + "' is not a number in [" +
                                         numberText(option.lo) + ", " + numberText(option.hi) + "]" +
-                                        (option.word.empty() ? "" : " or " + option.word));
+                                        (option.words.empty() ? "" : " or " + joined(option.words, ", ")));
         return option.set(settings, value);
     }
     case Kind::Text:

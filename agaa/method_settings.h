@@ -25,9 +25,9 @@ struct MethodOption {
     Kind kind = Kind::Choice;
     std::vector<std::string> choices;
     double lo = 0.0, hi = 0.0;
-    std::string word;        // Number: a word it also takes instead of a number ("never"), or empty
-    std::string defaultText; // what the default does, in the value's own words
-    std::string doc;         // one paragraph for --help
+    std::vector<std::string> words; // Number: the words it also takes instead of a number ("never")
+    std::string defaultText;        // what the default does, in the value's own words
+    std::string doc;                // one paragraph for --help
     // The methods that read it: "all", or names, "family*" for every method whose name starts with
     // it: "agaa*" is agaa, agaa-accumulate and agaa-samples.
     std::string methods;

@@ -145,6 +145,7 @@ std::unique_ptr<Technique> createTechnique(const std::string& method, eng::vk::D
         s.sampleRateShading = settings.sampleRateShading;
         s.curvatureRoughness = settings.curvatureRoughness;
         s.tolerance = settings.agaaTolerance;
+        s.aliasLimit = settings.agaaAliasLimit;
         s.programs = settings.agaaPrograms;
         return std::make_unique<AggregateAA>(device, scene, s);
     }

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <stdexcept>
 #include <string>
@@ -27,7 +28,9 @@ void validate(const AggregateSettings& s) {
         throw std::invalid_argument("agaa: curvature boost must be a finite number >= 0");
     if (std::isnan(s.tolerance) || std::isinf(s.tolerance))
         throw std::invalid_argument("agaa: --agaa-tolerance must be a finite number >= 0, or never");
-    if (s.debugView == AggregateDebugView::ShadingRate && s.tolerance < 0.0f)
+    if (!(s.aliasLimit > 0.0f))
+        throw std::invalid_argument("agaa: --agaa-alias-limit must be a number > 0, or none");
+    if (s.debugView == AggregateDebugView::ShadingRate && s.tolerance < 0.0f && s.tolerance != kToleranceAuto)
         throw std::invalid_argument("agaa: --debug shading-rate shows the pixels --agaa-tolerance shades per "
                                     "sample; give a tolerance (a number >= 0)");
 }
@@ -53,7 +56,11 @@ shared::AgaaConstants makeAgaaConstants(const AggregateSettings& s, const shared
     c.toksvig = {smax, kMinGgxAlpha, kMaxGgxAlpha, 0.0f};
     c.options = {uint32_t(s.debugView), uint32_t(s.position), hasEmissive ? 1u : 0u, uint32_t(s.ndf)};
     c.modes = {uint32_t(s.distance), uint32_t(s.routing), 0u, 0u};
-    c.shadingRate = {std::max(s.tolerance, 0.0f), 0.0f, 0.0f, 0.0f};
+    // The limit as the largest float when there is none (or at a tolerance of 0, which flags every
+    // covered pixel): the shader's estimate < limit then always holds, with no infinity in a buffer.
+    const bool limited = s.tolerance > 0.0f && std::isfinite(s.aliasLimit);
+    c.shadingRate = {std::max(s.tolerance, 0.0f), limited ? s.aliasLimit : std::numeric_limits<float>::max(),
+                     kAliasedSaturation, 0.0f};
     return c;
 }
 

@@ -76,6 +76,7 @@ class AggregateAA final : public Technique {
     std::span<const uint32_t> generationCode() const;              // this scene's and device's variant
     std::span<const uint32_t> program(const NamedProgram& shipping) const; // or its replacement
     void resolveGeneration(); // Auto -> a path, or MissingCapability for a path the device lacks
+    void resolveTolerance();  // kToleranceAuto -> the path's default
     void createLayouts(const eng::frame::GpuScene& scene);
     void release(); // the destructor's work, also for a constructor that throws
 
@@ -102,6 +103,7 @@ class AggregateAA final : public Technique {
     VkSampler m_fetchSampler = VK_NULL_HANDLE;
     AggregateResources m_resources;
     std::string m_generationCause; // why this path (stats variants)
+    std::string m_toleranceCause;  // why this shading rate (stats variants)
 };
 
 } // namespace agaa

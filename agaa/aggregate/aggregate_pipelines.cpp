@@ -29,6 +29,7 @@
 #include "shaders/agaa/visibility_frag.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <stdexcept>
 #include <string_view>
@@ -126,6 +127,7 @@ AggregateAA::AggregateAA(vk::Device& device, const eng::frame::GpuScene& scene,
         throw vk::MissingCapability(caps.deviceName +
                                     " lacks 4x MSAA (AGAA rasterises n >= 4 samples as 4x layers)");
     resolveGeneration();
+    resolveTolerance();
     const bool samplesPath = m_settings.generation == AggregateGeneration::Samples;
     if (!samplesPath && !caps.postDepthCoverage)
         throw vk::MissingCapability(caps.deviceName +
@@ -259,6 +261,24 @@ void AggregateAA::resolveGeneration() {
                         std::to_string(kSamplesPathMaxSamples) +
                         (samples ? ": one raster pass, per-sample G-buffer memory affordable"
                                  : ": the per-sample G-buffer would be 1.7x the accumulate path's memory");
+}
+
+void AggregateAA::resolveTolerance() {
+    if (m_settings.tolerance != kToleranceAuto) {
+        m_toleranceCause = "setting --agaa-tolerance";
+        return;
+    }
+    if (m_settings.generation == AggregateGeneration::Samples) {
+        m_settings.tolerance = kDefaultTolerance;
+        m_toleranceCause = "the samples path's default (docs/decisions/shading-rate-estimate.md)";
+    } else {
+        m_settings.tolerance = kToleranceNever;
+        m_toleranceCause = "the accumulate path's default: it keeps no per-sample material";
+        if (m_settings.debugView == AggregateDebugView::ShadingRate)
+            throw std::invalid_argument(
+                "--debug shading-rate shows the pixels shaded per sample, and the accumulate path shades "
+                "none (use --method agaa-samples)");
+    }
 }
 
 std::span<const uint32_t> AggregateAA::program(const NamedProgram& shipping) const {
@@ -447,11 +467,14 @@ std::vector<VariantChoice> AggregateAA::variants() const {
                      "setting --curvature-roughness"});
         v.push_back(
             {"shading-rate",
-             m_settings.tolerance >= 0.0f
+             m_settings.tolerance < 0.0f ? std::string("one shading event per aggregate")
+             : m_settings.tolerance == 0.0f || std::isinf(m_settings.aliasLimit)
                  ? "per sample where the aggregates' normal spread over their sharpest lobe reaches " +
                        shortNumber(m_settings.tolerance)
-                 : std::string("one shading event per aggregate"),
-             "setting --agaa-tolerance"});
+                 : "per sample where the aggregates' normal spread over their sharpest lobe reaches " +
+                       shortNumber(m_settings.tolerance) + " and stays below " +
+                       shortNumber(m_settings.aliasLimit),
+             m_toleranceCause});
         v.push_back(
             {"clustering-distance",
              m_settings.distance == AggregateDistance::Plane ? "tangent-plane distance" : "Equation 1",

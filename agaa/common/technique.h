@@ -98,9 +98,12 @@ struct MethodSettings {
     bool sampleRateShading = false;
     // AGAA samples path: Kaplanyan curvature roughness in the fill pass (seed 004).
     bool curvatureRoughness = false;
-    // AGAA samples path: the error-driven shading rate's tolerance (AggregateSettings::tolerance);
-    // below 0: never.
-    float agaaTolerance = -1.0f;
+    // AGAA samples path: the error-driven shading rate's tolerance (AggregateSettings::tolerance):
+    // -1 never, -2 the path's default (kToleranceNever, kToleranceAuto; test_method_settings holds both to
+    // them).
+    float agaaTolerance = -2.0f;
+    // Its alias limit (AggregateSettings::aliasLimit, kDefaultAliasLimit); infinity: none.
+    float agaaAliasLimit = 5000.0f;
     EffectSettings effects; // scene-driven shadows, alpha-to-coverage, emissive, normal maps
     // AGAA: builds to run in place of its shipping programs (agaa/common/program_overrides.h), such
     // as agaa-timings' part-removed builds. Not an option: a tool's, set in code.

@@ -16,6 +16,7 @@
 // shared/sggx.h sggxDequantizedAlpha, is a heuristic with no formula in DESIGN to write a
 // reference from). The built-in scenes have no environment light (Scene::environment empty).
 
+#include "agaa/aggregate/agaa_constants.h"
 #include "agaa/aggregate/aggregate.h"
 #include "agaa_layout_reference.h"
 #include "agaa_test_support.h"
@@ -374,6 +375,7 @@ TEST(AgaaLightingReference, AggregateShadingMatchesADoublePrecisionCpuShading) {
             l.castsShadows = false; // the export variant has no shadow maps
         agaa::FrameRenderer renderer(*device, scene);
         agaa::RenderRequest r = agaa::test::request("agaa-samples", k.n, k.c, size);
+        r.settings.agaaTolerance = agaa::kToleranceNever; // the aggregates' shading, every pixel
         r.settings.ndf = k.ndf;
         const bool sggx = std::string(k.ndf) == "sggx";
         agaa::RenderResult result;

@@ -1,13 +1,13 @@
 // Issue 35: AGAA's error-driven shading rate (--agaa-tolerance; shaders/glsl/agaa/lighting/
 // prefilter_estimate.glsl and shading_rate.glsl, then agaa/lighting_per_sample.comp). A pixel whose
-// aggregates' normal spread, against their sharpest member's lobe, reaches the tolerance is shaded
-// per sample.
+// aggregates' normal spread, against their sharpest member's lobe, reaches the tolerance and stays
+// below the alias limit is shaded per sample.
 //   - Nothing flagged is AGAA bit for bit: the machinery changes no other pixel.
 //   - A tolerance of 0 is the reference at the same n.
 //   - At any tolerance a flagged pixel is the reference's pixel, and every other one AGAA's.
 //   - The GPU flags the pixels a CPU estimate, written here in double from the lighting pass's
 //     export of each sample's normal, roughness and aggregate, flags; the two differ only where
-//     an estimate lies within rounding of the tolerance.
+//     an estimate lies within rounding of the tolerance or the limit.
 //   - The estimate's floor (kNormalSpreadFloor): a flat surface is never flagged above 0.
 
 #include "agaa/aggregate/agaa_constants.h"
@@ -219,52 +219,76 @@ TEST(ShadingRate, TheGpuFlagsWhatACpuEstimateFlags) {
     struct Case {
         const char* scene;
         uint32_t c;
+        bool defaults = false; // the default tolerance and limit, not the scene's percentiles
     };
-    const Case cases[] = {{"metal", 2},   {"metal", 4},    {"furball", 2},
-                          {"default", 2}, {"railings", 1}, {"hard-mirror", 2}};
+    // glints at the default tolerance and limit: most of its pixels lie above the limit, and the
+    // saturated ones among them are flagged once lit.
+    const Case cases[] = {{"metal", 2},    {"metal", 4},       {"furball", 2},     {"default", 2},
+                          {"railings", 1}, {"hard-mirror", 2}, {"glints", 2, true}};
     for (const Case& k : cases) {
         eng::scene::Scene scene = eng::scene::loadTestScene(k.scene);
         for (eng::scene::Light& l : scene.lights)
             l.castsShadows = false; // the export variant has no shadow maps
         agaa::FrameRenderer renderer(*device, scene);
-        // The tolerance: the median of the scene's non-zero estimates, so that about half the pixels
-        // with any spread are flagged.
+        // The tolerance and the alias limit: the 25th and 75th percentiles of the scene's non-zero
+        // estimates, so that about half the pixels with any spread are flagged, and the pixels
+        // below the tolerance and those above the limit are both left. The aggregates' own image
+        // (never) gives each pixel's resolved radiance for the rule above the limit.
         std::vector<double> values;
+        agaa::RenderResult aggregates;
         const std::vector<float> unflagged = agaa::test::renderAggregateExport(
-            exporter, renderer, withTolerance("agaa-samples", 8, k.c, agaa::kToleranceNever));
+            exporter, renderer, withTolerance("agaa-samples", 8, k.c, agaa::kToleranceNever), &aggregates);
         for (const CpuEstimate& e : cpuEstimates(unflagged, 8, k.c))
             if (e.value > 0.0) values.push_back(e.value);
         ASSERT_FALSE(values.empty()) << k.scene;
-        std::nth_element(values.begin(), values.begin() + values.size() / 2, values.end());
-        const float tolerance = float(values[values.size() / 2]);
+        std::sort(values.begin(), values.end());
+        const float tolerance = k.defaults ? agaa::kDefaultTolerance : float(values[values.size() / 4]);
+        const float limit = k.defaults ? agaa::kDefaultAliasLimit : float(values[values.size() * 3 / 4]);
+        ASSERT_LT(tolerance, limit) << k.scene;
+        agaa::RenderRequest banded = withTolerance("agaa-samples", 8, k.c, tolerance);
+        banded.settings.agaaAliasLimit = limit;
         agaa::RenderResult frame;
-        const std::vector<float> exported = agaa::test::renderAggregateExport(
-            exporter, renderer, withTolerance("agaa-samples", 8, k.c, tolerance), &frame);
+        const std::vector<float> exported =
+            agaa::test::renderAggregateExport(exporter, renderer, banded, &frame);
         const std::vector<CpuEstimate> cpu = cpuEstimates(exported, 8, k.c);
-        uint32_t flagged = 0, compared = 0, mismatches = 0, nearTolerance = 0;
+        uint32_t flagged = 0, compared = 0, mismatches = 0, nearTolerance = 0, aboveLimit = 0, saturated = 0;
         for (size_t p = 0; p < cpu.size(); ++p) {
             // A flagged pixel has one event per covered sample, an unflagged one at most c: the two
             // tell apart wherever more than c samples are covered.
             if (cpu[p].coveredSamples <= k.c) continue;
             ++compared;
             const bool gpu = frame.shadingEvents[p] == cpu[p].coveredSamples;
-            const bool expected = cpu[p].value >= double(tolerance);
+            const float* hdr = &aggregates.hdr.rgba[4 * p];
+            const bool saturatedAlias = cpu[p].value >= double(limit) && cpu[p].value >= double(tolerance) &&
+                                        std::max({hdr[0], hdr[1], hdr[2]}) >= agaa::kAliasedSaturation;
+            const bool expected =
+                (cpu[p].value >= double(tolerance) && cpu[p].value < double(limit)) || saturatedAlias;
             flagged += gpu ? 1u : 0u;
+            aboveLimit += !gpu && cpu[p].value >= double(limit) ? 1u : 0u;
+            saturated += gpu && saturatedAlias ? 1u : 0u;
             if (gpu == expected) continue;
-            if (std::abs(cpu[p].value - double(tolerance)) <= kRoundingBand * double(tolerance)) {
+            if (std::abs(cpu[p].value - double(tolerance)) <= kRoundingBand * double(tolerance) ||
+                std::abs(cpu[p].value - double(limit)) <= kRoundingBand * double(limit)) {
                 ++nearTolerance;
                 continue;
             }
             if (++mismatches <= 3)
                 ADD_FAILURE() << k.scene << " c=" << k.c << " pixel " << p << ": GPU " << (gpu ? "" : "not ")
-                              << "flagged, CPU estimate " << cpu[p].value << " against " << tolerance;
+                              << "flagged, CPU estimate " << cpu[p].value << " against [" << tolerance << ", "
+                              << limit << ")";
         }
-        std::printf("[ measured ] %-12s c=%u tolerance %g: %u of %u pixels flagged, %u mismatches, %u within "
-                    "rounding of the tolerance\n",
-                    k.scene, k.c, double(tolerance), flagged, compared, mismatches, nearTolerance);
+        std::printf("[ measured ] %-12s c=%u tolerance %g, alias limit %g: %u of %u pixels flagged (%u above "
+                    "the limit, saturated), %u left above the limit, %u mismatches, %u within rounding of an "
+                    "edge\n",
+                    k.scene, k.c, double(tolerance), double(limit), flagged, compared, saturated, aboveLimit,
+                    mismatches, nearTolerance);
         EXPECT_EQ(mismatches, 0u) << k.scene;
         EXPECT_GT(flagged, 0u) << k.scene << ": the case should flag some pixels";
         EXPECT_LT(flagged, compared) << k.scene << ": and leave some";
+        EXPECT_GT(aboveLimit, 0u) << k.scene << ": the limit should leave some pixels above the tolerance";
+        if (k.defaults) {
+            EXPECT_GT(saturated, 0u) << k.scene << ": some pixels above the limit saturate";
+        }
     }
     agaa::test::expectNoValidationErrors(*device);
 }

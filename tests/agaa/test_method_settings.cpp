@@ -72,6 +72,11 @@ TEST(MethodSettings, AgaaDefaultsAreTheHostApisDefaults) {
     EXPECT_EQ(m.samples, a.samples);
     EXPECT_EQ(m.aggregates, a.aggregates);
     EXPECT_EQ(m.agaaTolerance, a.tolerance);
+    EXPECT_EQ(a.tolerance, agaa::kToleranceAuto);
+    EXPECT_EQ(m.agaaAliasLimit, a.aliasLimit);
+    EXPECT_EQ(a.aliasLimit, agaa::kDefaultAliasLimit);
+    EXPECT_EQ(agaa::findMethodOption("agaa-tolerance")->defaultText, "auto");
+    EXPECT_EQ(agaa::findMethodOption("agaa-alias-limit")->defaultText, "5000");
     EXPECT_EQ(agaa::findMethodOption("characteristic-length")->defaultText, "0.1");
     EXPECT_FLOAT_EQ(a.characteristicLength, 0.1f) << "--help's characteristic-length default";
     EXPECT_EQ(agaa::findMethodOption("seed-threshold")->defaultText, "0.05");
@@ -135,6 +140,10 @@ TEST(MethodSettings, BadValuesNameTheFlagAndTheAllowedValues) {
     EXPECT_EQ(message("streaming-normal-angle", "nan"),
               "--streaming-normal-angle 'nan' is not a number in [0.001, 90]");
     EXPECT_EQ(message("seed-threshold", "0.1.2"), "--seed-threshold '0.1.2' is not a number in [0, 1000000]");
+    EXPECT_EQ(message("agaa-tolerance", "always"),
+              "--agaa-tolerance 'always' is not a number in [0, 10000000] or auto, never");
+    EXPECT_EQ(message("agaa-alias-limit", "0"),
+              "--agaa-alias-limit '0' is not a number in [1, 10000000] or none");
     EXPECT_EQ(message("agaa-generation", "coverage"), "accepted") << "refused later, by the device (exit 3)";
     EXPECT_EQ(message("surfaces", "default"), "accepted");
     EXPECT_EQ(message("aggregates", "default"), "--aggregates 'default' is not an integer in 1..4")

@@ -96,22 +96,22 @@ TEST(SweepPlan, SurfacesAxisKeepsEachMethodsRange) {
 }
 
 // Issue 35: the tolerance axis runs each value for the methods that read --agaa-tolerance (agaa,
-// agaa-samples) and leaves the others' jobs, and their ids, as they were; "never" is the job the
-// sweep has without the axis.
+// agaa-samples) and leaves the others' jobs, and their ids, as they were; "auto", AGAA's default,
+// is the job the sweep has without the axis, and "never" (the paper's AGAA) a job of its own.
 TEST(SweepPlan, ToleranceAxisIsAgaasSamplesPathOnly) {
     SweepSettings s;
     s.scenes = {"plane"};
     s.methods = {"reference", "agaa-accumulate", "agaa-samples"};
     s.samples = {8};
     s.aggregates = {2};
-    s.tolerances = {"never", "30", "0"};
+    s.tolerances = {"auto", "never", "30", "0"};
     std::vector<std::string> ids;
     for (const Job& j : planSweep(s))
         ids.push_back(j.id());
-    EXPECT_EQ(ids,
-              (std::vector<std::string>{"plane__reference__n8__c0", "plane__agaa-accumulate__n8__c2",
-                                        "plane__agaa-samples__n8__c2", "plane__agaa-samples__n8__c2__t30",
-                                        "plane__agaa-samples__n8__c2__t0"}));
+    EXPECT_EQ(ids, (std::vector<std::string>{
+                       "plane__reference__n8__c0", "plane__agaa-accumulate__n8__c2",
+                       "plane__agaa-samples__n8__c2", "plane__agaa-samples__n8__c2__tnever",
+                       "plane__agaa-samples__n8__c2__t30", "plane__agaa-samples__n8__c2__t0"}));
     EXPECT_EQ(jobId("plane", "agaa", 8, 2, 0, "30"), "plane__agaa__n8__c2__t30");
 }
 

@@ -1,9 +1,11 @@
 #include "golden_cases.h"
 
+#include "agaa/aggregate/agaa_constants.h"
 #include "agaa/methods.h"
 #include "engine/scene/scenegen.h"
 #include "tools/scenes/adversarial_scenes.h"
 
+#include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
@@ -14,6 +16,11 @@ namespace agaa::golden {
 std::string GoldenCase::stem(const GoldenScene& scene) const {
     std::string s = scene.name + "/" + method + "-n" + std::to_string(samples);
     if (method.rfind("agaa", 0) == 0) s += "-c" + std::to_string(aggregates);
+    if (tolerance && *tolerance != kToleranceNever) {
+        char number[32];
+        std::snprintf(number, sizeof number, "%g", double(*tolerance));
+        s += "-tolerance-" + (*tolerance == kToleranceAuto ? std::string("auto") : std::string(number));
+    }
     return s;
 }
 
@@ -22,6 +29,7 @@ RenderRequest GoldenCase::request(uint32_t size) const {
     r.method = method;
     r.settings.samples = samples;
     r.settings.aggregates = aggregates;
+    if (tolerance) r.settings.agaaTolerance = *tolerance;
     r.view.width = r.view.height = size;
     return r;
 }
@@ -110,25 +118,32 @@ std::vector<GoldenScene> goldenScenes() {
 std::vector<GoldenCase> goldenCases(const GoldenScene& scene) {
     if (!scene.cases.empty()) return scene.cases; // a host's
     // Every method at the default settings (n = 8, c = 2, S = 4 for SBAA and 3 for streaming; no-AA and FXAA
-    // take one sample). "agaa" is the automatic path choice (samples at n <= 16).
+    // take one sample), AGAA as the paper has it (the shading rate at never), and the samples path
+    // at its default shading rate. "agaa" is the automatic path choice (samples at n <= 16).
     std::vector<GoldenCase> cases = {
-        {"reference", 8, 1},       {"noaa", 1, 1},         {"fxaa", 1, 1}, {"simple-complex", 8, 1},
-        {"agaa-accumulate", 8, 2}, {"agaa-samples", 8, 2}, {"sbaa", 8, 1}, // sbaa: S = 4 (default)
-        {"streaming", 8, 1},                                               // streaming: S = 3 (default)
+        {"reference", 8, 1},
+        {"noaa", 1, 1},
+        {"fxaa", 1, 1},
+        {"simple-complex", 8, 1},
+        {"agaa-accumulate", 8, 2, kToleranceNever},
+        {"agaa-samples", 8, 2, kToleranceNever},
+        {"agaa-samples", 8, 2, kToleranceAuto},
+        {"sbaa", 8, 1},      // sbaa: S = 4 (default)
+        {"streaming", 8, 1}, // streaming: S = 3 (default)
     };
     if (scene.source == SceneSource::Gltf) return cases;
     // c = 1 and 4 on both generation paths.
     for (const char* path : {"agaa-accumulate", "agaa-samples"})
         for (uint32_t c : {1u, 4u})
-            cases.push_back({path, 8, c});
+            cases.push_back({path, 8, c, kToleranceNever});
     if (scene.source == SceneSource::Hard) return cases;
     // The sample counts users run: native 4x and emulated 32x. ("agaa", the automatic choice, is
     // agaa-samples at n <= 16 and agaa-accumulate above: the same images, not stored twice.)
     for (uint32_t n : {4u, 32u}) {
         cases.push_back({"reference", n, 1});
         cases.push_back({"simple-complex", n, 1});
-        cases.push_back({"agaa-accumulate", n, 2});
-        cases.push_back({"agaa-samples", n, 2});
+        cases.push_back({"agaa-accumulate", n, 2, kToleranceNever});
+        cases.push_back({"agaa-samples", n, 2, kToleranceNever});
     }
     return cases;
 }

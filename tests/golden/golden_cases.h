@@ -7,6 +7,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -23,7 +24,12 @@ struct GoldenCase {
     std::string method; // agaa/methods.h
     uint32_t samples = 8;
     uint32_t aggregates = 2;
-    // "<scene>/<method>-n<N>[-c<C>]" without extension (.exr: the metric, .png: for people).
+    // AGAA's shading rate (MethodSettings::agaaTolerance); none: the method's default, as a host's
+    // cases have it. The built-in cases store AGAA as the paper has it (never), which the shading
+    // rate must leave bit for bit, and the samples path's default once per scene.
+    std::optional<float> tolerance;
+    // "<scene>/<method>-n<N>[-c<C>][-tolerance-<T>]" without extension (.exr: the metric, .png: for
+    // people); the tolerance is named unless it is never or the method's default.
     std::string stem(const struct GoldenScene& scene) const;
     RenderRequest request(uint32_t size) const;
 };

@@ -98,8 +98,8 @@ std::vector<Job> planSweep(const SweepSettings& settings) {
                             job.samples = n;
                             job.aggregates = c;
                             job.surfaces = s;
-                            // "never" is AGAA as published: the job the sweep has without the axis.
-                            job.tolerance = t == "never" ? "" : t;
+                            // "auto" is AGAA's default: the job the sweep has without the axis.
+                            job.tolerance = t == "auto" ? "" : t;
                             job.usesSamples = info.usesSamples;
                             job.usesAggregates = info.usesAggregates;
                             if (!seen.insert(job.id()).second) continue;

@@ -23,8 +23,8 @@ struct SweepSettings {
     // S, for methods that take it (SBAA, streaming), each kept to the method's range; empty: each
     // method's default.
     std::vector<uint32_t> surfaces;
-    // AGAA's shading-rate tolerance (--tolerances; --agaa-tolerance's values, "never" or T), for
-    // the methods that read it; empty: not an axis.
+    // AGAA's shading-rate tolerance (--tolerances; --agaa-tolerance's values, "auto", "never" or
+    // T), for the methods that read it; empty: not an axis.
     std::vector<std::string> tolerances;
     // The light-count axis (--extra-lights): every scene once per K, with K generated point lights.
     std::vector<uint32_t> extraLights = {0};
@@ -61,7 +61,7 @@ struct Job {
     bool usesSamples = false;
     bool usesAggregates = false;
     uint32_t surfaces = 0; // S of the methods that take it (SBAA, streaming); 0 = none
-    std::string tolerance; // AGAA's --agaa-tolerance on the tolerance axis; empty: not on it
+    std::string tolerance; // AGAA's --agaa-tolerance on the tolerance axis; empty: its default (auto)
 
     // "<scene>__<method>__n<N>__c<C>", then "__s<S>" for methods that take S, "__t<T>" on the
     // tolerance axis

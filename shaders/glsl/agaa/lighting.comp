@@ -15,7 +15,8 @@
 //      (agaa/lighting/resolve.glsl).
 // With a tolerance (--agaa-tolerance, samples path), a pixel whose aggregates' normal spread the
 // estimate distrusts (agaa/lighting/prefilter_estimate.glsl) skips steps 3 and 4 here and is
-// flagged (agaa/lighting/shading_rate.glsl): the next pass, agaa/lighting_per_sample.comp, lights
+// flagged (agaa/lighting/shading_rate.glsl), and so is a pixel above the alias limit whose
+// resolved radiance saturates the tone map: the next pass, agaa/lighting_per_sample.comp, lights
 // and resolves each of its samples on its own.
 #extension GL_GOOGLE_include_directive : require
 #include "shared/ag_buffer.h"
@@ -130,7 +131,8 @@ void main() {
     OffLayer offLayer = offLayerSurface(offLayerMeans);
     // The shading rate: a pixel whose pre-filter the estimate distrusts has no aggregates to
     // shade; the next pass takes its samples one by one instead.
-    bool perSample = shadePerSample(inside);
+    float estimate = pixelEstimate(inside);
+    bool perSample = shadePerSample(inside, estimate);
     if (perSample) {
         for (uint a = 0u; a < kAggregates; ++a)
             aggregates[a].present = false;
@@ -146,19 +148,26 @@ void main() {
     tileBoundsAdd(walk.tmin, walk.tmax);
     tileCullLights();
     barrier();
-    tileFlagEnd();
 
     // 3. Light each aggregate once per light.
     OffLayerShading offLayerShaded;
     shadeAggregates(offLayer, inside, firstEntry, offLayerShaded);
-    if (!inside) return;
 
-    // 4. Resolve; a flagged pixel is the next pass's to write.
-    if (kShadingRate != 0u) imageStore(outPerSampleShaded, pixel, uvec4(perSample ? 1u : 0u));
-    if (perSample) return;
-    Resolved resolved = resolvePixel(pixel, offLayer, offLayerShaded);
-    if (kShadingRateView != 0u) resolved.display = shadingRateView(resolved.display, false);
-    imageStore(outHdr, pixel, vec4(resolved.hdr, 1.0));
-    imageStore(outDisplay, pixel, vec4(resolved.display, 1.0));
-    imageStore(outShadingEvents, pixel, uvec4(presentCount));
+    // 4. Resolve; a flagged pixel is the next pass's to write. A pixel above the alias limit is
+    //    flagged here, once its radiance is known, where that radiance saturates the tone map.
+    if (inside && !perSample) {
+        Resolved resolved = resolvePixel(pixel, offLayer, offLayerShaded);
+        perSample = shadeSaturatedAlias(inside, estimate, resolved.hdr);
+        tileFlagAdd(perSample);
+        if (kShadingRateView != 0u) resolved.display = shadingRateView(resolved.display, false);
+        if (!perSample) {
+            imageStore(outHdr, pixel, vec4(resolved.hdr, 1.0));
+            imageStore(outDisplay, pixel, vec4(resolved.display, 1.0));
+            imageStore(outShadingEvents, pixel, uvec4(presentCount));
+        }
+    }
+    if (kShadingRate == 0u) return;
+    if (inside) imageStore(outPerSampleShaded, pixel, uvec4(perSample ? 1u : 0u));
+    barrier(); // every pixel's flag in sTileFlagged
+    tileFlagEnd();
 }

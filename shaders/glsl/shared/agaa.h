@@ -88,8 +88,10 @@ struct AgaaConstants {
     // 1 per fragment); z, w unused. The shaders take both as specialisation constants; the CPU
     // references read them here.
     uvec4 modes;
-    // x the shading rate's tolerance (AggregateSettings::tolerance; agaa/lighting/shading_rate.glsl):
-    // a pixel whose estimate exceeds it is shaded per sample; y, z, w unused.
+    // x the shading rate's tolerance (AggregateSettings::tolerance; agaa/lighting/shading_rate.glsl)
+    // and y its alias limit (AggregateSettings::aliasLimit; the largest float for none): a pixel
+    // whose estimate lies in [x, y) is shaded per sample, and so is one above y whose resolved,
+    // exposed radiance reaches z (kAliasedSaturation); w unused.
     vec4 shadingRate;
 };
 

@@ -20,26 +20,45 @@ void tileFlagBegin() {
     if (kShadingRate != 0u && gl_LocalInvocationIndex == 0u) sTileFlagged = 0u;
 }
 
-// Between the tile's two barriers.
+// After the tile's first barrier, which orders it after tileFlagBegin.
 void tileFlagAdd(bool perSample) {
     if (kShadingRate != 0u && perSample) atomicOr(sTileFlagged, 1u);
 }
 
-// After the second barrier: one invocation lists the tile if any of its pixels was flagged.
+// After the tile's last barrier (every invocation's tileFlagAdd before it): one invocation lists
+// the tile if any of its pixels was flagged.
 void tileFlagEnd() {
     if (kShadingRate == 0u || gl_LocalInvocationIndex != 0u || sTileFlagged == 0u) return;
     uint slot = atomicAdd(flaggedDispatch[0], 1u);
     flaggedTiles[slot] = gl_WorkGroupID.x | (gl_WorkGroupID.y << 16u);
 }
 
-// Whether the pixel is shaded per sample: one of its aggregates' estimates reaches the tolerance
-// (at 0, every covered pixel: the reference at the same n).
-bool shadePerSample(bool inside) {
-    if (kShadingRate == 0u || !inside) return false;
+// The largest of the pixel's aggregates' estimates (0 outside the image or without a tolerance).
+float pixelEstimate(bool inside) {
+    float estimate = 0.0;
+    if (kShadingRate == 0u || !inside) return estimate;
     for (uint a = 0u; a < kAggregates; ++a)
-        if (walk.samplesIn[a] > 0u && prefilterEstimate(a, walk.samplesIn[a]) >= agaa.shadingRate.x)
-            return true;
-    return false;
+        if (walk.samplesIn[a] > 0u) estimate = max(estimate, prefilterEstimate(a, walk.samplesIn[a]));
+    return estimate;
+}
+
+// Whether the pixel is shaded per sample before it is lit: its estimate reaches the tolerance and
+// stays below the alias limit, above which its samples would alias the highlight the aggregate's
+// lobe integrates (AggregateSettings::aliasLimit). At a tolerance of 0 the limit is the largest
+// float, and every covered pixel is flagged: the reference at the same n.
+bool shadePerSample(bool inside, float estimate) {
+    return kShadingRate != 0u && inside && estimate >= agaa.shadingRate.x && estimate < agaa.shadingRate.y;
+}
+
+// Whether a pixel above the alias limit (and the tolerance) is shaded per sample after all, once
+// lit: where its aggregates' exposed radiance is past the tone map's shoulder (agaa.shadingRate.z,
+// kAliasedSaturation), an aliased highlight's samples clip one by one, which the aggregate's
+// spread energy does not, and n samples come closer to the truth than the aggregate
+// (docs/decisions/shading-rate-estimate.md, step 3).
+bool shadeSaturatedAlias(bool inside, float estimate, vec3 exposedHdr) {
+    bool aboveLimit = estimate >= agaa.shadingRate.y && estimate >= agaa.shadingRate.x;
+    return kShadingRate != 0u && inside && aboveLimit &&
+           max(exposedHdr.r, max(exposedHdr.g, exposedHdr.b)) >= agaa.shadingRate.z;
 }
 
 // --debug shading-rate: this pass draws its pixels in grey (shading_rate_view.glsl).
