@@ -131,6 +131,39 @@ double rmseOf(const std::vector<double>& squared) {
     return std::sqrt(std::accumulate(squared.begin(), squared.end(), 0.0) / (3.0 * double(squared.size())));
 }
 
+// One scene's images for the bookkeeping, at exposure 1 or metered: the truth, the reference (8),
+// AGAA as the paper has it with its export, and the per-pixel squared display errors between them
+// (sRGB-encoded).
+struct Bookkeeping {
+    agaa::ConvergedTruth truth;
+    agaa::RenderResult reference, aggregate;
+    eng::io::ImageF agaaDisplay;
+    std::vector<double> prefilter, agaaError, referenceError; // AGAA-reference, AGAA-truth, reference-truth
+    std::vector<float> exported;
+};
+
+Bookkeeping bookkeeping(agaa::test::AggregateExportPass& exporter, agaa::FrameRenderer& renderer,
+                        bool metered) {
+    auto request = [&](const char* method, uint32_t c) {
+        agaa::RenderRequest r = agaa::test::request(method, kSamples, c, kSize);
+        r.autoExposure = metered;
+        return r;
+    };
+    Bookkeeping b;
+    const agaa::TruthCache cache(agaa::truthCacheDir(AGAA_TEST_TRUTH_CACHE));
+    b.truth = agaa::renderConvergedTruth(renderer, request("reference", 1), agaa::TruthSettings{}, &cache);
+    b.reference = renderer.render(request("reference", 1));
+    b.exported = agaa::test::renderAggregateExport(
+        exporter, renderer, paperAgaa(request("agaa-samples", kAggregates)), &b.aggregate);
+    const eng::io::ImageF truthDisplay = eng::io::srgbEncoded(b.truth.display);
+    const eng::io::ImageF referenceDisplay = eng::io::srgbEncoded(b.reference.display);
+    b.agaaDisplay = eng::io::srgbEncoded(b.aggregate.display);
+    b.prefilter = squaredError(b.agaaDisplay, referenceDisplay);
+    b.agaaError = squaredError(b.agaaDisplay, truthDisplay);
+    b.referenceError = squaredError(referenceDisplay, truthDisplay);
+    return b;
+}
+
 struct Flagged {
     double share = 0.0;    // of the pixels
     double captured = 0.0; // of the pre-filter's squared error
@@ -170,21 +203,9 @@ TEST(ShadingRateStudy, WhichStatisticPredictsThePrefiltersError) {
         for (eng::scene::Light& l : scene.lights)
             l.castsShadows = false;
         agaa::FrameRenderer renderer(*device, scene);
-        const agaa::TruthCache cache(agaa::truthCacheDir(AGAA_TEST_TRUTH_CACHE));
-        const agaa::ConvergedTruth truth = agaa::renderConvergedTruth(
-            renderer, agaa::test::request("reference", kSamples, 1, kSize), agaa::TruthSettings{}, &cache);
-        const agaa::RenderResult reference =
-            renderer.render(agaa::test::request("reference", kSamples, 1, kSize));
-        agaa::RenderResult aggregate;
-        const std::vector<float> exported = agaa::test::renderAggregateExport(
-            exporter, renderer, paperAgaa(agaa::test::request("agaa-samples", kSamples, kAggregates, kSize)),
-            &aggregate);
-        const eng::io::ImageF truthDisplay = eng::io::srgbEncoded(truth.display);
-        const eng::io::ImageF agaaDisplay = eng::io::srgbEncoded(aggregate.display);
-        const eng::io::ImageF referenceDisplay = eng::io::srgbEncoded(reference.display);
-        const std::vector<double> prefilter = squaredError(agaaDisplay, referenceDisplay);
-        const std::vector<double> agaaError = squaredError(agaaDisplay, truthDisplay);
-        const std::vector<double> referenceError = squaredError(referenceDisplay, truthDisplay);
+        const Bookkeeping b = bookkeeping(exporter, renderer, false);
+        const auto& [truth, reference, aggregate, agaaDisplay, prefilter, agaaError, referenceError,
+                     exported] = b;
         const auto stats = statistics(exported, agaaDisplay, prefilter);
         std::printf(
             "[ measured ] %-16s truth's own error %.4f; AGAA (8, 2) %.4f, reference (8) %.4f, pre-filter "
@@ -293,24 +314,9 @@ TEST(ShadingRateStudy, TheAliasLimitKeepsAliasedHighlightsAggregated) {
             for (eng::scene::Light& l : scene.lights)
                 l.castsShadows = false;
             agaa::FrameRenderer renderer(*device, scene);
-            auto request = [&](const char* method, uint32_t c) {
-                agaa::RenderRequest r = agaa::test::request(method, kSamples, c, kSize);
-                r.autoExposure = metered;
-                return r;
-            };
-            const agaa::TruthCache cache(agaa::truthCacheDir(AGAA_TEST_TRUTH_CACHE));
-            const agaa::ConvergedTruth truth =
-                agaa::renderConvergedTruth(renderer, request("reference", 1), agaa::TruthSettings{}, &cache);
-            const agaa::RenderResult reference = renderer.render(request("reference", 1));
-            agaa::RenderResult aggregate;
-            const std::vector<float> exported = agaa::test::renderAggregateExport(
-                exporter, renderer, paperAgaa(request("agaa-samples", kAggregates)), &aggregate);
-            const eng::io::ImageF truthDisplay = eng::io::srgbEncoded(truth.display);
-            const eng::io::ImageF agaaDisplay = eng::io::srgbEncoded(aggregate.display);
-            const eng::io::ImageF referenceDisplay = eng::io::srgbEncoded(reference.display);
-            const std::vector<double> prefilter = squaredError(agaaDisplay, referenceDisplay);
-            const std::vector<double> agaaError = squaredError(agaaDisplay, truthDisplay);
-            const std::vector<double> referenceError = squaredError(referenceDisplay, truthDisplay);
+            const Bookkeeping bk = bookkeeping(exporter, renderer, metered);
+            const auto& [truth, reference, aggregate, agaaDisplay, prefilter, agaaError, referenceError,
+                         exported] = bk;
             const std::vector<double> estimate =
                 statistics(exported, agaaDisplay, prefilter)[kSpreadOverLobe];
             const double truthMean = agaa::meanLuminance(truth.hdr);
