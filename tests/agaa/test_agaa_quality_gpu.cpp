@@ -7,9 +7,11 @@
 // against the reference at n = N,
 // AGAA_QUALITY_NDF=sggx|toksvig with one normal distribution; AGAA_QUALITY_DISTANCE=plane,
 // AGAA_QUALITY_SEED_THRESHOLD=T, AGAA_QUALITY_SHADOW_FOOTPRINT=statistics|samples,
-// AGAA_QUALITY_CURVATURE=1 and AGAA_QUALITY_TOLERANCE=T (the samples path's shading rate) AGAA's
+// AGAA_QUALITY_CURVATURE=1, AGAA_QUALITY_TOLERANCE=T and AGAA_QUALITY_ALIAS_LIMIT=L|none (the
+// samples path's shading rate) AGAA's
 // other settings: the measurements behind docs/decisions).
 
+#include "agaa/aggregate/agaa_constants.h"
 #include "agaa_test_support.h"
 #include "engine/io/metrics.h"
 #include "engine/io/tone_map.h"
@@ -113,10 +115,21 @@ struct KnownGap {
     const char* measured;
     const char* method = nullptr; // nullptr: both generation paths
 };
-// None today. hard-far was one until the vertex transforms became camera-relative
-// (FrameConstants::eye): 1e5 m from the origin fp32 had put every multi-sample method 5x further
-// from the truth than no-AA (docs/truth.md).
-constexpr std::array<KnownGap, 0> kDisplayGaps{};
+// hard-far was one until the vertex transforms became camera-relative (FrameConstants::eye): 1e5 m
+// from the origin fp32 had put every multi-sample method 5x further from the truth than no-AA
+// (docs/truth.md). Today, issue 35's mirror V-grooves (hard-mirror-vgroove: chrome at roughness
+// 0, 400 grooves, sun along the view axis, fill sky; no-AA 0.0120, reference (8) 0.0035):
+// - c = 1, both paths: 0.173 / 0.174. One aggregate holds both walls; its mean normal faces the
+//   camera and mirrors the sun, where each wall mirrors the sky. The shading rate's estimate
+//   (5.8e5) lies above the alias limit: with --agaa-alias-limit none the samples path is 0.0035.
+// - c = 2 and 4, samples path: 0.0209, one wall per aggregate. With --agaa-ndf toksvig it is
+//   0.0048 and the accumulate path's SGGX is 0.0036: the samples path's float SGGX lobe of a
+//   flat chrome wall is what is off (docs/decisions/shading-rate-estimate.md, step 3).
+constexpr std::array<KnownGap, 3> kDisplayGaps{{
+    {"hard-mirror-vgroove", 1, "0.173 to 0.174 (no-AA 0.0120)"},
+    {"hard-mirror-vgroove", 2, "0.0209 (no-AA 0.0120)", "agaa-samples"},
+    {"hard-mirror-vgroove", 4, "0.0209 (no-AA 0.0120)", "agaa-samples"},
+}};
 // The energy bound, at every c: within 10 % of the truth's mean. The gaps, each beside the
 // reference (8)'s own distance from the truth:
 // - foliage: -14.8 to -15.6 %, as the reference (8) (-15.6 %); no-AA -30.9 %. Every method that
@@ -140,7 +153,7 @@ constexpr std::array<KnownGap, 0> kDisplayGaps{};
 //   sphere's vertex puts the image's mean in the few samples of one pixel.
 // The 8-sample reference had listed spikes at c = 1 and 4 (-71 to -75 %): its own noise; against
 // the truth they are +6.4 to +7.0 % and -0.5 to -7.9 %.
-constexpr std::array<KnownGap, 14> kEnergyGaps{{
+constexpr std::array<KnownGap, 15> kEnergyGaps{{
     {"foliage", 1, "-14.8 % (reference (8) -15.6 %)"},
     {"foliage", 2, "-15.6 % (reference (8) -15.6 %)"},
     {"foliage", 4, "-15.5 to -15.6 % (reference (8) -15.6 %)"},
@@ -155,6 +168,7 @@ constexpr std::array<KnownGap, 14> kEnergyGaps{{
     {"hard-light-inside", 1, "+21.9 to +22.0 % (no-AA +20.5 %)"},
     {"hard-light-inside", 2, "+21.9 to +22.0 % (no-AA +20.5 %)"},
     {"hard-light-inside", 4, "+21.9 to +22.0 % (no-AA +20.5 %)"},
+    {"hard-mirror-vgroove", 1, "+85.4 to +245.5 % (no-AA +2.8 %): the sun mirrored, as its display"},
 }};
 
 const KnownGap* knownGap(std::span<const KnownGap> gaps, const std::string& scene, uint32_t c,
@@ -195,7 +209,7 @@ TEST_P(QualityScene, AgaaIsNeverWorseThanNoAaAndKeepsTheEnergy) {
         !std::getenv("AGAA_QUALITY_DISTANCE") && !std::getenv("AGAA_QUALITY_SEED_THRESHOLD") &&
         !std::getenv("AGAA_QUALITY_SHADOW_FOOTPRINT") && !std::getenv("AGAA_QUALITY_CURVATURE") &&
         !std::getenv("AGAA_QUALITY_EXPOSURE") && !std::getenv("AGAA_QUALITY_METAL_ROUGHNESS") &&
-        !std::getenv("AGAA_QUALITY_TOLERANCE");
+        !std::getenv("AGAA_QUALITY_TOLERANCE") && !std::getenv("AGAA_QUALITY_ALIAS_LIMIT");
     const agaa::ConvergedTruth truth = truthOf(renderer, request(scene, "reference", n, 1, size));
     const agaa::RenderResult ref = renderer.render(request(scene, "reference", n, 1, size));
     // The same reference with materials at sample rate: what of its error is the pixel-rate material.
@@ -232,6 +246,9 @@ TEST_P(QualityScene, AgaaIsNeverWorseThanNoAaAndKeepsTheEnergy) {
             if (std::getenv("AGAA_QUALITY_CURVATURE")) r.settings.curvatureRoughness = true;
             if (const char* t = std::getenv("AGAA_QUALITY_TOLERANCE"); t && pathName == "agaa-samples")
                 r.settings.agaaTolerance = float(std::atof(t));
+            if (const char* l = std::getenv("AGAA_QUALITY_ALIAS_LIMIT"))
+                r.settings.agaaAliasLimit =
+                    std::string(l) == "none" ? agaa::kAliasLimitNone : float(std::atof(l));
             const agaa::RenderResult ag = renderer.render(r);
             const double error = eng::io::rmse(encoded(ag.display), truthDisplay);
             const double mean = meanRadiance(ag.hdr);

@@ -1,6 +1,7 @@
 #include "tools/scenes/adversarial_scenes.h"
 
 #include "engine/scene/camera_framing.h"
+#include "engine/scene/default_lighting.h"
 #include "engine/scene/gltf_loader.h"
 #include "engine/scene/model_builder.h"
 #include "engine/scene/prng.h"
@@ -22,6 +23,9 @@ using Builder = void (*)(ModelBuilder&, Prng&);
 struct HardKind {
     const char* name;
     Builder build;
+    // Lit as a user's glTF with lights is by default (eng::scene::LightingMode::Fill): its lights
+    // and the fill sky. The other kinds carry their own lights only.
+    bool fillSky = false;
 };
 
 MaterialDesc material(const std::string& name, glm::vec3 color, float metallic, float roughness) {
@@ -117,6 +121,17 @@ void buildVGroove(ModelBuilder& b, Prng&) {
     sun(b, {-0.6f, -0.2f, -0.77f}, 3.0f, false);
     sun(b, {0.1f, 0.3f, -1.0f}, 0.5f, false);
     setCamera(b, {0.0f, 0.0f, 2.5f}, {0.0f, 0.0f, 0.0f}, 0.1f, 10.0f);
+}
+
+// Issue 35's mirror V-grooves: a plate of 400 grooves 1 cm wide and 5 mm deep (walls at 45
+// degrees), chrome at roughness exactly 0, under a sun along the view axis and the fill sky. Each
+// pixel holds several grooves whose two walls mirror opposite halves of the sky, which the
+// aggregate's mean normal (straight back at the camera) does not see.
+void buildMirrorVGroove(ModelBuilder& b, Prng&) {
+    b.addMesh("mirror-vgroove", zigzag(-2.0f, 2.0f, -2.0f, 2.0f, 0.01f, 0.005f, true),
+              b.addMaterial(material("mirror-vgroove.chrome", {0.95f, 0.95f, 0.95f}, 1.0f, 0.0f)));
+    sun(b, {0.0f, 0.0f, -1.0f}, 3.0f, false);
+    setCamera(b, {0.0f, 0.0f, 3.5f}, {0.0f, 0.0f, 0.0f}, 0.1f, 10.0f);
 }
 
 // Opposing normals in one pixel: steep V-grooves (walls at +-88 degrees) whose shared vertices
@@ -387,6 +402,8 @@ constexpr HardKind kHardKinds[] = {
     {"hard-no-lights", buildNoLights},
     {"hard-many-lights", buildManyLights},
     {"hard-sky", buildSky},
+    // Last: a kind's place in this table seeds its generator, so a new kind goes at the end.
+    {"hard-mirror-vgroove", buildMirrorVGroove, true},
 };
 
 } // namespace
@@ -426,6 +443,8 @@ Scene loadTestScene(std::string_view name) {
     if (!isHardSceneKind(name)) return loadBuiltin(name);
     Scene scene = loadGltfModel(generateHardScene(name), "builtin:" + std::string(name));
     scene.exposure = 1.0f; // the generated lights are sized for it, as loadBuiltin's
+    for (const HardKind& k : kHardKinds)
+        if (name == k.name && k.fillSky) applyLighting(scene, LightingMode::Fill);
     return scene;
 }
 
