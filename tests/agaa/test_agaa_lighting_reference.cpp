@@ -286,6 +286,8 @@ void symmetricEigen(double A[3][3], double Q[3][3]) {
 // lobe taken out, m = (lambda_n - a^2) / (1 - a^2) (S = (1 - a^2) E[N N^T] + a^2 I at the samples'
 // mean material alpha a), read as a vMF lobe's E[P2] = (3m - 1) / 2 = r^3.
 // view, lobeAlpha: as shadeToksvig's (the normal is oriented to the aggregate's own view).
+constexpr double kFloatSumsRoundingStep = 1.0e-5; // shared/sggx.h kSggxFloatRoundingStep
+
 dvec3 shadeSggx(const double S[6], double materialAlpha, const dvec3& base, double metallic, const dvec3& P,
                 const std::vector<ViewLight>& lights, double eigenError = 0.0, const dvec3* view = nullptr,
                 double* lobeAlpha = nullptr) {
@@ -300,12 +302,18 @@ dvec3 shadeSggx(const double S[6], double materialAlpha, const dvec3& base, doub
     if (glm::dot(N, V0) < 0.0) N = -N;
     const dvec3 B = glm::cross(N, T);
     const double ln = std::max(A[order[0]][order[0]] - eigenError, 1e-12);
-    const double ax =
+    const double axRaw =
         std::clamp(std::sqrt(std::max(A[order[1]][order[1]] + eigenError, 0.0) / ln), kAlphaMin, kAlphaMax);
-    const double ay =
+    const double ayRaw =
         std::clamp(std::sqrt(std::max(A[order[2]][order[2]] + eigenError, 0.0) / ln), kAlphaMin, kAlphaMax);
-    if (lobeAlpha) *lobeAlpha = std::min(ax, ay);
+    // The fp32 sums' rounding, as shared/sggx.h describes it: of an axis's alpha^2 only what exceeds
+    // the material's by more than 1e-5 (kSggxFloatRoundingStep) is the normals' spread.
     const double a2 = std::pow(std::clamp(materialAlpha, kAlphaMin, kAlphaMax), 2.0);
+    const auto spreadOnly = [&](double alpha) {
+        return std::sqrt(a2 + std::max(alpha * alpha - a2 - kFloatSumsRoundingStep, 0.0));
+    };
+    const double ax = spreadOnly(axRaw), ay = spreadOnly(ayRaw);
+    if (lobeAlpha) *lobeAlpha = std::min(ax, ay);
     const double m = std::clamp((A[order[0]][order[0]] - a2) / (1.0 - a2), 1.0 / 3.0, 1.0);
     const double spread = std::cbrt(1.5 * m - 0.5);
     dvec3 radiance(0.0);

@@ -56,9 +56,11 @@ Aggregate normaliseAggregate(uint a, AggregateMoments m, ivec2 pixel, uint pixel
     if (kSggx) {
         SggxLobe lobe = sggxLobe(m.mean0.x, m.mean0.y, m.mean0.z, m.mean1.x, m.mean1.y, m.mean1.z, V,
                                  kSggxOffDiagonal, kMinSggxEigenvalue);
-        if (kQuantizedMoments) {
-            // A fixed-point matrix's spread below its quantisation is rounding (shared/sggx.h).
-            float step = kSggxQuantizationSteps / float(unitScale(kSggxFieldBits, kSamples));
+        {
+            // A matrix's spread below the resolution of its sums is rounding (shared/sggx.h): the
+            // fixed point's quantisation on the accumulate path, fp32 on the samples path.
+            float step = kQuantizedMoments ? kSggxQuantizationSteps / float(unitScale(kSggxFieldBits, kSamples))
+                                           : kSggxFloatRoundingStep;
             float material = clamp(m.materialAlpha, kMinGgxAlpha, kMaxGgxAlpha);
             lobe.alphaT = sggxDequantizedAlpha(lobe.alphaT, material, step);
             lobe.alphaB = sggxDequantizedAlpha(lobe.alphaB, material, step);
