@@ -60,7 +60,7 @@ shared::AgaaConstants makeAgaaConstants(const AggregateSettings& s, const shared
     // covered pixel): the shader's estimate < limit then always holds, with no infinity in a buffer.
     const bool limited = s.tolerance > 0.0f && std::isfinite(s.aliasLimit);
     c.shadingRate = {std::max(s.tolerance, 0.0f), limited ? s.aliasLimit : std::numeric_limits<float>::max(),
-                     kAliasedSaturation, 0.0f};
+                     kAliasedSaturation, kMeanNormalGap};
     return c;
 }
 

@@ -173,13 +173,19 @@ TEST(ShadingRate, AFlaggedPixelIsTheReferencesAndEveryOtherAgaas) {
 
 // The estimate in double, from the export (prefilter_estimate.glsl's formula, written here from
 // its description): per aggregate of two or more samples, s = 1 - |mean unit normal|, 0 below the
-// floor, else 2 s / max(alpha_min, 1e-3)^2; the pixel's is the largest.
+// floor, else 2 s / max(alpha_min, 1e-3)^2; the pixel's is the largest. And the mean normal's gap
+// (shading_rate.glsl meanNormalInGap, from its description): per aggregate of four or more
+// samples with s above the floor, the nearest member's 1 - N_s . N over the mean's, s; the pixel's
+// is the largest.
 constexpr double kSpreadFloor = 1.0e-5;  // kNormalSpreadFloor
 constexpr double kAlphaFloor = 1.0e-3;   // kMinGgxAlpha
 constexpr double kRoundingBand = 2.0e-3; // relative: an estimate this near the tolerance may go either way
 
+constexpr uint32_t kGapMembers = 4; // shading_rate.glsl kGapMembers
+
 struct CpuEstimate {
     double value = 0.0;
+    double gap = 0.0;
     bool covered = false;
     uint32_t coveredSamples = 0;
 };
@@ -192,6 +198,7 @@ std::vector<CpuEstimate> cpuEstimates(const std::vector<float>& exported, uint32
         std::array<glm::dvec3, 4> sum{};
         std::array<double, 4> alphaMin{1.0, 1.0, 1.0, 1.0};
         std::array<uint32_t, 4> count{};
+        std::array<std::vector<glm::dvec3>, 4> normals;
         for (uint32_t s = 0; s < n; ++s) {
             const float* rec = &exported[(p * n + s) * record];
             if (rec[12] == 0.0f) continue; // sky
@@ -199,6 +206,7 @@ std::vector<CpuEstimate> cpuEstimates(const std::vector<float>& exported, uint32
             const uint32_t a = uint32_t(rec[11]);
             if (a >= c) continue; // c = 1's off-layer samples
             sum[a] += glm::dvec3(rec[0], rec[1], rec[2]);
+            normals[a].emplace_back(rec[0], rec[1], rec[2]);
             alphaMin[a] = std::min(alphaMin[a], std::max(double(rec[3]) * double(rec[3]), kAlphaFloor));
             ++count[a];
         }
@@ -208,6 +216,12 @@ std::vector<CpuEstimate> cpuEstimates(const std::vector<float>& exported, uint32
             const double spread = 1.0 - glm::length(sum[a]) / double(count[a]);
             if (spread <= kSpreadFloor) continue;
             out[p].value = std::max(out[p].value, 2.0 * spread / (alphaMin[a] * alphaMin[a]));
+            if (count[a] < kGapMembers) continue;
+            const glm::dvec3 mean = glm::normalize(sum[a]);
+            double nearest = 2.0;
+            for (const glm::dvec3& n : normals[a])
+                nearest = std::min(nearest, 1.0 - glm::dot(n, mean));
+            out[p].gap = std::max(out[p].gap, nearest / spread);
         }
     }
     return out;
@@ -220,11 +234,21 @@ TEST(ShadingRate, TheGpuFlagsWhatACpuEstimateFlags) {
         const char* scene;
         uint32_t c;
         bool defaults = false; // the default tolerance and limit, not the scene's percentiles
+        // Which rule above the limit the case must show at the defaults: "saturated" or "gap".
+        const char* shows = nullptr;
     };
     // glints at the default tolerance and limit: most of its pixels lie above the limit, and the
-    // saturated ones among them are flagged once lit.
-    const Case cases[] = {{"metal", 2},    {"metal", 4},       {"furball", 2},     {"default", 2},
-                          {"railings", 1}, {"hard-mirror", 2}, {"glints", 2, true}};
+    // saturated ones among them are flagged once lit. hard-mirror-vgroove at c = 1 and the
+    // defaults: its pixels lie above the limit with their mean normal in a gap.
+    const Case cases[] = {{"metal", 2},
+                          {"metal", 4},
+                          {"furball", 2},
+                          {"default", 2},
+                          {"railings", 1},
+                          {"hard-mirror", 2},
+                          {"glints", 2, true, "saturated"},
+                          {"spikes", 2, true, "gap"},
+                          {"hard-mirror-vgroove", 1, true, "gap"}};
     for (const Case& k : cases) {
         eng::scene::Scene scene = eng::scene::loadTestScene(k.scene);
         for (eng::scene::Light& l : scene.lights)
@@ -251,7 +275,8 @@ TEST(ShadingRate, TheGpuFlagsWhatACpuEstimateFlags) {
         const std::vector<float> exported =
             agaa::test::renderAggregateExport(exporter, renderer, banded, &frame);
         const std::vector<CpuEstimate> cpu = cpuEstimates(exported, 8, k.c);
-        uint32_t flagged = 0, compared = 0, mismatches = 0, nearTolerance = 0, aboveLimit = 0, saturated = 0;
+        uint32_t flagged = 0, compared = 0, mismatches = 0, nearTolerance = 0, aboveLimit = 0, saturated = 0,
+                 inGap = 0;
         for (size_t p = 0; p < cpu.size(); ++p) {
             // A flagged pixel has one event per covered sample, an unflagged one at most c: the two
             // tell apart wherever more than c samples are covered.
@@ -261,14 +286,19 @@ TEST(ShadingRate, TheGpuFlagsWhatACpuEstimateFlags) {
             const float* hdr = &aggregates.hdr.rgba[4 * p];
             const bool saturatedAlias = cpu[p].value >= double(limit) && cpu[p].value >= double(tolerance) &&
                                         std::max({hdr[0], hdr[1], hdr[2]}) >= agaa::kAliasedSaturation;
-            const bool expected =
-                (cpu[p].value >= double(tolerance) && cpu[p].value < double(limit)) || saturatedAlias;
+            const bool gapAlias = cpu[p].value >= double(limit) && cpu[p].value >= double(tolerance) &&
+                                  cpu[p].gap >= double(agaa::kMeanNormalGap);
+            const bool expected = (cpu[p].value >= double(tolerance) && cpu[p].value < double(limit)) ||
+                                  saturatedAlias || gapAlias;
             flagged += gpu ? 1u : 0u;
             aboveLimit += !gpu && cpu[p].value >= double(limit) ? 1u : 0u;
-            saturated += gpu && saturatedAlias ? 1u : 0u;
+            saturated += gpu && saturatedAlias && !gapAlias ? 1u : 0u;
+            inGap += gpu && gapAlias ? 1u : 0u;
             if (gpu == expected) continue;
             if (std::abs(cpu[p].value - double(tolerance)) <= kRoundingBand * double(tolerance) ||
-                std::abs(cpu[p].value - double(limit)) <= kRoundingBand * double(limit)) {
+                std::abs(cpu[p].value - double(limit)) <= kRoundingBand * double(limit) ||
+                std::abs(cpu[p].gap - double(agaa::kMeanNormalGap)) <=
+                    kRoundingBand * double(agaa::kMeanNormalGap)) {
                 ++nearTolerance;
                 continue;
             }
@@ -278,17 +308,24 @@ TEST(ShadingRate, TheGpuFlagsWhatACpuEstimateFlags) {
                               << limit << ")";
         }
         std::printf("[ measured ] %-12s c=%u tolerance %g, alias limit %g: %u of %u pixels flagged (%u above "
-                    "the limit, saturated), %u left above the limit, %u mismatches, %u within rounding of an "
-                    "edge\n",
-                    k.scene, k.c, double(tolerance), double(limit), flagged, compared, saturated, aboveLimit,
-                    mismatches, nearTolerance);
+                    "the limit, saturated; %u with their mean normal in a gap), %u left above the limit, %u "
+                    "mismatches, %u within rounding of an edge\n",
+                    k.scene, k.c, double(tolerance), double(limit), flagged, compared, saturated, inGap,
+                    aboveLimit, mismatches, nearTolerance);
         EXPECT_EQ(mismatches, 0u) << k.scene;
         EXPECT_GT(flagged, 0u) << k.scene << ": the case should flag some pixels";
-        EXPECT_LT(flagged, compared) << k.scene << ": and leave some";
-        EXPECT_GT(aboveLimit, 0u) << k.scene << ": the limit should leave some pixels above the tolerance";
-        if (k.defaults) {
+        const std::string shows = k.shows ? k.shows : "";
+        if (shows == "saturated") {
             EXPECT_GT(saturated, 0u) << k.scene << ": some pixels above the limit saturate";
         }
+        if (shows == "gap") {
+            EXPECT_GT(inGap, 0u) << k.scene
+                                 << ": some pixels above the limit have their mean normal in a gap";
+        }
+        // The V-grooves fill the frame, and every covered pixel is flagged.
+        if (std::string(k.scene) == "hard-mirror-vgroove") continue;
+        EXPECT_LT(flagged, compared) << k.scene << ": and leave some";
+        EXPECT_GT(aboveLimit, 0u) << k.scene << ": the limit should leave some pixels above the tolerance";
     }
     agaa::test::expectNoValidationErrors(*device);
 }

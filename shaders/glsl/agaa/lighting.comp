@@ -132,7 +132,7 @@ void main() {
     // The shading rate: a pixel whose pre-filter the estimate distrusts has no aggregates to
     // shade; the next pass takes its samples one by one instead.
     float estimate = pixelEstimate(inside);
-    bool perSample = shadePerSample(inside, estimate);
+    bool perSample = shadePerSample(inside, estimate, pixel, pixelIndex);
     if (perSample) {
         for (uint a = 0u; a < kAggregates; ++a)
             aggregates[a].present = false;

@@ -91,7 +91,8 @@ struct AgaaConstants {
     // x the shading rate's tolerance (AggregateSettings::tolerance; agaa/lighting/shading_rate.glsl)
     // and y its alias limit (AggregateSettings::aliasLimit; the largest float for none): a pixel
     // whose estimate lies in [x, y) is shaded per sample, and so is one above y whose resolved,
-    // exposed radiance reaches z (kAliasedSaturation); w unused.
+    // exposed radiance reaches z (kAliasedSaturation), or one of whose aggregates has its mean
+    // normal in a gap of w (kMeanNormalGap) between its members' normals.
     vec4 shadingRate;
 };
 

@@ -42,12 +42,55 @@ float pixelEstimate(bool inside) {
     return estimate;
 }
 
+// An aggregate needs this many members before the gap below says anything: one or two members
+// are always as far from their mean as each other (the ratio is 1), and three often are.
+// Measured at c = 2: with two members it flags a quarter of spikes and takes 17 % of its energy.
+const uint kGapMembers = 4u;
+
+#if AGAA_GBUFFER
+// Above the alias limit: whether one of the pixel's aggregates (kGapMembers or more members) has
+// its mean normal in a gap between its members' normals, where the filtered lobe then stands for
+// a facing no sample has (docs/decisions/shading-rate-estimate.md, step 4). Two chrome walls of a
+// V-groove in one aggregate put the mean between them, and the sun along the view axis lights the
+// lobe there, which the truth never shows; samples along one curved rod have one near the mean.
+// With S the sum of the members' m unit normals and N = S / |S|, the gap is
+//   g = min_s (1 - N_s . N) / mean_s (1 - N_s . N),   and mean_s (1 - N_s . N) = 1 - |S| / m,
+// 1 where every member is equally far from the mean (two symmetric walls) and small on one
+// continuous spread. Tested as m min_s (|S| - N_s . S) >= G |S| (m - |S|), which needs no guard:
+// normals that cancel (|S| = 0) have no mean and are in a gap (0 >= 0). A second read of the
+// members' normals, for pixels above the limit only.
+bool meanNormalInGap(ivec2 pixel, uint pixelIndex) {
+    float nearest[kMaxAggregates] = float[](4.0, 4.0, 4.0, 4.0); // min_s |S| - N_s . S, at most 2 |S|
+    for (uint s = 0u; s < kSamples; ++s) {
+        if (isSky(sampleDepth(pixel, s))) continue;
+        uint a = sampleAggregate(s, pixelIndex);
+        if (a >= kAggregates || walk.samplesIn[a] < kGapMembers) continue; // c = 1's off-layer samples
+        vec3 S = spreadSums.normalSum[a];
+        nearest[a] = min(nearest[a], length(S) - dot(loadSampleMaterial(pixel, s).normal, S));
+    }
+    bool gap = false;
+    for (uint a = 0u; a < kAggregates; ++a) {
+        float m = float(walk.samplesIn[a]);
+        float length_ = length(spreadSums.normalSum[a]);
+        // A flat aggregate (kNormalSpreadFloor) has no gap: both sides are then rounding.
+        gap = gap || (walk.samplesIn[a] >= kGapMembers && m - length_ > kNormalSpreadFloor * m &&
+                      m * nearest[a] >= agaa.shadingRate.w * length_ * (m - length_));
+    }
+    return gap;
+}
+#else
+// The accumulate path keeps no member normals, and never flags.
+bool meanNormalInGap(ivec2 pixel, uint pixelIndex) { return false; }
+#endif
+
 // Whether the pixel is shaded per sample before it is lit: its estimate reaches the tolerance and
 // stays below the alias limit, above which its samples would alias the highlight the aggregate's
-// lobe integrates (AggregateSettings::aliasLimit). At a tolerance of 0 the limit is the largest
-// float, and every covered pixel is flagged: the reference at the same n.
-bool shadePerSample(bool inside, float estimate) {
-    return kShadingRate != 0u && inside && estimate >= agaa.shadingRate.x && estimate < agaa.shadingRate.y;
+// lobe integrates (AggregateSettings::aliasLimit), unless an aggregate's mean normal lies in a gap
+// between its members' (meanNormalInGap, kMeanNormalGap). At a tolerance of 0 the limit is the
+// largest float, and every covered pixel is flagged: the reference at the same n.
+bool shadePerSample(bool inside, float estimate, ivec2 pixel, uint pixelIndex) {
+    if (kShadingRate == 0u || !inside || estimate < agaa.shadingRate.x) return false;
+    return estimate < agaa.shadingRate.y || meanNormalInGap(pixel, pixelIndex);
 }
 
 // Whether a pixel above the alias limit (and the tolerance) is shaded per sample after all, once
