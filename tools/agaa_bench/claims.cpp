@@ -28,6 +28,7 @@ const JobResult* find(const std::vector<JobResult>& results, const std::string& 
         if (r.job.scene != scene || r.job.method != method) continue;
         if (r.job.usesSamples && r.job.samples != samples) continue;
         if (aggregates && r.job.usesAggregates && r.job.aggregates != *aggregates) continue;
+        if (!r.job.tolerance.empty()) continue; // each method at its defaults, not a tolerance-axis job
         return &r;
     }
     return nullptr;
@@ -179,6 +180,96 @@ ClaimRow comparePair(const std::vector<JobResult>& results, ClaimRow row, const 
 std::optional<double> ratio(std::optional<double> num, std::optional<double> den) {
     if (!num || !den || *den <= 0.0) return std::nullopt;
     return *num / *den;
+}
+
+std::string point(const JobResult& r) {
+    std::string label = r.job.method + " (n=" + std::to_string(r.job.samples);
+    if (r.job.usesAggregates) label += ", c=" + std::to_string(r.job.aggregates);
+    if (!r.job.tolerance.empty()) label += ", tolerance " + r.job.tolerance;
+    return label + ") " + format("%.4f", truthRmse(r).value_or(0.0)) + " in " +
+           format("%.0f ms", r.frameMs.median);
+}
+
+// Issue 35 goal 3: per scene, each Simple/Complex job against every AGAA job of the run (any n, c
+// and tolerance): the most accurate AGAA job in no more frame time, and whether its error is no
+// more than Simple/Complex's. Where it is more by less than the truth's own error can tell
+// (undecided()), the point is counted apart.
+ClaimRow frontClaim(const std::vector<JobResult>& results) {
+    ClaimRow row{
+        "Issue 35 goal 3: every Simple/Complex point has an AGAA setting (any n, c, tolerance) with no "
+        "more error against the truth in no more frame time",
+        "goal 3 of issue 35: on default, foliage, furball, metal and the ship at 320x180, for "
+        "n = 8, 16 and 32"};
+    size_t points = 0, held = 0, undecidedPoints = 0;
+    for (const std::string& scene : scenesOf(results))
+        for (const JobResult& sc : results) {
+            if (sc.job.scene != scene || sc.job.method != kSimpleComplex || !truthRmse(sc)) continue;
+            const JobResult* best = nullptr;
+            for (const JobResult& a : results)
+                if (a.job.scene == scene && a.job.method == kAgaa && truthRmse(a) &&
+                    a.frameMs.median <= sc.frameMs.median && (!best || *truthRmse(a) < *truthRmse(*best)))
+                    best = &a;
+            ++points;
+            std::string line = scene + ", n=" + std::to_string(sc.job.samples) + ": Simple/Complex " +
+                               format("%.4f", *truthRmse(sc)) + " in " + format("%.0f ms", sc.frameMs.median);
+            if (!best) {
+                row.perScene.push_back(line + "; no AGAA job in that time");
+                continue;
+            }
+            line += "; " + point(*best);
+            if (*truthRmse(*best) <= *truthRmse(sc)) {
+                ++held;
+                row.perScene.push_back(line + ": holds");
+            } else if (const std::optional<std::string> why = undecided(*best, sc)) {
+                ++undecidedPoints;
+                row.perScene.push_back(line + ": " + *why);
+            } else {
+                row.perScene.push_back(line + ": misses");
+            }
+        }
+    if (points == 0) {
+        row.measured = "not measured";
+        row.missing = "simple-complex and agaa with errors against the truth on the same scene";
+        return row;
+    }
+    row.measured = "holds at " + std::to_string(held) + " of " + std::to_string(points) + " points" +
+                   (undecidedPoints ? ", undecided at " + std::to_string(undecidedPoints) : "");
+    return row;
+}
+
+// Issue 35 goal 4 (P8): AGAA (32x, c=2) at its defaults against per-sample shading (8) in error,
+// and against Simple/Complex (8) in frame time.
+ClaimRow moreSamplesClaim(const std::vector<JobResult>& results) {
+    ClaimRow row{"Issue 35 goal 4 (P8): AGAA (32x, c=2) error / per-sample (8)'s (<= 1), and its frame / "
+                 "Simple/Complex (8)'s (< 1)",
+                 "goal 4 of issue 35: more samples, not more shading, on default, foliage and furball"};
+    const JobKey agaa32{kAgaa, 32, kPaperAggregates, std::nullopt};
+    const JobKey reference8{kReference, 8, std::nullopt, std::nullopt};
+    const JobKey sc8{kSimpleComplex, 8, std::nullopt, std::nullopt};
+    size_t scenes = 0, held = 0;
+    for (const std::string& scene : scenesOf(results)) {
+        const JobResult* a = findKey(results, scene, agaa32);
+        const JobResult* r = findKey(results, scene, reference8);
+        const JobResult* sc = findKey(results, scene, sc8);
+        if (!a || !r || !sc) continue;
+        const std::optional<double> error = ratio(truthRmse(*a), truthRmse(*r));
+        const std::optional<double> frame = ratio(a->frameMs.median, sc->frameMs.median);
+        if (!error || !frame) continue;
+        ++scenes;
+        const bool holds = *error <= 1.0 && *frame < 1.0;
+        held += holds ? 1u : 0u;
+        std::string line = scene + ": error " + format("%.2f", *error) + ", frame " + format("%.2f", *frame);
+        if (*error > 1.0)
+            if (const std::optional<std::string> why = undecided(*a, *r)) line += ", error " + *why;
+        row.perScene.push_back(line + (holds ? ": holds" : ": misses"));
+    }
+    if (scenes == 0) {
+        row.measured = "not measured";
+        row.missing = "agaa (n=32, c=2), reference (n=8) and simple-complex (n=8) on the same scene";
+        return row;
+    }
+    row.measured = "holds on " + std::to_string(held) + " of " + std::to_string(scenes) + " scenes";
+    return row;
 }
 
 } // namespace
@@ -339,6 +430,8 @@ std::vector<ClaimRow> measureClaims(const std::vector<JobResult>& results) {
         rows.push_back(summarise(row, values, "%.2f",
                                  "agaa (n=8, c=2) and simple-complex (n=8) with worst-lane events measured"));
     }
+    rows.push_back(frontClaim(results));
+    rows.push_back(moreSamplesClaim(results));
     return rows;
 }
 
