@@ -103,7 +103,8 @@ inline constexpr float kDefaultTolerance = 100.0f;
 // n = 8 against the converged truth (docs/decisions/shading-rate-estimate.md, step 3): the gold
 // rods of spikes and glints estimate above 10^4 and lose energy shaded per sample (+15 % becomes
 // +185 % on spikes); hard-mirror's pixels, whose per-sample shading halves its error, lie between
-// 10^3 and 10^4.
+// 10^3 and 10^4. At n = 16 the rods' display errors cannot tell the limit from none (the
+// decision record's "The alias limit at n = 16").
 inline constexpr float kDefaultAliasLimit = 5000.0f;
 // Above the alias limit a pixel is still shaded per sample where its aggregates' resolved, exposed
 // radiance reaches this: far past the tone map's shoulder (ACES gives 0.97 at 4, 0.99 at 16) each
