@@ -10,6 +10,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdio>
 
 namespace {
@@ -39,6 +40,15 @@ TEST(ConvergedTruthGpu, TheEstimateTracksTheDistanceToAFinerTruth) {
                 << name << " k=" << k << ": the truth claims too little error";
             EXPECT_LE(t.errorEstimate, 2.0 * distance)
                 << name << " k=" << k << ": the estimate is far too wide";
+            // The linear mean's own estimate (its k^2 sub-pixel images' spread): one number, so the
+            // distance to k = 8's mean is one draw of that error. It must lie within three of the
+            // estimated standard deviations (with k = 8's own beside it), or the estimate flatters.
+            const double meanDistance = std::abs(t.meanLuminance - fine.meanLuminance);
+            std::printf("[ measured ] %-8s k=%u: the mean %.5f, its estimate +-%.5f, distance to k=8's %.5f "
+                        "(k=8's own +-%.5f)\n",
+                        name, k, t.meanLuminance, t.meanErrorEstimate, meanDistance, fine.meanErrorEstimate);
+            EXPECT_LE(meanDistance, 3.0 * t.meanErrorEstimate + fine.meanErrorEstimate)
+                << name << " k=" << k << ": the truth's mean claims too little error";
         }
     }
     agaa::test::expectNoValidationErrors(*device);

@@ -141,6 +141,30 @@ TEST(TruthAccumulator, AveragesEachKxKBlockAndSplitsTheCheckerboard) {
     EXPECT_DOUBLE_EQ(t.errorEstimate, 0.0) << "halves that agree estimate no error";
 }
 
+// The mean's own error: the k^2 sub-pixel images' means as draws. Sub-pixel (u, v) of every pixel
+// holds hdr 1 + u + 2 v (k = 2: 1, 2, 3, 4), whichever tile holds it, so each tile holds all four
+// and the tiles' own means agree: standard deviation sqrt(5 / 3) over sqrt(4). Equal sub-pixels
+// estimate none; k = 1 measures nothing.
+TEST(TruthAccumulator, TheMeansErrorIsTheSubPixelMeansSpreadOverK) {
+    const uint32_t w = 2, h = 2, k = 2;
+    agaa::TruthAccumulator acc(w, h, k);
+    for (uint32_t ty = 0; ty < k; ++ty)
+        for (uint32_t tx = 0; tx < k; ++tx) {
+            eng::io::ImageF hdr = eng::io::makeImage(w, h);
+            for (uint32_t y = 0; y < h; ++y)
+                for (uint32_t x = 0; x < w; ++x) {
+                    const float v = float(1 + (tx * w + x) % k + 2 * ((ty * h + y) % k));
+                    eng::io::setPixel(hdr, x, y, {v, v, v, 1.0f});
+                }
+            acc.add({k, {tx * w, ty * h}}, constantImage(w, h, 0.5f), hdr);
+        }
+    const agaa::ConvergedTruth t = acc.finish();
+    EXPECT_NEAR(t.meanLuminance, 2.5, 1e-6) << "luma of grey v is v";
+    EXPECT_NEAR(t.meanErrorEstimate, std::sqrt(5.0 / 3.0) / 2.0, 1e-6);
+    EXPECT_DOUBLE_EQ(agaa::truthMeanErrorEstimate({0.5, 0.5, 0.5, 0.5}), 0.0);
+    EXPECT_TRUE(std::isinf(agaa::truthMeanErrorEstimate({0.5}))) << "one sub-pixel (k = 1) measures nothing";
+}
+
 TEST(TruthAccumulator, MissingOrRepeatedTilesAreRefused) {
     agaa::TruthAccumulator acc(2, 2, 2);
     const eng::io::ImageF img = constantImage(2, 2, 0.5f);
@@ -191,6 +215,7 @@ TEST(TruthCache, StoresLoadsAndIgnoresDamagedFiles) {
     EXPECT_EQ(back->display.rgba, t.display.rgba);
     EXPECT_EQ(back->hdr.rgba, t.hdr.rgba);
     EXPECT_EQ(back->exposure, 0.25f);
+    EXPECT_EQ(back->meanErrorEstimate, t.meanErrorEstimate) << "infinite at k = 1, kept as such";
     EXPECT_FALSE(cache.load("fedcba9876543210")) << "another key is another truth";
     const std::filesystem::path file = dir / (t.key + ".truth");
     std::filesystem::resize_file(file, std::filesystem::file_size(file) - 4);

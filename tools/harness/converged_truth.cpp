@@ -19,7 +19,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-constexpr char kCacheMagic[8] = {'A', 'G', 'T', 'R', 'U', 'T', 'H', '1'};
+constexpr char kCacheMagic[8] = {'A', 'G', 'T', 'R', 'U', 'T', 'H', '2'}; // 2: the mean's error estimate
 
 // FNV-1a, 64 bits: a cache key, not a security boundary.
 struct Hash {
@@ -85,6 +85,21 @@ double truthErrorEstimate(const eng::io::ImageF& halfA, const eng::io::ImageF& h
     return 0.5 * eng::io::rmse(eng::io::srgbEncoded(halfA), eng::io::srgbEncoded(halfB));
 }
 
+double truthMeanErrorEstimate(const std::vector<double>& subPixelMeans) {
+    const size_t m = subPixelMeans.size();
+    if (m < 2) return std::numeric_limits<double>::infinity();
+    double mean = 0.0;
+    for (double v : subPixelMeans)
+        mean += v;
+    mean /= double(m);
+    double squares = 0.0;
+    for (double v : subPixelMeans)
+        squares += (v - mean) * (v - mean);
+    // The sample variance of one draw (m - 1: the mean is estimated from the same draws), and the
+    // full truth's mean averages m of them.
+    return std::sqrt(squares / double(m - 1) / double(m));
+}
+
 TruthAccumulator::TruthAccumulator(uint32_t width, uint32_t height, uint32_t supersampling)
     : m_width(width), m_height(height), m_k(supersampling) {
     validate(TruthSettings{supersampling, 32});
@@ -95,6 +110,7 @@ TruthAccumulator::TruthAccumulator(uint32_t width, uint32_t height, uint32_t sup
     m_half[0].assign(n, 0.0);
     m_half[1].assign(n, 0.0);
     m_tilesAdded.assign(size_t(m_k) * m_k, 0);
+    m_subPixelLuma.assign(size_t(m_k) * m_k, 0.0);
 }
 
 void TruthAccumulator::add(const eng::frame::ViewTile& tile, const eng::io::ImageF& display,
@@ -113,6 +129,8 @@ void TruthAccumulator::add(const eng::frame::ViewTile& tile, const eng::io::Imag
             const size_t out = (size_t(Y / m_k) * m_width + X / m_k) * 4;
             const size_t in = (size_t(y) * m_width + x) * 4;
             std::vector<double>& half = m_half[(X % m_k + Y % m_k) % 2];
+            m_subPixelLuma[size_t(Y % m_k) * m_k + X % m_k] +=
+                0.2126 * hdr.rgba[in] + 0.7152 * hdr.rgba[in + 1] + 0.0722 * hdr.rgba[in + 2];
             for (int c = 0; c < 4; ++c) {
                 m_display[out + c] += display.rgba[in + c];
                 m_hdr[out + c] += hdr.rgba[in + c];
@@ -144,6 +162,10 @@ ConvergedTruth TruthAccumulator::finish() const {
     // k = 1 has no second half: its own error is not measured, reported as unknown (infinite).
     t.errorEstimate =
         m_k == 1 ? std::numeric_limits<double>::infinity() : truthErrorEstimate(t.halves[0], t.halves[1]);
+    std::vector<double> subPixelMeans;
+    for (double sum : m_subPixelLuma)
+        subPixelMeans.push_back(sum / (double(m_width) * m_height));
+    t.meanErrorEstimate = truthMeanErrorEstimate(subPixelMeans);
     return t;
 }
 
@@ -227,7 +249,8 @@ ConvergedTruth renderConvergedTruth(FrameRenderer& renderer, const RenderRequest
     return truth;
 }
 
-// File: magic, key (16 hex), k, samples, exposure, error estimate, mean luminance, width, height,
+// File: magic, key (16 hex), k, samples, exposure, error estimate, mean luminance, the mean's error
+// estimate, width, height,
 // then display, hdr, half A, half B as RGBA floats.
 std::optional<ConvergedTruth> TruthCache::load(const std::string& key) const {
     std::ifstream in(m_dir / (key + ".truth"), std::ios::binary);
@@ -243,6 +266,7 @@ std::optional<ConvergedTruth> TruthCache::load(const std::string& key) const {
     in.read(reinterpret_cast<char*>(&t.exposure), 4);
     in.read(reinterpret_cast<char*>(&t.errorEstimate), 8);
     in.read(reinterpret_cast<char*>(&t.meanLuminance), 8);
+    in.read(reinterpret_cast<char*>(&t.meanErrorEstimate), 8);
     in.read(reinterpret_cast<char*>(&w), 4);
     in.read(reinterpret_cast<char*>(&h), 4);
     if (!in || std::memcmp(magic, kCacheMagic, 8) != 0 || std::string(stored, 16) != key || w == 0 ||
@@ -276,6 +300,7 @@ void TruthCache::store(const ConvergedTruth& t) const {
         out.write(reinterpret_cast<const char*>(&t.exposure), 4);
         out.write(reinterpret_cast<const char*>(&t.errorEstimate), 8);
         out.write(reinterpret_cast<const char*>(&t.meanLuminance), 8);
+        out.write(reinterpret_cast<const char*>(&t.meanErrorEstimate), 8);
         out.write(reinterpret_cast<const char*>(&t.display.width), 4);
         out.write(reinterpret_cast<const char*>(&t.display.height), 4);
         for (const eng::io::ImageF* img : {&t.display, &t.hdr, &t.halves[0], &t.halves[1]})

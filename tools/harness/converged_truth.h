@@ -17,6 +17,13 @@
 // error is |e_A + e_B| / 2 ~ RMSE(A - B) / 2 (display RMSE on sRGB-encoded values, the metric of
 // every figure). A difference between two methods' errors below that is not a measured one.
 //
+// The linear image mean, the energy figure, has an estimate of its own: the k^2 sub-pixel positions
+// (u, v) each make a truth at n samples a pixel on their own, so their images' means are k^2 draws
+// of the mean, and the full truth's is off by about their standard deviation over k. Treating the
+// stratified sub-pixels as independent draws overstates it a little, the conservative side. On the
+// glossy sub-pixel scenes a handful of samples carry the mean, and this says how far the truth's
+// own moves with them.
+//
 // Truths are cached on disk (TruthCache), keyed by a hash of the scene, the view, the lights, the
 // exposure, the truth's own settings and the program's binary, so a sweep pays for each once.
 
@@ -28,6 +35,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace agaa {
 
@@ -51,6 +59,9 @@ struct ConvergedTruth {
     // Display RMSE (sRGB-encoded) of `display` against the limit, estimated as RMSE(A, B) / 2.
     double errorEstimate = 0.0;
     double meanLuminance = 0.0; // linear image mean of hdr (Rec. 709 luma), for energy checks
+    // The error of meanLuminance, estimated from the k^2 sub-pixel images' own means: their sample
+    // standard deviation over k (infinite for k = 1, where nothing measures it).
+    double meanErrorEstimate = 0.0;
     bool fromCache = false;
     std::string key; // the cache key's hash, hex
 };
@@ -62,6 +73,10 @@ double meanLuminance(const eng::io::ImageF& hdr);
 // Error estimate from two halves: display RMSE between their sRGB encodings, halved. Throws
 // eng::io::IoError for images of different sizes or with NaN (as the metrics do).
 double truthErrorEstimate(const eng::io::ImageF& halfA, const eng::io::ImageF& halfB);
+
+// The error of a truth's linear mean from its sub-pixel images' own means: their sample standard
+// deviation over the square root of their count; infinite for fewer than two.
+double truthMeanErrorEstimate(const std::vector<double>& subPixelMeans);
 
 // Accumulates tiles of a k-times-larger image into the output: what renderConvergedTruth does with
 // the frames it renders, separate so that it is tested without a device.
@@ -77,6 +92,7 @@ class TruthAccumulator {
     uint32_t m_width, m_height, m_k;
     std::vector<double> m_display, m_hdr, m_half[2];
     std::vector<uint32_t> m_tilesAdded;
+    std::vector<double> m_subPixelLuma; // per sub-pixel (u, v), v k + u: the sum of its hdr luma
 };
 
 // The settings that make a request render the truth's frames: the reference at settings.samples
