@@ -53,7 +53,8 @@ def method_label(job):
     if not job["uses_samples"]:
         return name
     if job["uses_aggregates"]:
-        return f"{name} ({n}, {c})"
+        tolerance = job.get("tolerance") or ""
+        return f"{name} ({n}, {c})" + (f", tolerance {tolerance}" if tolerance else "")
     if s:
         return f"{name} ({n}, S = {s})"
     return f"{name} ({n})"
@@ -62,7 +63,12 @@ def method_label(job):
 def method_rank(job):
     m = job["method"]
     return (METHOD_ORDER.index(m) if m in METHOD_ORDER else len(METHOD_ORDER), m, job["samples"],
-            job["aggregates"], job["surfaces"])
+            job["aggregates"], job["surfaces"], job.get("tolerance") or "")
+
+
+def at_defaults(job):
+    """Not a job of AGAA's tolerance axis: the headline compares each method at its defaults."""
+    return not job.get("tolerance")
 
 
 # ---- recording a run ----------------------------------------------------------------------
@@ -166,7 +172,7 @@ def headline_data(jobs):
     """What the headline table needs, small enough to keep in the page itself."""
     scenes = []
     for scene in scene_order(jobs):
-        rows = sorted((j for j in jobs if j["scene"] == scene), key=method_rank)
+        rows = sorted((j for j in jobs if j["scene"] == scene and at_defaults(j)), key=method_rank)
         scenes.append({
             "scene": scene,
             "truth_error": round(rows[0]["truth"]["error_estimate"], 6),

@@ -49,7 +49,8 @@ echo
 echo "out/ holds:"
 ls -1 out | sed 's/^/  out\//'
 # What accuracy costs in time: every method at its main setting (n = 8, AGAA c = 2, SBAA S = 4,
-# streaming S = 3) against the converged truth on the default scene, the ship, foliage and spikes:
+# streaming S = 3) against the converged truth on the default scene, the ship, foliage and spikes,
+# and AGAA's knob (--agaa-tolerance auto, never, 30 and 0, the reference) drawn as a curve:
 # out/bench/report.html, and out/results.md written from the same run (docs/results.md is the
 # committed copy: tools/results-page.py out/bench --write docs/results.md --readme README.md).
 # The allocator thresholds keep lavapipe's large per-frame buffers mapped between frames; without
@@ -59,7 +60,7 @@ bench_scenes=default,foliage,spikes
 MALLOC_TRIM_THRESHOLD_=1073741824 MALLOC_MMAP_THRESHOLD_=33554432 AGAA_SHARED_SCENES="$scenes" \
   tools/results-page.py --record out/bench -- "$build/tools/agaa_bench/agaa-bench" --out out/bench \
   --scenes "$bench_scenes" --methods noaa,fxaa,reference,simple-complex,sbaa,streaming,agaa --samples 8 \
-  --aggregates 2 --size 160x90 --frames 5 --warmup 2 --temporal 0
+  --aggregates 2 --tolerances auto,never,30,0 --size 160x90 --frames 5 --warmup 2 --temporal 0
 tools/results-page.py out/bench --write out/results.md
 echo "report: $root/out/bench/report.html"
 echo "results: $root/out/results.md"

@@ -11,9 +11,10 @@ trap 'rm -rf "$work"' EXIT
 rm -rf "$artefacts"
 mkdir -p "$artefacts"
 
-# 2 scenes x reference at n = 4 and 8 (so the growth-with-n charts appear) + noaa: 6 jobs, 64x64.
-"$bench" --out "$work/run" --scenes plane,railings --methods reference,noaa --samples 4,8 --size 64x64 \
-  --frames 1 --warmup 0 --temporal 2 >"$artefacts/bench.log" 2>&1 || {
+# 2 scenes x reference at n = 4 and 8 (so the growth-with-n charts appear) + noaa + AGAA (8, 2)
+# at two tolerances (its knob's curve): 8 jobs, 64x64.
+"$bench" --out "$work/run" --scenes plane,railings --methods reference,noaa,agaa --samples 4,8 --aggregates 2 \
+  --tolerances auto,never --size 64x64 --frames 1 --warmup 0 --temporal 2 >"$artefacts/bench.log" 2>&1 || {
   cat "$artefacts/bench.log"
   echo "FAIL: agaa-bench exited non-zero"
   exit 1
@@ -43,6 +44,12 @@ if ((BASH_REMATCH[1] != expected_charts)); then
 fi
 if ((BASH_REMATCH[2] < 6)); then
   echo "FAIL: only ${BASH_REMATCH[2]} images on the page; expected the crops of every job"
+  exit 1
+fi
+# AGAA's knob: per scene, (4, 2) and (8, 2) at two tolerances each, on the time and memory charts.
+knobs="$(grep -o 'data-knob-curves="[^"]*"' "$artefacts/dom.html" | head -n1 | sed 's/^data-knob-curves="//; s/"$//')"
+if [ "$knobs" != 8 ]; then
+  echo "FAIL: ${knobs:-no} knob curves drawn, expected 8 (2 scenes x 2 charts x 2 (n, c))"
   exit 1
 fi
 # Self-contained: nothing on the page is fetched from the network.

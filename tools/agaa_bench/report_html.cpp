@@ -147,6 +147,11 @@ json benchData(const std::vector<JobResult>& results) {
              {"series", r.job.method + (r.job.usesAggregates ? " c" + std::to_string(r.job.aggregates) : "") +
                             (r.job.surfaces ? " S" + std::to_string(r.job.surfaces) : "") +
                             (r.job.tolerance.empty() ? "" : " T" + r.job.tolerance)},
+             // The knob's curve (report_script.cpp): the jobs that differ only in AGAA's tolerance.
+             {"knob", r.job.usesAggregates && r.job.method.rfind("agaa", 0) == 0
+                          ? json(r.job.method + " n" + std::to_string(r.job.samples) + " c" +
+                                 std::to_string(r.job.aggregates))
+                          : json()},
              {"n", r.job.samples},
              {"c", r.job.aggregates},
              {"usesSamples", r.job.usesSamples},

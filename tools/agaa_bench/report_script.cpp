@@ -12,6 +12,7 @@ const char* reportScript() {
   const groupColour = (g) => palette[(BENCH.passGroups.indexOf(g) + 3) % palette.length];
   const chartErrors = [];
   let charts = 0;
+  let knobCurves = 0; // AGAA's knob curves drawn (document.body.dataset.knobCurves)
 
   // Draws each point's label beside it (Chart.js 3 has no built-in data labels).
   const pointLabels = {
@@ -97,6 +98,29 @@ const char* reportScript() {
       if (xKey === "frameMs") ds.xSpread = js.map((j) => [j.frameMin, j.frameMax]);
       ds.ySpread = js.map((j) => (j.rmseBar === null ? null : [j.rmse - j.rmseBar, j.rmse + j.rmseBar]));
       datasets.push(ds);
+    }
+    // AGAA's knob (issue 35): each (method, n, c) run at two or more tolerances (the default, never,
+    // T) as one curve through its settings in order of cost, so what each step of the knob buys
+    // reads along it.
+    const knobs = new Map();
+    for (const j of withError) {
+      if (!j.knob) continue;
+      if (!knobs.has(j.knob)) knobs.set(j.knob, []);
+      knobs.get(j.knob).push(j);
+    }
+    for (const [knob, js] of knobs) {
+      if (js.length < 2) continue;
+      js.sort((a, b) => a[xKey] - b[xKey]);
+      knobCurves++;
+      datasets.push({
+        type: "line",
+        label: knob + " knob",
+        data: js.map((j) => ({ x: j[xKey], y: j.rmse })),
+        borderColor: methodColour(js[0].method),
+        borderWidth: 1.5,
+        pointRadius: 0,
+        fill: false,
+      });
     }
     datasets.push({
       type: "line",
@@ -227,6 +251,7 @@ const char* reportScript() {
     else if (broken.length) state = "error:images:" + broken.map((i) => i.getAttribute("src")).join(";");
     else state = "ok:" + charts + ":" + images.length;
     document.body.dataset.rendered = state;
+    document.body.dataset.knobCurves = String(knobCurves);
   });
 })();
 )JS";
