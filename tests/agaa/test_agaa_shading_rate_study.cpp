@@ -165,6 +165,16 @@ Bookkeeping bookkeeping(agaa::test::AggregateExportPass& exporter, agaa::FrameRe
     return b;
 }
 
+// The bookkeeping of a built-in scene by name, its shadows off (the export variant has none).
+Bookkeeping sceneBookkeeping(agaa::test::AggregateExportPass& exporter, const char* name, bool metered,
+                             uint32_t aggregates = kAggregates) {
+    eng::scene::Scene scene = eng::scene::loadTestScene(name);
+    for (eng::scene::Light& l : scene.lights)
+        l.castsShadows = false;
+    agaa::FrameRenderer renderer(exporter.device(), scene);
+    return bookkeeping(exporter, renderer, metered, aggregates);
+}
+
 struct Flagged {
     double share = 0.0;    // of the pixels
     double captured = 0.0; // of the pre-filter's squared error
@@ -200,11 +210,7 @@ TEST(ShadingRateStudy, WhichStatisticPredictsThePrefiltersError) {
     std::array<std::array<int, 3>, kStatistics> half{};
     int scenesWithError = 0;
     for (const char* name : scenes) {
-        eng::scene::Scene scene = eng::scene::loadTestScene(name);
-        for (eng::scene::Light& l : scene.lights)
-            l.castsShadows = false;
-        agaa::FrameRenderer renderer(*device, scene);
-        const Bookkeeping b = bookkeeping(exporter, renderer, false);
+        const Bookkeeping b = sceneBookkeeping(exporter, name, false);
         const auto& [truth, reference, aggregate, agaaDisplay, prefilter, agaaError, referenceError,
                      exported] = b;
         const auto stats = statistics(exported, agaaDisplay, prefilter);
@@ -311,11 +317,7 @@ TEST(ShadingRateStudy, TheAliasLimitKeepsAliasedHighlightsAggregated) {
                           {100, limit, 4.0}, {100, limit, 16.0}, {100, limit, 64.0}};
     for (bool metered : {false, true})
         for (const char* name : scenes) {
-            eng::scene::Scene scene = eng::scene::loadTestScene(name);
-            for (eng::scene::Light& l : scene.lights)
-                l.castsShadows = false;
-            agaa::FrameRenderer renderer(*device, scene);
-            const Bookkeeping bk = bookkeeping(exporter, renderer, metered);
+            const Bookkeeping bk = sceneBookkeeping(exporter, name, metered);
             const auto& [truth, reference, aggregate, agaaDisplay, prefilter, agaaError, referenceError,
                          exported] = bk;
             const std::vector<double> estimate =
@@ -431,11 +433,7 @@ TEST(ShadingRateStudy, WhereTheMeanNormalFallsBetweenTheSamples) {
     for (uint32_t c : {1u, 2u})
         for (bool metered : {false, true})
             for (const char* name : scenes) {
-                eng::scene::Scene scene = eng::scene::loadTestScene(name);
-                for (eng::scene::Light& l : scene.lights)
-                    l.castsShadows = false;
-                agaa::FrameRenderer renderer(*device, scene);
-                const Bookkeeping bk = bookkeeping(exporter, renderer, metered, c);
+                const Bookkeeping bk = sceneBookkeeping(exporter, name, metered, c);
                 const std::vector<double> estimate =
                     statistics(bk.exported, bk.agaaDisplay, bk.prefilter, c)[kSpreadOverLobe];
                 const double truthMean = agaa::meanLuminance(bk.truth.hdr);
