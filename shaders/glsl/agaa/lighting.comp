@@ -166,8 +166,5 @@ void main() {
             imageStore(outShadingEvents, pixel, uvec4(presentCount));
         }
     }
-    if (kShadingRate == 0u) return;
-    if (inside) imageStore(outPerSampleShaded, pixel, uvec4(perSample ? 1u : 0u));
-    barrier(); // every pixel's flag in sTileFlagged
-    tileFlagEnd();
+    if (kShadingRate != 0u && inside) imageStore(outPerSampleShaded, pixel, uvec4(perSample ? 1u : 0u));
 }

@@ -13,22 +13,19 @@ layout(set = 0, binding = 19, std430) buffer FlaggedTiles {
     uint flaggedDispatch[3];
     uint flaggedTiles[];
 };
-shared uint sTileFlagged;
+shared uint sTileListed; // 1 once an invocation of this tile has listed it
 
 // Before the tile's first barrier (tileBoundsBegin), which orders it before tileFlagAdd.
 void tileFlagBegin() {
-    if (kShadingRate != 0u && gl_LocalInvocationIndex == 0u) sTileFlagged = 0u;
+    if (kShadingRate != 0u && gl_LocalInvocationIndex == 0u) sTileListed = 0u;
 }
 
-// After the tile's first barrier, which orders it after tileFlagBegin.
+// After the tile's first barrier, which orders it after tileFlagBegin: the first invocation of the
+// tile to flag its pixel lists the tile, early (before lighting) or late (after its resolve). The
+// shared exchange, not a last barrier and one lister, decides which: a barrier costs lavapipe a
+// switch through all 256 invocations (docs/decisions/shading-rate-estimate.md, step 5).
 void tileFlagAdd(bool perSample) {
-    if (kShadingRate != 0u && perSample) atomicOr(sTileFlagged, 1u);
-}
-
-// After the tile's last barrier (every invocation's tileFlagAdd before it): one invocation lists
-// the tile if any of its pixels was flagged.
-void tileFlagEnd() {
-    if (kShadingRate == 0u || gl_LocalInvocationIndex != 0u || sTileFlagged == 0u) return;
+    if (kShadingRate == 0u || !perSample || atomicExchange(sTileListed, 1u) != 0u) return;
     uint slot = atomicAdd(flaggedDispatch[0], 1u);
     flaggedTiles[slot] = gl_WorkGroupID.x | (gl_WorkGroupID.y << 16u);
 }
