@@ -41,7 +41,7 @@ float pixelEstimate(bool inside) {
 
 // An aggregate needs this many members before the gap below says anything: one or two members
 // are always as far from their mean as each other (the ratio is 1), and three often are.
-// Measured at c = 2: with two members it flags a quarter of spikes and takes 17 % of its energy.
+// Measured at c = 2: with two members it flags 28 % of spikes and takes 22 points of its energy.
 const uint kGapMembers = 4u;
 
 #if AGAA_GBUFFER
@@ -57,7 +57,9 @@ const uint kGapMembers = 4u;
 // normals that cancel (|S| = 0) have no mean and are in a gap (0 >= 0). A second read of the
 // members' normals, for pixels above the limit only.
 bool meanNormalInGap(ivec2 pixel, uint pixelIndex) {
-    float nearest[kMaxAggregates] = float[](4.0, 4.0, 4.0, 4.0); // min_s |S| - N_s . S, at most 2 |S|
+    // min_s (|S| - N_s . S): at most its mean over s, |S| - |S|^2 / m <= m / 4, so n bounds it.
+    float nearest[kMaxAggregates] =
+        float[](float(kSamples), float(kSamples), float(kSamples), float(kSamples));
     for (uint s = 0u; s < kSamples; ++s) {
         if (isSky(sampleDepth(pixel, s))) continue;
         uint a = sampleAggregate(s, pixelIndex);
