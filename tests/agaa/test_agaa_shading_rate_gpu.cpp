@@ -27,6 +27,7 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -217,6 +218,11 @@ std::vector<CpuEstimate> cpuEstimates(const std::vector<float>& exported, uint32
             if (spread <= kSpreadFloor) continue;
             out[p].value = std::max(out[p].value, 2.0 * spread / (alphaMin[a] * alphaMin[a]));
             if (count[a] < kGapMembers) continue;
+            // Normals that cancel have no mean: a gap, as the shader's test without a division says.
+            if (glm::length(sum[a]) == 0.0) {
+                out[p].gap = std::numeric_limits<double>::infinity();
+                continue;
+            }
             const glm::dvec3 mean = glm::normalize(sum[a]);
             double nearest = 2.0;
             for (const glm::dvec3& n : normals[a])

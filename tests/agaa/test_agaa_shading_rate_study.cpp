@@ -405,6 +405,10 @@ std::vector<double> meanNormalGap(const std::vector<float>& exported, uint32_t a
                 sum += n;
             const double spread = 1.0 - glm::length(sum) / double(m.size());
             if (spread <= 1.0e-5) continue;
+            if (glm::length(sum) == 0.0) { // normals that cancel have no mean: a gap
+                out[p] = std::numeric_limits<double>::infinity();
+                continue;
+            }
             const glm::dvec3 mean = glm::normalize(sum);
             double nearest = 2.0;
             for (const glm::dvec3& n : m)
