@@ -500,6 +500,11 @@ TEST(Claims, TheFrontPairsEachSimpleComplexPointWithTheBestAgaaInItsTime) {
     const std::string missed = claimStarting(run, "Issue 35 goal 3");
     EXPECT_EQ(missed.rfind("holds at 1 of 2 points", 0), 0u) << missed;
     EXPECT_NE(missed.find("agaa (n=16, c=2) 0.0250 in 250 ms: misses"), std::string::npos) << missed;
+    // A generation path's method counts as AGAA too.
+    run.push_back(frontJob("agaa-accumulate", 32, 2, 0.019, 290.0));
+    EXPECT_NE(
+        claimStarting(run, "Issue 35 goal 3").find("agaa-accumulate (n=32, c=2) 0.0190 in 290 ms: holds"),
+        std::string::npos);
     run.erase(run.begin() + 2, run.end());
     EXPECT_NE(claimStarting(run, "Issue 35 goal 3").find("no AGAA job in that time"), std::string::npos);
 }

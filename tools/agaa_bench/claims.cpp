@@ -190,10 +190,10 @@ std::string point(const JobResult& r) {
            format("%.0f ms", r.frameMs.median);
 }
 
-// Issue 35 goal 3: per scene, each Simple/Complex job against every AGAA job of the run (any n, c
-// and tolerance): the most accurate AGAA job in no more frame time, and whether its error is no
-// more than Simple/Complex's. Where it is more by less than the truth's own error can tell
-// (undecided()), the point is counted apart.
+// Issue 35 goal 3: per scene, each Simple/Complex job against every AGAA job of the run (any n, c,
+// tolerance, and agaa-samples or agaa-accumulate): the most accurate AGAA job in no more frame time, and
+// whether its error is no more than Simple/Complex's. Where it is more by less than the truth's own error can
+// tell (undecided()), the point is counted apart.
 ClaimRow frontClaim(const std::vector<JobResult>& results) {
     ClaimRow row{
         "Issue 35 goal 3: every Simple/Complex point has an AGAA setting (any n, c, tolerance) with no "
@@ -206,7 +206,8 @@ ClaimRow frontClaim(const std::vector<JobResult>& results) {
             if (sc.job.scene != scene || sc.job.method != kSimpleComplex || !truthRmse(sc)) continue;
             const JobResult* best = nullptr;
             for (const JobResult& a : results)
-                if (a.job.scene == scene && a.job.method == kAgaa && truthRmse(a) &&
+                if (a.job.scene == scene && a.job.method.rfind(kAgaa, 0) == 0 &&
+                    truthRmse(a) && // either path
                     a.frameMs.median <= sc.frameMs.median && (!best || *truthRmse(a) < *truthRmse(*best)))
                     best = &a;
             ++points;
