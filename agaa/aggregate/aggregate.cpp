@@ -7,6 +7,7 @@
 #include "engine/vk/descriptors.h"
 #include "shared/ag_buffer.h"
 #include "shared/clustering.h"
+#include "shared/sample_material.h"
 
 #include <algorithm>
 #include <stdexcept>
@@ -189,23 +190,32 @@ FrameTargets AggregateAA::addPasses(rg::Graph& graph, const FrameInputs& in) {
 
     // ---- 3. AG-buffer generation (accumulation kernel; the samples path has none) -----------
     const bool emissive = m_hasEmissive;
-    rg::Buffer agBuffer;
+    const bool shadingRate = m_settings.tolerance >= 0.0f;
+    rg::Buffer agBuffer, sampleMaterial;
     rg::Texture lightingDepth = sampleDepth, emissiveSamples;
     if (!samplesPath) {
         struct Clear {
-            rg::Buffer agBuffer;
+            rg::Buffer agBuffer, sampleMaterial;
         };
         const VkDeviceSize agBytes = VkDeviceSize(shared::agBufferWords(pixels, c)) * 4;
+        // With a tolerance, each covered sample's material (shared/sample_material.h), cleared so
+        // that no word is ever undefined; a 16-byte stand-in without one (binding 7 is in the
+        // layout whatever the specialisation).
+        const VkDeviceSize materialBytes =
+            shadingRate ? VkDeviceSize(shared::sampleMaterialWords(pixels, m_settings.samples)) * 4 : 16;
         const Clear& clear = graph.addPass<Clear>(
             "agaa.clear", rg::PassKind::Transfer,
             [&](rg::Builder& b, Clear& d) {
                 d.agBuffer = b.write(b.create("agaa.agBuffer", {agBytes}), rg::Use::TransferDst);
+                d.sampleMaterial =
+                    b.write(b.create("agaa.sampleMaterial", {materialBytes}), rg::Use::TransferDst);
             },
             [](const rg::Context& ctx, const Clear& d) {
                 vkCmdFillBuffer(ctx.cmd(), ctx.buffer(d.agBuffer).buffer, 0, VK_WHOLE_SIZE, 0);
+                vkCmdFillBuffer(ctx.cmd(), ctx.buffer(d.sampleMaterial).buffer, 0, VK_WHOLE_SIZE, 0);
             });
         struct Generation {
-            rg::Buffer frame, agaa, materials, metadata, agBuffer;
+            rg::Buffer frame, agaa, materials, metadata, agBuffer, sampleMaterial;
             rg::Texture depth, emissive;
         };
         const bool int64 = m_settings.atomics == AggregateAtomics::Bits64;
@@ -218,6 +228,7 @@ FrameTargets AggregateAA::addPasses(rg::Graph& graph, const FrameInputs& in) {
                 d.materials = b.read(materials, rg::Use::StorageReadFragment);
                 d.metadata = b.read(cl.metadata, rg::Use::StorageReadFragment);
                 d.agBuffer = b.readWrite(clear.agBuffer, rg::Use::StorageReadWriteFragment);
+                d.sampleMaterial = b.readWrite(clear.sampleMaterial, rg::Use::StorageReadWriteFragment);
                 rg::Attachment loadDepth;
                 loadDepth.load = VK_ATTACHMENT_LOAD_OP_LOAD;
                 d.depth = b.depthStencil(visPass->depth, rg::Use::DepthStencilRead,
@@ -232,26 +243,28 @@ FrameTargets AggregateAA::addPasses(rg::Graph& graph, const FrameInputs& in) {
                     .storage(1, ctx.buffer(d.materials).buffer)
                     .uniform(2, ctx.buffer(d.agaa).buffer)
                     .storage(3, ctx.buffer(d.metadata).buffer)
-                    .storage(4, ctx.buffer(d.agBuffer).buffer);
+                    .storage(4, ctx.buffer(d.agBuffer).buffer)
+                    .storage(7, ctx.buffer(d.sampleMaterial).buffer);
                 if (int64) pd.storage(6, ctx.buffer(d.agBuffer).buffer); // the same buffer as 64-bit words
                 pd.push(m_device, cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, generationLayout);
                 drawScene(cmd, generationLayout, generationPipelines);
             });
         agBuffer = gen.agBuffer;
+        sampleMaterial = gen.sampleMaterial;
         lightingDepth = gen.depth; // the generation pass wrote the stencil: later readers use that version
         if (emissive) emissiveSamples = gen.emissive;
     }
     m_resources.agBuffer = agBuffer;
+    m_resources.sampleMaterial = shadingRate ? sampleMaterial : rg::Buffer{};
     m_resources.depth = lightingDepth;
 
     // ---- 4. tiled lighting, aggregating at the top of each tile ------------------------------
     struct Lighting {
-        rg::Buffer frame, lights, agaa, metadata, agBuffer, flaggedTiles;
+        rg::Buffer frame, lights, agaa, metadata, agBuffer, sampleMaterial, flaggedTiles;
         ShadowMaps shadow;
         rg::Texture depth, count, emissive, hdr, display, events, perSampleShaded;
         rg::Texture normal, albedoMetal; // samples path: the G-buffer (emissive: its emissive + roughness)
     };
-    const bool shadingRate = m_settings.tolerance >= 0.0f; // the samples path's (resolveGeneration)
     const uint32_t tilesX = groups(in.width, shared::kTileSize),
                    tilesY = groups(in.height, shared::kTileSize);
     const rg::Buffer flaggedTiles =
@@ -271,6 +284,7 @@ FrameTargets AggregateAA::addPasses(rg::Graph& graph, const FrameInputs& in) {
                 d.emissive = b.read(gbuffer.emissiveRoughness, rg::Use::SampledCompute);
             } else {
                 d.agBuffer = b.read(agBuffer, rg::Use::StorageReadCompute);
+                d.sampleMaterial = b.read(sampleMaterial, rg::Use::StorageReadCompute);
                 if (emissive) d.emissive = b.read(emissiveSamples, rg::Use::SampledCompute);
             }
             if (shadows) d.shadow = ShadowMapPass::read(b, shadowMaps);
@@ -309,7 +323,7 @@ FrameTargets AggregateAA::addPasses(rg::Graph& graph, const FrameInputs& in) {
                     .sampled(10, m_fetchSampler, ctx.texture(d.emissive).sampledView)
                     .sampled(13, m_fetchSampler, ctx.texture(d.albedoMetal).sampledView);
             } else {
-                pd.storage(6, ctx.buffer(d.agBuffer).buffer);
+                pd.storage(6, ctx.buffer(d.agBuffer).buffer).storage(20, ctx.buffer(d.sampleMaterial).buffer);
                 if (emissive) pd.sampled(10, m_fetchSampler, ctx.texture(d.emissive).sampledView);
             }
             if (shadows) m_shadow->push(pd, ctx, d.shadow, 11, 12);
@@ -321,8 +335,9 @@ FrameTargets AggregateAA::addPasses(rg::Graph& graph, const FrameInputs& in) {
 
     // ---- the shading rate's flagged pixels, each sample lit and resolved on its own ----------
     struct PerSample {
-        rg::Buffer frame, lights, tiles;
-        SampleGBuffer g;
+        rg::Buffer frame, lights, tiles, sampleMaterial;
+        SampleGBuffer g;             // samples path
+        rg::Texture depth, emissive; // accumulate path
         ShadowMaps shadow;
         rg::Texture flags, hdr, display, events;
     };
@@ -331,7 +346,13 @@ FrameTargets AggregateAA::addPasses(rg::Graph& graph, const FrameInputs& in) {
         [&](rg::Builder& b, PerSample& d) {
             d.frame = b.read(in.frameConstants, rg::Use::UniformRead);
             d.lights = b.read(in.lights, rg::Use::StorageReadCompute);
-            d.g = readSampleGBuffer(b, gbuffer);
+            if (samplesPath) {
+                d.g = readSampleGBuffer(b, gbuffer);
+            } else {
+                d.depth = b.read(lightingDepth, rg::Use::SampledCompute);
+                d.sampleMaterial = b.read(sampleMaterial, rg::Use::StorageReadCompute);
+                if (emissive) d.emissive = b.read(emissiveSamples, rg::Use::SampledCompute);
+            }
             if (shadows) d.shadow = ShadowMapPass::read(b, shadowMaps);
             d.flags = b.read(lit.perSampleShaded, rg::Use::StorageImageReadCompute);
             d.tiles = b.read(lit.flaggedTiles, rg::Use::IndirectRead);
@@ -346,7 +367,13 @@ FrameTargets AggregateAA::addPasses(rg::Graph& graph, const FrameInputs& in) {
             vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, m_perSamplePipeline);
             vk::PushDescriptors pd;
             pd.uniform(0, ctx.buffer(d.frame).buffer).storage(1, ctx.buffer(d.lights).buffer);
-            pushSampleGBuffer(pd, ctx, m_fetchSampler, d.g);
+            if (samplesPath) {
+                pushSampleGBuffer(pd, ctx, m_fetchSampler, d.g);
+            } else {
+                pd.sampled(2, m_fetchSampler, ctx.texture(d.depth).sampledView)
+                    .storage(3, ctx.buffer(d.sampleMaterial).buffer);
+                if (emissive) pd.sampled(4, m_fetchSampler, ctx.texture(d.emissive).sampledView);
+            }
             pushLightingTargets(pd, ctx, d.hdr, d.display, d.events);
             pd.storageImage(11, ctx.texture(d.flags).view).storage(12, ctx.buffer(d.tiles).buffer);
             if (shadows) m_shadow->push(pd, ctx, d.shadow, 9, 10);

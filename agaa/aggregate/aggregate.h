@@ -37,7 +37,8 @@ struct AggregateResources {
     eng::rg::Texture depth, normal; // per-sample visibility (samples path: the G-buffer's)
     eng::rg::Buffer metadata;
     eng::rg::Texture aggregateCount;
-    eng::rg::Buffer agBuffer; // after generation (accumulate path only)
+    eng::rg::Buffer agBuffer;       // after generation (accumulate path only)
+    eng::rg::Buffer sampleMaterial; // after generation (accumulate path with a tolerance only)
     eng::rg::Buffer agaaConstants;
     SampleGBuffer gbuffer; // samples path only
 };
@@ -64,6 +65,8 @@ class AggregateAA final : public Technique {
 
     // The lighting pass's SPIR-V and specialisation for this path, scene and settings: what a
     // test build of the pass must match (tests/support/aggregate_instrumentation.h).
+    // The flagged pixels' per-sample shading program for this path, scene and device.
+    std::span<const uint32_t> perSampleCode() const;
     std::span<const uint32_t> lightingCode() const;
     eng::vk::Specialization lightingVariant() const;
     // The accumulate path's generation pipeline for a material's sidedness, as this scene and

@@ -22,6 +22,10 @@
 #include "shaders/agaa/lighting_gbuffer_emissive_comp.h"
 #include "shaders/agaa/lighting_gbuffer_emissive_shadow_comp.h"
 #include "shaders/agaa/lighting_gbuffer_shadow_comp.h"
+#include "shaders/agaa/lighting_per_sample_accumulate_comp.h"
+#include "shaders/agaa/lighting_per_sample_accumulate_emissive_comp.h"
+#include "shaders/agaa/lighting_per_sample_accumulate_emissive_shadow_comp.h"
+#include "shaders/agaa/lighting_per_sample_accumulate_shadow_comp.h"
 #include "shaders/agaa/lighting_per_sample_comp.h"
 #include "shaders/agaa/lighting_per_sample_shadow_comp.h"
 #include "shaders/agaa/lighting_shadow_comp.h"
@@ -83,19 +87,26 @@ const NamedProgram kLightingPrograms[2][2][2] = {
       {"agaa/lighting_gbuffer_shadow.comp", kAgaaLightingGbufferShadowComp}},
      {{"agaa/lighting_gbuffer_emissive.comp", kAgaaLightingGbufferEmissiveComp},
       {"agaa/lighting_gbuffer_emissive_shadow.comp", kAgaaLightingGbufferEmissiveShadowComp}}}};
-// [shadows]: the flagged pixels' per-sample shading (--agaa-tolerance).
-const NamedProgram kPerSamplePrograms[2] = {
-    {"agaa/lighting_per_sample.comp", kAgaaLightingPerSampleComp},
-    {"agaa/lighting_per_sample_shadow.comp", kAgaaLightingPerSampleShadowComp}};
+// [path][emissive][shadows]: the flagged pixels' per-sample shading (--agaa-tolerance), path 0 the
+// samples path's G-buffer (whose emissive it holds), 1 the accumulate path's per-sample material.
+const NamedProgram kPerSamplePrograms[2][2][2] = {
+    {{{"agaa/lighting_per_sample.comp", kAgaaLightingPerSampleComp},
+      {"agaa/lighting_per_sample_shadow.comp", kAgaaLightingPerSampleShadowComp}},
+     {{"agaa/lighting_per_sample.comp", kAgaaLightingPerSampleComp},
+      {"agaa/lighting_per_sample_shadow.comp", kAgaaLightingPerSampleShadowComp}}},
+    {{{"agaa/lighting_per_sample_accumulate.comp", kAgaaLightingPerSampleAccumulateComp},
+      {"agaa/lighting_per_sample_accumulate_shadow.comp", kAgaaLightingPerSampleAccumulateShadowComp}},
+     {{"agaa/lighting_per_sample_accumulate_emissive.comp", kAgaaLightingPerSampleAccumulateEmissiveComp},
+      {"agaa/lighting_per_sample_accumulate_emissive_shadow.comp",
+       kAgaaLightingPerSampleAccumulateEmissiveShadowComp}}}};
 const NamedProgram kDebugProgram{"agaa/debug_aggregates.comp", kAgaaDebugAggregatesComp};
 
 // Refuses a replacement for a program AGAA does not run, by name (a misspelt name would
 // otherwise replace nothing and time the shipping build).
 void checkProgramOverrides(const ProgramOverrides& overrides) {
-    std::vector<std::string_view> known = {kVisibilityProgram.name,    kClusterPrograms[0].name,
-                                           kClusterPrograms[1].name,   kPerSamplePrograms[0].name,
-                                           kPerSamplePrograms[1].name, kDebugProgram.name};
-    for (const auto& table : {kGenerationPrograms, kLightingPrograms})
+    std::vector<std::string_view> known = {kVisibilityProgram.name, kClusterPrograms[0].name,
+                                           kClusterPrograms[1].name, kDebugProgram.name};
+    for (const auto& table : {kGenerationPrograms, kLightingPrograms, kPerSamplePrograms})
         for (int i = 0; i < 8; ++i)
             known.push_back(table[i / 4][i / 2 % 2][i % 2].name);
     for (const auto& [name, code] : overrides) {
@@ -201,7 +212,7 @@ AggregateAA::AggregateAA(vk::Device& device, const eng::frame::GpuScene& scene,
                                                     "agaa.debug.aggregates");
         if (m_settings.tolerance >= 0.0f)
             m_perSamplePipeline = vk::createComputePipeline(
-                device, program(kPerSamplePrograms[m_shadow->enabled() ? 1 : 0]), m_perSampleLayout.layout,
+                device, perSampleCode(), m_perSampleLayout.layout,
                 gbufferLightingSpecialization(
                     m_features, m_settings.samples,
                     {{shared::kSpecPerSampleShadingRateView,
@@ -231,13 +242,16 @@ void AggregateAA::resolveGeneration() {
             " offers mixed samples and the coverage override, but the blend-based route was never run on "
             "such a device (allowed: accumulate, samples, auto)");
     }
-    // The per-sample rate shades flagged pixels from their own samples' materials, which only the
-    // samples path keeps.
+    // The per-sample rate shades flagged pixels from their own samples' materials: the samples
+    // path's G-buffer, or the per-sample material the accumulation kernel then keeps, written per
+    // sample, so every sample must have been routed to its own aggregate.
     const bool perSampleRate = m_settings.tolerance >= 0.0f;
-    if (perSampleRate && m_settings.generation == AggregateGeneration::Accumulate)
+    if (perSampleRate && m_settings.generation == AggregateGeneration::Accumulate &&
+        m_settings.routing == AggregateRouting::Fragment)
         throw std::invalid_argument(
-            "--agaa-tolerance needs the samples path: the accumulate path keeps no per-sample material to "
-            "shade a flagged pixel with (use --method agaa-samples or agaa, or --agaa-tolerance never)");
+            "--agaa-tolerance on the accumulate path needs --agaa-routing samples: whole-fragment routing "
+            "mixes aggregates' members, which the shading rate's estimate reads (allowed: --agaa-routing "
+            "samples, or --agaa-tolerance never)");
     if (m_settings.generation != AggregateGeneration::Auto) {
         m_generationCause = "setting --agaa-generation";
         return;
@@ -273,16 +287,25 @@ void AggregateAA::resolveTolerance() {
         m_toleranceCause = "the samples path's default (docs/decisions/shading-rate-estimate.md)";
     } else {
         m_settings.tolerance = kToleranceNever;
-        m_toleranceCause = "the accumulate path's default: it keeps no per-sample material";
+        m_toleranceCause =
+            "the accumulate path's default: a tolerance keeps 16 bytes of material per sample, "
+            "more than the samples path's whole G-buffer saves (docs/decisions/"
+            "shading-rate-estimate.md, step 6)";
         if (m_settings.debugView == AggregateDebugView::ShadingRate)
             throw std::invalid_argument(
                 "--debug shading-rate shows the pixels shaded per sample, and the accumulate path shades "
-                "none (use --method agaa-samples)");
+                "none at its default (set --agaa-tolerance, or use --method agaa-samples)");
     }
 }
 
 std::span<const uint32_t> AggregateAA::program(const NamedProgram& shipping) const {
     return programCode(m_settings.programs, shipping);
+}
+
+std::span<const uint32_t> AggregateAA::perSampleCode() const {
+    const bool accumulate = m_settings.generation == AggregateGeneration::Accumulate;
+    return program(kPerSamplePrograms[accumulate ? 1 : 0][accumulate && m_hasEmissive ? 1 : 0]
+                                     [m_shadow->enabled() ? 1 : 0]);
 }
 
 std::span<const uint32_t> AggregateAA::lightingCode() const {
@@ -337,8 +360,7 @@ void AggregateAA::createLayouts(const eng::frame::GpuScene& scene) {
 
     if (m_settings.tolerance >= 0.0f) {
         vk::LayoutDesc perSample;
-        perSample.pushBindings =
-            vk::reflectBindings({{program(kPerSamplePrograms[m_shadow->enabled() ? 1 : 0]), kCs}});
+        perSample.pushBindings = vk::reflectBindings({{perSampleCode(), kCs}});
         m_perSampleLayout = vk::createPipelineLayout(m_device, perSample, "agaa.lighting.perSample.layout");
     }
 
@@ -398,9 +420,11 @@ eng::vk::GraphicsPipelineDesc AggregateAA::generationPipelineDesc(bool doubleSid
     d.fragment = generationCode();
     d.layout = m_generationLayout.layout;
     d.specialization = effectSpecialization(m_features, 1);
-    d.specialization.byId.insert(d.specialization.byId.end(),
-                                 {{shared::kSpecGenerationNdf, uint32_t(m_settings.ndf)},
-                                  {shared::kSpecGenerationRouting, uint32_t(m_settings.routing)}});
+    d.specialization.byId.insert(
+        d.specialization.byId.end(),
+        {{shared::kSpecGenerationNdf, uint32_t(m_settings.ndf)},
+         {shared::kSpecGenerationRouting, uint32_t(m_settings.routing)},
+         {shared::kSpecGenerationSampleMaterial, m_settings.tolerance >= 0.0f ? 1u : 0u}});
     addMaterialSpecialization(d.specialization, m_features);
     if (m_hasEmissive) d.colorFormats = {VK_FORMAT_B10G11R11_UFLOAT_PACK32};
     d.depthFormat = m_depthFormat;
@@ -518,7 +542,10 @@ bool AggregateAA::isStorage(const std::string& name) const {
 std::string AggregateAA::storageCategory(const std::string& name) const {
     auto starts = [&](const char* prefix) { return name.rfind(prefix, 0) == 0; };
     // The samples path keeps the whole per-sample G-buffer (20 bytes per sample): it is storage.
-    if (starts("agaa.visibility.") || starts("agaa.emissive") || starts("agaa.gbuffer.")) return "per-sample";
+    // So is the accumulate path's per-sample material with a tolerance (16 bytes per sample).
+    if (starts("agaa.visibility.") || starts("agaa.emissive") || starts("agaa.gbuffer.") ||
+        starts("agaa.sampleMaterial"))
+        return "per-sample";
     if (starts("agaa.agBuffer")) return "per-aggregate";
     if (starts("agaa.metadata") || starts("agaa.aggregateCount")) return "metadata";
     return "transient";

@@ -11,15 +11,19 @@
 #include "gpu_test_support.h"
 #include "shared/ag_buffer.h"
 #include "shared/clustering.h"
+#include "shared/sample_material.h"
 #include "tests/support/aggregate_instrumentation.h"
 #include "tools/harness/frame_renderer.h"
 #include "tools/scenes/adversarial_scenes.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstring>
 #include <memory>
+#include <tuple>
 
 namespace {
 
@@ -220,6 +224,105 @@ TEST(AgaaGpu, AccumulationMatchesACpuReplayOfTheSameFragments) {
         vk::destroyBuffer(*device, records);
         vk::destroyBuffer(*device, ag);
         vk::destroyBuffer(*device, metadata);
+    }
+    agaa::test::expectNoValidationErrors(*device);
+}
+
+// Half-float bits to float (IEEE 754 binary16: subnormals, infinities and NaN included).
+float halfToFloat(uint16_t h) {
+    const int exponent = (h >> 10) & 0x1F, mantissa = h & 0x3FF;
+    const float sign = (h & 0x8000) ? -1.0f : 1.0f;
+    if (exponent == 0) return sign * std::ldexp(float(mantissa), -24);
+    if (exponent == 31) return mantissa ? NAN : sign * INFINITY;
+    return sign * std::ldexp(float(mantissa | 0x400), exponent - 25);
+}
+
+// Octahedral decoding (Cigolle et al. 2014) of two snorm16 values, in double.
+std::array<double, 3> decodeOctahedralSnorm(uint32_t word) {
+    auto snorm = [](uint16_t v) { return std::max(-1.0, double(int16_t(v)) / 32767.0); };
+    double x = snorm(uint16_t(word & 0xFFFF)), y = snorm(uint16_t(word >> 16));
+    double z = 1.0 - std::abs(x) - std::abs(y);
+    if (z < 0.0) {
+        const double ox = (1.0 - std::abs(y)) * (x >= 0.0 ? 1.0 : -1.0);
+        const double oy = (1.0 - std::abs(x)) * (y >= 0.0 ? 1.0 : -1.0);
+        x = ox;
+        y = oy;
+    }
+    const double length = std::sqrt(x * x + y * y + z * z);
+    return {x / length, y / length, z / length};
+}
+
+// Issue 35: with a tolerance the accumulation kernel keeps each covered sample's material for the
+// shading rate (shared/sample_material.h). Every recorded fragment of the central window (the
+// stencil lets through the one fragment per sample the shipping pass wrote) must find its own
+// material, decoded on the CPU, in each of its covered samples' words: the normal within the
+// octahedral snorm16 step, the rest within half-float rounding.
+TEST(AgaaGpu, SampleMaterialHoldsEachCoveredSamplesFragment) {
+    auto device = agaa::test::makeValidatedDevice();
+    agaa::test::FragmentRecordPass recorder(*device);
+    constexpr uint32_t kRecordWords = 3 + shared::kQuantizedFields + 8;
+    constexpr double kNormalStep = 2e-4;         // octahedral snorm16: 2 / 32767 per axis, a few 1e-5 rad
+    constexpr double kHalfRelative = 1.0 / 1024; // half floats: 11 significant bits
+    for (auto [sceneName, n, c] : {std::tuple{"furball", 8u, 2u}, std::tuple{"railings", 16u, 3u}}) {
+        eng::scene::Scene scene = eng::scene::loadTestScene(sceneName);
+        agaa::FrameRenderer renderer(*device, scene);
+        const uint32_t size = 64, capacity = 400000;
+        vk::Buffer records =
+            vk::createBuffer(*device, 8 + VkDeviceSize(capacity) * kRecordWords * 4,
+                             VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                             vk::MemoryUse::Readback, "test.records");
+        static_cast<uint32_t*>(records.mapped)[1] = capacity;
+        vk::Buffer material =
+            vk::createBuffer(*device, VkDeviceSize(shared::sampleMaterialWords(size * size, n)) * 4,
+                             VK_BUFFER_USAGE_TRANSFER_DST_BIT, vk::MemoryUse::Readback, "test.material");
+        agaa::RenderRequest r = request("agaa-accumulate", n, c, size);
+        r.settings.agaaTolerance = agaa::kDefaultTolerance;
+        r.extraPasses = [&](eng::rg::Graph& graph, agaa::Technique& tech, const agaa::FrameInputs& in) {
+            auto& aggregate = dynamic_cast<agaa::AggregateAA&>(tech);
+            recorder.add(graph, aggregate, in, records);
+            eng::frame::addBufferReadbackPass(graph, aggregate.resources().sampleMaterial, material,
+                                              "test.material");
+        };
+        renderer.render(r);
+        const auto* rec = static_cast<const uint32_t*>(records.mapped);
+        const uint32_t count = rec[0];
+        ASSERT_LE(count, capacity) << "record buffer too small";
+        const auto* gpu = static_cast<const uint32_t*>(material.mapped);
+        uint32_t samples = 0, normalMisses = 0, valueMisses = 0;
+        for (uint32_t i = 0; i < count; ++i) {
+            const uint32_t* f = rec + 2 + size_t(i) * kRecordWords;
+            const float* in = reinterpret_cast<const float*>(f + 3 + shared::kQuantizedFields);
+            const uint32_t pixel = f[0], layer = f[1], mask = f[2];
+            for (uint32_t hw = 0; hw < 4; ++hw) {
+                if (!(mask & (1u << hw))) continue;
+                const uint32_t* w = gpu + shared::sampleMaterialWord(pixel, n, layer * 4 + hw);
+                const std::array<double, 3> normal = decodeOctahedralSnorm(w[0]);
+                double normalError = 0.0;
+                for (int j = 0; j < 3; ++j)
+                    normalError = std::max(normalError, std::abs(normal[j] - in[j]));
+                normalMisses += normalError > kNormalStep;
+                // albedo r, g, b, metallic, roughness (in[3] is the roughness, in[4..6] albedo, in[7]
+                // metallic)
+                const float stored[5] = {halfToFloat(uint16_t(w[1])), halfToFloat(uint16_t(w[1] >> 16)),
+                                         halfToFloat(uint16_t(w[2])), halfToFloat(uint16_t(w[2] >> 16)),
+                                         halfToFloat(uint16_t(w[3]))};
+                const float recorded[5] = {in[4], in[5], in[6], in[7], in[3]};
+                for (int j = 0; j < 5; ++j)
+                    valueMisses +=
+                        std::abs(stored[j] - recorded[j]) > kHalfRelative * std::abs(recorded[j]) + 1e-7;
+                ++samples;
+            }
+        }
+        std::printf("[ measured ] %s n=%u c=%u: %u fragments, %u samples' material compared\n", sceneName, n,
+                    c, count, samples);
+        EXPECT_GT(samples, 16u * 16u) << sceneName << ": the window must hold covered samples";
+        EXPECT_EQ(normalMisses, 0u) << sceneName << ": a sample's normal is not its fragment's";
+        EXPECT_EQ(valueMisses, 0u) << sceneName
+                                   << ": a sample's albedo, metallic or roughness is not its fragment's";
+        renderer.technique(r); // keep the technique alive until the buffers are released
+        vkDeviceWaitIdle(device->device());
+        vk::destroyBuffer(*device, records);
+        vk::destroyBuffer(*device, material);
     }
     agaa::test::expectNoValidationErrors(*device);
 }

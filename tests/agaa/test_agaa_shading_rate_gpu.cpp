@@ -29,6 +29,7 @@
 #include <cstdio>
 #include <limits>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace {
@@ -77,6 +78,41 @@ TEST(ShadingRate, NothingFlaggedIsAgaaBitForBit) {
 // flagged pixels run the reference's own shading code (common/gbuffer_lighting.glsl); what can
 // differ is the pixels with no covered sample, which AGAA's lighting pass resolves to the sky.
 constexpr double kPerSampleAgreement = 1.0e-4;
+
+// The accumulate path's flagged pixels are shaded from the material the accumulation kernel kept
+// per sample (shared/sample_material.h): the same pixel-rate material as the reference's G-buffer,
+// its albedo in half floats where the G-buffer holds 8-bit sRGB, at the samples AGAA's own
+// visibility prepass covered, where the reference's G-buffer raster decides its own. Measured: 2.4e-4
+// on metal, 6.8e-4 on the V-grooves and 1.8e-3 on furball, whose crossing fibres hold most of it.
+constexpr double kSampleMaterialAgreement = 2.5e-3;
+
+TEST(ShadingRate, ZeroIsTheReferenceAtTheSameSampleCountOnTheAccumulatePath) {
+    auto device = agaa::test::makeValidatedDevice();
+    // Shadows and SGGX (metal), emission (hard-emissive: the per-sample emissive target), c = 1's
+    // off-layer samples (furball), the V-grooves whose gap rule needs the members' normals.
+    for (auto [name, c] : {std::pair{"metal", 2u}, std::pair{"hard-emissive", 2u}, std::pair{"furball", 1u},
+                           std::pair{"hard-mirror-vgroove", 1u}}) {
+        eng::scene::Scene scene = eng::scene::loadTestScene(name);
+        agaa::FrameRenderer renderer(*device, scene);
+        const agaa::RenderResult reference = renderer.render(request("reference", 8, 1, kSize));
+        const agaa::RenderResult never =
+            renderer.render(withTolerance("agaa-accumulate", 8, c, agaa::kToleranceNever));
+        const agaa::RenderResult zero = renderer.render(withTolerance("agaa-accumulate", 8, c, 0.0f));
+        const double error =
+            eng::io::rmse(eng::io::srgbEncoded(zero.display), eng::io::srgbEncoded(reference.display));
+        const double before =
+            eng::io::rmse(eng::io::srgbEncoded(never.display), eng::io::srgbEncoded(reference.display));
+        std::printf("[ measured ] %-20s accumulate path, c = %u, tolerance 0 against the reference (8): "
+                    "display RMSE %.2e (never: %.4f)\n",
+                    name, c, error, before);
+        EXPECT_LE(error, kSampleMaterialAgreement) << name;
+        if (before > kSampleMaterialAgreement) {
+            EXPECT_LT(error, before / 4) << name << ": the rate must have shaded the pixels per sample";
+        }
+        EXPECT_GT(zero.shadingEventsMean, never.shadingEventsMean) << name;
+    }
+    agaa::test::expectNoValidationErrors(*device);
+}
 
 TEST(ShadingRate, ZeroIsTheReferenceAtTheSameSampleCount) {
     auto device = agaa::test::makeValidatedDevice();
@@ -132,41 +168,52 @@ std::vector<bool> flaggedPixels(agaa::FrameRenderer& renderer, agaa::RenderReque
 }
 
 // The flagged pixels' pass (agaa/lighting_per_sample.comp) writes exactly the flagged pixels, as
-// the reference shades them, and leaves every other pixel as AGAA's lighting pass wrote it.
+// the reference shades them, and leaves every other pixel as AGAA's lighting pass wrote it. On the
+// accumulate path the flagged pixels are the reference's within kSampleMaterialAgreement's causes,
+// as their mean difference per channel.
+
 TEST(ShadingRate, AFlaggedPixelIsTheReferencesAndEveryOtherAgaas) {
     auto device = agaa::test::makeValidatedDevice();
     // metal: SGGX, a shadowed sun; default: shadows, point lights; furball: fibres, c = 2 on thin
     // geometry. (Emission: ZeroIsTheReferenceAtTheSameSampleCount's hard-emissive; 30 flags none there.)
-    for (const char* name : {"metal", "default", "furball"}) {
+    for (auto [name, path] : {std::pair{"metal", "agaa-samples"}, std::pair{"default", "agaa-samples"},
+                              std::pair{"furball", "agaa-samples"}, std::pair{"metal", "agaa-accumulate"},
+                              std::pair{"furball", "agaa-accumulate"}}) {
+        const bool accumulate = std::string(path) == "agaa-accumulate";
         eng::scene::Scene scene = eng::scene::loadTestScene(name);
         agaa::FrameRenderer renderer(*device, scene);
         const agaa::RenderResult reference = renderer.render(request("reference", 8, 1, kSize));
-        const agaa::RenderResult never =
-            renderer.render(withTolerance("agaa-samples", 8, 2, agaa::kToleranceNever));
-        const agaa::RenderRequest some = withTolerance("agaa-samples", 8, 2, 30.0f);
+        const agaa::RenderResult never = renderer.render(withTolerance(path, 8, 2, agaa::kToleranceNever));
+        const agaa::RenderRequest some = withTolerance(path, 8, 2, 30.0f);
         const agaa::RenderResult rate = renderer.render(some);
         const std::vector<bool> flagged = flaggedPixels(renderer, some);
         size_t flaggedCount = 0, agaaMismatches = 0, eventMismatches = 0;
-        double referenceDifference = 0.0;
+        double referenceDifference = 0.0, referenceDifferenceSum = 0.0;
         for (size_t p = 0; p < flagged.size(); ++p) {
             const agaa::RenderResult& want = flagged[p] ? reference : never;
             flaggedCount += flagged[p] ? 1 : 0;
             eventMismatches += rate.shadingEvents[p] != want.shadingEvents[p] ? 1 : 0;
             for (int ch = 0; ch < 4; ++ch) {
                 const float got = rate.display.rgba[4 * p + ch], expected = want.display.rgba[4 * p + ch];
-                if (flagged[p])
+                if (flagged[p]) {
                     referenceDifference = std::max(referenceDifference, double(std::abs(got - expected)));
-                else
+                    referenceDifferenceSum += std::abs(got - expected);
+                } else
                     agaaMismatches += got != expected ? 1 : 0;
             }
         }
-        std::printf("[ measured ] %-14s tolerance 30: %zu of %zu pixels flagged, largest display difference "
-                    "to the reference's there %.2e\n",
-                    name, flaggedCount, flagged.size(), referenceDifference);
+        const double referenceMeanDifference =
+            referenceDifferenceSum / double(std::max<size_t>(1, 4 * flaggedCount));
+        std::printf("[ measured ] %-14s %s tolerance 30: %zu of %zu pixels flagged, display difference to "
+                    "the reference's there largest %.2e, mean %.2e\n",
+                    name, path, flaggedCount, flagged.size(), referenceDifference, referenceMeanDifference);
         EXPECT_GT(flaggedCount, 0u) << name << ": the case must flag some pixels";
         EXPECT_LT(flaggedCount, flagged.size() / 2) << name << ": and leave most to the aggregates";
-        EXPECT_EQ(agaaMismatches, 0u) << name << ": pixels not flagged must be AGAA's, bit for bit";
-        EXPECT_EQ(referenceDifference, 0.0) << name << ": flagged pixels must be the reference's";
+        EXPECT_EQ(agaaMismatches, 0u)
+            << name << " " << path << ": pixels not flagged must be AGAA's, bit for bit";
+        EXPECT_LE(accumulate ? referenceMeanDifference : referenceDifference,
+                  accumulate ? kSampleMaterialAgreement : 0.0)
+            << name << " " << path << ": flagged pixels must be the reference's";
         EXPECT_EQ(eventMismatches, 0u) << name;
     }
     agaa::test::expectNoValidationErrors(*device);

@@ -50,6 +50,7 @@
 #include "shared/ag_buffer.h"
 #include "shared/clustering.h"
 #include "shared/frame.h"
+#include "shared/sample_material.h"
 #include "shared/specialization.h"
 
 layout(early_fragment_tests) in;
@@ -85,6 +86,14 @@ layout(push_constant) uniform Push { uint material; } pc;
 // branch it cannot resolve at compile time.
 layout(constant_id = kSpecGenerationNdf) const uint kNdf = 0u;
 layout(constant_id = kSpecGenerationRouting) const uint kRouteFragment = 0u;
+// With a tolerance (AggregateSettings::tolerance): 1, and each covered sample's material is kept
+// for the shading rate (shared/sample_material.h); without one binding 7 is a 16-byte stand-in
+// this never touches. The test build records instead (the test compares the shipping pass's words
+// with the recorded fragments' materials).
+layout(constant_id = kSpecGenerationSampleMaterial) const uint kSampleMaterial = 0u;
+#if !AGAA_RECORD
+layout(set = 0, binding = 7, std430) buffer SampleMaterials { uint sampleMaterial[]; };
+#endif
 // agaa-timings --breakdown's builds (tools/agaa_timings/CMakeLists.txt): MATERIAL_ONLY evaluates
 // the material but adds nothing; EMPTY returns at once (the pass's raster, depth and stencil cost).
 #ifndef AGAA_BREAKDOWN_MATERIAL_ONLY
@@ -95,6 +104,7 @@ layout(constant_id = kSpecGenerationRouting) const uint kRouteFragment = 0u;
 #endif
 
 #include "common/material.glsl"
+#include "common/octahedral.glsl"
 
 // Centroid: a fragment that covers only some samples reads its attributes inside the triangle, as
 // the reference's per-sample G-buffer does (reference/gbuffer_inputs.glsl), never extrapolated to
@@ -202,6 +212,23 @@ void recordFragment(uvec2 pixel, uint pixelIndex, uint mask, AgQuantized f, Mate
 }
 #endif
 
+#if !AGAA_RECORD
+// The fragment's material into each of its covered samples' words (shared/sample_material.h). The
+// stencil's first-fragment test leaves one fragment per sample, so no word is written twice; the
+// writes are atomic exchanges all the same, as every access to the AG-buffer here: a plain store
+// would make the synchronisation validation see writes racing between draws.
+void writeSampleMaterial(uint pixelIndex, uint mask, MaterialSample m) {
+    uint words[kSampleMaterialWords] =
+        uint[](packSnorm2x16(encodeOctahedral(m.normal)), packHalf2x16(m.albedo.rg),
+               packHalf2x16(vec2(m.albedo.b, m.metallic)), packHalf2x16(vec2(m.roughness, 0.0)));
+    for (uint hw = 0u; hw < 4u; ++hw) {
+        if ((mask & (1u << hw)) == 0u) continue;
+        uint at = sampleMaterialWord(pixelIndex, agaa.shape.w, inLayer * 4u + hw);
+        for (uint w = 0u; w < kSampleMaterialWords; ++w) atomicExchange(sampleMaterial[at + w], words[w]);
+    }
+}
+#endif
+
 // c = 1: the k of the fragment's samples off the aggregate's layer (shared/clustering.h
 // kOffLayer) add their diffuse colour, normal, F0 and alpha to the pixel's off-layer words
 // (shared/ag_buffer.h kOffLayerWords), apart from the aggregate's fields.
@@ -280,5 +307,6 @@ void main() {
     recordFragment(pixel, pixelIndex, mask, f, m);
 #else
     accumulateFragment(pixelIndex, mask, f, m);
+    if (kSampleMaterial != 0u) writeSampleMaterial(pixelIndex, mask, m);
 #endif
 }

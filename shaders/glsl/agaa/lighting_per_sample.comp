@@ -7,8 +7,9 @@
 // A pass of its own rather than a branch in the lighting pass: on lavapipe the per-sample
 // shading's mere presence in that shader cost furball's lighting pass 10 % with no pixel flagged.
 // One workgroup per tile the lighting pass listed (agaa/lighting/shading_rate.glsl), dispatched
-// indirectly: a frame with no flagged pixel dispatches none. Samples path only (the per-sample
-// G-buffer is its input).
+// indirectly: a frame with no flagged pixel dispatches none. Its input is the per-sample G-buffer
+// on the samples path, and on the accumulate path (GBUFFER_SAMPLE_MATERIAL) the visibility depth
+// and the per-sample material the accumulation kernel kept (shared/sample_material.h).
 #extension GL_GOOGLE_include_directive : require
 #include "shared/frame.h"
 #include "shared/specialization.h"
@@ -34,7 +35,7 @@ uvec2 flaggedTile() {
 }
 #define TILE_COORD flaggedTile() // the light culling's tile (common/tile_culling.glsl)
 
-#define GBUFFER_MS 1 // AGAA's samples path: the 4x layered G-buffer
+#define GBUFFER_MS 1 // the 4x layered samples (G-buffer, or visibility depth and sample material)
 #include "common/gbuffer_lighting.glsl"
 #include "agaa/lighting/shading_rate_view.glsl"
 

@@ -8,8 +8,18 @@
 // `lights` (GpuLight[], set 0 binding 1). Declares the G-buffer at set 0
 // bindings 2..5 and the environment at 15 and 16 (common/environment.glsl). nextTileLight() needs tileCullLights() to have run.
 // GBUFFER_MS: 1 the 4x layered G-buffer, 0 one sample per pixel.
+// GBUFFER_SAMPLE_MATERIAL (with GBUFFER_MS): AGAA's accumulate path, whose G-buffer is the
+// visibility depth (binding 2), the per-sample material the accumulation kernel kept (binding 3,
+// shared/sample_material.h) and, with GBUFFER_EMISSIVE_SAMPLES, its per-sample emissive target
+// (binding 4).
 #ifndef GBUFFER_MS
 #define GBUFFER_MS 0
+#endif
+#ifndef GBUFFER_SAMPLE_MATERIAL
+#define GBUFFER_SAMPLE_MATERIAL 0
+#endif
+#ifndef GBUFFER_EMISSIVE_SAMPLES
+#define GBUFFER_EMISSIVE_SAMPLES 0
 #endif
 #include "common/brdf.glsl"
 #include "common/depth.glsl"
@@ -31,7 +41,15 @@
 // After shadow.glsl: with shadow maps the tile keeps its shadowed lights in a mask of their own.
 #include "common/tile_culling.glsl"
 
-#if GBUFFER_MS
+#if GBUFFER_SAMPLE_MATERIAL
+#include "shared/sample_material.h"
+layout(set = 0, binding = 2) uniform sampler2DMSArray gDepth;
+layout(set = 0, binding = 3, std430) readonly buffer SampleMaterials { uint sampleMaterial[]; };
+#if GBUFFER_EMISSIVE_SAMPLES
+layout(set = 0, binding = 4) uniform sampler2DMSArray gEmissive;
+#endif
+#define FETCH(tex, p, layer, s) texelFetch(tex, ivec3(p, layer), int(s))
+#elif GBUFFER_MS
 layout(set = 0, binding = 2) uniform sampler2DMSArray gDepth;
 layout(set = 0, binding = 3) uniform sampler2DMSArray gNormal;
 layout(set = 0, binding = 4) uniform sampler2DMSArray gAlbedoMetal;
@@ -54,7 +72,47 @@ const uint kSamplesPerLayer = kSampleCount > 1u ? 4u : 1u;
 
 float gbufferDepth(ivec2 pixel, uint s) { return FETCH_SAMPLE(gDepth, pixel, s).r; }
 
+#if GBUFFER_SAMPLE_MATERIAL
+uint sampleMaterialAt(ivec2 pixel, uint s) {
+    return sampleMaterialWord(uint(pixel.y) * uint(frame.extent.x) + uint(pixel.x), kSampleCount, s);
+}
+
+vec3 gbufferNormal(ivec2 pixel, uint s) {
+    return decodeOctahedral(unpackSnorm2x16(sampleMaterial[sampleMaterialAt(pixel, s)]));
+}
+
+// Sample s's surface and emissive radiance.
+SurfaceInputs gbufferSurface(ivec2 pixel, uint s, out vec3 emissive) {
+    uint at = sampleMaterialAt(pixel, s);
+    vec2 albedoBMetal = unpackHalf2x16(sampleMaterial[at + 2u]);
+    SurfaceInputs surface;
+    surface.normal = decodeOctahedral(unpackSnorm2x16(sampleMaterial[at]));
+    surface.albedo = vec3(unpackHalf2x16(sampleMaterial[at + 1u]), albedoBMetal.x);
+    surface.metallic = albedoBMetal.y;
+    surface.roughness = unpackHalf2x16(sampleMaterial[at + 3u]).x;
+#if GBUFFER_EMISSIVE_SAMPLES
+    emissive = FETCH_SAMPLE(gEmissive, pixel, s).rgb;
+#else
+    emissive = vec3(0.0);
+#endif
+    return surface;
+}
+#else
 vec3 gbufferNormal(ivec2 pixel, uint s) { return decodeOctahedral(FETCH_SAMPLE(gNormal, pixel, s).xy); }
+
+// Sample s's surface and emissive radiance.
+SurfaceInputs gbufferSurface(ivec2 pixel, uint s, out vec3 emissive) {
+    vec4 am = FETCH_SAMPLE(gAlbedoMetal, pixel, s);
+    vec4 er = FETCH_SAMPLE(gEmissiveRoughness, pixel, s);
+    SurfaceInputs surface;
+    surface.normal = gbufferNormal(pixel, s);
+    surface.albedo = am.rgb;
+    surface.metallic = am.a;
+    surface.roughness = er.a;
+    emissive = er.rgb;
+    return surface;
+}
+#endif
 
 // View distances of the pixel's non-sky samples, for the tile's depth bounds
 // (tile_culling.glsl); tmin > tmax when every sample is sky.
@@ -97,14 +155,9 @@ void shadeSurfaceInputs(SurfaceInputs surface, vec3 emissive, vec3 P, out vec3 r
 }
 
 void shadeGBufferSurface(ivec2 pixel, uint s, vec3 P, out vec3 radiance, out vec3 display) {
-    SurfaceInputs surface;
-    surface.normal = gbufferNormal(pixel, s);
-    vec4 am = FETCH_SAMPLE(gAlbedoMetal, pixel, s);
-    vec4 er = FETCH_SAMPLE(gEmissiveRoughness, pixel, s);
-    surface.albedo = am.rgb;
-    surface.metallic = am.a;
-    surface.roughness = er.a;
-    shadeSurfaceInputs(surface, er.rgb, P, radiance, display);
+    vec3 emissive;
+    SurfaceInputs surface = gbufferSurface(pixel, s, emissive);
+    shadeSurfaceInputs(surface, emissive, P, radiance, display);
 }
 
 #if GBUFFER_SHADOWS
@@ -115,14 +168,8 @@ void shadeGBufferSurface(ivec2 pixel, uint s, vec3 P, out vec3 radiance, out vec
 // crossing a flat pixel does not make it depart from the reference. Every sample must be covered.
 void shadeGBufferSurfaceShadowedPerSample(ivec2 pixel, uint s, vec3 P, out vec3 radiance, out vec3 display) {
     vec3 V = normalize(-P); // |P| >= znear > 0
-    SurfaceInputs surface;
-    surface.normal = gbufferNormal(pixel, s);
-    vec4 am = FETCH_SAMPLE(gAlbedoMetal, pixel, s);
-    vec4 er = FETCH_SAMPLE(gEmissiveRoughness, pixel, s);
-    surface.albedo = am.rgb;
-    surface.metallic = am.a;
-    surface.roughness = er.a;
-    vec3 unshadowed = er.rgb;
+    vec3 unshadowed;
+    SurfaceInputs surface = gbufferSurface(pixel, s, unshadowed);
     if (kEnvironment != 0u) unshadowed += environmentLighting(surface, V, surface.roughness);
     vec3 shadowedLight[kMaxShadowMaps] = vec3[](vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0));
     for (uint i = nextTileLight(0u); i < kMaxLights; i = nextTileLight(i + 1u)) {

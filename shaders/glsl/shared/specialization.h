@@ -41,6 +41,7 @@ SHARED_CONST kSpecVisibilityAlphaPath = 0u;  // agaa/common/effects.h AlphaPath
 // AGAA's accumulation kernel (agaa/generation.frag)
 SHARED_CONST kSpecGenerationNdf = 0u;       // AggregateNdf
 SHARED_CONST kSpecGenerationRouting = 1u;   // AggregateRouting: 1 whole fragments (Algorithm 2)
+SHARED_CONST kSpecGenerationSampleMaterial = 20u; // AggregateSettings::tolerance: 1 keeps it
 // The per-sample G-buffer fill (reference/gbuffer.frag; SBAA's prepass and fill)
 SHARED_CONST kSpecFillAlphaPath = 0u;             // agaa/common/effects.h AlphaPath
 SHARED_CONST kSpecFillCurvatureRoughness = 8u;    // GBufferOptions::curvatureRoughness

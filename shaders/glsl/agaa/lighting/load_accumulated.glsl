@@ -3,9 +3,15 @@
 // (shared/agaa.h), and at c = 1 the off-layer samples' (shared/ag_buffer.h). The walk over the
 // pixel's samples adds nothing to them.
 layout(set = 0, binding = 6, std430) readonly buffer AgBuffer { uint agBuffer[]; };
+// With a tolerance (kShadingRate), each covered sample's material, which the accumulation kernel
+// kept for the shading rate (shared/sample_material.h): the estimate and the gap rule read its
+// normals and roughness. A 16-byte stand-in without one, never read.
+layout(set = 0, binding = 20, std430) readonly buffer SampleMaterials { uint sampleMaterial[]; };
 #if AGAA_EMISSIVE
 layout(set = 0, binding = 10) uniform sampler2DMSArray emissiveSamples;
 #endif
+#include "common/octahedral.glsl"
+#include "shared/sample_material.h"
 
 // The SGGX matrix is fixed point: its spread below the quantisation is rounding (aggregate.glsl).
 const bool kQuantizedMoments = true;
@@ -15,7 +21,24 @@ const bool kOffLayerOwnColour = kRouteFragment == 0u;
 
 void clearMaterialSums() {} // the AG-buffer already holds every sum
 
-void sumSampleMaterial(ivec2 pixel, uint pixelIndex, uint s, uint a, bool offLayer, vec3 P) {}
+SampleMaterial loadSampleMaterial(ivec2 pixel, uint s) {
+    uint at = sampleMaterialWord(uint(pixel.y) * uint(frame.extent.x) + uint(pixel.x), kSamples, s);
+    vec2 albedoRg = unpackHalf2x16(sampleMaterial[at + 1u]);
+    vec2 albedoBMetal = unpackHalf2x16(sampleMaterial[at + 2u]);
+    SampleMaterial m;
+    m.normal = decodeOctahedral(unpackSnorm2x16(sampleMaterial[at]));
+    m.albedoMetal = vec4(albedoRg, albedoBMetal);
+    m.roughness = unpackHalf2x16(sampleMaterial[at + 3u]).x;
+    return m;
+}
+
+// Only the shading rate's estimate reads a sample here (the AG-buffer holds the aggregates'
+// material), and only for a sample the metadata assigns an aggregate, as on the samples path.
+void sumSampleMaterial(ivec2 pixel, uint pixelIndex, uint s, uint a, bool offLayer, vec3 P) {
+    if (kShadingRate == 0u || offLayer) return;
+    SampleMaterial m = loadSampleMaterial(pixel, s);
+    addSpreadSample(a, m.normal, m.roughness * m.roughness);
+}
 
 OffLayerMeans loadOffLayerMeans(uint pixelIndex, uint samples) {
     const uint n = kSamples;

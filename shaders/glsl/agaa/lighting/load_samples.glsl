@@ -43,13 +43,6 @@ void clearMaterialSums() {
     material.offLayerF0Alpha = vec4(0.0);
 }
 
-// One sample's G-buffer material.
-struct SampleMaterial {
-    vec3 normal; // unit, view space
-    vec4 albedoMetal;
-    float roughness;
-};
-
 SampleMaterial loadSampleMaterial(ivec2 pixel, uint s) {
     ivec3 at = ivec3(pixel, s / 4u);
     SampleMaterial m;

@@ -4,13 +4,21 @@
 // GGX lobe's; their ratio is large where one filtered lobe stands for highlights its samples
 // would each place elsewhere, which is where lighting the aggregate once fails. Measured against
 // the converged truth, it ranks the pixels that hold most of the pre-filter's error first.
-// The samples path sums it in the walk (load_samples.glsl); the accumulate path never flags.
+// Both loaders sum it in the walk from each covered sample's own material: the samples path's
+// G-buffer (load_samples.glsl), the accumulate path's per-sample material (load_accumulated.glsl).
 layout(constant_id = kSpecLightingShadingRate) const uint kShadingRate = 0u;
 
 // Below this, 1 - |mean unit normal| is the rounding of the sum of up to 32 unit normals in fp32
 // (each of length 1 +- a few 2^-24: a few 1e-6), not a spread: a flat pixel's estimate is 0, and
 // only a tolerance of 0 flags it.
 const float kNormalSpreadFloor = 1.0e-5;
+
+// One sample's material, as each loader's loadSampleMaterial reads it.
+struct SampleMaterial {
+    vec3 normal; // unit, view space
+    vec4 albedoMetal;
+    float roughness;
+};
 
 struct SpreadSums {
     vec3 normalSum[kMaxAggregates]; // the members' unit shading normals

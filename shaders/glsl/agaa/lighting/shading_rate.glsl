@@ -3,8 +3,8 @@
 // pass then drops its aggregates and writes only the flag (FrameTargets::perSampleShaded), and
 // lists its tile; the pass after it (agaa/lighting_per_sample.comp) runs one workgroup per listed
 // tile, an indirect dispatch, and lights and resolves each flagged pixel's samples as the reference
-// does. Samples path only: the accumulate path keeps no per-sample material (AggregateAA refuses
-// --agaa-tolerance there).
+// does, from the per-sample G-buffer (samples path) or the per-sample material the accumulation
+// kernel kept (accumulate path, shared/sample_material.h).
 
 // The tiles with a flagged pixel: the per-sample pass's VkDispatchIndirectCommand (x counts the
 // tiles; y and z are 1, set by the frame's clear), then each tile's x | y << 16. Bound only with a
@@ -44,7 +44,6 @@ float pixelEstimate(bool inside) {
 // Measured at c = 2: with two members it flags 28 % of spikes and takes 22 points of its energy.
 const uint kGapMembers = 4u;
 
-#if AGAA_GBUFFER
 // Above the alias limit: whether one of the pixel's aggregates (kGapMembers or more members) has
 // its mean normal in a gap between its members' normals, where the filtered lobe then stands for
 // a facing no sample has (docs/decisions/shading-rate-estimate.md, step 4). Two chrome walls of a
@@ -77,10 +76,6 @@ bool meanNormalInGap(ivec2 pixel, uint pixelIndex) {
     }
     return gap;
 }
-#else
-// The accumulate path keeps no member normals, and never flags.
-bool meanNormalInGap(ivec2 pixel, uint pixelIndex) { return false; }
-#endif
 
 // Whether the pixel is shaded per sample before it is lit: its estimate reaches the tolerance and
 // stays below the alias limit, above which its samples would alias the highlight the aggregate's

@@ -1,0 +1,30 @@
+#ifndef AGAA_SHARED_SAMPLE_MATERIAL_H
+#define AGAA_SHARED_SAMPLE_MATERIAL_H
+// The accumulate path's per-sample material, for the error-driven shading rate
+// (docs/decisions/shading-rate-estimate.md): with a tolerance the accumulation kernel
+// (agaa/generation.frag) writes each covered sample's material here, the lighting pass reads the
+// normals and roughness for its estimate and gap rule, and agaa/lighting_per_sample.comp shades a
+// flagged pixel's samples from it. Four words per sample, 16 bytes as the per-sample G-buffer's:
+//   w0  octahedral shading normal, view space, packSnorm2x16 (the G-buffer's RG16_SNORM)
+//   w1  albedo r, g as half floats
+//   w2  albedo b, metallic as half floats
+//   w3  perceptual roughness as a half float (the G-buffer's RGBA16F alpha); the upper half is 0
+// The material is the fragment's (pixel rate, centroid), as the aggregates' sums are: the rate
+// shades the same surfaces the aggregates stand for, one by one.
+#include "shared/glsl_cpp.h"
+
+SHARED_BEGIN
+
+SHARED_CONST kSampleMaterialWords = 4u;
+
+// First word of sample s of pixel p at n samples per pixel.
+inline_fn uint sampleMaterialWord(uint p, uint n, uint s) {
+    return (p * n + s) * kSampleMaterialWords;
+}
+
+inline_fn uint sampleMaterialWords(uint pixels, uint n) {
+    return pixels * n * kSampleMaterialWords;
+}
+
+SHARED_END
+#endif
