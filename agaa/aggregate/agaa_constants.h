@@ -88,7 +88,9 @@ inline constexpr NamedValue<AggregateGeneration> kAggregateGenerationNames[] = {
 // AggregateSettings::tolerance: no pixel is shaded per sample.
 inline constexpr float kToleranceNever = -1.0f;
 // AggregateSettings::tolerance: the path's default. The samples path takes kDefaultTolerance; the
-// accumulate path never shades per sample, since it keeps no per-sample material.
+// accumulate path takes never: with a tolerance it keeps 16 bytes of material per sample, which
+// costs it more memory than the samples path's whole G-buffer (docs/decisions/
+// shading-rate-estimate.md, step 6).
 inline constexpr float kToleranceAuto = -2.0f;
 // The samples path's default tolerance, measured against the converged truth at n = 8 on every
 // scene of the quality suite (docs/decisions/shading-rate-estimate.md, "The default"): with the
