@@ -178,11 +178,14 @@ std::vector<MethodOption> declareOptions() {
         [](const MethodSettings& s) { return s.agaaDistance; }));
     {
         MethodOption t = ranged(
-            Kind::Number, "agaa-tolerance", "auto|never|T", 0.0, 1e7, "auto", "agaa, agaa-samples",
+            Kind::Number, "agaa-tolerance", "auto|never|T", 0.0, 1e7, "auto",
+            "agaa, agaa-samples, agaa-accumulate",
             "the error-driven shading rate: a pixel whose aggregates' normal spread, against their sharpest "
             "member's lobe, reaches T is shaded per sample as the reference shades it (0: every pixel, the "
-            "reference's image; docs/decisions/shading-rate-estimate.md); the samples path only. auto: " +
-                numberText(kDefaultTolerance) + " on the samples path, never on the accumulate path",
+            "reference's image; docs/decisions/shading-rate-estimate.md). auto: " +
+                numberText(kDefaultTolerance) +
+                " on the samples path, never on the accumulate path (where a tolerance keeps 16 bytes of "
+                "material per sample)",
             [=](MethodSettings& s, const std::string& v) {
                 s.agaaTolerance = v == "auto" ? kToleranceAuto : v == "never" ? kToleranceNever : number(v);
             },

@@ -98,7 +98,9 @@ TEST(SweepPlan, SurfacesAxisKeepsEachMethodsRange) {
 // Issue 35: the tolerance axis runs each value for the methods that read --agaa-tolerance (agaa,
 // agaa-samples) and leaves the others' jobs, and their ids, as they were; "auto", AGAA's default,
 // is the job the sweep has without the axis, and "never" (the paper's AGAA) a job of its own.
-TEST(SweepPlan, ToleranceAxisIsAgaasSamplesPathOnly) {
+// Both AGAA paths take a tolerance (the accumulate path keeps per-sample material for it); the
+// reference has none, and runs once.
+TEST(SweepPlan, ToleranceAxisIsAgaasOnly) {
     SweepSettings s;
     s.scenes = {"plane"};
     s.methods = {"reference", "agaa-accumulate", "agaa-samples"};
@@ -110,8 +112,10 @@ TEST(SweepPlan, ToleranceAxisIsAgaasSamplesPathOnly) {
         ids.push_back(j.id());
     EXPECT_EQ(ids, (std::vector<std::string>{
                        "plane__reference__n8__c0", "plane__agaa-accumulate__n8__c2",
-                       "plane__agaa-samples__n8__c2", "plane__agaa-samples__n8__c2__tnever",
-                       "plane__agaa-samples__n8__c2__t30", "plane__agaa-samples__n8__c2__t0"}));
+                       "plane__agaa-accumulate__n8__c2__tnever", "plane__agaa-accumulate__n8__c2__t30",
+                       "plane__agaa-accumulate__n8__c2__t0", "plane__agaa-samples__n8__c2",
+                       "plane__agaa-samples__n8__c2__tnever", "plane__agaa-samples__n8__c2__t30",
+                       "plane__agaa-samples__n8__c2__t0"}));
     EXPECT_EQ(jobId("plane", "agaa", 8, 2, 0, "30"), "plane__agaa__n8__c2__t30");
 }
 
