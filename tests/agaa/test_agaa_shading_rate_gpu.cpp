@@ -81,9 +81,9 @@ constexpr double kPerSampleAgreement = 1.0e-4;
 
 // The accumulate path's flagged pixels are shaded from the material the accumulation kernel kept
 // per sample (shared/sample_material.h): the same pixel-rate material as the reference's G-buffer,
-// its albedo in half floats where the G-buffer holds 8-bit sRGB, at the samples AGAA's own
-// visibility prepass covered, where the reference's G-buffer raster decides its own. Measured: 2.4e-4
-// on metal, 6.8e-4 on the V-grooves and 1.8e-3 on furball, whose crossing fibres hold most of it.
+// its albedo in 16-bit unorm where the G-buffer holds 8-bit sRGB, at the samples AGAA's own
+// visibility prepass covered, where the reference's G-buffer raster decides its own. Measured: 2.5e-4
+// on metal, 6.4e-4 on the V-grooves and 1.8e-3 on furball, whose crossing fibres hold most of it.
 constexpr double kSampleMaterialAgreement = 2.5e-3;
 
 TEST(ShadingRate, ZeroIsTheReferenceAtTheSameSampleCountOnTheAccumulatePath) {

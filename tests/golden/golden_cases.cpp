@@ -118,8 +118,10 @@ std::vector<GoldenScene> goldenScenes() {
 std::vector<GoldenCase> goldenCases(const GoldenScene& scene) {
     if (!scene.cases.empty()) return scene.cases; // a host's
     // Every method at the default settings (n = 8, c = 2, S = 4 for SBAA and 3 for streaming; no-AA and FXAA
-    // take one sample), AGAA as the paper has it (the shading rate at never), and the samples path
-    // at its default shading rate. "agaa" is the automatic path choice (samples at n <= 16).
+    // take one sample), AGAA as the paper has it (the shading rate at never), the samples path at
+    // its default shading rate, and the accumulate path at the samples path's default tolerance (its
+    // own default is never; docs/decisions/shading-rate-estimate.md, step 6). "agaa" is the
+    // automatic path choice (samples at n <= 16).
     std::vector<GoldenCase> cases = {
         {"reference", 8, 1},
         {"noaa", 1, 1},
@@ -128,6 +130,7 @@ std::vector<GoldenCase> goldenCases(const GoldenScene& scene) {
         {"agaa-accumulate", 8, 2, kToleranceNever},
         {"agaa-samples", 8, 2, kToleranceNever},
         {"agaa-samples", 8, 2, kToleranceAuto},
+        {"agaa-accumulate", 8, 2, kDefaultTolerance},
         {"sbaa", 8, 1},      // sbaa: S = 4 (default)
         {"streaming", 8, 1}, // streaming: S = 3 (default)
     };

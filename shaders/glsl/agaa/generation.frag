@@ -214,17 +214,18 @@ void recordFragment(uvec2 pixel, uint pixelIndex, uint mask, AgQuantized f, Mate
 
 #if !AGAA_RECORD
 // The fragment's material into each of its covered samples' words (shared/sample_material.h). The
-// stencil's first-fragment test leaves one fragment per sample, so no word is written twice; the
-// writes are atomic exchanges all the same, as every access to the AG-buffer here: a plain store
-// would make the synchronisation validation see writes racing between draws.
+// stencil's first-fragment test leaves one fragment per sample, so no word is written twice, and
+// an add into the cleared word (agaa.clear) stores the value. Atomic all the same, as every access
+// to the AG-buffer here: a plain store would make the synchronisation validation see writes racing
+// between draws.
 void writeSampleMaterial(uint pixelIndex, uint mask, MaterialSample m) {
     uint words[kSampleMaterialWords] =
-        uint[](packSnorm2x16(encodeOctahedral(m.normal)), packHalf2x16(m.albedo.rg),
-               packHalf2x16(vec2(m.albedo.b, m.metallic)), packHalf2x16(vec2(m.roughness, 0.0)));
+        uint[](packSnorm2x16(encodeOctahedral(m.normal)), packUnorm2x16(m.albedo.rg),
+               packUnorm2x16(vec2(m.albedo.b, m.metallic)), packUnorm2x16(vec2(m.roughness, 0.0)));
     for (uint hw = 0u; hw < 4u; ++hw) {
         if ((mask & (1u << hw)) == 0u) continue;
         uint at = sampleMaterialWord(pixelIndex, agaa.shape.w, inLayer * 4u + hw);
-        for (uint w = 0u; w < kSampleMaterialWords; ++w) atomicExchange(sampleMaterial[at + w], words[w]);
+        for (uint w = 0u; w < kSampleMaterialWords; ++w) atomicAdd(sampleMaterial[at + w], words[w]);
     }
 }
 #endif

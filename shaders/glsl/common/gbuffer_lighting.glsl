@@ -84,12 +84,12 @@ vec3 gbufferNormal(ivec2 pixel, uint s) {
 // Sample s's surface and emissive radiance.
 SurfaceInputs gbufferSurface(ivec2 pixel, uint s, out vec3 emissive) {
     uint at = sampleMaterialAt(pixel, s);
-    vec2 albedoBMetal = unpackHalf2x16(sampleMaterial[at + 2u]);
+    vec2 albedoBMetal = unpackUnorm2x16(sampleMaterial[at + 2u]);
     SurfaceInputs surface;
     surface.normal = decodeOctahedral(unpackSnorm2x16(sampleMaterial[at]));
-    surface.albedo = vec3(unpackHalf2x16(sampleMaterial[at + 1u]), albedoBMetal.x);
+    surface.albedo = vec3(unpackUnorm2x16(sampleMaterial[at + 1u]), albedoBMetal.x);
     surface.metallic = albedoBMetal.y;
-    surface.roughness = unpackHalf2x16(sampleMaterial[at + 3u]).x;
+    surface.roughness = unpackUnorm2x16(sampleMaterial[at + 3u]).x;
 #if GBUFFER_EMISSIVE_SAMPLES
     emissive = FETCH_SAMPLE(gEmissive, pixel, s).rgb;
 #else

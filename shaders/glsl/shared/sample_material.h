@@ -6,9 +6,12 @@
 // normals and roughness for its estimate and gap rule, and agaa/lighting_per_sample.comp shades a
 // flagged pixel's samples from it. Four words per sample, 16 bytes as the per-sample G-buffer's:
 //   w0  octahedral shading normal, view space, packSnorm2x16 (the G-buffer's RG16_SNORM)
-//   w1  albedo r, g as half floats
-//   w2  albedo b, metallic as half floats
-//   w3  perceptual roughness as a half float (the G-buffer's RGBA16F alpha); the upper half is 0
+//   w1  albedo r, g, packUnorm2x16
+//   w2  albedo b, metallic, packUnorm2x16
+//   w3  perceptual roughness, packUnorm2x16; the upper half is 0
+// 16-bit unorm, not half floats: llvmpipe's unpackHalf2x16 in the per-sample pass crashes LLVM 15
+// where the JIT is held to SSE4.1 (GALLIUM_OVERRIDE_CPU_CAPS=sse4.1, the goldens'), and a step of
+// 1.5e-5 is finer than a half float's above 0.03 (the G-buffer's albedo is 8-bit sRGB).
 // The material is the fragment's (pixel rate, centroid), as the aggregates' sums are: the rate
 // shades the same surfaces the aggregates stand for, one by one.
 #include "shared/glsl_cpp.h"

@@ -23,12 +23,12 @@ void clearMaterialSums() {} // the AG-buffer already holds every sum
 
 SampleMaterial loadSampleMaterial(ivec2 pixel, uint s) {
     uint at = sampleMaterialWord(uint(pixel.y) * uint(frame.extent.x) + uint(pixel.x), kSamples, s);
-    vec2 albedoRg = unpackHalf2x16(sampleMaterial[at + 1u]);
-    vec2 albedoBMetal = unpackHalf2x16(sampleMaterial[at + 2u]);
+    vec2 albedoRg = unpackUnorm2x16(sampleMaterial[at + 1u]);
+    vec2 albedoBMetal = unpackUnorm2x16(sampleMaterial[at + 2u]);
     SampleMaterial m;
     m.normal = decodeOctahedral(unpackSnorm2x16(sampleMaterial[at]));
     m.albedoMetal = vec4(albedoRg, albedoBMetal);
-    m.roughness = unpackHalf2x16(sampleMaterial[at + 3u]).x;
+    m.roughness = unpackUnorm2x16(sampleMaterial[at + 3u]).x;
     return m;
 }
 
