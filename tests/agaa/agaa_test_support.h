@@ -6,6 +6,11 @@
 #include "engine/frame/sample_pattern.h"
 #include "tools/harness/frame_renderer.h"
 
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+
 namespace agaa::test {
 
 struct KernelConstants {
@@ -46,6 +51,27 @@ inline RenderRequest request(const std::string& method, uint32_t n, uint32_t c, 
 inline float depthAt(float t, const shared::FrameConstants& f) {
     float n = f.depthParams.x, far = f.depthParams.y;
     return n * (far - t) / (t * (far - n));
+}
+
+// Octahedral decoding (Cigolle et al. 2014) of a packSnorm2x16 word, in double: the accumulate
+// path's kept normal (shared/sample_material.h), decoded apart from the shaders.
+inline std::array<double, 3> decodeOctahedralSnorm(uint32_t word) {
+    auto snorm = [](uint16_t v) { return std::max(-1.0, double(int16_t(v)) / 32767.0); };
+    double x = snorm(uint16_t(word & 0xFFFF)), y = snorm(uint16_t(word >> 16));
+    const double z = 1.0 - std::abs(x) - std::abs(y);
+    if (z < 0.0) {
+        const double ox = (1.0 - std::abs(y)) * (x >= 0.0 ? 1.0 : -1.0);
+        const double oy = (1.0 - std::abs(x)) * (y >= 0.0 ? 1.0 : -1.0);
+        x = ox;
+        y = oy;
+    }
+    const double length = std::sqrt(x * x + y * y + z * z);
+    return {x / length, y / length, z / length};
+}
+
+// The low half of a packUnorm2x16 word.
+inline double unorm16Low(uint32_t word) {
+    return double(word & 0xFFFF) / 65535.0;
 }
 
 } // namespace agaa::test

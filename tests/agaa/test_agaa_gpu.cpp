@@ -4,6 +4,7 @@
 #include "agaa/aggregate/agaa_constants.h"
 #include "agaa/aggregate/aggregate.h"
 #include "agaa/aggregate/clustering.h"
+#include "agaa_test_support.h"
 #include "engine/frame/readback.h"
 #include "engine/io/image.h"
 #include "engine/io/metrics.h"
@@ -228,21 +229,6 @@ TEST(AgaaGpu, AccumulationMatchesACpuReplayOfTheSameFragments) {
     agaa::test::expectNoValidationErrors(*device);
 }
 
-// Octahedral decoding (Cigolle et al. 2014) of two snorm16 values, in double.
-std::array<double, 3> decodeOctahedralSnorm(uint32_t word) {
-    auto snorm = [](uint16_t v) { return std::max(-1.0, double(int16_t(v)) / 32767.0); };
-    double x = snorm(uint16_t(word & 0xFFFF)), y = snorm(uint16_t(word >> 16));
-    double z = 1.0 - std::abs(x) - std::abs(y);
-    if (z < 0.0) {
-        const double ox = (1.0 - std::abs(y)) * (x >= 0.0 ? 1.0 : -1.0);
-        const double oy = (1.0 - std::abs(x)) * (y >= 0.0 ? 1.0 : -1.0);
-        x = ox;
-        y = oy;
-    }
-    const double length = std::sqrt(x * x + y * y + z * z);
-    return {x / length, y / length, z / length};
-}
-
 // Issue 35: with a tolerance the accumulation kernel keeps each covered sample's material for the
 // shading rate (shared/sample_material.h). Every recorded fragment of the central window (the
 // stencil lets through the one fragment per sample the shipping pass wrote) must find its own
@@ -287,16 +273,16 @@ TEST(AgaaGpu, SampleMaterialHoldsEachCoveredSamplesFragment) {
             for (uint32_t hw = 0; hw < 4; ++hw) {
                 if (!(mask & (1u << hw))) continue;
                 const uint32_t* w = gpu + shared::sampleMaterialWord(pixel, n, layer * 4 + hw);
-                const std::array<double, 3> normal = decodeOctahedralSnorm(w[0]);
+                const std::array<double, 3> normal = agaa::test::decodeOctahedralSnorm(w[0]);
                 double normalError = 0.0;
                 for (int j = 0; j < 3; ++j)
                     normalError = std::max(normalError, std::abs(normal[j] - in[j]));
                 normalMisses += normalError > kNormalStep;
                 // albedo r, g, b, metallic, roughness (in[3] is the roughness, in[4..6] albedo, in[7]
                 // metallic)
-                auto unorm = [](uint32_t bits) { return double(bits & 0xFFFF) / 65535.0; };
-                const double stored[5] = {unorm(w[1]), unorm(w[1] >> 16), unorm(w[2]), unorm(w[2] >> 16),
-                                          unorm(w[3])};
+                using agaa::test::unorm16Low;
+                const double stored[5] = {unorm16Low(w[1]), unorm16Low(w[1] >> 16), unorm16Low(w[2]),
+                                          unorm16Low(w[2] >> 16), unorm16Low(w[3])};
                 const float recorded[5] = {in[4], in[5], in[6], in[7], in[3]};
                 for (int j = 0; j < 5; ++j)
                     valueMisses +=

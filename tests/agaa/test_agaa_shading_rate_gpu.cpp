@@ -13,9 +13,12 @@
 #include "agaa/aggregate/agaa_constants.h"
 #include "agaa_test_support.h"
 #include "aggregate_export.h"
+#include "engine/frame/readback.h"
 #include "engine/io/metrics.h"
 #include "engine/io/tone_map.h"
 #include "gpu_test_support.h"
+#include "shared/clustering.h"
+#include "shared/sample_material.h"
 #include "tools/harness/frame_renderer.h"
 #include "tools/scenes/adversarial_scenes.h"
 
@@ -27,6 +30,7 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <limits>
 #include <string>
 #include <utility>
@@ -280,6 +284,50 @@ std::vector<CpuEstimate> cpuEstimates(const std::vector<float>& exported, uint32
     return out;
 }
 
+// The GPU's flags (a flagged pixel has one shading event per covered sample, an unflagged one at
+// most c: the two tell apart wherever more than c samples are covered) against the CPU's estimates,
+// with the rule above the limit evaluated on the aggregates' own image (`aggregates`: nothing
+// flagged). The first three mismatches are reported as failures.
+struct FlagComparison {
+    uint32_t flagged = 0, compared = 0, mismatches = 0, nearTolerance = 0, aboveLimit = 0, saturated = 0,
+             inGap = 0;
+};
+
+FlagComparison compareFlags(const std::vector<CpuEstimate>& cpu, const agaa::RenderResult& frame,
+                            const agaa::RenderResult& aggregates, float tolerance, float limit, uint32_t c,
+                            const std::string& scene) {
+    FlagComparison f;
+    for (size_t p = 0; p < cpu.size(); ++p) {
+        if (cpu[p].coveredSamples <= c) continue;
+        ++f.compared;
+        const bool gpu = frame.shadingEvents[p] == cpu[p].coveredSamples;
+        const float* hdr = &aggregates.hdr.rgba[4 * p];
+        const bool saturatedAlias = cpu[p].value >= double(limit) && cpu[p].value >= double(tolerance) &&
+                                    std::max({hdr[0], hdr[1], hdr[2]}) >= agaa::kAliasedSaturation;
+        const bool gapAlias = cpu[p].value >= double(limit) && cpu[p].value >= double(tolerance) &&
+                              cpu[p].gap >= double(agaa::kMeanNormalGap);
+        const bool expected =
+            (cpu[p].value >= double(tolerance) && cpu[p].value < double(limit)) || saturatedAlias || gapAlias;
+        f.flagged += gpu ? 1u : 0u;
+        f.aboveLimit += !gpu && cpu[p].value >= double(limit) ? 1u : 0u;
+        f.saturated += gpu && saturatedAlias && !gapAlias ? 1u : 0u;
+        f.inGap += gpu && gapAlias ? 1u : 0u;
+        if (gpu == expected) continue;
+        if (std::abs(cpu[p].value - double(tolerance)) <= kRoundingBand * double(tolerance) ||
+            std::abs(cpu[p].value - double(limit)) <= kRoundingBand * double(limit) ||
+            std::abs(cpu[p].gap - double(agaa::kMeanNormalGap)) <=
+                kRoundingBand * double(agaa::kMeanNormalGap)) {
+            ++f.nearTolerance;
+            continue;
+        }
+        if (++f.mismatches <= 3)
+            ADD_FAILURE() << scene << " c=" << c << " pixel " << p << ": GPU " << (gpu ? "" : "not ")
+                          << "flagged, CPU estimate " << cpu[p].value << " (gap " << cpu[p].gap
+                          << ") against [" << tolerance << ", " << limit << ")";
+    }
+    return f;
+}
+
 TEST(ShadingRate, TheGpuFlagsWhatACpuEstimateFlags) {
     auto device = agaa::test::makeValidatedDevice();
     agaa::test::AggregateExportPass exporter(*device);
@@ -328,43 +376,14 @@ TEST(ShadingRate, TheGpuFlagsWhatACpuEstimateFlags) {
         const std::vector<float> exported =
             agaa::test::renderAggregateExport(exporter, renderer, banded, &frame);
         const std::vector<CpuEstimate> cpu = cpuEstimates(exported, 8, k.c);
-        uint32_t flagged = 0, compared = 0, mismatches = 0, nearTolerance = 0, aboveLimit = 0, saturated = 0,
-                 inGap = 0;
-        for (size_t p = 0; p < cpu.size(); ++p) {
-            // A flagged pixel has one event per covered sample, an unflagged one at most c: the two
-            // tell apart wherever more than c samples are covered.
-            if (cpu[p].coveredSamples <= k.c) continue;
-            ++compared;
-            const bool gpu = frame.shadingEvents[p] == cpu[p].coveredSamples;
-            const float* hdr = &aggregates.hdr.rgba[4 * p];
-            const bool saturatedAlias = cpu[p].value >= double(limit) && cpu[p].value >= double(tolerance) &&
-                                        std::max({hdr[0], hdr[1], hdr[2]}) >= agaa::kAliasedSaturation;
-            const bool gapAlias = cpu[p].value >= double(limit) && cpu[p].value >= double(tolerance) &&
-                                  cpu[p].gap >= double(agaa::kMeanNormalGap);
-            const bool expected = (cpu[p].value >= double(tolerance) && cpu[p].value < double(limit)) ||
-                                  saturatedAlias || gapAlias;
-            flagged += gpu ? 1u : 0u;
-            aboveLimit += !gpu && cpu[p].value >= double(limit) ? 1u : 0u;
-            saturated += gpu && saturatedAlias && !gapAlias ? 1u : 0u;
-            inGap += gpu && gapAlias ? 1u : 0u;
-            if (gpu == expected) continue;
-            if (std::abs(cpu[p].value - double(tolerance)) <= kRoundingBand * double(tolerance) ||
-                std::abs(cpu[p].value - double(limit)) <= kRoundingBand * double(limit) ||
-                std::abs(cpu[p].gap - double(agaa::kMeanNormalGap)) <=
-                    kRoundingBand * double(agaa::kMeanNormalGap)) {
-                ++nearTolerance;
-                continue;
-            }
-            if (++mismatches <= 3)
-                ADD_FAILURE() << k.scene << " c=" << k.c << " pixel " << p << ": GPU " << (gpu ? "" : "not ")
-                              << "flagged, CPU estimate " << cpu[p].value << " against [" << tolerance << ", "
-                              << limit << ")";
-        }
+        const FlagComparison f = compareFlags(cpu, frame, aggregates, tolerance, limit, k.c, k.scene);
+        const uint32_t flagged = f.flagged, compared = f.compared, mismatches = f.mismatches,
+                       aboveLimit = f.aboveLimit, saturated = f.saturated, inGap = f.inGap;
         std::printf("[ measured ] %-12s c=%u tolerance %g, alias limit %g: %u of %u pixels flagged (%u above "
                     "the limit, saturated; %u with their mean normal in a gap), %u left above the limit, %u "
                     "mismatches, %u within rounding of an edge\n",
                     k.scene, k.c, double(tolerance), double(limit), flagged, compared, saturated, inGap,
-                    aboveLimit, mismatches, nearTolerance);
+                    aboveLimit, mismatches, f.nearTolerance);
         EXPECT_EQ(mismatches, 0u) << k.scene;
         EXPECT_GT(flagged, 0u) << k.scene << ": the case should flag some pixels";
         const std::string shows = k.shows ? k.shows : "";
@@ -379,6 +398,124 @@ TEST(ShadingRate, TheGpuFlagsWhatACpuEstimateFlags) {
         if (std::string(k.scene) == "hard-mirror-vgroove") continue;
         EXPECT_LT(flagged, compared) << k.scene << ": and leave some";
         EXPECT_GT(aboveLimit, 0u) << k.scene << ": the limit should leave some pixels above the tolerance";
+    }
+    agaa::test::expectNoValidationErrors(*device);
+}
+
+// The accumulate path's per-sample inputs to the estimate, in the export's record layout
+// (cpuEstimates' input), read back and decoded apart from the shaders: each covered sample's
+// normal and roughness from the material the accumulation kernel kept (shared/sample_material.h),
+// its aggregate from the clustering's metadata, and whether it is covered from the visibility depth
+// the clustering read (0: sky).
+struct AccumulateFrame {
+    std::vector<float> records;
+    agaa::RenderResult frame;
+};
+
+AccumulateFrame renderAccumulateInputs(eng::vk::Device& device, agaa::test::ClusteringInputReadback& depths,
+                                       agaa::FrameRenderer& renderer, agaa::RenderRequest r) {
+    namespace vk = eng::vk;
+    const uint32_t n = r.settings.samples, c = r.settings.aggregates, pixels = kSize * kSize;
+    const uint32_t words = shared::metadataWords(n, c), bits = shared::metadataBits(c);
+    vk::Buffer samples =
+        vk::createBuffer(device, VkDeviceSize(pixels) * n * 8, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+                         vk::MemoryUse::Readback, "test.samples");
+    vk::Buffer material =
+        vk::createBuffer(device, VkDeviceSize(shared::sampleMaterialWords(pixels, n)) * 4,
+                         VK_BUFFER_USAGE_TRANSFER_DST_BIT, vk::MemoryUse::Readback, "test.material");
+    vk::Buffer metadata =
+        vk::createBuffer(device, std::max<VkDeviceSize>(4, VkDeviceSize(pixels) * words * 4),
+                         VK_BUFFER_USAGE_TRANSFER_DST_BIT, vk::MemoryUse::Readback, "test.metadata");
+    r.extraPasses = [&](eng::rg::Graph& graph, agaa::Technique& tech, const agaa::FrameInputs& in) {
+        auto& aggregate = dynamic_cast<agaa::AggregateAA&>(tech);
+        depths.add(graph, aggregate, in, samples);
+        eng::frame::addBufferReadbackPass(graph, aggregate.resources().sampleMaterial, material,
+                                          "test.material");
+        eng::frame::addBufferReadbackPass(graph, aggregate.resources().metadata, metadata, "test.metadata");
+    };
+    AccumulateFrame out;
+    out.frame = renderer.render(r);
+    const auto* depth = static_cast<const uint32_t*>(samples.mapped);
+    const auto* meta = static_cast<const uint32_t*>(metadata.mapped);
+    const auto* kept = static_cast<const uint32_t*>(material.mapped);
+    const size_t record = agaa::test::kExportRecordFloats;
+    out.records.assign(size_t(pixels) * n * record, 0.0f);
+    for (uint32_t p = 0; p < pixels; ++p)
+        for (uint32_t s = 0; s < n; ++s) {
+            float d;
+            std::memcpy(&d, &depth[(size_t(p) * n + s) * 2], 4);
+            if (d <= 0.0f) continue; // sky: rec[12] stays 0
+            float* rec = &out.records[(size_t(p) * n + s) * record];
+            const uint32_t* w = kept + shared::sampleMaterialWord(p, n, s);
+            const std::array<double, 3> normal = agaa::test::decodeOctahedralSnorm(w[0]);
+            rec[0] = float(normal[0]);
+            rec[1] = float(normal[1]);
+            rec[2] = float(normal[2]);
+            rec[3] = float(agaa::test::unorm16Low(w[3]));
+            rec[11] = float(words ? shared::unpackMetadata(meta[p * words + (s * bits) / 32], s, c) : 0u);
+            rec[12] = 1.0f;
+        }
+    renderer.technique(r); // keep the technique alive until the buffers are released
+    vkDeviceWaitIdle(device.device());
+    vk::destroyBuffer(device, samples);
+    vk::destroyBuffer(device, material);
+    vk::destroyBuffer(device, metadata);
+    return out;
+}
+
+// The same check on the accumulate path (docs/decisions/shading-rate-estimate.md, step 6): its
+// flags against the CPU estimate of its own kept material. Shadows stay on: nothing here reads
+// the export build.
+TEST(ShadingRate, TheAccumulatePathFlagsWhatACpuEstimateOfItsMaterialFlags) {
+    auto device = agaa::test::makeValidatedDevice();
+    agaa::test::ClusteringInputReadback depths(*device);
+    struct Case {
+        const char* scene;
+        uint32_t c;
+        bool defaults = false;
+        const char* shows = nullptr;
+    };
+    // metal: SGGX, shadows; furball at c = 1: the off-layer samples; glints and the V-grooves at
+    // the defaults: the saturated and the gap rule above the limit.
+    const Case cases[] = {{"metal", 2},
+                          {"furball", 1},
+                          {"glints", 2, true, "saturated"},
+                          {"hard-mirror-vgroove", 1, true, "gap"}};
+    for (const Case& k : cases) {
+        eng::scene::Scene scene = eng::scene::loadTestScene(k.scene);
+        agaa::FrameRenderer renderer(*device, scene);
+        // Nothing flagged: the aggregates' own image (bit for bit the never image:
+        // NothingFlaggedIsAgaaBitForBit) and every pixel's estimate, for the percentiles.
+        const AccumulateFrame unflagged = renderAccumulateInputs(
+            *device, depths, renderer, withTolerance("agaa-accumulate", 8, k.c, kNothingFlagged));
+        std::vector<double> values;
+        for (const CpuEstimate& e : cpuEstimates(unflagged.records, 8, k.c))
+            if (e.value > 0.0) values.push_back(e.value);
+        ASSERT_FALSE(values.empty()) << k.scene;
+        std::sort(values.begin(), values.end());
+        const float tolerance = k.defaults ? agaa::kDefaultTolerance : float(values[values.size() / 4]);
+        const float limit = k.defaults ? agaa::kDefaultAliasLimit : float(values[values.size() * 3 / 4]);
+        ASSERT_LT(tolerance, limit) << k.scene;
+        agaa::RenderRequest banded = withTolerance("agaa-accumulate", 8, k.c, tolerance);
+        banded.settings.agaaAliasLimit = limit;
+        const AccumulateFrame run = renderAccumulateInputs(*device, depths, renderer, banded);
+        const FlagComparison f = compareFlags(cpuEstimates(run.records, 8, k.c), run.frame, unflagged.frame,
+                                              tolerance, limit, k.c, k.scene);
+        std::printf("[ measured ] %-20s accumulate path, c=%u, tolerance %g, alias limit %g: %u of %u pixels "
+                    "flagged (%u saturated, %u in a gap), %u left above the limit, %u mismatches, %u within "
+                    "rounding of an edge\n",
+                    k.scene, k.c, double(tolerance), double(limit), f.flagged, f.compared, f.saturated,
+                    f.inGap, f.aboveLimit, f.mismatches, f.nearTolerance);
+        EXPECT_EQ(f.mismatches, 0u) << k.scene;
+        EXPECT_GT(f.flagged, 0u) << k.scene << ": the case should flag some pixels";
+        const std::string shows = k.shows ? k.shows : "";
+        if (shows == "saturated") {
+            EXPECT_GT(f.saturated, 0u) << k.scene << ": some pixels above the limit saturate";
+        }
+        if (shows == "gap") {
+            EXPECT_GT(f.inGap, 0u) << k.scene
+                                   << ": some pixels above the limit have their mean normal in a gap";
+        }
     }
     agaa::test::expectNoValidationErrors(*device);
 }
