@@ -265,6 +265,18 @@ TEST_P(QualityScene, AgaaIsNeverWorseThanNoAaAndKeepsTheEnergy) {
             if (!measuredSetting) continue; // a measurement run: print only
             const KnownGap* displayGap = knownGap(kDisplayGaps, GetParam(), c, pathName);
             const KnownGap* energyGap = knownGap(kEnergyGaps, GetParam(), c, pathName);
+            if (displayGap && pathName == "agaa-accumulate") {
+                // The accumulate path's default is never; its shading rate, once set, closes the gap
+                // (docs/decisions/shading-rate-estimate.md, step 6).
+                agaa::RenderRequest withRate = r;
+                withRate.settings.agaaTolerance = agaa::kDefaultTolerance;
+                const double rateError =
+                    eng::io::rmse(encoded(renderer.render(withRate).display), truthDisplay);
+                std::printf("[ measured ] %-18s %s (8, %u) at tolerance %g: display RMSE %.4f\n",
+                            GetParam().c_str(), path, c, double(agaa::kDefaultTolerance), rateError);
+                EXPECT_LE(rateError, std::max(noaaError, 1e-3) + truth.errorEstimate)
+                    << GetParam() << " " << path << " c=" << c << ": the shading rate must close the gap";
+            }
             if (displayGap) {
                 EXPECT_FALSE(displayOk) << GetParam() << " " << path << " c=" << c
                                         << " is no longer worse than no AA (it measured "

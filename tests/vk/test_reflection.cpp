@@ -32,7 +32,8 @@ std::optional<Binding> find(const std::vector<Binding>& bindings, uint32_t numbe
 }
 
 // The shipped lighting variants: each path's binding 6, the shading rate's 18 in both, the
-// G-buffer's albedo at 13 on the samples path only, and the test export's 14 only in its test build
+// G-buffer's albedo at 13 on the samples path only, the accumulate path's kept material at 20 on
+// it only, and the test export's 14 only in its test build
 // (agaa_test_shaders, not the shipping library).
 TEST(Reflection, LightingVariantsDeclareTheirPathsBindings) {
     const std::vector<Binding> accumulate = reflectBindings({{kAgaaLightingComp, kCs}});
@@ -42,6 +43,11 @@ TEST(Reflection, LightingVariantsDeclareTheirPathsBindings) {
     EXPECT_EQ(find(accumulate, 6)->type, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER);      // the AG-buffer
     EXPECT_EQ(find(samples, 6)->type, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER); // the G-buffer's normals
     EXPECT_FALSE(find(accumulate, 13));
+    // The accumulate path's kept per-sample material, which its shading rate reads
+    // (shared/sample_material.h); the samples path reads its G-buffer instead.
+    ASSERT_TRUE(find(accumulate, 20));
+    EXPECT_EQ(find(accumulate, 20)->type, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER);
+    EXPECT_FALSE(find(samples, 20));
     ASSERT_TRUE(find(samples, 13));
     EXPECT_EQ(find(samples, 13)->type, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER);
     for (const auto* v : {&accumulate, &samples}) {
