@@ -156,11 +156,7 @@ TEST(AgaaGpu, AccumulationMatchesACpuReplayOfTheSameFragments) {
         agaa::FrameRenderer renderer(*device, scene);
         const uint32_t size = 64, window = 16, capacity = 400000;
         const uint32_t words = shared::metadataWords(k.n, k.c);
-        vk::Buffer records =
-            vk::createBuffer(*device, 8 + VkDeviceSize(capacity) * kRecordWords * 4,
-                             VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-                             vk::MemoryUse::Readback, "test.records");
-        static_cast<uint32_t*>(records.mapped)[1] = capacity;
+        vk::Buffer records = agaa::test::createFragmentRecords(*device, capacity, kRecordWords);
         vk::Buffer ag =
             vk::createBuffer(*device, VkDeviceSize(size) * size * k.c * shared::kAggregateWords * 4,
                              VK_BUFFER_USAGE_TRANSFER_DST_BIT, vk::MemoryUse::Readback, "test.ag");
@@ -244,11 +240,7 @@ TEST(AgaaGpu, SampleMaterialHoldsEachCoveredSamplesFragment) {
         eng::scene::Scene scene = eng::scene::loadTestScene(sceneName);
         agaa::FrameRenderer renderer(*device, scene);
         const uint32_t size = 64, capacity = 400000;
-        vk::Buffer records =
-            vk::createBuffer(*device, 8 + VkDeviceSize(capacity) * kRecordWords * 4,
-                             VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-                             vk::MemoryUse::Readback, "test.records");
-        static_cast<uint32_t*>(records.mapped)[1] = capacity;
+        vk::Buffer records = agaa::test::createFragmentRecords(*device, capacity, kRecordWords);
         vk::Buffer material =
             vk::createBuffer(*device, VkDeviceSize(shared::sampleMaterialWords(size * size, n)) * 4,
                              VK_BUFFER_USAGE_TRANSFER_DST_BIT, vk::MemoryUse::Readback, "test.material");

@@ -281,11 +281,7 @@ TEST(AgaaAccumulationReferenceGpu, AgBufferMatchesDoubleSumsOfTheMaterialInputs)
         eng::scene::Scene scene = eng::scene::loadTestScene(k.scene);
         agaa::FrameRenderer renderer(*device, scene);
         const uint32_t words = wordsPerPixel(k.n, k.c);
-        vk::Buffer records =
-            vk::createBuffer(*device, 8 + VkDeviceSize(capacity) * kRecordWords * 4,
-                             VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-                             vk::MemoryUse::Readback, "test.records");
-        static_cast<uint32_t*>(records.mapped)[1] = capacity;
+        vk::Buffer records = agaa::test::createFragmentRecords(*device, capacity, kRecordWords);
         vk::Buffer ag =
             vk::createBuffer(*device, VkDeviceSize(shared::agBufferWords(size * size, k.c)) * 4,
                              VK_BUFFER_USAGE_TRANSFER_DST_BIT, vk::MemoryUse::Readback, "test.ag");

@@ -31,6 +31,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <functional>
 #include <limits>
 #include <string>
 #include <utility>
@@ -60,20 +61,23 @@ TEST(ShadingRate, NothingFlaggedIsAgaaBitForBit) {
         const char* scene;
         uint32_t c;
     };
-    // Shadows (metal, spikes), emission (hard-emissive), SGGX (metal), c = 1's off-layer samples.
+    // Shadows (metal, spikes), emission (hard-emissive), SGGX (metal), c = 1's off-layer samples;
+    // both paths (the accumulate path then also keeps its per-sample material, unread).
     for (const Case k : {Case{"metal", 2}, Case{"spikes", 4}, Case{"hard-emissive", 2}, Case{"furball", 1}}) {
         eng::scene::Scene scene = eng::scene::loadTestScene(k.scene);
         agaa::FrameRenderer renderer(*device, scene);
-        const agaa::RenderResult never =
-            renderer.render(withTolerance("agaa-samples", 8, k.c, agaa::kToleranceNever));
-        const agaa::RenderResult none =
-            renderer.render(withTolerance("agaa-samples", 8, k.c, kNothingFlagged));
-        EXPECT_EQ(maxAbsDifference(never.hdr, none.hdr), 0.0) << k.scene << " c=" << k.c;
-        EXPECT_EQ(maxAbsDifference(never.display, none.display), 0.0) << k.scene << " c=" << k.c;
-        EXPECT_EQ(never.shadingEvents, none.shadingEvents) << k.scene << " c=" << k.c;
-        EXPECT_FALSE(never.perSampleShading.has_value()) << "never has no per-sample target";
-        ASSERT_TRUE(none.perSampleShading.has_value());
-        EXPECT_EQ(none.perSampleShading->pixels, 0.0) << k.scene;
+        for (const char* path : {"agaa-samples", "agaa-accumulate"}) {
+            const agaa::RenderResult never =
+                renderer.render(withTolerance(path, 8, k.c, agaa::kToleranceNever));
+            const agaa::RenderResult none = renderer.render(withTolerance(path, 8, k.c, kNothingFlagged));
+            EXPECT_EQ(maxAbsDifference(never.hdr, none.hdr), 0.0) << k.scene << " " << path << " c=" << k.c;
+            EXPECT_EQ(maxAbsDifference(never.display, none.display), 0.0)
+                << k.scene << " " << path << " c=" << k.c;
+            EXPECT_EQ(never.shadingEvents, none.shadingEvents) << k.scene << " " << path << " c=" << k.c;
+            EXPECT_FALSE(never.perSampleShading.has_value()) << "never has no per-sample target";
+            ASSERT_TRUE(none.perSampleShading.has_value());
+            EXPECT_EQ(none.perSampleShading->pixels, 0.0) << k.scene << " " << path;
+        }
     }
     agaa::test::expectNoValidationErrors(*device);
 }
@@ -328,76 +332,88 @@ FlagComparison compareFlags(const std::vector<CpuEstimate>& cpu, const agaa::Ren
     return f;
 }
 
+// A frame and its samples' inputs to the estimate, in the export's record layout (cpuEstimates').
+struct EstimateInputs {
+    std::vector<float> records;
+    agaa::RenderResult frame;
+};
+
+struct FlagCase {
+    const char* scene;
+    uint32_t c;
+    bool defaults = false; // the default tolerance and limit, not the scene's percentiles
+    // Which rule above the limit the case must show at the defaults: "saturated" or "gap".
+    const char* shows = nullptr;
+};
+
+// One case of the flag checks, on either path: `render` renders a request of `method` and returns
+// its samples' inputs; `unflagged` is a tolerance that flags nothing. The tolerance and the alias
+// limit are the 25th and 75th percentiles of the scene's non-zero estimates, so that about half the
+// pixels with any spread are flagged, and the pixels below the tolerance and those above the limit
+// are both left (or the defaults). The aggregates' own image (nothing flagged) gives each pixel's
+// resolved radiance for the rule above the limit.
+void checkFlagCase(const FlagCase& k, const char* method, float unflagged,
+                   const std::function<EstimateInputs(const agaa::RenderRequest&)>& render) {
+    const EstimateInputs aggregates = render(withTolerance(method, 8, k.c, unflagged));
+    std::vector<double> values;
+    for (const CpuEstimate& e : cpuEstimates(aggregates.records, 8, k.c))
+        if (e.value > 0.0) values.push_back(e.value);
+    ASSERT_FALSE(values.empty()) << k.scene;
+    std::sort(values.begin(), values.end());
+    const float tolerance = k.defaults ? agaa::kDefaultTolerance : float(values[values.size() / 4]);
+    const float limit = k.defaults ? agaa::kDefaultAliasLimit : float(values[values.size() * 3 / 4]);
+    ASSERT_LT(tolerance, limit) << k.scene;
+    agaa::RenderRequest banded = withTolerance(method, 8, k.c, tolerance);
+    banded.settings.agaaAliasLimit = limit;
+    const EstimateInputs run = render(banded);
+    const FlagComparison f = compareFlags(cpuEstimates(run.records, 8, k.c), run.frame, aggregates.frame,
+                                          tolerance, limit, k.c, k.scene);
+    std::printf(
+        "[ measured ] %-20s %s c=%u tolerance %g, alias limit %g: %u of %u pixels flagged (%u above the "
+        "limit, saturated; %u with their mean normal in a gap), %u left above the limit, %u mismatches, "
+        "%u within rounding of an edge\n",
+        k.scene, method, k.c, double(tolerance), double(limit), f.flagged, f.compared, f.saturated, f.inGap,
+        f.aboveLimit, f.mismatches, f.nearTolerance);
+    EXPECT_EQ(f.mismatches, 0u) << k.scene;
+    EXPECT_GT(f.flagged, 0u) << k.scene << ": the case should flag some pixels";
+    const std::string shows = k.shows ? k.shows : "";
+    if (shows == "saturated") {
+        EXPECT_GT(f.saturated, 0u) << k.scene << ": some pixels above the limit saturate";
+    }
+    if (shows == "gap") {
+        EXPECT_GT(f.inGap, 0u) << k.scene << ": some pixels above the limit have their mean normal in a gap";
+    }
+    // The V-grooves fill the frame, and every covered pixel is flagged.
+    if (std::string(k.scene) == "hard-mirror-vgroove") return;
+    EXPECT_LT(f.flagged, f.compared) << k.scene << ": and leave some";
+    EXPECT_GT(f.aboveLimit, 0u) << k.scene << ": the limit should leave some pixels above the tolerance";
+}
+
 TEST(ShadingRate, TheGpuFlagsWhatACpuEstimateFlags) {
     auto device = agaa::test::makeValidatedDevice();
     agaa::test::AggregateExportPass exporter(*device);
-    struct Case {
-        const char* scene;
-        uint32_t c;
-        bool defaults = false; // the default tolerance and limit, not the scene's percentiles
-        // Which rule above the limit the case must show at the defaults: "saturated" or "gap".
-        const char* shows = nullptr;
-    };
     // glints at the default tolerance and limit: most of its pixels lie above the limit, and the
     // saturated ones among them are flagged once lit. hard-mirror-vgroove at c = 1 and the
     // defaults: its pixels lie above the limit with their mean normal in a gap.
-    const Case cases[] = {{"metal", 2},
-                          {"metal", 4},
-                          {"furball", 2},
-                          {"default", 2},
-                          {"railings", 1},
-                          {"hard-mirror", 2},
-                          {"glints", 2, true, "saturated"},
-                          {"spikes", 2, true, "gap"},
-                          {"hard-mirror-vgroove", 1, true, "gap"}};
-    for (const Case& k : cases) {
+    const FlagCase cases[] = {{"metal", 2},
+                              {"metal", 4},
+                              {"furball", 2},
+                              {"default", 2},
+                              {"railings", 1},
+                              {"hard-mirror", 2},
+                              {"glints", 2, true, "saturated"},
+                              {"spikes", 2, true, "gap"},
+                              {"hard-mirror-vgroove", 1, true, "gap"}};
+    for (const FlagCase& k : cases) {
         eng::scene::Scene scene = eng::scene::loadTestScene(k.scene);
         for (eng::scene::Light& l : scene.lights)
             l.castsShadows = false; // the export variant has no shadow maps
         agaa::FrameRenderer renderer(*device, scene);
-        // The tolerance and the alias limit: the 25th and 75th percentiles of the scene's non-zero
-        // estimates, so that about half the pixels with any spread are flagged, and the pixels
-        // below the tolerance and those above the limit are both left. The aggregates' own image
-        // (never) gives each pixel's resolved radiance for the rule above the limit.
-        std::vector<double> values;
-        agaa::RenderResult aggregates;
-        const std::vector<float> unflagged = agaa::test::renderAggregateExport(
-            exporter, renderer, withTolerance("agaa-samples", 8, k.c, agaa::kToleranceNever), &aggregates);
-        for (const CpuEstimate& e : cpuEstimates(unflagged, 8, k.c))
-            if (e.value > 0.0) values.push_back(e.value);
-        ASSERT_FALSE(values.empty()) << k.scene;
-        std::sort(values.begin(), values.end());
-        const float tolerance = k.defaults ? agaa::kDefaultTolerance : float(values[values.size() / 4]);
-        const float limit = k.defaults ? agaa::kDefaultAliasLimit : float(values[values.size() * 3 / 4]);
-        ASSERT_LT(tolerance, limit) << k.scene;
-        agaa::RenderRequest banded = withTolerance("agaa-samples", 8, k.c, tolerance);
-        banded.settings.agaaAliasLimit = limit;
-        agaa::RenderResult frame;
-        const std::vector<float> exported =
-            agaa::test::renderAggregateExport(exporter, renderer, banded, &frame);
-        const std::vector<CpuEstimate> cpu = cpuEstimates(exported, 8, k.c);
-        const FlagComparison f = compareFlags(cpu, frame, aggregates, tolerance, limit, k.c, k.scene);
-        const uint32_t flagged = f.flagged, compared = f.compared, mismatches = f.mismatches,
-                       aboveLimit = f.aboveLimit, saturated = f.saturated, inGap = f.inGap;
-        std::printf("[ measured ] %-12s c=%u tolerance %g, alias limit %g: %u of %u pixels flagged (%u above "
-                    "the limit, saturated; %u with their mean normal in a gap), %u left above the limit, %u "
-                    "mismatches, %u within rounding of an edge\n",
-                    k.scene, k.c, double(tolerance), double(limit), flagged, compared, saturated, inGap,
-                    aboveLimit, mismatches, f.nearTolerance);
-        EXPECT_EQ(mismatches, 0u) << k.scene;
-        EXPECT_GT(flagged, 0u) << k.scene << ": the case should flag some pixels";
-        const std::string shows = k.shows ? k.shows : "";
-        if (shows == "saturated") {
-            EXPECT_GT(saturated, 0u) << k.scene << ": some pixels above the limit saturate";
-        }
-        if (shows == "gap") {
-            EXPECT_GT(inGap, 0u) << k.scene
-                                 << ": some pixels above the limit have their mean normal in a gap";
-        }
-        // The V-grooves fill the frame, and every covered pixel is flagged.
-        if (std::string(k.scene) == "hard-mirror-vgroove") continue;
-        EXPECT_LT(flagged, compared) << k.scene << ": and leave some";
-        EXPECT_GT(aboveLimit, 0u) << k.scene << ": the limit should leave some pixels above the tolerance";
+        checkFlagCase(k, "agaa-samples", agaa::kToleranceNever, [&](const agaa::RenderRequest& r) {
+            EstimateInputs in;
+            in.records = agaa::test::renderAggregateExport(exporter, renderer, r, &in.frame);
+            return in;
+        });
     }
     agaa::test::expectNoValidationErrors(*device);
 }
@@ -407,13 +423,8 @@ TEST(ShadingRate, TheGpuFlagsWhatACpuEstimateFlags) {
 // normal and roughness from the material the accumulation kernel kept (shared/sample_material.h),
 // its aggregate from the clustering's metadata, and whether it is covered from the visibility depth
 // the clustering read (0: sky).
-struct AccumulateFrame {
-    std::vector<float> records;
-    agaa::RenderResult frame;
-};
-
-AccumulateFrame renderAccumulateInputs(eng::vk::Device& device, agaa::test::ClusteringInputReadback& depths,
-                                       agaa::FrameRenderer& renderer, agaa::RenderRequest r) {
+EstimateInputs renderAccumulateInputs(eng::vk::Device& device, agaa::test::ClusteringInputReadback& depths,
+                                      agaa::FrameRenderer& renderer, agaa::RenderRequest r) {
     namespace vk = eng::vk;
     const uint32_t n = r.settings.samples, c = r.settings.aggregates, pixels = kSize * kSize;
     const uint32_t words = shared::metadataWords(n, c), bits = shared::metadataBits(c);
@@ -433,7 +444,7 @@ AccumulateFrame renderAccumulateInputs(eng::vk::Device& device, agaa::test::Clus
                                           "test.material");
         eng::frame::addBufferReadbackPass(graph, aggregate.resources().metadata, metadata, "test.metadata");
     };
-    AccumulateFrame out;
+    EstimateInputs out;
     out.frame = renderer.render(r);
     const auto* depth = static_cast<const uint32_t*>(samples.mapped);
     const auto* meta = static_cast<const uint32_t*>(metadata.mapped);
@@ -465,57 +476,23 @@ AccumulateFrame renderAccumulateInputs(eng::vk::Device& device, agaa::test::Clus
 
 // The same check on the accumulate path (docs/decisions/shading-rate-estimate.md, step 6): its
 // flags against the CPU estimate of its own kept material. Shadows stay on: nothing here reads
-// the export build.
+// the export build. Nothing is flagged at kNothingFlagged, whose image is the never image bit for
+// bit (NothingFlaggedIsAgaaBitForBit).
 TEST(ShadingRate, TheAccumulatePathFlagsWhatACpuEstimateOfItsMaterialFlags) {
     auto device = agaa::test::makeValidatedDevice();
     agaa::test::ClusteringInputReadback depths(*device);
-    struct Case {
-        const char* scene;
-        uint32_t c;
-        bool defaults = false;
-        const char* shows = nullptr;
-    };
     // metal: SGGX, shadows; furball at c = 1: the off-layer samples; glints and the V-grooves at
     // the defaults: the saturated and the gap rule above the limit.
-    const Case cases[] = {{"metal", 2},
-                          {"furball", 1},
-                          {"glints", 2, true, "saturated"},
-                          {"hard-mirror-vgroove", 1, true, "gap"}};
-    for (const Case& k : cases) {
+    const FlagCase cases[] = {{"metal", 2},
+                              {"furball", 1},
+                              {"glints", 2, true, "saturated"},
+                              {"hard-mirror-vgroove", 1, true, "gap"}};
+    for (const FlagCase& k : cases) {
         eng::scene::Scene scene = eng::scene::loadTestScene(k.scene);
         agaa::FrameRenderer renderer(*device, scene);
-        // Nothing flagged: the aggregates' own image (bit for bit the never image:
-        // NothingFlaggedIsAgaaBitForBit) and every pixel's estimate, for the percentiles.
-        const AccumulateFrame unflagged = renderAccumulateInputs(
-            *device, depths, renderer, withTolerance("agaa-accumulate", 8, k.c, kNothingFlagged));
-        std::vector<double> values;
-        for (const CpuEstimate& e : cpuEstimates(unflagged.records, 8, k.c))
-            if (e.value > 0.0) values.push_back(e.value);
-        ASSERT_FALSE(values.empty()) << k.scene;
-        std::sort(values.begin(), values.end());
-        const float tolerance = k.defaults ? agaa::kDefaultTolerance : float(values[values.size() / 4]);
-        const float limit = k.defaults ? agaa::kDefaultAliasLimit : float(values[values.size() * 3 / 4]);
-        ASSERT_LT(tolerance, limit) << k.scene;
-        agaa::RenderRequest banded = withTolerance("agaa-accumulate", 8, k.c, tolerance);
-        banded.settings.agaaAliasLimit = limit;
-        const AccumulateFrame run = renderAccumulateInputs(*device, depths, renderer, banded);
-        const FlagComparison f = compareFlags(cpuEstimates(run.records, 8, k.c), run.frame, unflagged.frame,
-                                              tolerance, limit, k.c, k.scene);
-        std::printf("[ measured ] %-20s accumulate path, c=%u, tolerance %g, alias limit %g: %u of %u pixels "
-                    "flagged (%u saturated, %u in a gap), %u left above the limit, %u mismatches, %u within "
-                    "rounding of an edge\n",
-                    k.scene, k.c, double(tolerance), double(limit), f.flagged, f.compared, f.saturated,
-                    f.inGap, f.aboveLimit, f.mismatches, f.nearTolerance);
-        EXPECT_EQ(f.mismatches, 0u) << k.scene;
-        EXPECT_GT(f.flagged, 0u) << k.scene << ": the case should flag some pixels";
-        const std::string shows = k.shows ? k.shows : "";
-        if (shows == "saturated") {
-            EXPECT_GT(f.saturated, 0u) << k.scene << ": some pixels above the limit saturate";
-        }
-        if (shows == "gap") {
-            EXPECT_GT(f.inGap, 0u) << k.scene
-                                   << ": some pixels above the limit have their mean normal in a gap";
-        }
+        checkFlagCase(k, "agaa-accumulate", kNothingFlagged, [&](const agaa::RenderRequest& r) {
+            return renderAccumulateInputs(*device, depths, renderer, r);
+        });
     }
     agaa::test::expectNoValidationErrors(*device);
 }

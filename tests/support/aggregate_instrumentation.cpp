@@ -292,4 +292,13 @@ void FragmentRecordPass::add(rg::Graph& graph, const AggregateAA& aggregate, con
         });
 }
 
+vk::Buffer createFragmentRecords(vk::Device& device, uint32_t capacity, uint32_t recordWords) {
+    vk::Buffer records =
+        vk::createBuffer(device, 8 + VkDeviceSize(capacity) * recordWords * 4,
+                         VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                         vk::MemoryUse::Readback, "test.records");
+    static_cast<uint32_t*>(records.mapped)[1] = capacity;
+    return records;
+}
+
 } // namespace agaa::test

@@ -84,4 +84,8 @@ class FragmentRecordPass {
     std::vector<VkPipeline> m_pipelines;
 };
 
+// A host buffer for `capacity` fragment records of `recordWords` words each (FragmentRecordPass's
+// target: the count, the capacity, then the records), its capacity set.
+eng::vk::Buffer createFragmentRecords(eng::vk::Device& device, uint32_t capacity, uint32_t recordWords);
+
 } // namespace agaa::test
