@@ -7,7 +7,8 @@
 // Each fragment evaluates the material as a classic G-buffer would and adds, with integer
 // atomics on fixed-point values (order-independent: bit-identical frames), its normal
 // distribution (Toksvig vector or SGGX matrix, shared/agaa.h), albedo, metallic and sample count
-// into its pixel's aggregates.
+// into its pixel's aggregates. With a tolerance it also keeps each covered sample's material for
+// the shading rate (writeSampleMaterial, shared/sample_material.h).
 //
 // Routing (specialisation id 1, agaa/aggregate/agaa_constants.h AggregateRouting):
 //  - samples (default): each aggregate present in the fragment's mask receives the fragment's

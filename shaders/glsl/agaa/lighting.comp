@@ -13,7 +13,7 @@
 //      (agaa/lighting/schedule.glsl);
 //   4. resolve: each shading event tone-mapped and weighted by its samples
 //      (agaa/lighting/resolve.glsl).
-// With a tolerance (--agaa-tolerance, samples path), a pixel whose aggregates' normal spread the
+// With a tolerance (--agaa-tolerance, either path), a pixel whose aggregates' normal spread the
 // estimate distrusts (agaa/lighting/prefilter_estimate.glsl) skips steps 3 and 4 here and is
 // flagged (agaa/lighting/shading_rate.glsl), and so is a pixel above the alias limit whose
 // resolved radiance saturates the tone map: the next pass, agaa/lighting_per_sample.comp, lights
