@@ -184,7 +184,7 @@ std::vector<MethodOption> declareOptions() {
             "member's lobe, reaches T is shaded per sample as the reference shades it (0: every pixel, the "
             "reference's image; docs/decisions/shading-rate-estimate.md). auto: " +
                 numberText(kDefaultTolerance) +
-                " on the samples path, never on the accumulate path (where a tolerance keeps 16 bytes of "
+                " on the samples path, never on the accumulate path (where a tolerance keeps 12 bytes of "
                 "material per sample)",
             [=](MethodSettings& s, const std::string& v) {
                 s.agaaTolerance = v == "auto" ? kToleranceAuto : v == "never" ? kToleranceNever : number(v);

@@ -88,7 +88,7 @@ inline constexpr NamedValue<AggregateGeneration> kAggregateGenerationNames[] = {
 // AggregateSettings::tolerance: no pixel is shaded per sample.
 inline constexpr float kToleranceNever = -1.0f;
 // AggregateSettings::tolerance: the path's default. The samples path takes kDefaultTolerance; the
-// accumulate path takes never: with a tolerance it keeps 16 bytes of material per sample, which
+// accumulate path takes never: with a tolerance it keeps 12 bytes of material per sample, which
 // costs it more memory than the samples path's whole G-buffer (docs/decisions/
 // shading-rate-estimate.md, step 6).
 inline constexpr float kToleranceAuto = -2.0f;

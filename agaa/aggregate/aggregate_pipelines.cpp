@@ -288,7 +288,7 @@ void AggregateAA::resolveTolerance() {
     } else {
         m_settings.tolerance = kToleranceNever;
         m_toleranceCause =
-            "the accumulate path's default: a tolerance keeps 16 bytes of material per sample, "
+            "the accumulate path's default: a tolerance keeps 12 bytes of material per sample, "
             "more than the samples path's whole G-buffer saves (docs/decisions/"
             "shading-rate-estimate.md, step 6)";
         if (m_settings.debugView == AggregateDebugView::ShadingRate)
@@ -542,7 +542,7 @@ bool AggregateAA::isStorage(const std::string& name) const {
 std::string AggregateAA::storageCategory(const std::string& name) const {
     auto starts = [&](const char* prefix) { return name.rfind(prefix, 0) == 0; };
     // The samples path keeps the whole per-sample G-buffer (20 bytes per sample): it is storage.
-    // So is the accumulate path's per-sample material with a tolerance (16 bytes per sample).
+    // So is the accumulate path's per-sample material with a tolerance (12 bytes per sample).
     if (starts("agaa.visibility.") || starts("agaa.emissive") || starts("agaa.gbuffer.") ||
         starts("agaa.sampleMaterial"))
         return "per-sample";

@@ -225,17 +225,25 @@ TEST(AgaaGpu, AccumulationMatchesACpuReplayOfTheSameFragments) {
     agaa::test::expectNoValidationErrors(*device);
 }
 
+// The sRGB transfer function (IEC 61966-2-1) in double, linear [0, 1] to encoded.
+double srgbEncoded(double linear) {
+    const double x = std::clamp(linear, 0.0, 1.0);
+    return x <= 0.0031308 ? 12.92 * x : 1.055 * std::pow(x, 1.0 / 2.4) - 0.055;
+}
+
 // Issue 35: with a tolerance the accumulation kernel keeps each covered sample's material for the
 // shading rate (shared/sample_material.h). Every recorded fragment of the central window (the
 // stencil lets through the one fragment per sample the shipping pass wrote) must find its own
 // material, decoded on the CPU, in each of its covered samples' words: the normal within the
-// octahedral snorm16 step, the rest within a unorm16 step.
+// octahedral snorm16 step, the sRGB-encoded albedo and the metallic within an 8-bit step, the
+// roughness within a unorm16 step.
 TEST(AgaaGpu, SampleMaterialHoldsEachCoveredSamplesFragment) {
     auto device = agaa::test::makeValidatedDevice();
     agaa::test::FragmentRecordPass recorder(*device);
     constexpr uint32_t kRecordWords = 3 + shared::kQuantizedFields + 8;
-    constexpr double kNormalStep = 2e-4;         // octahedral snorm16: 2 / 32767 per axis, a few 1e-5 rad
-    constexpr double kUnorm16Step = 1.0 / 65535; // rounded to nearest: half a step, and a float's error
+    constexpr double kNormalStep = 2e-4; // octahedral snorm16: 2 / 32767 per axis, a few 1e-5 rad
+    // Rounded to nearest: half a step, and a float's error.
+    constexpr double kUnorm8Step = 1.0 / 255, kUnorm16Step = 1.0 / 65535;
     for (auto [sceneName, n, c] : {std::tuple{"furball", 8u, 2u}, std::tuple{"railings", 16u, 3u}}) {
         eng::scene::Scene scene = eng::scene::loadTestScene(sceneName);
         agaa::FrameRenderer renderer(*device, scene);
@@ -270,15 +278,13 @@ TEST(AgaaGpu, SampleMaterialHoldsEachCoveredSamplesFragment) {
                 for (int j = 0; j < 3; ++j)
                     normalError = std::max(normalError, std::abs(normal[j] - in[j]));
                 normalMisses += normalError > kNormalStep;
-                // albedo r, g, b, metallic, roughness (in[3] is the roughness, in[4..6] albedo, in[7]
-                // metallic)
-                using agaa::test::unorm16Low;
-                const double stored[5] = {unorm16Low(w[1]), unorm16Low(w[1] >> 16), unorm16Low(w[2]),
-                                          unorm16Low(w[2] >> 16), unorm16Low(w[3])};
-                const float recorded[5] = {in[4], in[5], in[6], in[7], in[3]};
-                for (int j = 0; j < 5; ++j)
-                    valueMisses +=
-                        std::abs(stored[j] - std::clamp(double(recorded[j]), 0.0, 1.0)) > kUnorm16Step;
+                // in[3] is the roughness, in[4..6] the albedo, in[7] the metallic.
+                auto byte = [&](int k) { return double((w[1] >> (8 * k)) & 0xFF) / 255.0; };
+                for (int k = 0; k < 3; ++k)
+                    valueMisses += std::abs(byte(k) - srgbEncoded(in[4 + k])) > kUnorm8Step;
+                valueMisses += std::abs(byte(3) - std::clamp(double(in[7]), 0.0, 1.0)) > kUnorm8Step;
+                valueMisses += std::abs(agaa::test::unorm16Low(w[2]) - std::clamp(double(in[3]), 0.0, 1.0)) >
+                               kUnorm16Step;
                 ++samples;
             }
         }

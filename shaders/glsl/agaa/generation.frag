@@ -106,6 +106,7 @@ layout(set = 0, binding = 7, std430) buffer SampleMaterials { uint sampleMateria
 
 #include "common/material.glsl"
 #include "common/octahedral.glsl"
+#include "common/srgb.glsl"
 
 // Centroid: a fragment that covers only some samples reads its attributes inside the triangle, as
 // the reference's per-sample G-buffer does (reference/gbuffer_inputs.glsl), never extrapolated to
@@ -221,8 +222,8 @@ void recordFragment(uvec2 pixel, uint pixelIndex, uint mask, AgQuantized f, Mate
 // between draws.
 void writeSampleMaterial(uint pixelIndex, uint mask, MaterialSample m) {
     uint words[kSampleMaterialWords] =
-        uint[](packSnorm2x16(encodeOctahedral(m.normal)), packUnorm2x16(m.albedo.rg),
-               packUnorm2x16(vec2(m.albedo.b, m.metallic)), packUnorm2x16(vec2(m.roughness, 0.0)));
+        uint[](packSnorm2x16(encodeOctahedral(m.normal)), packUnorm4x8(vec4(srgbEncode(m.albedo), m.metallic)),
+               packUnorm2x16(vec2(m.roughness, 0.0)));
     for (uint hw = 0u; hw < 4u; ++hw) {
         if ((mask & (1u << hw)) == 0u) continue;
         uint at = sampleMaterialWord(pixelIndex, agaa.shape.w, inLayer * 4u + hw);

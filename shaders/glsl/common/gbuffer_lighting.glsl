@@ -42,6 +42,7 @@
 #include "common/tile_culling.glsl"
 
 #if GBUFFER_SAMPLE_MATERIAL
+#include "common/srgb.glsl"
 #include "shared/sample_material.h"
 layout(set = 0, binding = 2) uniform sampler2DMSArray gDepth;
 layout(set = 0, binding = 3, std430) readonly buffer SampleMaterials { uint sampleMaterial[]; };
@@ -84,12 +85,12 @@ vec3 gbufferNormal(ivec2 pixel, uint s) {
 // Sample s's surface and emissive radiance.
 SurfaceInputs gbufferSurface(ivec2 pixel, uint s, out vec3 emissive) {
     uint at = sampleMaterialAt(pixel, s);
-    vec2 albedoBMetal = unpackUnorm2x16(sampleMaterial[at + 2u]);
+    vec4 albedoMetal = unpackUnorm4x8(sampleMaterial[at + 1u]);
     SurfaceInputs surface;
     surface.normal = decodeOctahedral(unpackSnorm2x16(sampleMaterial[at]));
-    surface.albedo = vec3(unpackUnorm2x16(sampleMaterial[at + 1u]), albedoBMetal.x);
-    surface.metallic = albedoBMetal.y;
-    surface.roughness = unpackUnorm2x16(sampleMaterial[at + 3u]).x;
+    surface.albedo = srgbDecode(albedoMetal.rgb);
+    surface.metallic = albedoMetal.a;
+    surface.roughness = unpackUnorm2x16(sampleMaterial[at + 2u]).x;
 #if GBUFFER_EMISSIVE_SAMPLES
     emissive = FETCH_SAMPLE(gEmissive, pixel, s).rgb;
 #else

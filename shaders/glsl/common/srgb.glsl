@@ -22,4 +22,15 @@ vec3 srgbEncode(vec3 linear) {
     vec3 curve = kSrgbScale * pow(x, vec3(kSrgbExponent)) - kSrgbOffset;
     return mix(curve, toe, lessThanEqual(x, vec3(kSrgbLinearCutoff)));
 }
+
+// The standard's inverse, encoded to linear, for values the shader stored encoded itself (AGAA's
+// kept per-sample material, shared/sample_material.h); an sRGB view decodes the G-buffer's.
+const float kSrgbEncodedCutoff = kSrgbLinearCutoff * kSrgbToeSlope; // 0.04045
+
+vec3 srgbDecode(vec3 encoded) {
+    vec3 x = clamp(encoded, 0.0, 1.0);
+    vec3 toe = x / kSrgbToeSlope;
+    vec3 curve = pow((x + kSrgbOffset) / kSrgbScale, vec3(1.0 / kSrgbExponent));
+    return mix(curve, toe, lessThanEqual(x, vec3(kSrgbEncodedCutoff)));
+}
 #endif

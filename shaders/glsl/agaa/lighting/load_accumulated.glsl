@@ -11,6 +11,7 @@ layout(set = 0, binding = 20, std430) readonly buffer SampleMaterials { uint sam
 layout(set = 0, binding = 10) uniform sampler2DMSArray emissiveSamples;
 #endif
 #include "common/octahedral.glsl"
+#include "common/srgb.glsl"
 #include "shared/sample_material.h"
 
 // The SGGX matrix is fixed point: its spread below the quantisation is rounding (aggregate.glsl).
@@ -23,12 +24,11 @@ void clearMaterialSums() {} // the AG-buffer already holds every sum
 
 SampleMaterial loadSampleMaterial(ivec2 pixel, uint s) {
     uint at = sampleMaterialWord(uint(pixel.y) * uint(frame.extent.x) + uint(pixel.x), kSamples, s);
-    vec2 albedoRg = unpackUnorm2x16(sampleMaterial[at + 1u]);
-    vec2 albedoBMetal = unpackUnorm2x16(sampleMaterial[at + 2u]);
+    vec4 albedoMetal = unpackUnorm4x8(sampleMaterial[at + 1u]);
     SampleMaterial m;
     m.normal = decodeOctahedral(unpackSnorm2x16(sampleMaterial[at]));
-    m.albedoMetal = vec4(albedoRg, albedoBMetal);
-    m.roughness = unpackUnorm2x16(sampleMaterial[at + 3u]).x;
+    m.albedoMetal = vec4(srgbDecode(albedoMetal.rgb), albedoMetal.a);
+    m.roughness = unpackUnorm2x16(sampleMaterial[at + 2u]).x;
     return m;
 }
 
