@@ -132,6 +132,11 @@ double srgbEncode(double linear) {
     const double x = std::clamp(linear, 0.0, 1.0);
     return x <= 0.0031308 ? 12.92 * x : 1.055 * std::pow(x, 1.0 / 2.4) - 0.055;
 }
+// Its inverse, from the standard's piecewise definition.
+double srgbDecode(double encoded) {
+    const double x = std::clamp(encoded, 0.0, 1.0);
+    return x <= 0.04045 ? x / 12.92 : std::pow((x + 0.055) / 1.055, 2.4);
+}
 double aces(double x) {
     x = std::clamp(x, 0.0, kMaxRadiance);
     return std::clamp(x * (2.51 * x + 0.03) / (x * (2.43 * x + 0.59) + 0.14), 0.0, 1.0);
@@ -477,6 +482,20 @@ std::vector<EdgeCase> shaderMathCases() {
             [x](const MathResult& r) {
                 const D3 want(srgbEncode(x), srgbEncode(x * 0.5), srgbEncode(x * 0.25));
                 return near3("encode(x)", glm::vec3(r.r0), want, 0.0, kSrgbTolerance);
+            });
+    // ---- sRGB decode (common/srgb.glsl): the accumulate path's kept albedo, an 8-bit code ----
+    // Every 8-bit code's value within float rounding of the exact curve (the sRGB view's decode of
+    // the G-buffer is exact to a float too); both sides of the toe's cutoff, and the clamp.
+    std::vector<float> codes = {0.04045f, 0.04046f, -1.0f, 2.0f, kInf, -kInf, kDenormal};
+    for (int i = 0; i <= 255; i += 3)
+        codes.push_back(float(i) / 255.0f);
+    for (int i : {10, 11, 254, 255})
+        codes.push_back(float(i) / 255.0f);
+    for (float x : codes)
+        add("srgbDecode x=" + fmt(x), {}, op(kOpSrgbDecode, glm::vec4(x, x * 0.5f, x * 0.25f, 0)),
+            [x](const MathResult& r) {
+                const D3 want(srgbDecode(x), srgbDecode(x * 0.5), srgbDecode(x * 0.25));
+                return near3("decode(x)", glm::vec3(r.r0), want, 1e-5, 1e-7);
             });
     add("toneMapAces NaN", {"kMaxRadiance"}, op(kOpToneMap, glm::vec4(kNaN, 0.5f, kNaN, 0)),
         [](const MathResult& r) -> std::string {

@@ -55,6 +55,7 @@ enum MathOp : uint32_t {
     kOpViewFootprint = 28,
     kOpBrdfFiltered = 29,
     kOpSrgbEncode = 30,
+    kOpSrgbDecode = 31,
 };
 
 struct EdgeCase {

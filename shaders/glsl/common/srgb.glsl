@@ -24,7 +24,8 @@ vec3 srgbEncode(vec3 linear) {
 }
 
 // The standard's inverse, encoded to linear, for values the shader stored encoded itself (AGAA's
-// kept per-sample material, shared/sample_material.h); an sRGB view decodes the G-buffer's.
+// kept per-sample material, shared/sample_material.h); an sRGB view decodes the G-buffer's. Its
+// CPU reference: tests/hard/shader_math_cases.cpp (srgbDecode, kOpSrgbDecode).
 const float kSrgbEncodedCutoff = kSrgbLinearCutoff * kSrgbToeSlope; // 0.04045
 
 vec3 srgbDecode(vec3 encoded) {

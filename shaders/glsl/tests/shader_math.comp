@@ -76,6 +76,7 @@ const uint kOpAggregateWidth = 25u; // direction a.xyz, screen covariance b.xyz 
 const uint kOpEnvironmentRoughness = 26u; // filtered alpha a.x, material alpha a.y -> r0.x
 const uint kOpBrdfFiltered = 29u; // as kOpBrdfAniso, spread e.w (evaluateBrdfAnisotropicFiltered) -> r0.xyz, r1.xyz
 const uint kOpSrgbEncode = 30u; // linear a.xyz -> r0.xyz (srgbEncode, the G-buffer albedo's store)
+const uint kOpSrgbDecode = 31u; // encoded a.xyz -> r0.xyz (srgbDecode, the kept material's albedo)
 const uint kOpCurvature = 21u;   // dN/dx a.xyz, dN/dy b.xyz, roughness c.x, max footprint c.y, boost c.z -> r0.x
 
 void main() {
@@ -172,6 +173,8 @@ void main() {
         r0.xyz = toneMapAces(k.a.xyz);
     } else if (op == kOpSrgbEncode) {
         r0.xyz = srgbEncode(k.a.xyz);
+    } else if (op == kOpSrgbDecode) {
+        r0.xyz = srgbDecode(k.a.xyz);
     } else if (op == kOpToksvig) {
         r0.x = toksvigLength(k.a.x, k.a.y, k.a.z, k.a.w);
     } else if (op == kOpFiltered) {
