@@ -124,7 +124,7 @@ struct KnownGap {
 // the shading rate flagged the pixels above the alias limit whose aggregates' mean normal lies in a
 // gap between their members' (kMeanNormalGap); it is now the reference's 0.0035. The accumulate
 // path's default tolerance is never (a tolerance costs it 12 bytes of kept material per sample):
-// with AGAA_QUALITY_TOLERANCE=100 it is 0.0034 (docs/decisions/shading-rate-estimate.md, step 6).
+// with AGAA_QUALITY_TOLERANCE=100 it is 0.0035 (docs/decisions/shading-rate-estimate.md, step 6).
 // (c = 2 and 4 on the samples path were 0.0209 until the float SGGX sums' rounding step,
 // kSggxFloatRoundingStep; now 0.0037.)
 constexpr std::array<KnownGap, 1> kDisplayGaps{{
