@@ -91,9 +91,10 @@ constexpr double kPerSampleAgreement = 1.0e-4;
 // per sample (shared/sample_material.h): the same pixel-rate material as the reference's G-buffer,
 // at the G-buffer's precision but for the roughness (16-bit unorm against a half float), at the
 // samples AGAA's own visibility prepass covered (as many per pixel as the reference's, counted).
-// Measured: 8.2e-5 on the V-grooves, 5.1e-4 on metal and 1.2e-3 on furball. On metal likely the
+// Measured: 8.2e-5 on the V-grooves, 5.1e-4 on metal and 1.2e-3 on furball. On metal it is the
 // reference's side: lavapipe decodes the G-buffer's sRGB albedo with a cubic polynomial, up to
-// 1.2e-3 off the curve (docs/decisions/shading-rate-estimate.md, step 6).
+// 1.2e-3 off the curve; decoded with that cubic, metal is at 8.2e-5 and the V-grooves at 0.
+// Furball's rest is not explained (docs/decisions/shading-rate-estimate.md, step 6).
 constexpr double kSampleMaterialAgreement = 2.5e-3;
 
 TEST(ShadingRate, ZeroIsTheReferenceAtTheSameSampleCountOnTheAccumulatePath) {
