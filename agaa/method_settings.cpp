@@ -245,7 +245,7 @@ std::vector<MethodOption> declareOptions() {
         "shadow-footprint", words(kShadowFootprintNames), "adaptive", "agaa*",
         "shadow taps along the aggregate's depth variance (statistics), at its own sample positions "
         "(samples), or along the variance and, where those taps disagree, at every one of its samples "
-        "(adaptive)",
+        "(adaptive; at n <= 5 + taps at every sample outright)",
         [](MethodSettings& s, const std::string& v) {
             s.effects.shadowFootprint = namedValue("--shadow-footprint", v, kShadowFootprintNames);
         },

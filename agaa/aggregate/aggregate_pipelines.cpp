@@ -31,6 +31,7 @@
 #include "shaders/agaa/lighting_shadow_comp.h"
 #include "shaders/agaa/scene_vert.h"
 #include "shaders/agaa/visibility_frag.h"
+#include "shared/shadow.h"
 
 #include <algorithm>
 #include <cmath>
@@ -50,7 +51,7 @@ std::string shortNumber(float v) {
     return text;
 }
 
-const char* shadowFootprintName(EffectSettings::ShadowFootprint footprint) {
+std::string shadowFootprintName(EffectSettings::ShadowFootprint footprint, uint32_t samples, uint32_t taps) {
     switch (footprint) {
     case EffectSettings::ShadowFootprint::Statistics:
         return " along the aggregate's depth-variance vector";
@@ -59,6 +60,11 @@ const char* shadowFootprintName(EffectSettings::ShadowFootprint footprint) {
     case EffectSettings::ShadowFootprint::Adaptive:
         break;
     }
+    // agaa/lighting/shadowed_lights.glsl shadowVisibilityFootprint: the test's taps against n.
+    const uint32_t testTaps = shared::kAdaptiveCornerTaps + taps;
+    if (samples <= testTaps)
+        return ", adaptive: at every one of the aggregate's samples (n = " + std::to_string(samples) +
+               ", no more than the penumbra test's " + std::to_string(testTaps) + " taps)";
     return " along the aggregate's depth-variance vector and at its footprint's corners, at every sample "
            "where they disagree";
 }
@@ -456,7 +462,8 @@ std::vector<VariantChoice> AggregateAA::variants() const {
         effectVariants(m_features, m_scene, m_settings.samples, m_settings.effects.shadowTaps);
     for (VariantChoice& choice : v)
         if (choice.effect == "shadows" && m_features.hasShadows())
-            choice.variant += shadowFootprintName(m_settings.effects.shadowFootprint);
+            choice.variant += shadowFootprintName(m_settings.effects.shadowFootprint, m_settings.samples,
+                                                  m_settings.effects.shadowTaps);
     const bool sggx = m_settings.ndf == AggregateNdf::Sggx;
     v.push_back({"normal-distribution", sggx ? "sggx, two-point tone-mapped resolve" : "toksvig",
                  m_requestedNdf != AggregateNdf::Auto

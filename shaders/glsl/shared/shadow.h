@@ -7,6 +7,11 @@ SHARED_BEGIN
 // One D32 layer of the shadow-map array per shadowed light (agaa/common/shadow_map.h).
 SHARED_CONST kMaxShadowMaps = 4u;
 
+// AGAA's adaptive shadow footprint (agaa/lighting/shadowed_lights.glsl): its penumbra test taps the
+// footprint's four corners and centre besides the kShadowTaps statistical taps. Where n is no more
+// than the test's taps, it taps every one of the aggregate's samples instead.
+SHARED_CONST kAdaptiveCornerTaps = 5u;
+
 // Written by the host with the frame (agaa/common/shadow_map.cpp), read by the shadow-map pass
 // (relativeToShadow) and by lighting (viewToShadow). Shadow clip space: x, y in [-1, 1], z in
 // [0, 1] with 0 nearest the light (standard depth: the map is cleared to 1, tested LESS).
