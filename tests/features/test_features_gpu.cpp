@@ -6,6 +6,7 @@
 #include "engine/io/metrics.h"
 #include "engine/io/tone_map.h"
 #include "gpu_test_support.h"
+#include "shared/shadow.h"
 #include "tools/harness/frame_renderer.h"
 #include "tools/scenes/adversarial_scenes.h"
 
@@ -558,6 +559,39 @@ TEST(FeaturesGpu, ToksvigNormalMipsDimTheHighlightOfMinifiedBumps) {
                                 << ": the flat smooth metal reflects the light near its mirror direction";
         EXPECT_LT(bumpy, 0.4f * smooth) << method << ": the pre-filtered normal length raised the roughness";
         EXPECT_TRUE(eng::io::allFinite(r.display)) << method;
+    }
+    agaa::test::expectNoValidationErrors(*device);
+}
+
+// Where n is no more than the adaptive footprint's penumbra test taps (5 + shadowTaps), no
+// aggregate has more samples than the test, and the adaptive footprint taps every one of them
+// outright (agaa/lighting/shadowed_lights.glsl): the image `samples` gives with as many taps as n,
+// bit for bit. Above it the test decides, and the two differ. Foliage under the sun: shadow edges
+// cross many of its aggregates.
+TEST(FeaturesGpu, AdaptiveShadowFootprintTapsEverySampleWhereNIsNoMoreThanItsTest) {
+    auto device = agaa::test::makeValidatedDevice();
+    Scene scene = eng::scene::loadTestScene("foliage");
+    agaa::FrameRenderer renderer(*device, scene);
+    for (auto [method, n] :
+         {std::pair{"agaa-samples", 8u}, std::pair{"agaa-accumulate", 4u}, std::pair{"agaa-samples", 16u}}) {
+        agaa::RenderResult adaptive = render(renderer, method, n, 64);
+        agaa::RenderRequest r;
+        r.method = method;
+        r.settings.samples = n;
+        r.settings.aggregates = 2;
+        r.settings.effects.shadowFootprint = agaa::EffectSettings::ShadowFootprint::Samples;
+        r.settings.effects.shadowTaps = std::min(n, 8u); // min(taps, k) = k: every sample at n <= 8
+        r.view.width = r.view.height = 64;
+        const agaa::RenderResult everySample = renderer.render(r);
+        const std::string variant = variantOf(adaptive, "shadows");
+        if (n <= shared::kAdaptiveCornerTaps + agaa::EffectSettings{}.shadowTaps) {
+            EXPECT_EQ(adaptive.hdr.rgba, everySample.hdr.rgba) << method << " n=" << n;
+            EXPECT_NE(variant.find("every one of the aggregate's samples"), std::string::npos) << variant;
+        } else {
+            EXPECT_NE(adaptive.hdr.rgba, everySample.hdr.rgba)
+                << method << " n=" << n << ": above the test's taps the test decides";
+            EXPECT_NE(variant.find("where they disagree"), std::string::npos) << variant;
+        }
     }
     agaa::test::expectNoValidationErrors(*device);
 }
