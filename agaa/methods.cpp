@@ -55,7 +55,7 @@ const std::vector<MethodInfo>& knownMethods() {
          "agaa with the accumulate path: visibility prepass + accumulation kernel into the AG-buffer",
          true,
          true,
-         {"aggregates"}},
+         {"aggregates", "shading-rate"}},
         {"agaa-samples",
          "agaa with the samples path: one per-sample G-buffer pass, aggregated at the top of each tile",
          true,

@@ -489,6 +489,15 @@ std::vector<VariantChoice> AggregateAA::variants() const {
                  samplesPath ? "samples: one G-buffer pass, aggregated at the top of each tile"
                              : "accumulate: visibility prepass + accumulation kernel",
                  m_generationCause});
+    v.push_back({"shading-rate",
+                 m_settings.tolerance < 0.0f ? std::string("one shading event per aggregate")
+                 : m_settings.tolerance == 0.0f || std::isinf(m_settings.aliasLimit)
+                     ? "per sample where the aggregates' normal spread over their sharpest lobe reaches " +
+                           shortNumber(m_settings.tolerance)
+                     : "per sample where the aggregates' normal spread over their sharpest lobe reaches " +
+                           shortNumber(m_settings.tolerance) + " and stays below " +
+                           shortNumber(m_settings.aliasLimit),
+                 m_toleranceCause});
     if (samplesPath) {
         v.push_back({"fill-shading",
                      m_settings.sampleRateShading ? "sample rate (supersampled materials)"
@@ -496,16 +505,6 @@ std::vector<VariantChoice> AggregateAA::variants() const {
                      "setting --sample-rate-shading"});
         v.push_back({"curvature-roughness", m_settings.curvatureRoughness ? "on" : "off",
                      "setting --curvature-roughness"});
-        v.push_back(
-            {"shading-rate",
-             m_settings.tolerance < 0.0f ? std::string("one shading event per aggregate")
-             : m_settings.tolerance == 0.0f || std::isinf(m_settings.aliasLimit)
-                 ? "per sample where the aggregates' normal spread over their sharpest lobe reaches " +
-                       shortNumber(m_settings.tolerance)
-                 : "per sample where the aggregates' normal spread over their sharpest lobe reaches " +
-                       shortNumber(m_settings.tolerance) + " and stays below " +
-                       shortNumber(m_settings.aliasLimit),
-             m_toleranceCause});
         v.push_back(
             {"clustering-distance",
              m_settings.distance == AggregateDistance::Plane ? "tangent-plane distance" : "Equation 1",

@@ -503,37 +503,45 @@ TEST(ShadingRate, TheAccumulatePathFlagsWhatACpuEstimateOfItsMaterialFlags) {
 }
 
 // --debug shading-rate: the flagged pixels red, the others grey. A pixel with more than c shading
-// events was shaded per sample, so it must be red; a grey one had at most c.
+// events was shaded per sample, so it must be red; a grey one had at most c. Both paths; the
+// variants say which rate each ran at.
 TEST(ShadingRate, TheDebugViewShowsTheFlaggedPixels) {
     auto device = agaa::test::makeValidatedDevice();
     eng::scene::Scene scene = eng::scene::loadTestScene("metal");
     agaa::FrameRenderer renderer(*device, scene);
-    agaa::RenderRequest r = withTolerance("agaa-samples", 8, 2, 100.0f);
-    r.settings.debug = "shading-rate";
-    const agaa::RenderResult view = renderer.render(r);
-    uint32_t red = 0, grey = 0;
-    for (size_t p = 0; p < view.shadingEvents.size(); ++p) {
-        const float* px = &view.display.rgba[4 * p];
-        const bool isRed = px[0] > px[1];
-        const bool isGrey = px[0] == px[1] && px[1] == px[2];
-        ASSERT_TRUE(isRed || isGrey) << "pixel " << p;
-        if (view.shadingEvents[p] > 2) {
-            EXPECT_TRUE(isRed) << "pixel " << p << ": shaded per sample, not red";
+    for (const char* method : {"agaa-samples", "agaa-accumulate"}) {
+        agaa::RenderRequest r = withTolerance(method, 8, 2, 100.0f);
+        r.settings.debug = "shading-rate";
+        const agaa::RenderResult view = renderer.render(r);
+        uint32_t red = 0, grey = 0;
+        for (size_t p = 0; p < view.shadingEvents.size(); ++p) {
+            const float* px = &view.display.rgba[4 * p];
+            const bool isRed = px[0] > px[1];
+            const bool isGrey = px[0] == px[1] && px[1] == px[2];
+            ASSERT_TRUE(isRed || isGrey) << method << " pixel " << p;
+            if (view.shadingEvents[p] > 2) {
+                EXPECT_TRUE(isRed) << method << " pixel " << p << ": shaded per sample, not red";
+            }
+            if (isGrey) {
+                EXPECT_LE(view.shadingEvents[p], 2u) << method << " pixel " << p;
+            }
+            (isRed ? red : grey) += 1;
         }
-        if (isGrey) {
-            EXPECT_LE(view.shadingEvents[p], 2u) << "pixel " << p;
-        }
-        (isRed ? red : grey) += 1;
+        EXPECT_GT(red, 0u) << method;
+        EXPECT_GT(grey, 0u) << method;
+        // The stats' share (FrameTargets::perSampleShaded) counts the same pixels.
+        ASSERT_TRUE(view.perSampleShading.has_value()) << method;
+        EXPECT_DOUBLE_EQ(view.perSampleShading->pixels, double(red) / double(view.shadingEvents.size()))
+            << method;
+        EXPECT_GT(view.perSampleShading->events, view.perSampleShading->pixels)
+            << method << ": a flagged pixel takes more events";
+        std::string rate;
+        for (const agaa::VariantChoice& v : view.variants)
+            if (v.effect == "shading-rate") rate = v.variant;
+        EXPECT_NE(rate.find("per sample where"), std::string::npos) << method << ": " << rate;
+        r.settings.agaaTolerance = -1.0f; // never: nothing to show
+        EXPECT_THROW(renderer.render(r), std::invalid_argument) << method;
     }
-    EXPECT_GT(red, 0u);
-    EXPECT_GT(grey, 0u);
-    // The stats' share (FrameTargets::perSampleShaded) counts the same pixels.
-    ASSERT_TRUE(view.perSampleShading.has_value());
-    EXPECT_DOUBLE_EQ(view.perSampleShading->pixels, double(red) / double(view.shadingEvents.size()));
-    EXPECT_GT(view.perSampleShading->events, view.perSampleShading->pixels)
-        << "a flagged pixel takes more events";
-    r.settings.agaaTolerance = -1.0f; // never: nothing to show
-    EXPECT_THROW(renderer.render(r), std::invalid_argument);
     agaa::test::expectNoValidationErrors(*device);
 }
 
