@@ -63,8 +63,9 @@ std::string shadowFootprintName(EffectSettings::ShadowFootprint footprint, uint3
     // agaa/lighting/shadowed_lights.glsl shadowVisibilityFootprint: the test's taps against n.
     const uint32_t testTaps = shared::kAdaptiveCornerTaps + taps;
     if (samples <= testTaps)
-        return ", adaptive: at every one of the aggregate's samples (n = " + std::to_string(samples) +
-               ", no more than the penumbra test's " + std::to_string(testTaps) + " taps)";
+        return ", none of them used at n = " + std::to_string(samples) +
+               ": adaptive taps every one of the aggregate's samples, no more than its penumbra test's " +
+               std::to_string(testTaps);
     return " along the aggregate's depth-variance vector and at its footprint's corners, at every sample "
            "where they disagree";
 }
