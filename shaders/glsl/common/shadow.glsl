@@ -121,6 +121,6 @@ float shadowVisibilityAggregateCorners(uint light, vec3 P, vec3 N, float sigma, 
     sum += shadowTap(layer, base + alongG - alongB);
     sum += shadowTap(layer, base - alongG + alongB);
     sum += shadowTap(layer, base - alongG - alongB);
-    return sum / 5.0;
+    return sum / float(kAdaptiveCornerTaps); // the five taps above (shared/shadow.h)
 }
 #endif

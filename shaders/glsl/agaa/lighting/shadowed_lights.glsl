@@ -61,7 +61,8 @@ float shadowVisibilityFootprint(uint light, Aggregate ag, float pixelSize) {
     // Adaptive, where no aggregate has more samples than the test has taps (n <= 9 at 4 taps):
     // every sample's own tap, the answer the test refines to, for fewer taps than the test and
     // none of its refinements. A constant branch (n is a specialisation constant). Measured at
-    // n = 8 on lavapipe: 4 to 8 ms less of the lighting pass on furball, default and metal, where
+    // n = 8 on lavapipe: 2 to 10 ms less of the lighting pass on foliage, furball, default and
+    // metal, where
     // the refinement, run by most SIMD groups for one aggregate on a shadow edge, cost them more
     // than the test (docs/decisions/shadow-footprint.md).
     if (kSamples <= kAdaptiveTestTaps) return shadowVisibilityAggregateEverySample(light, ag);
