@@ -209,6 +209,59 @@ void addMetalLattice(SubjectSink& sink, const glm::vec3& centre, const glm::vec2
     sink.addSubject("metal.brass", meshes[1], brass);
 }
 
+void addChainLink(SubjectSink& sink, const glm::vec3& centre, const glm::vec2& size, float mesh) {
+    const int steel = sink.material(plainMaterial("chainlink.steel", {0.86f, 0.87f, 0.88f}, 1.0f, 0.15f));
+    constexpr float kRadius = 0.004f;
+    // The weave's half height: the two families' axes are 2 x kWeave apart at a crossing, which
+    // leaves 2 mm between the wires' surfaces.
+    constexpr float kWeave = 1.25f * kRadius;
+    constexpr int kSegmentsPerCrossing = 6;
+    const float spacing = mesh / sink.density(); // denser fence, more wires
+    TubeOptions tube;
+    tube.sides = 8;
+    tube.capStart = true;
+    tube.capEnd = true;
+    MeshData wires;
+    const glm::vec2 half = 0.5f * size;
+    const float r2 = 0.70710678f; // 1 / sqrt(2)
+    // Family f runs along direction d = (1, s) / sqrt 2 (s = +1 or -1); a wire is the line
+    // a = dot(p, n) = i * spacing with n = (-s, 1) / sqrt 2, and its crossings with the other family
+    // fall every `spacing` along it, where z alternates sign with the crossing's parity.
+    for (int family = 0; family < 2; ++family) {
+        const float s = family == 0 ? 1.0f : -1.0f;
+        const glm::vec2 d(r2, s * r2), n(-s * r2, r2);
+        const float aMax = (half.x + half.y) * r2;
+        const int wiresPerSide = static_cast<int>(std::floor(aMax / spacing));
+        for (int i = -wiresPerSide; i <= wiresPerSide; ++i) {
+            const float a = static_cast<float>(i) * spacing;
+            // The wire's stretch inside the rectangle |x| <= half.x, |y| <= half.y, as t along d.
+            float t0 = -1e9f, t1 = 1e9f;
+            for (int axis = 0; axis < 2; ++axis) {
+                const float origin = a * n[axis];
+                const float lo = (-half[axis] - origin) / d[axis], hi = (half[axis] - origin) / d[axis];
+                t0 = std::max(t0, std::min(lo, hi));
+                t1 = std::min(t1, std::max(lo, hi));
+            }
+            if (t1 - t0 < spacing) continue;
+            const int segments =
+                std::max(2, static_cast<int>(std::ceil((t1 - t0) / spacing * kSegmentsPerCrossing)));
+            std::vector<glm::vec3> path(static_cast<size_t>(segments) + 1);
+            for (int k = 0; k <= segments; ++k) {
+                const float t = t0 + (t1 - t0) * static_cast<float>(k) / static_cast<float>(segments);
+                const glm::vec2 p = a * n + t * d;
+                // The other family's index at p is dot(p, n') / spacing with n' = (s, 1) / sqrt 2;
+                // family 1 is the mirror image so the wires meet over/under.
+                const float other = (s * p.x + p.y) * r2 / spacing;
+                const float phase = kPi * (other + static_cast<float>(i));
+                const float z = (family == 0 ? 1.0f : -1.0f) * kWeave * std::cos(phase);
+                path[static_cast<size_t>(k)] = centre + glm::vec3(p.x, p.y, z);
+            }
+            addTube(wires, path, std::vector<float>(path.size(), kRadius), tube);
+        }
+    }
+    sink.addSubject("chainlink.wires", wires, steel);
+}
+
 void addFoliage(SubjectSink& sink, const glm::vec3& base, float width, float height) {
     Prng& rng = sink.rng();
     const int bark = sink.material(plainMaterial("bark", {0.28f, 0.19f, 0.11f}, 0.0f, 0.9f));

@@ -58,6 +58,12 @@ void addMetalLattice(SubjectSink& sink, const glm::vec3& centre, const glm::vec2
 // evenly over the sphere (a Fibonacci lattice with a seeded jitter).
 void addSpikeBall(SubjectSink& sink, const glm::vec3& centre, float radius, int count);
 
+// A chain-link fence (issue 49: the content AGAA exists for): two families of woven wires at
+// +-45 degrees, `mesh` metres apart, 4 mm radius, galvanised steel (metallic 1, roughness 0.15),
+// spanning size.x by size.y in a plane facing +Z; each wire passes alternately over and under
+// the other family's at their crossings.
+void addChainLink(SubjectSink& sink, const glm::vec3& centre, const glm::vec2& size, float mesh);
+
 // Branching twigs carrying alpha-masked leaf cards, rising from base.
 void addFoliage(SubjectSink& sink, const glm::vec3& base, float width, float height);
 

@@ -16,7 +16,7 @@ constexpr float kYfov = 0.7f; // radians (40 degrees)
 constexpr float kAspect16x9 = 16.0f / 9.0f;
 constexpr int kPointLights = 16;
 
-enum class Kind { Furball, Metal, Foliage, Bamboo, Railings, Plane, Default, Spikes, GoldPoints };
+enum class Kind { Furball, Metal, Foliage, Bamboo, Railings, Plane, Default, Spikes, GoldPoints, ChainLink };
 
 struct KindName {
     Kind kind;
@@ -24,9 +24,10 @@ struct KindName {
 };
 
 constexpr KindName kKinds[] = {
-    {Kind::Furball, "furball"}, {Kind::Metal, "metal"},       {Kind::Foliage, "foliage"},
-    {Kind::Bamboo, "bamboo"},   {Kind::Railings, "railings"}, {Kind::Plane, "plane"},
-    {Kind::Default, "default"}, {Kind::Spikes, "spikes"},     {Kind::GoldPoints, "glints"},
+    {Kind::Furball, "furball"},     {Kind::Metal, "metal"},       {Kind::Foliage, "foliage"},
+    {Kind::Bamboo, "bamboo"},       {Kind::Railings, "railings"}, {Kind::Plane, "plane"},
+    {Kind::Default, "default"},     {Kind::Spikes, "spikes"},     {Kind::GoldPoints, "glints"},
+    {Kind::ChainLink, "chainlink"},
 };
 
 std::string knownList() {
@@ -183,6 +184,16 @@ Stage buildKind(Kind kind, SubjectSink& sink) {
         // The spike ball alone, in the dark: 6000 gold rods of 2.5 mm, roughness 0.02.
         addSpikeBall(sink, {0.0f, 0.0f, 0.0f}, 1.0f, 6000);
         stage.viewDir = {0.0f, -0.2f, -1.0f};
+        break;
+    case Kind::ChainLink:
+        // Issue 49's thin glossy metal: a chain-link fence of 4 mm steel wires 35 cm before a
+        // wall, under the sun and the 16 point lights.
+        stage.floorY = 0.0f;
+        stage.wallZ = -0.35f;
+        addFloor(sink, 0.0f, 3.0f, {0.2f, 0.2f, 0.21f});
+        addWall(sink, -0.35f, 3.0f, 0.0f, 2.5f, {0.3f, 0.29f, 0.27f});
+        addChainLink(sink, {0.0f, 0.65f, 0.0f}, {2.0f, 1.1f}, 0.06f);
+        stage.viewDir = {0.1f, -0.15f, -1.0f};
         break;
     case Kind::Default:
         // Railings in front, fur and foliage behind, all on one floor before a wall.

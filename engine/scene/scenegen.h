@@ -25,7 +25,7 @@ struct GenOptions {
 
 inline constexpr float kMaxDensity = 8.0f;
 
-// furball, metal, foliage, bamboo, railings, plane, default, spikes. The adversarial hard-* test
+// furball, metal, foliage, bamboo, railings, plane, default, spikes, glints, chainlink. The adversarial hard-* test
 // scenes live outside the package (tools/scenes/adversarial_scenes.h: loadTestScene).
 std::vector<std::string> sceneKinds();
 

@@ -184,6 +184,45 @@ TEST(Scenegen, UnknownKindAndBadDensityAreRefused) {
     EXPECT_THROW(generateScene("plane", {1, std::nanf("")}), SceneError) << "density NaN";
 }
 
+// Issue 49's content: thin glossy metal rods (4 mm, roughness 0.15, metallic 1) in front of a
+// wall, under a shadowed sun and 16 point lights; the wires woven, so that the two families never
+// interpenetrate (their axes 2.5 radii apart at every crossing).
+TEST(Scenegen, ChainLinkIsThinGlossyMetalWovenBeforeAWall) {
+    const Scene s = loadBuiltin("chainlink");
+    const Material* steel = nullptr;
+    bool wall = false;
+    for (const Material& m : s.materials) {
+        if (m.name == "chainlink.steel") steel = &m;
+        wall = wall || m.name == "wall";
+    }
+    ASSERT_NE(steel, nullptr) << "chainlink must have its steel material";
+    EXPECT_FLOAT_EQ(steel->metallicFactor, 1.0f);
+    EXPECT_FLOAT_EQ(steel->roughnessFactor, 0.15f);
+    EXPECT_TRUE(wall) << "the fence stands before a wall";
+    size_t suns = 0, points = 0;
+    for (const Light& l : s.lights) {
+        suns += l.type == LightType::Directional && l.castsShadows ? 1 : 0;
+        points += l.type == LightType::Point ? 1 : 0;
+    }
+    EXPECT_EQ(suns, 1u) << "one shadowed sun";
+    EXPECT_EQ(points, 16u) << "16 point lights";
+    // The wires' tubes: every vertex within a wire radius of the weave's surfaces |z| <= 1.25 r
+    // around the fence's plane z = 0, and both sides of it used (the weave alternates).
+    const tinygltf::Model model = generateScene("chainlink");
+    float zmin = 1e9f, zmax = -1e9f;
+    for (const tinygltf::Mesh& mesh : model.meshes) {
+        if (mesh.name.find("chainlink") == std::string::npos) continue;
+        for (const tinygltf::Primitive& p : mesh.primitives) {
+            const tinygltf::Accessor& a = model.accessors[static_cast<size_t>(p.attributes.at("POSITION"))];
+            zmin = std::min(zmin, static_cast<float>(a.minValues[2]));
+            zmax = std::max(zmax, static_cast<float>(a.maxValues[2]));
+        }
+    }
+    ASSERT_LT(zmin, zmax) << "the wires' mesh must be found";
+    EXPECT_NEAR(zmax, 2.25f * 0.004f, 2e-4f) << "weave 1.25 r plus the wire's radius";
+    EXPECT_NEAR(zmin, -2.25f * 0.004f, 2e-4f) << "weave 1.25 r plus the wire's radius";
+}
+
 TEST(Scenegen, FoliageUsesMaskedDoubleSidedLeafTexture) {
     const Scene s = loadBuiltin("foliage");
     const Material* leaf = nullptr;
