@@ -34,8 +34,8 @@ inline constexpr NamedValue<AggregateNdf> kAggregateNdfNames[] = {
 // Registers: each invocation shades its own pixel's aggregates (a SIMD group pays for its pixel
 // with the most aggregates); Compact: aggregate 0 of every pixel in registers, every further
 // aggregate of the tile appended to a list in shared memory and shaded with all lanes busy.
-// Auto: Compact for c >= 2 on GPUs, Registers on CPU devices (lavapipe), where the list's
-// barriers cost more than it saves (measured: agaa/aggregate/README.md, "Lighting schedule").
+// Auto: Compact for c >= 2 on every device, Registers at c = 1, where there is nothing to compact
+// (measured: docs/decisions/lighting-schedule.md).
 enum class AggregateShading : uint32_t { Registers = 0, Compact = 1, Auto = 2 };
 inline constexpr NamedValue<AggregateShading> kAggregateShadingNames[] = {
     {"auto", AggregateShading::Auto},

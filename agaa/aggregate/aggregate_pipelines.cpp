@@ -187,13 +187,12 @@ AggregateAA::AggregateAA(vk::Device& device, const eng::frame::GpuScene& scene,
         m_settings.subgroupReduction = fragmentSubgroups && caps.deviceType != VK_PHYSICAL_DEVICE_TYPE_CPU
                                            ? SubgroupReduction::On
                                            : SubgroupReduction::Off;
-    // Rule (agaa/aggregate/README.md, "Lighting schedule"): one aggregate per pixel has nothing
-    // to compact; on CPU devices (lavapipe) the list's barriers cost more than the idle lanes it
-    // saves (measured), so only GPUs compact.
+    // Rule (docs/decisions/lighting-schedule.md): one aggregate per pixel has nothing to
+    // compact; from c = 2 the list pays on lavapipe too (its SIMD groups of 8 otherwise shade a
+    // second aggregate wherever one lane has one), and a GPU's wider waves gain more.
     if (m_settings.shading == AggregateShading::Auto)
-        m_settings.shading = m_settings.aggregates >= 2 && caps.deviceType != VK_PHYSICAL_DEVICE_TYPE_CPU
-                                 ? AggregateShading::Compact
-                                 : AggregateShading::Registers;
+        m_settings.shading =
+            m_settings.aggregates >= 2 ? AggregateShading::Compact : AggregateShading::Registers;
 
     // A later step that throws (out of memory) takes what was made before it along.
     try {
@@ -481,10 +480,10 @@ std::vector<VariantChoice> AggregateAA::variants() const {
     v.push_back({"lighting-schedule",
                  compact ? "compacted per-tile list (aggregate 0 in registers)" : "registers (per pixel)",
                  m_requested.shading != AggregateShading::Auto ? std::string("setting --agaa-lighting")
-                 : m_settings.aggregates < 2                   ? std::string("c = 1: nothing to compact")
-                 : caps.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU
-                     ? std::string("CPU device: the list's barriers cost more than its idle lanes save")
-                     : std::string("GPU, c >= 2")});
+                 : m_settings.aggregates < 2
+                     ? std::string("c = 1: nothing to compact")
+                     : std::string("c >= 2: a SIMD group would otherwise shade a second aggregate wherever "
+                                   "one of its pixels has one")});
     const bool samplesPath = m_settings.generation == AggregateGeneration::Samples;
     v.push_back({"generation",
                  samplesPath ? "samples: one G-buffer pass, aggregated at the top of each tile"
