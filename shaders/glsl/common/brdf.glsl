@@ -91,18 +91,26 @@ float environmentAggregateRoughness(float alpha, float materialAlpha) {
 // lobe's bands fall as exp(-l(l+1) / 2 kappa), Han et al. 2007; A_1 = r fixes kappa), on top of
 // the exact clamped cosine: r = 1 is max(0, x) exactly, r = 0 the sphere's mean 1/4 up to the
 // bands above 6 (0.207 to 0.231). Clamped at 0: the truncated series dips below it near x = -1.
-float filteredClampedCosine(float x, float r) {
+// The lobe's band factors filteredClampedCosineBands reads, (r - 1, r^3 - 1, r^10 - 1, r^21 - 1)
+// times the bands' coefficients: what does not depend on the light, computed once per lobe.
+vec4 clampedCosineBandFactors(float r) {
+    float r3 = r * r * r;
+    float r10 = r3 * r3 * r3 * r;
+    float r21 = r10 * r10 * r;
+    return vec4(0.5 * (r - 1.0), 0.3125 * (r3 - 1.0), 0.09375 * (r10 - 1.0), 0.05078125 * (r21 - 1.0));
+}
+
+// filteredClampedCosine at x = N0.L from the lobe's clampedCosineBandFactors.
+float filteredClampedCosineBands(float x, vec4 k) {
     float x2 = x * x;
     float p2 = 1.5 * x2 - 0.5;
     float p4 = ((35.0 * x2 - 30.0) * x2 + 3.0) / 8.0;
     float p6 = (((231.0 * x2 - 315.0) * x2 + 105.0) * x2 - 5.0) / 16.0;
-    float r3 = r * r * r;
-    float r10 = r3 * r3 * r3 * r;
-    float r21 = r10 * r10 * r;
-    float bands = 0.5 * (r - 1.0) * x + 0.3125 * (r3 - 1.0) * p2 - 0.09375 * (r10 - 1.0) * p4 +
-                  0.05078125 * (r21 - 1.0) * p6;
+    float bands = k.x * x + k.y * p2 - k.z * p4 + k.w * p6;
     return max(max(x, 0.0) + bands, 0.0);
 }
+
+float filteredClampedCosine(float x, float r) { return filteredClampedCosineBands(x, clampedCosineBandFactors(r)); }
 
 // The lobe filteredClampedCosine reads from the mean of a set of unit normals: its direction and
 // its length r = |mean| in w (clamped to 1: fixed-point means can round above it). Normals that
@@ -142,21 +150,60 @@ vec3 specularFlake(vec3 F, vec3 N, vec3 T, vec3 B, float ax, float ay, vec3 V, v
     return F * (D / (4.0 * sigmaV)) * irradiance;
 }
 
-// evaluateBrdf for a Toksvig aggregate whose normals spread with mean length `spread` (1: one
-// normal, evaluateBrdf's value): the specular lobe is the caller's filtered roughness, the diffuse
-// filteredClampedCosine, which stays lit for lights below the mean normal's horizon that some of
-// the samples face. `specularOut` receives the specular part (AGAA's two-point resolve spreads
-// only that part over the aggregate's samples: agaa/lighting.comp).
-vec3 evaluateBrdfFilteredSplit(SurfaceInputs s, float spread, vec3 V, vec3 L, vec3 irradiance, out vec3 specularOut) {
+// An aggregate's isotropic filtered lobe seen from V: everything evaluateBrdfFilteredSplit needs
+// that does not depend on the light, computed once per shading event (DESIGN section 4, the cost
+// rule: the per-light work is the reference's evaluateBrdf with a filtered lobe). `spread` is the
+// mean length of the aggregate's normals (1: one normal); the surface's roughness is the caller's
+// filtered one.
+struct FilteredLobe {
+    vec3 f0;         // Schlick's reflectance at normal incidence
+    float alpha;     // GGX alpha, clamped to the BRDF's range
+    float a2;        // alpha^2
+    float NoV;       // max(N.V, kMinCosine)
+    float viewSmith; // sqrt(NoV^2 (1 - a2) + a2): the height-correlated visibility's view term
+    vec4 bands;      // clampedCosineBandFactors(spread)
+};
+
+FilteredLobe filteredLobe(SurfaceInputs s, float spread, vec3 V) {
+    FilteredLobe lobe;
+    lobe.f0 = mix(vec3(0.04), s.albedo, s.metallic);
+    lobe.alpha = clamp(s.roughness * s.roughness, kMinGgxAlpha, kMaxGgxAlpha);
+    lobe.a2 = lobe.alpha * lobe.alpha;
+    lobe.NoV = max(dot(s.normal, V), kMinCosine);
+    lobe.viewSmith = sqrt(lobe.NoV * lobe.NoV * (1.0 - lobe.a2) + lobe.a2);
+    lobe.bands = clampedCosineBandFactors(clamp(spread, 0.0, 1.0));
+    return lobe;
+}
+
+// evaluateBrdf for a Toksvig aggregate through its FilteredLobe: the specular lobe is the
+// caller's filtered roughness, the diffuse filteredClampedCosine, which stays lit for lights below
+// the mean normal's horizon that some of the samples face. `specularOut` receives the specular
+// part (AGAA's two-point resolve spreads only that part over the aggregate's samples). The same
+// operations as evaluateBrdf's per light, on the lobe's precomputed terms.
+vec3 evaluateFilteredLobe(SurfaceInputs s, FilteredLobe lobe, vec3 V, vec3 L, vec3 irradiance, out vec3 specularOut) {
     specularOut = vec3(0.0);
-    BrdfAngles g;
-    bool above = brdfAngles(s.normal, V, L, g);
-    vec3 F = surfaceFresnel(s, g.VoH);
-    vec3 diffuse = diffuseLobe(s, F) * irradiance * filteredClampedCosine(g.NoL, clamp(spread, 0.0, 1.0));
-    if (!above) return diffuse;
-    float alpha = clamp(s.roughness * s.roughness, kMinGgxAlpha, kMaxGgxAlpha);
-    specularOut = F * (ggxD(g.NoH, alpha) * smithVisibility(g.NoV, max(g.NoL, kMinCosine), alpha)) * irradiance * g.NoL;
+    float NoL = dot(s.normal, L);
+    vec3 Hraw = V + L;
+    // V = -L (light exactly behind the viewer's direction) makes H zero.
+    float hlen = length(Hraw);
+    vec3 H = hlen > kMinNormalLength ? Hraw / hlen : s.normal;
+    float NoH = clamp(dot(s.normal, H), 0.0, 1.0);
+    float VoH = clamp(dot(V, H), 0.0, 1.0);
+    vec3 F = lobe.f0 + (1.0 - lobe.f0) * pow(1.0 - VoH, 5.0); // fresnelSchlick
+    vec3 diffuse = diffuseLobe(s, F) * irradiance * filteredClampedCosineBands(NoL, lobe.bands);
+    if (NoL <= 0.0) return diffuse;
+    float f = (NoH * lobe.a2 - NoH) * NoH + 1.0; // ggxD: >= a2 > 0
+    float D = lobe.a2 / (kPi * f * f);
+    float NoLc = max(NoL, kMinCosine);
+    float gl = lobe.NoV * sqrt(NoLc * NoLc * (1.0 - lobe.a2) + lobe.a2);
+    float Vis = 0.5 / max(NoLc * lobe.viewSmith + gl, kMinCosine * kMinCosine); // smithVisibility
+    specularOut = F * (D * Vis) * irradiance * NoL;
     return diffuse + specularOut;
+}
+
+// evaluateFilteredLobe with the lobe made on the spot (one light).
+vec3 evaluateBrdfFilteredSplit(SurfaceInputs s, float spread, vec3 V, vec3 L, vec3 irradiance, out vec3 specularOut) {
+    return evaluateFilteredLobe(s, filteredLobe(s, spread, V), V, L, irradiance, specularOut);
 }
 
 // Anisotropic GGX (Burley 2012; Heitz 2014 for the height-correlated visibility), alphas ax

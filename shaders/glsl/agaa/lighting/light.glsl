@@ -16,14 +16,16 @@ Shading noShading() {
 // What step 3 gives each of the pixel's aggregates (module state, as aggregate.glsl's aggregates).
 Shading shaded[kMaxAggregates];
 
-void addLight(Aggregate ag, vec3 V, vec3 L, vec3 irradiance, inout vec3 radiance, inout vec3 specular,
-              inout vec3 specularSquares) {
+// `lobe`: the aggregate's Toksvig lobe seen from V (common/brdf.glsl filteredLobe), made once per
+// shading event; SGGX aggregates do not read it.
+void addLight(Aggregate ag, FilteredLobe lobe, vec3 V, vec3 L, vec3 irradiance, inout vec3 radiance,
+              inout vec3 specular, inout vec3 specularSquares) {
     vec3 spec;
     if (kSggx)
         radiance += evaluateBrdfAnisotropicFiltered(ag.surface, ag.tangent, ag.bitangent, ag.alphas.x,
                                                     ag.alphas.y, ag.spread, V, L, irradiance, spec);
     else
-        radiance += evaluateBrdfFilteredSplit(ag.surface, ag.spread, V, L, irradiance, spec);
+        radiance += evaluateFilteredLobe(ag.surface, lobe, V, L, irradiance, spec);
     specular += spec;
     specularSquares += spec * spec;
 }
@@ -36,16 +38,17 @@ void addLight(Aggregate ag, vec3 V, vec3 L, vec3 irradiance, inout vec3 radiance
 // draws halos: a GGX lobe's tails reach much further than the pixel's box. The specular's square
 // goes in once, for the average: the view directions' spread is the footprint's, not the lobe's
 // spike.
-void addLightFootprint(Aggregate ag, vec3 V, vec3 L, vec3 irradiance, float t, inout Shading shading) {
+void addLightFootprint(Aggregate ag, FilteredLobe lobe, vec3 V, vec3 L, vec3 irradiance, float t,
+                       inout Shading shading) {
     vec3 one = vec3(0.0), oneSpecular = vec3(0.0), unused = vec3(0.0);
-    addLight(ag, V, L, irradiance, one, oneSpecular, unused);
+    addLight(ag, lobe, V, L, irradiance, one, oneSpecular, unused);
     vec3 each = vec3(0.0), eachSpecular = vec3(0.0);
     uint count = 0u;
     for (uint s = 0u; s < kSamples; ++s) {
         float d = sampleDepth(ag.pixel, s);
         if (isSky(d) || sampleAggregate(s, ag.pixelIndex) != ag.id) continue;
-        vec3 Ps = sampleViewPosition(ag.pixel, s, d);
-        addLight(ag, normalize(-Ps), L, irradiance, each, eachSpecular, unused);
+        vec3 Vs = normalize(-sampleViewPosition(ag.pixel, s, d));
+        addLight(ag, filteredLobe(ag.surface, ag.spread, Vs), Vs, L, irradiance, each, eachSpecular, unused);
         ++count;
     }
     if (count > 0u) {
@@ -58,10 +61,10 @@ void addLightFootprint(Aggregate ag, vec3 V, vec3 L, vec3 irradiance, float t, i
 }
 
 // Light L's irradiance at the aggregate, through its lobe; viewWeight > 0 on near mirrors.
-void addAggregateLight(Aggregate ag, vec3 V, float viewWeight, vec3 L, vec3 irradiance,
+void addAggregateLight(Aggregate ag, FilteredLobe lobe, vec3 V, float viewWeight, vec3 L, vec3 irradiance,
                        inout Shading shading) {
     if (viewWeight > 0.0)
-        addLightFootprint(ag, V, L, irradiance, viewWeight, shading);
+        addLightFootprint(ag, lobe, V, L, irradiance, viewWeight, shading);
     else
-        addLight(ag, V, L, irradiance, shading.radiance, shading.specular, shading.specularSquares);
+        addLight(ag, lobe, V, L, irradiance, shading.radiance, shading.specular, shading.specularSquares);
 }

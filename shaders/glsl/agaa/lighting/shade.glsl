@@ -6,6 +6,8 @@ void shadeAggregate(Aggregate ag, OffLayer off, out Shading shading, out OffLaye
     shading = noShading();
     offShading = noOffLayerShading();
     vec3 V = normalize(-ag.position); // |P| >= znear > 0
+    // What the lights share: the lobe's Fresnel, alpha, view terms and diffuse band factors.
+    FilteredLobe lobe = filteredLobe(ag.surface, ag.spread, V);
     // Near mirrors: the view directions' spread over the footprint against the lobe (light.glsl
     // addLightFootprint).
     float theta = pixelFootprint(-ag.position.z, frame.extent, frame.projParams) / length(ag.position);
@@ -32,9 +34,9 @@ void shadeAggregate(Aggregate ag, OffLayer off, out Shading shading, out OffLaye
         }
         vec3 L, irradiance;
         if (!lightIncidence(lights[i], ag.position, L, irradiance)) continue;
-        addAggregateLight(ag, V, viewWeight, L, irradiance, shading);
+        addAggregateLight(ag, lobe, V, viewWeight, L, irradiance, shading);
     }
-    addShadowedLights(ag, off, V, viewWeight, shading, offShading);
+    addShadowedLights(ag, lobe, off, V, viewWeight, shading, offShading);
     // The spike ratio E[L^2] / E[L]^2 of the aggregate's samples (shared/sggx.h), once per event:
     // SGGX, alphas = (alphaT, alphaB) with the material alpha in surface.roughness; Toksvig,
     // alphas = (filtered alpha, material alpha), both axes alike.

@@ -77,8 +77,8 @@ float shadowVisibilityFootprint(uint light, Aggregate ag, float pixelSize) {
     return visibility;
 }
 
-void addShadowedLights(Aggregate ag, OffLayer off, vec3 V, float viewWeight, inout Shading shading,
-                       inout OffLayerShading offShading) {
+void addShadowedLights(Aggregate ag, FilteredLobe lobe, OffLayer off, vec3 V, float viewWeight,
+                       inout Shading shading, inout OffLayerShading offShading) {
     // The aggregate's footprint: depth standard deviation along the ray, one pixel across.
     float pixelSize = pixelFootprint(-ag.position.z, frame.extent, frame.projParams);
     for (uint i = nextTileShadowedLight(0u); i < kMaxLights; i = nextTileShadowedLight(i + 1u)) {
@@ -94,10 +94,10 @@ void addShadowedLights(Aggregate ag, OffLayer off, vec3 V, float viewWeight, ino
         vec3 L, irradiance;
         if (!lightIncidence(lights[i], ag.position, L, irradiance)) continue;
         irradiance *= shadowVisibilityFootprint(i, ag, pixelSize);
-        addAggregateLight(ag, V, viewWeight, L, irradiance, shading);
+        addAggregateLight(ag, lobe, V, viewWeight, L, irradiance, shading);
     }
 }
 #else
-void addShadowedLights(Aggregate ag, OffLayer off, vec3 V, float viewWeight, inout Shading shading,
-                       inout OffLayerShading offShading) {}
+void addShadowedLights(Aggregate ag, FilteredLobe lobe, OffLayer off, vec3 V, float viewWeight,
+                       inout Shading shading, inout OffLayerShading offShading) {}
 #endif
