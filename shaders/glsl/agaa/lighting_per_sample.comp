@@ -42,6 +42,21 @@ uvec2 flaggedTile() {
 // --debug shading-rate (AggregateDebugView::ShadingRate): this pass's pixels drawn in red.
 layout(constant_id = kSpecPerSampleShadingRateView) const uint kShadingRateView = 0u;
 
+// The tile's flagged pixels, compacted: their samples are shaded one per invocation, kListPixels
+// pixels a round, so every SIMD lane shades a flagged sample however few of the tile's pixels
+// were flagged (issue 49: with one invocation per pixel, a SIMD group of 8 paid n samples'
+// shading for its one flagged pixel, and chainlink's 10 % of pixels flagged cost 62 % of the
+// lighting pass's time). kTileSize^2 is a multiple of every n (4 to 32), so a round holds whole
+// pixels.
+const uint kTilePixels = kTileSize * kTileSize;
+const uint kListPixels = kTilePixels / kSampleCount;
+shared uint sFlaggedCount;
+shared uint sFlaggedPixel[kTilePixels]; // the tile-local index of each flagged pixel
+// One round's shading, by the invocation that shaded it: tone-mapped display, linear HDR and
+// whether the sample was covered (w).
+shared vec4 sSampleDisplay[kTilePixels];
+shared vec4 sSampleHdr[kTilePixels];
+
 void main() {
     ivec2 pixel = ivec2(flaggedTile() * kTileSize + gl_LocalInvocationID.xy);
     bool inside = all(lessThan(pixel, ivec2(frame.extent.xy)));
@@ -50,26 +65,48 @@ void main() {
     // The tile's lights, culled against the flagged pixels' depth bounds only.
     float tmin = 1e30, tmax = -1e30;
     if (flagged) gbufferDistanceRange(pixel, tmin, tmax);
-    tileBoundsBegin();
+    if (gl_LocalInvocationIndex == 0u) sFlaggedCount = 0u;
+    tileBoundsBegin(); // its barrier orders the count's reset before the appends
     tileBoundsAdd(tmin, tmax);
+    if (flagged) sFlaggedPixel[atomicAdd(sFlaggedCount, 1u)] = gl_LocalInvocationIndex;
     tileCullLights();
     barrier();
-    if (!flagged) return;
 
-    // The reference's resolve (reference/lighting.comp): every sample weighted 1/n, the sky's too.
-    float weight = 1.0 / float(kSampleCount);
-    vec3 display = vec3(0.0);
-    vec3 hdr = vec3(0.0);
-    uint events = 0u;
-    for (uint s = 0u; s < kSampleCount; ++s) {
-        vec3 radiance, toneMapped;
-        bool covered = shadeGBufferSample(pixel, s, radiance, toneMapped);
-        display += weight * toneMapped;
-        hdr += weight * radiance;
-        events += covered ? 1u : 0u;
+    // Rounds of kListPixels flagged pixels, n samples each: the count is the workgroup's, so
+    // every invocation runs the same rounds and reaches the same barriers.
+    uint flaggedCount = sFlaggedCount;
+    uint self = gl_LocalInvocationIndex;
+    for (uint first = 0u; first < flaggedCount; first += kListPixels) {
+        uint entry = first + self / kSampleCount;
+        if (entry < flaggedCount) {
+            uint local = sFlaggedPixel[entry];
+            ivec2 samplePixel = ivec2(flaggedTile() * kTileSize + uvec2(local % kTileSize, local / kTileSize));
+            vec3 radiance, toneMapped;
+            bool covered = shadeGBufferSample(samplePixel, self % kSampleCount, radiance, toneMapped);
+            sSampleDisplay[self] = vec4(toneMapped, covered ? 1.0 : 0.0);
+            sSampleHdr[self] = vec4(radiance, 0.0);
+        }
+        barrier();
+        // The reference's resolve (reference/lighting.comp): every sample weighted 1/n, the
+        // sky's too, summed in sample order.
+        if (self < kListPixels && first + self < flaggedCount) {
+            uint local = sFlaggedPixel[first + self];
+            ivec2 target = ivec2(flaggedTile() * kTileSize + uvec2(local % kTileSize, local / kTileSize));
+            float weight = 1.0 / float(kSampleCount);
+            vec3 display = vec3(0.0);
+            vec3 hdr = vec3(0.0);
+            uint events = 0u;
+            for (uint s = 0u; s < kSampleCount; ++s) {
+                vec4 d = sSampleDisplay[self * kSampleCount + s];
+                display += weight * d.rgb;
+                hdr += weight * sSampleHdr[self * kSampleCount + s].rgb;
+                events += d.w != 0.0 ? 1u : 0u;
+            }
+            if (kShadingRateView != 0u) display = shadingRateView(display, true);
+            imageStore(outHdr, target, vec4(hdr, 1.0));
+            imageStore(outDisplay, target, vec4(display, 1.0));
+            imageStore(outShadingEvents, target, uvec4(events));
+        }
+        barrier(); // the next round overwrites the samples' shading
     }
-    if (kShadingRateView != 0u) display = shadingRateView(display, true);
-    imageStore(outHdr, pixel, vec4(hdr, 1.0));
-    imageStore(outDisplay, pixel, vec4(display, 1.0));
-    imageStore(outShadingEvents, pixel, uvec4(events));
 }
