@@ -142,11 +142,13 @@ float flakeWeight(float spread) { return clamp((1.0 - spread) / kFlakeSpreadRang
 // lifted metal (c = 1 -17.5 % to -11.8 %) but doubled foliage's display error (c = 2 0.06x to
 // 0.11x no-AA) and put goal P8 at 1.12x: an isotropic lobe as wide as a tube's spread lights a
 // strand's or a leaf's edge from every side.
-vec3 specularFlake(vec3 F, vec3 N, vec3 T, vec3 B, float ax, float ay, vec3 V, vec3 H, vec3 irradiance) {
+// piAxAy = kPi ax ay and sigmaV = sigma(V) come from the lobe (anisotropicLobe): they do not
+// depend on the light.
+vec3 specularFlake(vec3 F, vec3 N, vec3 T, vec3 B, float ax, float ay, float piAxAy, float sigmaV, vec3 H,
+                   vec3 irradiance) {
     vec3 h = vec3(dot(T, H) / ax, dot(B, H) / ay, dot(N, H));
     float q = dot(h, h);
-    float D = 1.0 / (kPi * ax * ay * q * q);
-    float sigmaV = length(vec3(ax * dot(T, V), ay * dot(B, V), dot(N, V)));
+    float D = 1.0 / (piAxAy * q * q);
     return F * (D / (4.0 * sigmaV)) * irradiance;
 }
 
@@ -217,12 +219,6 @@ float ggxDAnisotropic(float ToH, float BoH, float NoH, float ax, float ay) {
     return a2 * w2 * w2 / kPi;
 }
 
-float smithVisibilityAnisotropic(vec2 v, float NoV, vec2 l, float NoL, float ax, float ay) {
-    float gv = NoL * length(vec3(ax * v.x, ay * v.y, NoV));
-    float gl = NoV * length(vec3(ax * l.x, ay * l.y, NoL));
-    return 0.5 / max(gv + gl, kMinCosine * kMinCosine);
-}
-
 // X's components along T and B, rescaled so that with the clamped cosine NoX the three form a
 // unit vector (an unclamped negative cosine would otherwise leave |(ToX, BoX)| > sqrt(1 - NoX^2)).
 vec2 tangentComponents(vec3 X, vec3 T, vec3 B, float NoX) {
@@ -231,30 +227,76 @@ vec2 tangentComponents(vec3 X, vec3 T, vec3 B, float NoX) {
     return l > kMinNormalLength ? p * (sqrt(max(1.0 - NoX * NoX, 0.0)) / l) : vec2(0.0);
 }
 
-// As evaluateBrdfFilteredSplit, anisotropic (SGGX aggregates); `spread` as there. The specular
-// blends the microfacet form into the microflake one (specularFlake) by flakeWeight(spread).
-vec3 evaluateBrdfAnisotropicFiltered(SurfaceInputs s, vec3 T, vec3 B, float ax, float ay, float spread, vec3 V,
-                                     vec3 L, vec3 irradiance, out vec3 specularOut) {
+// An SGGX aggregate's anisotropic lobe seen from V: what evaluateAnisotropicLobe needs that does
+// not depend on the light, made once per shading event (DESIGN section 4, the cost rule). T and B
+// are the lobe's axes, ax and ay its alphas (clamped here to the BRDF's range), `spread` as
+// evaluateBrdfFilteredSplit's.
+struct AnisotropicLobe {
+    vec3 f0;         // Schlick's reflectance at normal incidence
+    float ax, ay;    // clamped alphas
+    float NoV;       // max(N.V, kMinCosine)
+    float viewSmith; // |(ax T.V, ay B.V, N.V)| with V's tangent components rescaled: the visibility's view term
+    float flake;     // flakeWeight(spread)
+    float sigmaV;    // the microflake lobe's projected area towards V (specularFlake)
+    float piAxAy;    // kPi ax ay, the microflake D's constant
+    vec4 bands;      // clampedCosineBandFactors(spread)
+};
+
+AnisotropicLobe anisotropicLobe(SurfaceInputs s, vec3 T, vec3 B, float ax, float ay, float spread, vec3 V) {
+    AnisotropicLobe lobe;
+    lobe.f0 = mix(vec3(0.04), s.albedo, s.metallic);
+    lobe.ax = clamp(ax, kMinGgxAlpha, kMaxGgxAlpha);
+    lobe.ay = clamp(ay, kMinGgxAlpha, kMaxGgxAlpha);
+    lobe.NoV = max(dot(s.normal, V), kMinCosine);
+    vec2 v = tangentComponents(V, T, B, lobe.NoV);
+    lobe.viewSmith = length(vec3(lobe.ax * v.x, lobe.ay * v.y, lobe.NoV));
+    lobe.flake = flakeWeight(spread);
+    lobe.sigmaV = length(vec3(lobe.ax * dot(T, V), lobe.ay * dot(B, V), dot(s.normal, V)));
+    lobe.piAxAy = kPi * lobe.ax * lobe.ay;
+    lobe.bands = clampedCosineBandFactors(clamp(spread, 0.0, 1.0));
+    return lobe;
+}
+
+// As evaluateFilteredLobe, anisotropic (SGGX aggregates), through the lobe anisotropicLobe made:
+// the specular blends the microfacet form into the microflake one (specularFlake) by the lobe's
+// flake weight. The same operations as evaluateBrdfAnisotropicFiltered's per light.
+vec3 evaluateAnisotropicLobe(SurfaceInputs s, AnisotropicLobe lobe, vec3 T, vec3 B, vec3 V, vec3 L, vec3 irradiance,
+                             out vec3 specularOut) {
     specularOut = vec3(0.0);
-    BrdfAngles g;
-    bool above = brdfAngles(s.normal, V, L, g);
-    vec3 F = surfaceFresnel(s, g.VoH);
-    vec3 diffuse = diffuseLobe(s, F) * irradiance * filteredClampedCosine(g.NoL, clamp(spread, 0.0, 1.0));
-    ax = clamp(ax, kMinGgxAlpha, kMaxGgxAlpha);
-    ay = clamp(ay, kMinGgxAlpha, kMaxGgxAlpha);
-    float flake = flakeWeight(spread);
-    vec3 flakeSpecular = flake > 0.0 ? flake * specularFlake(F, s.normal, T, B, ax, ay, V, g.H, irradiance) : vec3(0.0);
-    if (!above) {
+    float NoL = dot(s.normal, L);
+    vec3 Hraw = V + L;
+    // V = -L (light exactly behind the viewer's direction) makes H zero.
+    float hlen = length(Hraw);
+    vec3 H = hlen > kMinNormalLength ? Hraw / hlen : s.normal;
+    float NoH = clamp(dot(s.normal, H), 0.0, 1.0);
+    float VoH = clamp(dot(V, H), 0.0, 1.0);
+    vec3 F = lobe.f0 + (1.0 - lobe.f0) * pow(1.0 - VoH, 5.0); // fresnelSchlick
+    vec3 diffuse = diffuseLobe(s, F) * irradiance * filteredClampedCosineBands(NoL, lobe.bands);
+    vec3 flakeSpecular =
+        lobe.flake > 0.0
+            ? lobe.flake * specularFlake(F, s.normal, T, B, lobe.ax, lobe.ay, lobe.piAxAy, lobe.sigmaV, H, irradiance)
+            : vec3(0.0);
+    if (NoL <= 0.0) {
         specularOut = flakeSpecular;
         return diffuse + flakeSpecular;
     }
-    float NoLc = max(g.NoL, kMinCosine);
-    vec2 h = tangentComponents(g.H, T, B, g.NoH);
-    float D = ggxDAnisotropic(h.x, h.y, g.NoH, ax, ay);
-    float Vis = smithVisibilityAnisotropic(tangentComponents(V, T, B, g.NoV), g.NoV, tangentComponents(L, T, B, NoLc),
-                                           NoLc, ax, ay);
-    specularOut = (1.0 - flake) * F * (D * Vis) * irradiance * g.NoL + flakeSpecular;
+    float NoLc = max(NoL, kMinCosine);
+    vec2 h = tangentComponents(H, T, B, NoH);
+    float D = ggxDAnisotropic(h.x, h.y, NoH, lobe.ax, lobe.ay);
+    vec2 l = tangentComponents(L, T, B, NoLc);
+    float gl = lobe.NoV * length(vec3(lobe.ax * l.x, lobe.ay * l.y, NoLc));
+    // Height-correlated Smith visibility, anisotropic (Heitz 2014): the view's term from the lobe.
+    float Vis = 0.5 / max(NoLc * lobe.viewSmith + gl, kMinCosine * kMinCosine);
+    specularOut = (1.0 - lobe.flake) * F * (D * Vis) * irradiance * NoL + flakeSpecular;
     return diffuse + specularOut;
+}
+
+// As evaluateBrdfFilteredSplit, anisotropic (SGGX aggregates); `spread` as there: the lobe made on
+// the spot (one light).
+vec3 evaluateBrdfAnisotropicFiltered(SurfaceInputs s, vec3 T, vec3 B, float ax, float ay, float spread, vec3 V,
+                                     vec3 L, vec3 irradiance, out vec3 specularOut) {
+    return evaluateAnisotropicLobe(s, anisotropicLobe(s, T, B, ax, ay, spread, V), T, B, V, L, irradiance,
+                                   specularOut);
 }
 
 // As evaluateBrdf, anisotropic: one normal.

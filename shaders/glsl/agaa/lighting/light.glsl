@@ -16,16 +16,29 @@ Shading noShading() {
 // What step 3 gives each of the pixel's aggregates (module state, as aggregate.glsl's aggregates).
 Shading shaded[kMaxAggregates];
 
-// `lobe`: the aggregate's Toksvig lobe seen from V (common/brdf.glsl filteredLobe), made once per
-// shading event; SGGX aggregates do not read it.
-void addLight(Aggregate ag, FilteredLobe lobe, vec3 V, vec3 L, vec3 irradiance, inout vec3 radiance,
+// The aggregate's lobe seen from V (common/brdf.glsl): what its lights share, made once per
+// shading event. kSggx picks which one is made; the other is left unset and compiled away.
+struct AggregateLobe {
+    FilteredLobe toksvig;
+    AnisotropicLobe sggx;
+};
+
+AggregateLobe aggregateLobe(Aggregate ag, vec3 V) {
+    AggregateLobe lobe;
+    if (kSggx)
+        lobe.sggx = anisotropicLobe(ag.surface, ag.tangent, ag.bitangent, ag.alphas.x, ag.alphas.y, ag.spread, V);
+    else
+        lobe.toksvig = filteredLobe(ag.surface, ag.spread, V);
+    return lobe;
+}
+
+void addLight(Aggregate ag, AggregateLobe lobe, vec3 V, vec3 L, vec3 irradiance, inout vec3 radiance,
               inout vec3 specular, inout vec3 specularSquares) {
     vec3 spec;
     if (kSggx)
-        radiance += evaluateBrdfAnisotropicFiltered(ag.surface, ag.tangent, ag.bitangent, ag.alphas.x,
-                                                    ag.alphas.y, ag.spread, V, L, irradiance, spec);
+        radiance += evaluateAnisotropicLobe(ag.surface, lobe.sggx, ag.tangent, ag.bitangent, V, L, irradiance, spec);
     else
-        radiance += evaluateFilteredLobe(ag.surface, lobe, V, L, irradiance, spec);
+        radiance += evaluateFilteredLobe(ag.surface, lobe.toksvig, V, L, irradiance, spec);
     specular += spec;
     specularSquares += spec * spec;
 }
@@ -38,7 +51,7 @@ void addLight(Aggregate ag, FilteredLobe lobe, vec3 V, vec3 L, vec3 irradiance, 
 // draws halos: a GGX lobe's tails reach much further than the pixel's box. The specular's square
 // goes in once, for the average: the view directions' spread is the footprint's, not the lobe's
 // spike.
-void addLightFootprint(Aggregate ag, FilteredLobe lobe, vec3 V, vec3 L, vec3 irradiance, float t,
+void addLightFootprint(Aggregate ag, AggregateLobe lobe, vec3 V, vec3 L, vec3 irradiance, float t,
                        inout Shading shading) {
     vec3 one = vec3(0.0), oneSpecular = vec3(0.0), unused = vec3(0.0);
     addLight(ag, lobe, V, L, irradiance, one, oneSpecular, unused);
@@ -48,7 +61,7 @@ void addLightFootprint(Aggregate ag, FilteredLobe lobe, vec3 V, vec3 L, vec3 irr
         float d = sampleDepth(ag.pixel, s);
         if (isSky(d) || sampleAggregate(s, ag.pixelIndex) != ag.id) continue;
         vec3 Vs = normalize(-sampleViewPosition(ag.pixel, s, d));
-        addLight(ag, filteredLobe(ag.surface, ag.spread, Vs), Vs, L, irradiance, each, eachSpecular, unused);
+        addLight(ag, aggregateLobe(ag, Vs), Vs, L, irradiance, each, eachSpecular, unused);
         ++count;
     }
     if (count > 0u) {
@@ -61,7 +74,7 @@ void addLightFootprint(Aggregate ag, FilteredLobe lobe, vec3 V, vec3 L, vec3 irr
 }
 
 // Light L's irradiance at the aggregate, through its lobe; viewWeight > 0 on near mirrors.
-void addAggregateLight(Aggregate ag, FilteredLobe lobe, vec3 V, float viewWeight, vec3 L, vec3 irradiance,
+void addAggregateLight(Aggregate ag, AggregateLobe lobe, vec3 V, float viewWeight, vec3 L, vec3 irradiance,
                        inout Shading shading) {
     if (viewWeight > 0.0)
         addLightFootprint(ag, lobe, V, L, irradiance, viewWeight, shading);

@@ -7,7 +7,7 @@ void shadeAggregate(Aggregate ag, OffLayer off, out Shading shading, out OffLaye
     offShading = noOffLayerShading();
     vec3 V = normalize(-ag.position); // |P| >= znear > 0
     // What the lights share: the lobe's Fresnel, alpha, view terms and diffuse band factors.
-    FilteredLobe lobe = filteredLobe(ag.surface, ag.spread, V);
+    AggregateLobe lobe = aggregateLobe(ag, V);
     // Near mirrors: the view directions' spread over the footprint against the lobe (light.glsl
     // addLightFootprint).
     float theta = pixelFootprint(-ag.position.z, frame.extent, frame.projParams) / length(ag.position);

@@ -77,7 +77,7 @@ float shadowVisibilityFootprint(uint light, Aggregate ag, float pixelSize) {
     return visibility;
 }
 
-void addShadowedLights(Aggregate ag, FilteredLobe lobe, OffLayer off, vec3 V, float viewWeight,
+void addShadowedLights(Aggregate ag, AggregateLobe lobe, OffLayer off, vec3 V, float viewWeight,
                        inout Shading shading, inout OffLayerShading offShading) {
     // The aggregate's footprint: depth standard deviation along the ray, one pixel across.
     float pixelSize = pixelFootprint(-ag.position.z, frame.extent, frame.projParams);
@@ -98,6 +98,6 @@ void addShadowedLights(Aggregate ag, FilteredLobe lobe, OffLayer off, vec3 V, fl
     }
 }
 #else
-void addShadowedLights(Aggregate ag, FilteredLobe lobe, OffLayer off, vec3 V, float viewWeight,
+void addShadowedLights(Aggregate ag, AggregateLobe lobe, OffLayer off, vec3 V, float viewWeight,
                        inout Shading shading, inout OffLayerShading offShading) {}
 #endif
