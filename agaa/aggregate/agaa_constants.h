@@ -24,9 +24,11 @@ inline constexpr NamedValue<AggregatePosition> kAggregatePositionNames[] = {
 // How an aggregate's normals are filtered (shared/agaa.h layouts, same 24 bytes each): the
 // isotropic Toksvig vector of paper section 3.5.2, or the anisotropic SGGX matrix (shared/sggx.h,
 // the paper's choice for thin glossy rods) with the two-point tone-mapped resolve.
-// Auto: SGGX where glossy metals are at least half of the drawn materials
-// (eng::scene::SceneFeatures::glossyMetalsDominate), Toksvig elsewhere (its mean shading normal
-// and first moment light diffuse aggregates better: measured in README, issue 14).
+// Auto: SGGX where glossy metals that are not near mirrors are at least half of the drawn
+// materials (eng::scene::SceneFeatures::anisotropicMetalsDominate), Toksvig elsewhere: its mean
+// shading normal and first moment light diffuse aggregates better (issue 14), and on near mirrors
+// SGGX bought no accuracy the converged truth could see at twice the lighting time
+// (docs/decisions/ndf-auto.md, issue 49).
 enum class AggregateNdf : uint32_t { Toksvig = 0, Sggx = 1, Auto = 2 };
 inline constexpr NamedValue<AggregateNdf> kAggregateNdfNames[] = {
     {"auto", AggregateNdf::Auto}, {"sggx", AggregateNdf::Sggx}, {"toksvig", AggregateNdf::Toksvig}};

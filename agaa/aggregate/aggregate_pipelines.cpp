@@ -138,7 +138,7 @@ AggregateAA::AggregateAA(vk::Device& device, const eng::frame::GpuScene& scene,
     validate(settings);
     checkProgramOverrides(settings.programs);
     if (m_settings.ndf == AggregateNdf::Auto)
-        m_settings.ndf = m_features.glossyMetalsDominate() ? AggregateNdf::Sggx : AggregateNdf::Toksvig;
+        m_settings.ndf = m_features.anisotropicMetalsDominate() ? AggregateNdf::Sggx : AggregateNdf::Toksvig;
     m_shadow = std::make_unique<ShadowMapPass>(device, scene, m_features, settings.effects, "agaa");
     const vk::Capabilities& caps = device.caps();
     if (!caps.supportsSamples(4))
@@ -468,8 +468,11 @@ std::vector<VariantChoice> AggregateAA::variants() const {
     v.push_back({"normal-distribution", sggx ? "sggx, two-point tone-mapped resolve" : "toksvig",
                  m_requestedNdf != AggregateNdf::Auto
                      ? std::string("setting --agaa-ndf")
-                     : std::to_string(m_features.glossyMetalMaterials) + " of " +
-                           std::to_string(m_features.drawnMaterials) + " drawn materials glossy metal"});
+                     : std::to_string(m_features.anisotropicMetalMaterials) + " of " +
+                           std::to_string(m_features.drawnMaterials) +
+                           " drawn materials glossy metal at roughness 0.1 to 0.4 (SGGX from half of them: "
+                           "on near mirrors and mixed scenes it measured no more accurate, at twice the "
+                           "lighting time)"});
     v.push_back({"near-mirror-view-footprint", m_features.hasNearMirrors() ? "on" : "off",
                  m_features.forced ? std::string("forced")
                                    : std::to_string(m_features.nearMirrorMaterials) + " of " +

@@ -54,10 +54,13 @@ SceneFeatures deriveSceneFeatures(const Scene& scene) {
                 ++f.transformedMaterials;
                 break;
             }
-        if (mat.metallicFactor >= kGlossyMetallic && mat.roughnessFactor <= kGlossyRoughness)
-            ++f.glossyMetalMaterials;
-        if (mat.roughnessFactor < kNearMirrorRoughness || mat.metallicRoughnessTexture >= 0)
-            ++f.nearMirrorMaterials;
+        const bool glossyMetal =
+            mat.metallicFactor >= kGlossyMetallic && mat.roughnessFactor <= kGlossyRoughness;
+        const bool nearMirror =
+            mat.roughnessFactor < kNearMirrorRoughness || mat.metallicRoughnessTexture >= 0;
+        if (glossyMetal) ++f.glossyMetalMaterials;
+        if (glossyMetal && !nearMirror) ++f.anisotropicMetalMaterials;
+        if (nearMirror) ++f.nearMirrorMaterials;
     }
     return f;
 }
