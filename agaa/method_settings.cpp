@@ -141,15 +141,14 @@ std::vector<MethodOption> declareOptions() {
     o.push_back(choice(
         "agaa-ndf", words(kAggregateNdfNames), "auto", "agaa*",
         "the normal distribution per aggregate: anisotropic SGGX with the two-point tone-mapped resolve, "
-        "or the paper's isotropic Toksvig; auto: SGGX when glossy metals are at least half of the drawn "
-        "materials, else Toksvig",
+        "or the paper's isotropic Toksvig; auto: SGGX when glossy metals that are not near mirrors "
+        "(roughness 0.1 to 0.4) are at least half of the drawn materials, else Toksvig",
         [](MethodSettings& s, const std::string& v) { s.ndf = v; },
         [](const MethodSettings& s) { return s.ndf; }));
     o.push_back(choice(
         "agaa-lighting", words(kAggregateShadingNames), "auto", "agaa*",
         "the lighting schedule: a tile's further aggregates packed into a shared-memory list (compact), "
-        "or each pixel shading its own (registers); auto: compact for c >= 2 on GPUs, registers on CPU "
-        "devices such as lavapipe",
+        "or each pixel shading its own (registers); auto: compact for c >= 2, registers at c = 1",
         [](MethodSettings& s, const std::string& v) { s.agaaLighting = v; },
         [](const MethodSettings& s) { return s.agaaLighting; }));
     o.push_back(choice(
