@@ -25,8 +25,8 @@ struct GenOptions {
 
 inline constexpr float kMaxDensity = 8.0f;
 
-// furball, metal, foliage, bamboo, railings, plane, default, spikes, glints, chainlink. The adversarial hard-* test
-// scenes live outside the package (tools/scenes/adversarial_scenes.h: loadTestScene).
+// furball, metal, foliage, bamboo, railings, plane, default, spikes, glints, chainlink. The adversarial
+// hard-* test scenes live outside the package (tools/scenes/adversarial_scenes.h: loadTestScene).
 std::vector<std::string> sceneKinds();
 
 // Throws SceneError for an unknown kind (listing the known ones) or a density

@@ -37,20 +37,36 @@ vec3 fresnelSchlick(vec3 f0, float VoH) {
     return f0 + (1.0 - f0) * f;
 }
 
+// The angles of one light a BRDF evaluation needs beside N.V (which the aggregates' lobes make once
+// for all their lights: FilteredLobe, AnisotropicLobe).
+struct LightAngles {
+    vec3 H;
+    float NoL, NoH, VoH;
+};
+LightAngles lightAngles(vec3 N, vec3 V, vec3 L) {
+    LightAngles a;
+    a.NoL = dot(N, L);
+    vec3 Hraw = V + L;
+    // V = -L (light exactly behind the viewer's direction) makes H zero.
+    float hlen = length(Hraw);
+    a.H = hlen > kMinNormalLength ? Hraw / hlen : N;
+    a.NoH = clamp(dot(N, a.H), 0.0, 1.0);
+    a.VoH = clamp(dot(V, a.H), 0.0, 1.0);
+    return a;
+}
+
 // The angles both GGX evaluations share. False when L is at or below the surface (no light).
 struct BrdfAngles {
     vec3 H;
     float NoL, NoV, NoH, VoH;
 };
 bool brdfAngles(vec3 N, vec3 V, vec3 L, out BrdfAngles g) {
-    g.NoL = dot(N, L);
+    LightAngles a = lightAngles(N, V, L);
+    g.H = a.H;
+    g.NoL = a.NoL;
     g.NoV = max(dot(N, V), kMinCosine);
-    vec3 Hraw = V + L;
-    // V = -L (light exactly behind the viewer's direction) makes H zero.
-    float hlen = length(Hraw);
-    g.H = hlen > kMinNormalLength ? Hraw / hlen : N;
-    g.NoH = clamp(dot(N, g.H), 0.0, 1.0);
-    g.VoH = clamp(dot(V, g.H), 0.0, 1.0);
+    g.NoH = a.NoH;
+    g.VoH = a.VoH;
     return g.NoL > 0.0;
 }
 
@@ -184,14 +200,10 @@ FilteredLobe filteredLobe(SurfaceInputs s, float spread, vec3 V) {
 // operations as evaluateBrdf's per light, on the lobe's precomputed terms.
 vec3 evaluateFilteredLobe(SurfaceInputs s, FilteredLobe lobe, vec3 V, vec3 L, vec3 irradiance, out vec3 specularOut) {
     specularOut = vec3(0.0);
-    float NoL = dot(s.normal, L);
-    vec3 Hraw = V + L;
-    // V = -L (light exactly behind the viewer's direction) makes H zero.
-    float hlen = length(Hraw);
-    vec3 H = hlen > kMinNormalLength ? Hraw / hlen : s.normal;
-    float NoH = clamp(dot(s.normal, H), 0.0, 1.0);
-    float VoH = clamp(dot(V, H), 0.0, 1.0);
-    vec3 F = lobe.f0 + (1.0 - lobe.f0) * pow(1.0 - VoH, 5.0); // fresnelSchlick
+    LightAngles a = lightAngles(s.normal, V, L);
+    float NoL = a.NoL, NoH = a.NoH;
+    vec3 H = a.H;
+    vec3 F = fresnelSchlick(lobe.f0, a.VoH);
     vec3 diffuse = diffuseLobe(s, F) * irradiance * filteredClampedCosineBands(NoL, lobe.bands);
     if (NoL <= 0.0) return diffuse;
     float f = (NoH * lobe.a2 - NoH) * NoH + 1.0; // ggxD: >= a2 > 0
@@ -263,14 +275,10 @@ AnisotropicLobe anisotropicLobe(SurfaceInputs s, vec3 T, vec3 B, float ax, float
 vec3 evaluateAnisotropicLobe(SurfaceInputs s, AnisotropicLobe lobe, vec3 T, vec3 B, vec3 V, vec3 L, vec3 irradiance,
                              out vec3 specularOut) {
     specularOut = vec3(0.0);
-    float NoL = dot(s.normal, L);
-    vec3 Hraw = V + L;
-    // V = -L (light exactly behind the viewer's direction) makes H zero.
-    float hlen = length(Hraw);
-    vec3 H = hlen > kMinNormalLength ? Hraw / hlen : s.normal;
-    float NoH = clamp(dot(s.normal, H), 0.0, 1.0);
-    float VoH = clamp(dot(V, H), 0.0, 1.0);
-    vec3 F = lobe.f0 + (1.0 - lobe.f0) * pow(1.0 - VoH, 5.0); // fresnelSchlick
+    LightAngles a = lightAngles(s.normal, V, L);
+    float NoL = a.NoL, NoH = a.NoH;
+    vec3 H = a.H;
+    vec3 F = fresnelSchlick(lobe.f0, a.VoH);
     vec3 diffuse = diffuseLobe(s, F) * irradiance * filteredClampedCosineBands(NoL, lobe.bands);
     vec3 flakeSpecular =
         lobe.flake > 0.0
