@@ -215,8 +215,10 @@ void addChainLink(SubjectSink& sink, const glm::vec3& centre, const glm::vec2& s
     // The weave's half height: the two families' axes are 2 x kWeave apart at a crossing, which
     // leaves 2 mm between the wires' surfaces.
     constexpr float kWeave = 1.25f * kRadius;
-    constexpr int kSegmentsPerCrossing = 6;
     const float spacing = mesh / sink.density(); // denser fence, more wires
+    // Path points per crossing: 6 at density 1, fewer above it so that the triangle count grows
+    // as the density (wires x crossings per wire x points per crossing), not as its square.
+    const int segmentsPerCrossing = std::clamp(static_cast<int>(std::lround(6.0f / sink.density())), 2, 6);
     TubeOptions tube;
     tube.sides = 8;
     tube.capStart = true;
@@ -243,8 +245,9 @@ void addChainLink(SubjectSink& sink, const glm::vec3& centre, const glm::vec2& s
                 t1 = std::min(t1, std::max(lo, hi));
             }
             if (t1 - t0 < spacing) continue;
-            const int segments =
-                std::max(2, static_cast<int>(std::ceil((t1 - t0) / spacing * kSegmentsPerCrossing)));
+            const int segments = std::max(
+                2,
+                static_cast<int>(std::ceil((t1 - t0) / spacing * static_cast<float>(segmentsPerCrossing))));
             std::vector<glm::vec3> path(static_cast<size_t>(segments) + 1);
             for (int k = 0; k <= segments; ++k) {
                 const float t = t0 + (t1 - t0) * static_cast<float>(k) / static_cast<float>(segments);

@@ -221,6 +221,12 @@ TEST(Scenegen, ChainLinkIsThinGlossyMetalWovenBeforeAWall) {
     ASSERT_LT(zmin, zmax) << "the wires' mesh must be found";
     EXPECT_NEAR(zmax, 2.25f * 0.004f, 2e-4f) << "weave 1.25 r plus the wire's radius";
     EXPECT_NEAR(zmin, -2.25f * 0.004f, 2e-4f) << "weave 1.25 r plus the wire's radius";
+    // The density scales the wires, and the triangles with it, not with its square (scenegen
+    // --density 8 must stay a scene, not 64 times one).
+    const double twice =
+        double(loadGltfModel(generateScene("chainlink", {1, 2.0f}), "twice").triangleCount());
+    EXPECT_GT(twice, 1.5 * double(s.triangleCount())) << "density 2: about twice the wires' triangles";
+    EXPECT_LT(twice, 2.5 * double(s.triangleCount())) << "density 2: about twice the wires' triangles";
 }
 
 TEST(Scenegen, FoliageUsesMaskedDoubleSidedLeafTexture) {
