@@ -40,6 +40,11 @@ die() {
   echo "gpu-report.sh: $*" >&2
   exit 1
 }
+# A bad setting (an environment value or scene name) exits 2, as every tool of the project does.
+bad_input() {
+  echo "gpu-report.sh: $*" >&2
+  exit 2
+}
 # Every failure ends with one line that says so, how long it ran, and that the page is untouched
 # (it is written only at the very end, from a temporary file).
 tmp=
@@ -54,9 +59,9 @@ trap on_exit EXIT
 
 case "$size" in
   [1-9]*x[1-9]*) ;;
-  *) die "AGAA_GPU_REPORT_SIZE '$size' is not WxH, e.g. 1280x720" ;;
+  *) bad_input "AGAA_GPU_REPORT_SIZE '$size' is not WxH, e.g. 1280x720" ;;
 esac
-[ -n "$scenes" ] || die "AGAA_GPU_REPORT_SCENES is empty"
+[ -n "$scenes" ] || bad_input "AGAA_GPU_REPORT_SCENES is empty"
 command -v python3 >/dev/null || die "python3 is needed to write the report (tools/deps.sh installs it)"
 
 # The commands the page lists are the ones run here, recorded as they run (an argument quoted only
@@ -120,7 +125,7 @@ fi
 frames="${AGAA_GPU_REPORT_FRAMES:-$((cpu_device ? 5 : 15))}"
 warmup="${AGAA_GPU_REPORT_WARMUP:-$((cpu_device ? 2 : 5))}"
 case "$frames$warmup" in
-  *[!0-9]*) die "AGAA_GPU_REPORT_FRAMES '$frames' and AGAA_GPU_REPORT_WARMUP '$warmup' must be integers" ;;
+  *[!0-9]*) bad_input "AGAA_GPU_REPORT_FRAMES '$frames' and AGAA_GPU_REPORT_WARMUP '$warmup' must be integers" ;;
 esac
 timing_env=()
 if ((cpu_device)); then
@@ -140,7 +145,7 @@ for s in "${scene_list[@]}"; do
   esac
   "$render" --builtin "$s" --method noaa --samples 1 --aggregates 1 --width 8 --height 8 \
     --out "$work/probe_$s" >/dev/null 2>"$work/probe_$s.log" ||
-    die "scene '$s' is not a built-in scene of this build ($(tail -n1 "$work/probe_$s.log")); built-in: $known"
+    bad_input "scene '$s' is not a built-in scene of this build ($(tail -n1 "$work/probe_$s.log")); built-in: $known"
 done
 
 # The sweep: one agaa-timings process per sample count, every scene in it; its --json output is
