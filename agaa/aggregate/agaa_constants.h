@@ -80,7 +80,7 @@ inline constexpr NamedValue<AggregateDistance> kAggregateDistanceNames[] = {
 //    attachment samples and a sample-mask override (VK_NV_framebuffer_mixed_samples or
 //    VK_AMD_mixed_attachment_samples, and VK_NV_sample_mask_override_coverage); it is not built:
 //    no device that offers both was available to test it, so it is refused by name;
-//  - Auto: the rule of AggregateAA's constructor (measured in the README).
+//  - Auto: the rule of planAggregate (aggregate_plan.cpp; measured in the README).
 enum class AggregateGeneration : uint32_t { Accumulate = 0, Samples = 1, Coverage = 2, Auto = 3 };
 inline constexpr NamedValue<AggregateGeneration> kAggregateGenerationNames[] = {
     {"auto", AggregateGeneration::Auto},

@@ -14,18 +14,13 @@
 // With --debug aggregates the lighting is replaced by a view of the clustering, and the graph
 // culls the generation passes nothing reads any more.
 
-#include "agaa/aggregate/agaa_constants.h"
+#include "agaa/aggregate/aggregate_plan.h"
 #include "agaa/common/sample_gbuffer.h"
-#include "agaa/common/shadow_map.h"
 #include "agaa/common/technique.h"
 #include "engine/frame/uniform_ring.h"
 #include "engine/vk/device.h"
 #include "engine/vk/pipeline.h"
-#include "engine/vk/pipeline_cache.h"
-#include "engine/vk/resources.h"
 
-#include <array>
-#include <map>
 #include <memory>
 #include <span>
 
@@ -43,6 +38,15 @@ struct AggregateResources {
     SampleGBuffer gbuffer; // samples path only
 };
 
+// Its passes (agaa/aggregate/passes/, not installed), one object each.
+class AccumulationPass;
+class AggregateLightingPass;
+class AggregatesViewPass;
+class ClusterPass;
+class PerSampleShadingPass;
+class ShadowMapPass;
+class VisibilityPass;
+
 class AggregateAA final : public Technique {
   public:
     AggregateAA(eng::vk::Device& device, const eng::frame::GpuScene& scene,
@@ -50,63 +54,50 @@ class AggregateAA final : public Technique {
     ~AggregateAA() override;
 
     std::string name() const override { return "agaa"; }
-    uint32_t samples() const override { return m_settings.samples; }
+    uint32_t samples() const override { return m_plan.settings.samples; }
     FrameTargets addPasses(eng::rg::Graph& graph, const FrameInputs& inputs) override;
     bool isStorage(const std::string& resourceName) const override;
     std::string storageCategory(const std::string& resourceName) const override;
     std::vector<VariantChoice> variants() const override;
-    const eng::scene::SceneFeatures& features() const { return m_features; }
+    const eng::scene::SceneFeatures& features() const { return m_plan.features; }
 
-    const AggregateSettings& settings() const { return m_settings; }
+    const AggregatePlan& plan() const { return m_plan; }
+    const AggregateSettings& settings() const { return m_plan.settings; }
     const AggregateResources& resources() const { return m_resources; }
     // The constants the last addPasses() wrote (into its FrameInputs::frameSlot).
     const shared::AgaaConstants& constants() const { return m_constants; }
-    VkFormat depthFormat() const { return m_depthFormat; }
+    VkFormat depthFormat() const { return m_plan.depthFormat; }
 
     // The lighting pass's SPIR-V and specialisation for this path, scene and settings: what a
     // test build of the pass must match (tests/support/aggregate_instrumentation.h).
-    // The flagged pixels' per-sample shading program for this path, scene and device.
-    std::span<const uint32_t> perSampleCode() const;
     std::span<const uint32_t> lightingCode() const;
     eng::vk::Specialization lightingVariant() const;
     // The accumulate path's generation pipeline for a material's sidedness, as this scene and
-    // device run it (a test build of the pass draws with the same state).
+    // device run it (a test build of the pass draws with the same state; accumulate path only).
     eng::vk::GraphicsPipelineDesc generationPipelineDesc(bool doubleSided) const;
 
   private:
-    VkPipeline makeVisibilityPipeline(const DrawVariant& variant);
-    VkPipeline makeGenerationPipeline(const DrawVariant& variant); // alpha: the prepass's, not read
-    std::span<const uint32_t> generationCode() const;              // this scene's and device's variant
-    std::span<const uint32_t> program(const NamedProgram& shipping) const; // or its replacement
-    void resolveGeneration(); // Auto -> a path, or MissingCapability for a path the device lacks
-    void resolveTolerance();  // kToleranceAuto -> the path's default
-    void createLayouts(const eng::frame::GpuScene& scene);
-    void release(); // the destructor's work, also for a constructor that throws
-
     eng::vk::Device& m_device;
-    eng::frame::UniformRing m_constantsRing; // shared::AgaaConstants per FrameInputs::frameSlot
-    AggregateSettings m_settings;            // every Auto resolved
-    AggregateSettings m_requested;           // as the caller asked (the variants say which were automatic)
     const eng::scene::Scene& m_scene;
-    eng::scene::SceneFeatures m_features;
-    AggregateNdf m_requestedNdf; // m_settings.ndf is the resolved one (never Auto)
-    bool m_hasEmissive = false;
-    VkFormat m_depthFormat = VK_FORMAT_D32_SFLOAT_S8_UINT;
+    const AggregatePlan m_plan;
+    eng::frame::UniformRing m_constantsRing; // shared::AgaaConstants per FrameInputs::frameSlot
     shared::AgaaConstants m_constants{};
-    eng::vk::PipelineLayout m_visibilityLayout, m_generationLayout, m_clusterLayout, m_lightingLayout,
-        m_perSampleLayout, m_debugLayout;
-    // The raster passes' pipelines, one per draw variant met, made on first use.
-    eng::vk::PipelineCache<DrawVariant> m_visibilityPipelines, m_generationPipelines;
-    std::unique_ptr<ShadowMapPass> m_shadow;
-    std::unique_ptr<SampleGBufferPass> m_gbuffer; // samples path only
-    VkPipeline m_clusterPipeline = VK_NULL_HANDLE, m_lightingPipeline = VK_NULL_HANDLE,
-               m_debugPipeline = VK_NULL_HANDLE;
-    // The flagged pixels' per-sample shading (agaa/lighting_per_sample.comp), with a tolerance only.
-    VkPipeline m_perSamplePipeline = VK_NULL_HANDLE;
-    VkSampler m_fetchSampler = VK_NULL_HANDLE;
     AggregateResources m_resources;
-    std::string m_generationCause; // why this path (stats variants)
-    std::string m_toleranceCause;  // why this shading rate (stats variants)
+    struct Sampler {
+        eng::vk::Device& device;
+        VkSampler sampler;
+        ~Sampler();
+    };
+    Sampler m_fetchSampler; // nearest, clamped: every compute pass's texel fetches
+    // The passes, in the order a frame adds them; a path's passes only.
+    std::unique_ptr<SampleGBufferPass> m_gbuffer; // samples path
+    std::unique_ptr<VisibilityPass> m_visibility; // accumulate path
+    std::unique_ptr<ClusterPass> m_cluster;
+    std::unique_ptr<ShadowMapPass> m_shadow;
+    std::unique_ptr<AggregatesViewPass> m_aggregatesView; // --debug aggregates
+    std::unique_ptr<AccumulationPass> m_accumulation;     // accumulate path
+    std::unique_ptr<AggregateLightingPass> m_lighting;
+    std::unique_ptr<PerSampleShadingPass> m_perSample; // with a tolerance
 };
 
 } // namespace agaa
