@@ -59,6 +59,21 @@ MethodOption choice(std::string name, std::vector<std::string> choices, std::str
     return o;
 }
 
+// A choice that stores an enum: its words are the enum's NamedValue table, its default the
+// MethodSettings default's word, and the value is parsed once, here.
+template <typename T, size_t N>
+MethodOption enumChoice(std::string name, const NamedValue<T> (&table)[N], T MethodSettings::*field,
+                        std::string methods, std::string doc) {
+    const std::string flag = "--" + name;
+    return choice(
+        std::move(name), words(table), nameOf(MethodSettings{}.*field, table), std::move(methods),
+        std::move(doc),
+        [&table, field, flag](MethodSettings& s, const std::string& v) {
+            s.*field = namedValue(flag.c_str(), v, table);
+        },
+        [&table, field](const MethodSettings& s) { return std::string(nameOf(s.*field, table)); });
+}
+
 MethodOption ranged(Kind kind, std::string name, std::string syntax, double lo, double hi,
                     std::string defaultText, std::string methods, std::string doc,
                     std::function<void(MethodSettings&, const std::string&)> set,
@@ -138,43 +153,31 @@ std::vector<MethodOption> declareOptions() {
                 nameOf(s.pixelCentrePosition ? AggregatePosition::PixelCentre : AggregatePosition::SampleMean,
                        kAggregatePositionNames));
         }));
-    o.push_back(choice(
-        "agaa-ndf", words(kAggregateNdfNames), "auto", "agaa*",
+    o.push_back(enumChoice(
+        "agaa-ndf", kAggregateNdfNames, &MethodSettings::ndf, "agaa*",
         "the normal distribution per aggregate: anisotropic SGGX with the two-point tone-mapped resolve, "
         "or the paper's isotropic Toksvig; auto: SGGX when glossy metals that are not near mirrors "
-        "(roughness 0.1 to 0.4) are at least half of the drawn materials, else Toksvig",
-        [](MethodSettings& s, const std::string& v) { s.ndf = v; },
-        [](const MethodSettings& s) { return s.ndf; }));
-    o.push_back(choice(
-        "agaa-lighting", words(kAggregateShadingNames), "auto", "agaa*",
+        "(roughness 0.1 to 0.4) are at least half of the drawn materials, else Toksvig"));
+    o.push_back(enumChoice(
+        "agaa-lighting", kAggregateShadingNames, &MethodSettings::agaaLighting, "agaa*",
         "the lighting schedule: a tile's further aggregates packed into a shared-memory list (compact), "
-        "or each pixel shading its own (registers); auto: compact for c >= 2, registers at c = 1",
-        [](MethodSettings& s, const std::string& v) { s.agaaLighting = v; },
-        [](const MethodSettings& s) { return s.agaaLighting; }));
-    o.push_back(choice(
-        "agaa-routing", words(kAggregateRoutingNames), "samples", "agaa*",
+        "or each pixel shading its own (registers); auto: compact for c >= 2, registers at c = 1"));
+    o.push_back(enumChoice(
+        "agaa-routing", kAggregateRoutingNames, &MethodSettings::agaaRouting, "agaa*",
         "generation: each visible sample feeds its own aggregate, or the whole fragment its first visible "
-        "sample's (Algorithm 2)",
-        [](MethodSettings& s, const std::string& v) { s.agaaRouting = v; },
-        [](const MethodSettings& s) { return s.agaaRouting; }));
-    o.push_back(choice(
-        "agaa-atomics", words(kAggregateAtomicsNames), "auto", "agaa*",
+        "sample's (Algorithm 2)"));
+    o.push_back(enumChoice(
+        "agaa-atomics", kAggregateAtomicsNames, &MethodSettings::agaaAtomics, "agaa*",
         "generation atomics: 64-bit pairs of words where the device has shaderBufferInt64Atomics (auto), "
-        "or 32-bit words",
-        [](MethodSettings& s, const std::string& v) { s.agaaAtomics = v; },
-        [](const MethodSettings& s) { return s.agaaAtomics; }));
-    o.push_back(choice(
-        "agaa-subgroup-reduce", words(kSubgroupReductionNames), "auto", "agaa*",
+        "or 32-bit words"));
+    o.push_back(enumChoice(
+        "agaa-subgroup-reduce", kSubgroupReductionNames, &MethodSettings::agaaSubgroupReduce, "agaa*",
         "generation: sum the atomics of fragments that hit one pixel across the subgroup first; auto: on "
-        "for GPUs, off on CPU devices",
-        [](MethodSettings& s, const std::string& v) { s.agaaSubgroupReduce = v; },
-        [](const MethodSettings& s) { return s.agaaSubgroupReduce; }));
-    o.push_back(choice(
-        "agaa-distance", words(kAggregateDistanceNames), "plane", "agaa*",
+        "for GPUs, off on CPU devices"));
+    o.push_back(enumChoice(
+        "agaa-distance", kAggregateDistanceNames, &MethodSettings::agaaDistance, "agaa*",
         "clustering: Equation 1, or the samples' distance to each other's tangent plane (a flat surface "
-        "stays one aggregate)",
-        [](MethodSettings& s, const std::string& v) { s.agaaDistance = v; },
-        [](const MethodSettings& s) { return s.agaaDistance; }));
+        "stays one aggregate)"));
     {
         MethodOption t = ranged(
             Kind::Number, "agaa-tolerance", "auto|never|T", 0.0, 1e7, "auto",
@@ -212,14 +215,12 @@ std::vector<MethodOption> declareOptions() {
         l.words = {"none"};
         o.push_back(std::move(l));
     }
-    o.push_back(choice(
-        "agaa-generation", words(kAggregateGenerationNames), "auto", "agaa",
+    o.push_back(enumChoice(
+        "agaa-generation", kAggregateGenerationNames, &MethodSettings::agaaGeneration, "agaa",
         "the generation path: the accumulation kernel after a visibility prepass, or one per-sample "
         "G-buffer pass aggregated at the top of each lighting tile (UE4); coverage routing needs mixed "
         "samples and the sample-mask override and is not built (exit 3); auto: samples for n <= 16, else "
-        "accumulate",
-        [](MethodSettings& s, const std::string& v) { s.agaaGeneration = v; },
-        [](const MethodSettings& s) { return s.agaaGeneration; }));
+        "accumulate"));
     o.push_back(choice(
         "sample-rate-shading", {"on", "off"}, "off", "reference, simple-complex*, sbaa, streaming, agaa*",
         "the per-sample G-buffer filled at sample rate: materials and normal maps supersampled",

@@ -1,9 +1,10 @@
 #pragma once
-// The method settings (MethodSettings, agaa/common/technique.h) declared once: each option's
+// The method settings (MethodSettings) declared once: each option's
 // name, the values it takes, its default, what it does and which methods read it. agaa-render's
 // flags and --help, the README's synopsis (checked by the test cli.readme_synopsis) and the render
 // cache's key (tools/harness/frame_renderer.cpp) all come from this table.
 
+#include "agaa/aggregate/agaa_constants.h"
 #include "agaa/common/technique.h"
 
 #include <functional>
@@ -12,6 +13,48 @@
 #include <vector>
 
 namespace agaa {
+
+// Settings every method understands; a method ignores the ones it has no use for.
+struct MethodSettings {
+    uint32_t samples = 8;    // n: visibility samples per pixel
+    uint32_t aggregates = 2; // c: AGAA aggregates per pixel
+    // S: surfaces per pixel; 0 = the method's default (SBAA: 4 of 1..6; streaming: 3 of 1..3).
+    uint32_t surfaces = 0;
+    // Streaming compression's normal threshold alpha in degrees; negative = the paper's pi/4.
+    float streamingNormalAngle = -1.0f;
+    std::string debug; // a method's debug view ("" = none), e.g. "aggregates" for agaa
+    // AGAA clustering (Equation 1): characteristic length k in metres and the seed threshold t;
+    // negative = the method's documented default.
+    float characteristicLength = -1.0f;
+    float seedThreshold = -1.0f;
+    // AGAA shading position: false = mean of the aggregate's sample positions, true = the UE4
+    // shortcut (seed 004): the mean depth on the pixel centre's ray.
+    bool pixelCentrePosition = false;
+    // AGAA's choices, each the enum AggregateSettings takes (agaa/aggregate/agaa_constants.h, where
+    // each says what it does and what Auto resolves to): the normal distribution per aggregate,
+    // the lighting schedule, the generation routing, atomics and subgroup pre-reduction, the
+    // clustering distance and the generation path.
+    AggregateNdf ndf = AggregateNdf::Auto;
+    AggregateShading agaaLighting = AggregateShading::Auto;
+    AggregateRouting agaaRouting = AggregateRouting::Samples;
+    AggregateAtomics agaaAtomics = AggregateAtomics::Auto;
+    SubgroupReduction agaaSubgroupReduce = SubgroupReduction::Auto;
+    AggregateDistance agaaDistance = AggregateDistance::Plane;
+    AggregateGeneration agaaGeneration = AggregateGeneration::Auto;
+    // The fill pass of the per-sample G-buffer (reference, Simple/Complex, AGAA's samples path):
+    // sample-rate shading (supersampled materials) instead of pixel rate with per-sample coverage.
+    bool sampleRateShading = false;
+    // AGAA samples path: Kaplanyan curvature roughness in the fill pass (seed 004).
+    bool curvatureRoughness = false;
+    // AGAA: the error-driven shading rate's tolerance (AggregateSettings::tolerance; kToleranceNever,
+    // kToleranceAuto: the path's default) and its alias limit (kAliasLimitNone: none).
+    float agaaTolerance = kToleranceAuto;
+    float agaaAliasLimit = kDefaultAliasLimit;
+    EffectSettings effects; // scene-driven shadows, alpha-to-coverage, emissive, normal maps
+    // AGAA: builds to run in place of its shipping programs (agaa/common/program_overrides.h), such
+    // as agaa-timings' part-removed builds. Not an option: a tool's, set in code.
+    ProgramOverrides agaaPrograms;
+};
 
 struct MethodOption {
     enum class Kind {

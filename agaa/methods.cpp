@@ -127,16 +127,15 @@ std::unique_ptr<Technique> createTechnique(const std::string& method, eng::vk::D
         if (settings.characteristicLength >= 0.0f) s.characteristicLength = settings.characteristicLength;
         if (settings.seedThreshold >= 0.0f) s.seedThreshold = settings.seedThreshold;
         if (settings.pixelCentrePosition) s.position = AggregatePosition::PixelCentre;
-        s.ndf = namedValue("agaa: normal distribution", settings.ndf, kAggregateNdfNames);
-        s.shading = namedValue("agaa: lighting schedule", settings.agaaLighting, kAggregateShadingNames);
-        s.routing = namedValue("agaa: routing", settings.agaaRouting, kAggregateRoutingNames);
-        s.atomics = namedValue("agaa: atomics", settings.agaaAtomics, kAggregateAtomicsNames);
-        s.subgroupReduction =
-            namedValue("agaa: subgroup reduction", settings.agaaSubgroupReduce, kSubgroupReductionNames);
-        s.distance = namedValue("agaa: clustering distance", settings.agaaDistance, kAggregateDistanceNames);
-        s.generation = namedValue("agaa: generation", settings.agaaGeneration, kAggregateGenerationNames);
+        s.ndf = settings.ndf;
+        s.shading = settings.agaaLighting;
+        s.routing = settings.agaaRouting;
+        s.atomics = settings.agaaAtomics;
+        s.subgroupReduction = settings.agaaSubgroupReduce;
+        s.distance = settings.agaaDistance;
+        s.generation = settings.agaaGeneration;
         if (method != "agaa") {
-            if (settings.agaaGeneration != "auto")
+            if (settings.agaaGeneration != AggregateGeneration::Auto)
                 throw std::invalid_argument("--agaa-generation applies to --method agaa only; " + method +
                                             " is the " + method.substr(5) + " path already");
             s.generation =

@@ -4,6 +4,7 @@
 // and the report to pick it up.
 
 #include "agaa/common/technique.h"
+#include "agaa/method_settings.h"
 #include "engine/vk/device.h"
 
 #include <memory>

@@ -64,52 +64,6 @@ struct FrameTargets {
     eng::rg::Texture perSampleShaded;
 };
 
-// Settings every method understands; a method ignores the ones it has no use for.
-struct MethodSettings {
-    uint32_t samples = 8;    // n: visibility samples per pixel
-    uint32_t aggregates = 2; // c: AGAA aggregates per pixel
-    // S: surfaces per pixel; 0 = the method's default (SBAA: 4 of 1..6; streaming: 3 of 1..3).
-    uint32_t surfaces = 0;
-    // Streaming compression's normal threshold alpha in degrees; negative = the paper's pi/4.
-    float streamingNormalAngle = -1.0f;
-    std::string debug; // a method's debug view ("" = none), e.g. "aggregates" for agaa
-    // AGAA clustering (Equation 1): characteristic length k in metres and the seed threshold t;
-    // negative = the method's documented default.
-    float characteristicLength = -1.0f;
-    float seedThreshold = -1.0f;
-    // AGAA shading position: false = mean of the aggregate's sample positions, true = the UE4
-    // shortcut (seed 004): the mean depth on the pixel centre's ray.
-    bool pixelCentrePosition = false;
-    // AGAA normal distribution per aggregate: "auto" (SGGX where glossy metals are at least half of the drawn
-    // materials, Toksvig elsewhere), "sggx" or "toksvig" (agaa/aggregate/agaa_constants.h AggregateNdf).
-    std::string ndf = "auto";
-    // AGAA lighting schedule "auto" | "compact" | "registers", generation routing "samples" |
-    // "fragment", atomics "auto" | "32" | "64", subgroup pre-reduction "auto" | "on" | "off",
-    // clustering distance "position" | "plane" (agaa/aggregate/agaa_constants.h).
-    std::string agaaLighting = "auto";
-    std::string agaaRouting = "samples";
-    std::string agaaAtomics = "auto";
-    std::string agaaSubgroupReduce = "auto";
-    std::string agaaDistance = "plane";
-    // AGAA generation path "auto" | "accumulate" | "samples" | "coverage" (AggregateGeneration).
-    std::string agaaGeneration = "auto";
-    // The fill pass of the per-sample G-buffer (reference, Simple/Complex, AGAA's samples path):
-    // sample-rate shading (supersampled materials) instead of pixel rate with per-sample coverage.
-    bool sampleRateShading = false;
-    // AGAA samples path: Kaplanyan curvature roughness in the fill pass (seed 004).
-    bool curvatureRoughness = false;
-    // AGAA samples path: the error-driven shading rate's tolerance (AggregateSettings::tolerance):
-    // -1 never, -2 the path's default (kToleranceNever, kToleranceAuto; test_method_settings holds both to
-    // them).
-    float agaaTolerance = -2.0f;
-    // Its alias limit (AggregateSettings::aliasLimit, kDefaultAliasLimit); infinity: none.
-    float agaaAliasLimit = 5000.0f;
-    EffectSettings effects; // scene-driven shadows, alpha-to-coverage, emissive, normal maps
-    // AGAA: builds to run in place of its shipping programs (agaa/common/program_overrides.h), such
-    // as agaa-timings' part-removed builds. Not an option: a tool's, set in code.
-    ProgramOverrides agaaPrograms;
-};
-
 class Technique {
   public:
     virtual ~Technique() = default;

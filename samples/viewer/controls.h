@@ -4,7 +4,7 @@
 // view, X compare with the reference, R reset, P screenshot). Pure logic over InputEvents: no window, no
 // device.
 
-#include "agaa/common/technique.h"
+#include "agaa/method_settings.h"
 #include "engine/scene/scene.h"
 #include "samples/viewer/window.h"
 #include "tools/harness/frame_renderer.h"

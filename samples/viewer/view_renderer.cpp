@@ -60,9 +60,9 @@ Technique& ViewRenderer::technique(const std::string& method, const MethodSettin
     // Everything the viewer can change; the rest stays at MethodSettings' defaults.
     const std::string key =
         method + "/" + std::to_string(s.samples) + "/" + std::to_string(s.aggregates) + "/" + s.debug + "/" +
-        s.ndf + "/" + s.agaaGeneration + (s.effects.forceAll ? "/all" : "") + "/" +
-        std::to_string(s.effects.shadowMapSize) + "/" + std::to_string(s.effects.shadowTaps) + "/" +
-        std::to_string(uint32_t(s.effects.shadowFootprint));
+        nameOf(s.ndf, kAggregateNdfNames) + "/" + nameOf(s.agaaGeneration, kAggregateGenerationNames) +
+        (s.effects.forceAll ? "/all" : "") + "/" + std::to_string(s.effects.shadowMapSize) + "/" +
+        std::to_string(s.effects.shadowTaps) + "/" + std::to_string(uint32_t(s.effects.shadowFootprint));
     auto it = m_techniques.find(key);
     if (it == m_techniques.end())
         it = m_techniques.emplace(key, createTechnique(method, m_device, m_gpuScene, s)).first;

@@ -5,7 +5,7 @@
 // swapchain format does the sRGB encode), the UI pass on top, and the present transition. Nothing is read
 // back per frame; the shading-event count (for the stats) and a screenshot only when asked for.
 
-#include "agaa/common/technique.h"
+#include "agaa/method_settings.h"
 #include "engine/frame/frame_runner.h"
 #include "engine/frame/gpu_scene.h"
 #include "engine/io/image.h"

@@ -90,7 +90,7 @@ TEST(AgaaClusteringGpu, MetadataMatchesTheCpuReferenceBitForBit) {
         shared::AgaaConstants constants{};
         agaa::RenderRequest r = request("agaa-accumulate", k.n, k.c, size);
         r.settings.debug = "aggregates"; // clustering only: the graph culls generation
-        r.settings.agaaDistance = k.distance;
+        r.settings.agaaDistance = agaa::namedValue("agaaDistance", k.distance, agaa::kAggregateDistanceNames);
         r.extraPasses = [&](eng::rg::Graph& graph, agaa::Technique& tech, const agaa::FrameInputs& in) {
             auto& aggregate = dynamic_cast<agaa::AggregateAA&>(tech);
             clusteringInputs.add(graph, aggregate, in, samples);
@@ -366,7 +366,7 @@ TEST(AgaaGpu, ErrorBelowHalfOfNoAaAndFallsWithMoreAggregates) {
         double forced[2] = {};
         for (int k = 0; k < 2; ++k) {
             agaa::RenderRequest f = request("agaa", 8, 2, size);
-            f.settings.ndf = k == 0 ? "toksvig" : "sggx";
+            f.settings.ndf = k == 0 ? agaa::AggregateNdf::Toksvig : agaa::AggregateNdf::Sggx;
             forced[k] = eng::io::rmse(encoded(renderer.render(f).display), ref) / noaa;
         }
         std::printf("[ measured ] %-9s AGAA (8, 2) / no-AA: toksvig %.3f, sggx %.3f, auto %.3f\n", name,

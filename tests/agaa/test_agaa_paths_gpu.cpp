@@ -55,9 +55,9 @@ TEST(AgaaPathsGpu, CompactedLightingEqualsThePerPixelScheduleBitForBit) {
         for (const char* path : {"agaa-accumulate", "agaa-samples"}) {
             agaa::RenderRequest compact = agaaRequest(k.n, k.c, 64);
             compact.method = path;
-            compact.settings.agaaLighting = "compact";
+            compact.settings.agaaLighting = agaa::AggregateShading::Compact;
             agaa::RenderRequest registers = compact;
-            registers.settings.agaaLighting = "registers";
+            registers.settings.agaaLighting = agaa::AggregateShading::Registers;
             agaa::RenderResult a = renderer.render(compact);
             agaa::RenderResult b = renderer.render(registers);
             uint64_t extra = 0; // entries that went through the list: events beyond one per pixel
@@ -109,13 +109,13 @@ TEST(AgaaPathsGpu, WideAtomicsAndSubgroupReductionLeaveTheAgBufferUnchanged) {
         eng::scene::Scene scene = eng::scene::loadTestScene(k.scene);
         agaa::FrameRenderer renderer(*device, scene);
         agaa::RenderRequest base = agaaRequest(k.n, k.c, size);
-        base.settings.agaaAtomics = "32";
-        base.settings.agaaSubgroupReduce = "off";
+        base.settings.agaaAtomics = agaa::AggregateAtomics::Bits32;
+        base.settings.agaaSubgroupReduce = agaa::SubgroupReduction::Off;
         agaa::RenderRequest wide = base, reduced = base, both = base;
-        wide.settings.agaaAtomics = "64";
-        reduced.settings.agaaSubgroupReduce = "on";
-        both.settings.agaaAtomics = "64";
-        both.settings.agaaSubgroupReduce = "on";
+        wide.settings.agaaAtomics = agaa::AggregateAtomics::Bits64;
+        reduced.settings.agaaSubgroupReduce = agaa::SubgroupReduction::On;
+        both.settings.agaaAtomics = agaa::AggregateAtomics::Bits64;
+        both.settings.agaaSubgroupReduce = agaa::SubgroupReduction::On;
         std::vector<uint32_t> narrow = agBufferWords(*device, renderer, base, size * size);
         EXPECT_TRUE(std::any_of(narrow.begin(), narrow.end(), [](uint32_t w) { return w != 0; }))
             << k.scene << ": the AG-buffer must hold accumulated samples";
@@ -160,9 +160,9 @@ TEST(AgaaPathsGpu, FragmentRoutingCountsEveryVisibleSampleOnce) {
         eng::scene::Scene scene = eng::scene::loadTestScene(name);
         agaa::FrameRenderer renderer(*device, scene);
         agaa::RenderRequest samples = agaaRequest(8, 2, size);
-        samples.settings.ndf = "toksvig";
+        samples.settings.ndf = agaa::AggregateNdf::Toksvig;
         agaa::RenderRequest fragments = samples;
-        fragments.settings.agaaRouting = "fragment";
+        fragments.settings.agaaRouting = agaa::AggregateRouting::Fragment;
         std::vector<uint32_t> bySample = agBufferWords(*device, renderer, samples, size * size);
         std::vector<uint32_t> byFragment = agBufferWords(*device, renderer, fragments, size * size);
         EXPECT_EQ(accumulatedPerPixel(byFragment, 2), accumulatedPerPixel(bySample, 2)) << name;
@@ -192,9 +192,9 @@ TEST(AgaaPathsGpu, PlaneDistanceLightsAFlatFloorOnce) {
     eng::scene::Scene scene = eng::scene::loadTestScene("default");
     agaa::FrameRenderer renderer(*device, scene);
     agaa::RenderRequest position = agaaRequest(8, 2, 96);
-    position.settings.agaaDistance = "position"; // the default is the plane distance
+    position.settings.agaaDistance = agaa::AggregateDistance::Position; // the default is the plane distance
     agaa::RenderRequest plane = position;
-    plane.settings.agaaDistance = "plane";
+    plane.settings.agaaDistance = agaa::AggregateDistance::Plane;
     agaa::RenderRequest reference = agaaRequest(8, 1, 96);
     reference.method = "reference";
     agaa::RenderResult ref = renderer.render(reference);

@@ -236,8 +236,10 @@ TEST_P(QualityScene, AgaaIsNeverWorseThanNoAaAndKeepsTheEnergy) {
         const char* path = pathName.c_str();
         for (uint32_t c : {1u, 2u, 4u}) {
             agaa::RenderRequest r = request(scene, path, n, c, size);
-            if (ndf) r.settings.ndf = ndf;
-            if (const char* d = std::getenv("AGAA_QUALITY_DISTANCE")) r.settings.agaaDistance = d;
+            if (ndf) r.settings.ndf = agaa::namedValue("AGAA_QUALITY_NDF", ndf, agaa::kAggregateNdfNames);
+            if (const char* d = std::getenv("AGAA_QUALITY_DISTANCE"))
+                r.settings.agaaDistance =
+                    agaa::namedValue("AGAA_QUALITY_DISTANCE", d, agaa::kAggregateDistanceNames);
             if (const char* t = std::getenv("AGAA_QUALITY_SEED_THRESHOLD"))
                 r.settings.seedThreshold = float(std::atof(t));
             if (const char* f = std::getenv("AGAA_QUALITY_SHADOW_FOOTPRINT"))

@@ -153,16 +153,16 @@ TEST(ShadingRate, ZeroIsTheReferenceAtTheSameSampleCount) {
         // tile's list: the same image as the per-pixel schedule.
         if (std::string(name) == "metal" || std::string(name) == "spikes") {
             agaa::RenderRequest compact = withTolerance("agaa-samples", 8, 2, 0.0f);
-            compact.settings.agaaLighting = "compact";
+            compact.settings.agaaLighting = agaa::AggregateShading::Compact;
             const agaa::RenderResult packed = renderer.render(compact);
             EXPECT_LE(
                 eng::io::rmse(eng::io::srgbEncoded(packed.display), eng::io::srgbEncoded(reference.display)),
                 kPerSampleAgreement)
                 << name << ", compacted";
             agaa::RenderRequest some = withTolerance("agaa-samples", 8, 2, 30.0f);
-            some.settings.agaaLighting = "registers";
+            some.settings.agaaLighting = agaa::AggregateShading::Registers;
             const agaa::RenderResult registers = renderer.render(some);
-            some.settings.agaaLighting = "compact";
+            some.settings.agaaLighting = agaa::AggregateShading::Compact;
             EXPECT_EQ(maxAbsDifference(renderer.render(some).display, registers.display), 0.0)
                 << name << ": the schedules differ at tolerance 30";
         }

@@ -62,13 +62,14 @@ TEST(MethodSettings, EveryOptionIsDeclaredOnceWithItsDocAndMethods) {
 TEST(MethodSettings, AgaaDefaultsAreTheHostApisDefaults) {
     const MethodSettings m;
     const agaa::AggregateSettings a;
-    EXPECT_EQ(agaa::namedValue("distance", m.agaaDistance, agaa::kAggregateDistanceNames), a.distance);
-    EXPECT_EQ(agaa::namedValue("ndf", m.ndf, agaa::kAggregateNdfNames), a.ndf);
-    EXPECT_EQ(agaa::namedValue("lighting", m.agaaLighting, agaa::kAggregateShadingNames), a.shading);
-    EXPECT_EQ(agaa::namedValue("routing", m.agaaRouting, agaa::kAggregateRoutingNames), a.routing);
-    EXPECT_EQ(agaa::namedValue("atomics", m.agaaAtomics, agaa::kAggregateAtomicsNames), a.atomics);
-    EXPECT_EQ(agaa::namedValue("generation", m.agaaGeneration, agaa::kAggregateGenerationNames),
-              a.generation);
+    EXPECT_EQ(m.agaaDistance, a.distance);
+    EXPECT_EQ(m.ndf, a.ndf);
+    EXPECT_EQ(m.agaaLighting, a.shading);
+    EXPECT_EQ(m.agaaRouting, a.routing);
+    EXPECT_EQ(m.agaaAtomics, a.atomics);
+    EXPECT_EQ(m.agaaSubgroupReduce, a.subgroupReduction);
+    EXPECT_EQ(m.agaaGeneration, a.generation);
+    EXPECT_EQ(m.agaaAliasLimit, a.aliasLimit);
     EXPECT_EQ(m.samples, a.samples);
     EXPECT_EQ(m.aggregates, a.aggregates);
     EXPECT_EQ(m.agaaTolerance, a.tolerance);
@@ -148,7 +149,7 @@ TEST(MethodSettings, BadValuesNameTheFlagAndTheAllowedValues) {
     EXPECT_EQ(message("surfaces", "default"), "accepted");
     EXPECT_EQ(message("aggregates", "default"), "--aggregates 'default' is not an integer in 1..4")
         << "c's default does not depend on the method: it is 2";
-    EXPECT_EQ(s.agaaGeneration, "coverage");
+    EXPECT_EQ(s.agaaGeneration, agaa::AggregateGeneration::Coverage);
     EXPECT_EQ(s.aggregates, 2u) << "a refused value leaves the setting alone";
 }
 

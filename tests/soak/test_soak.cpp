@@ -57,8 +57,9 @@ TEST(Soak, AThousandFramesSwitchingSettingsHoldMemoryAndObjectsFlat) {
             r.method = k.method;
             r.settings.samples = k.n;
             r.settings.aggregates = k.c;
-            r.settings.agaaLighting = k.lighting;
-            r.settings.agaaRouting = k.routing;
+            r.settings.agaaLighting =
+                agaa::namedValue("agaaLighting", k.lighting, agaa::kAggregateShadingNames);
+            r.settings.agaaRouting = agaa::namedValue("agaaRouting", k.routing, agaa::kAggregateRoutingNames);
             r.view.width = r.view.height = 64;
             r.timedFrames = kFramesPerSwitch;
             agaa::RenderResult result = renderer.render(r);

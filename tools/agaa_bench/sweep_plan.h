@@ -4,7 +4,7 @@
 // takes). A job's id names its JSON file, so sweeps split with --job I/N land in
 // files that merge without clashes.
 
-#include "agaa/common/technique.h"
+#include "agaa/method_settings.h"
 
 #include <cstddef>
 #include <cstdint>
