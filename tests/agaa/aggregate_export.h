@@ -1,7 +1,7 @@
 #pragma once
 // One frame of AGAA's samples path with the test build of its lighting pass exporting what step 1
 // read and built (tests/support/aggregate_instrumentation.h AggregateExportPass;
-// shaders/glsl/agaa/lighting/export.glsl): kExportRecordFloats floats per record, each sample of
+// shaders/glsl/tests/agaa_lighting_export.comp): kExportRecordFloats floats per record, each sample of
 // pixel p at p * n + s, then each aggregate at pixels * n + p * c + a. The export build has no
 // shadow maps and no emissive term. The frame's result is the shipping lighting pass's.
 

@@ -271,7 +271,8 @@ TEST(AgaaAccumulationReferenceGpu, AgBufferMatchesDoubleSumsOfTheMaterialInputs)
         uint32_t n, c;
         const char* ndf;
     };
-    constexpr uint32_t kQuantized = 11, kRecordWords = 3 + kQuantized + 8; // generation.frag AGAA_RECORD
+    constexpr uint32_t kQuantized = 11,
+                       kRecordWords = 3 + kQuantized + 8; // tests/agaa_generation_record.frag
     const Case cases[] = {{"furball", 8, 2, "toksvig"}, {"foliage", 32, 4, "toksvig"},
                           {"spikes", 16, 2, "toksvig"}, {"railings", 16, 3, "sggx"},
                           {"metal", 8, 2, "sggx"},      {"furball", 32, 4, "sggx"},

@@ -1,10 +1,11 @@
 # Fails when test instrumentation reaches the shipping build (STYLE.md: exports, records and
 # timing switches live in test-only passes or test builds of a shader, never in the shipping
-# layout). A test or benchmark build is a shipping source compiled with AGAA_EXPORT, AGAA_RECORD
-# or an AGAA_BREAKDOWN_* macro, declared in the tests' or agaa-timings' own program table
+# layout). A test or benchmark build is a main of its own (shaders/glsl/tests/, shaders/glsl/breakdown/)
+# over a pass's shared parts, declared in the tests' or agaa-timings' own program table
 # (tests/CMakeLists.txt, tools/agaa_timings/CMakeLists.txt). The shipping table
-# (shaders/CMakeLists.txt) declares none, no source defines one to 1 outside shaders/glsl/tests/,
-# and no shipping C++ includes a test kernel or test support.
+# (shaders/CMakeLists.txt) declares none, no shipping source switches on AGAA_EXPORT, AGAA_RECORD
+# or an AGAA_BREAKDOWN_* macro (nor defines one to 1 outside shaders/glsl/tests/), and no
+# shipping C++ includes a test kernel or test support.
 # Usage: cmake -DROOT=<dir> -P no_test_builds_shipped.cmake
 if(NOT ROOT)
   message(FATAL_ERROR "no_test_builds_shipped.cmake: pass -DROOT=<source root>")
@@ -21,6 +22,16 @@ foreach(source IN LISTS shaders)
   foreach(line IN LISTS lines)
     string(STRIP "${line}" line)
     string(APPEND found "\n  ${relative}: ${line} (a test build outside shaders/glsl/tests/)")
+  endforeach()
+  # A test or benchmark build is a main of its own over the pass's shared parts (issue 50): no
+  # shipping source switches on one, and agaa-timings' builds live in shaders/glsl/breakdown/.
+  if(relative MATCHES "^shaders/glsl/breakdown/")
+    continue()
+  endif()
+  file(STRINGS ${source} lines REGEX "^[ \t]*#[ \t]*(if|ifdef|ifndef|elif)[^\n]*AGAA_(EXPORT|RECORD|BREAKDOWN_[A-Z_]+)")
+  foreach(line IN LISTS lines)
+    string(STRIP "${line}" line)
+    string(APPEND found "\n  ${relative}: ${line} (a test or benchmark switch in a shipping source)")
   endforeach()
 endforeach()
 if(EXISTS ${ROOT}/shaders/CMakeLists.txt)

@@ -33,7 +33,7 @@ class ClusteringInputReadback {
     VkSampler m_sampler = VK_NULL_HANDLE;
 };
 
-inline constexpr uint32_t kExportRecordFloats = 16; // agaa/lighting/export.glsl exportRecord
+inline constexpr uint32_t kExportRecordFloats = 16; // tests/agaa_lighting_export.comp exportRecord
 
 // The test build of AGAA's lighting pass (shaders/glsl/tests/agaa_lighting_export.comp), run
 // beside the shipping one on the same inputs with the same specialisation: it lights the frame

@@ -29,97 +29,8 @@
 //    covering one pixel (GPUs pack quads of several triangles into one wave); lavapipe's fragment
 //    subgroups are the pixels of one triangle, so there it only adds the loop.
 #extension GL_GOOGLE_include_directive : require
-#extension GL_ARB_post_depth_coverage : require
-#ifndef AGAA_EMISSIVE
-#define AGAA_EMISSIVE 0 // 1: the emissive output (agaa_shaders' generation_emissive*)
-#endif
-#ifndef AGAA_INT64
-#define AGAA_INT64 0
-#endif
-#ifndef AGAA_SUBGROUP
-#define AGAA_SUBGROUP 0
-#endif
-#if AGAA_INT64
-#extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
-#extension GL_EXT_shader_atomic_int64 : require
-#endif
-#if AGAA_SUBGROUP
-#extension GL_KHR_shader_subgroup_ballot : require
-#extension GL_KHR_shader_subgroup_arithmetic : require
-#endif
-#include "shared/agaa.h"
-#include "shared/ag_buffer.h"
-#include "shared/clustering.h"
-#include "shared/frame.h"
-#include "shared/sample_material.h"
-#include "shared/specialization.h"
-
-layout(early_fragment_tests) in;
-layout(post_depth_coverage) in;
-
-layout(set = 0, binding = 0) uniform Frame { FrameConstants frame; };
-layout(set = 0, binding = 1, std430) readonly buffer Materials { GpuMaterial materials[]; };
-layout(set = 0, binding = 2) uniform Agaa { AgaaConstants agaa; };
-layout(set = 0, binding = 3, std430) readonly buffer Metadata { uint metadata[]; };
-layout(set = 0, binding = 4, std430) buffer AgBuffer { uint agBuffer[]; };
-#if AGAA_INT64
-// The same AG-buffer seen as 64-bit words (bound twice: binding 6 aliases binding 4).
-layout(set = 0, binding = 6, std430) buffer AgBuffer64 { uint64_t agBuffer64[]; };
-#endif
-layout(set = 1, binding = 0) uniform sampler2D textures[kMaxSceneTextures];
-#ifndef AGAA_RECORD
-#define AGAA_RECORD 0
-#endif
-#if AGAA_RECORD
-// The test build only (tests/agaa_generation_record.frag; tests/agaa/test_agaa_gpu.cpp,
-// test_agaa_reference_gpu.cpp): every fragment of the pixels in the central kRecordWindow^2 block
-// of the frame appends what the shipping pass accumulated from it, so the CPU can re-accumulate
-// the same fragments and compare with the AG-buffer: the quantised fields (the replay), then the
-// material inputs before quantisation (the double-precision reference).
-const uint kRecordWindow = 16u;
-// pixel, layer, mask, the quantised fields, then as float bits: normal xyz, roughness, albedo rgb, metallic
-const uint kRecordWords = 3u + kQuantizedFields + 8u;
-layout(set = 0, binding = 5, std430) buffer FragmentRecords { uint recordCount; uint recordCapacity; uint records[]; };
-#endif
-layout(push_constant) uniform Push { uint material; } pc;
-// Specialisation ids 0 and 1: the normal distribution (kNdfToksvig, kNdfSggx) and the routing
-// (0 per sample, 1 per fragment). Constants, not uniforms: lavapipe executes both sides of a
-// branch it cannot resolve at compile time.
-layout(constant_id = kSpecGenerationNdf) const uint kNdf = 0u;
-layout(constant_id = kSpecGenerationRouting) const uint kRouteFragment = 0u;
-// With a tolerance (AggregateSettings::tolerance): 1, and each covered sample's material is kept
-// for the shading rate (shared/sample_material.h); without one binding 7 is a 16-byte stand-in
-// this never touches. The test build records instead (the test compares the shipping pass's words
-// with the recorded fragments' materials).
-layout(constant_id = kSpecGenerationSampleMaterial) const uint kSampleMaterial = 0u;
-#if !AGAA_RECORD
-layout(set = 0, binding = 7, std430) buffer SampleMaterials { uint sampleMaterial[]; };
-#endif
-// agaa-timings --breakdown's builds (tools/agaa_timings/CMakeLists.txt): MATERIAL_ONLY evaluates
-// the material but adds nothing; EMPTY returns at once (the pass's raster, depth and stencil cost).
-#ifndef AGAA_BREAKDOWN_MATERIAL_ONLY
-#define AGAA_BREAKDOWN_MATERIAL_ONLY 0
-#endif
-#ifndef AGAA_BREAKDOWN_EMPTY
-#define AGAA_BREAKDOWN_EMPTY 0
-#endif
-
-#include "common/material.glsl"
-#include "common/octahedral.glsl"
-#include "common/srgb.glsl"
-
-// Centroid: a fragment that covers only some samples reads its attributes inside the triangle, as
-// the reference's per-sample G-buffer does (reference/gbuffer_inputs.glsl), never extrapolated to
-// an uncovered pixel centre.
-layout(location = 0) centroid in vec3 inNormal;
-layout(location = 1) centroid in vec4 inTangent;
-layout(location = 2) centroid in vec4 inUvs; // xy TEXCOORD_0, zw TEXCOORD_1
-layout(location = 3) flat in uint inLayer;
-layout(location = 5) centroid in vec4 inColor;
-#if AGAA_EMISSIVE
-// Emissive stays per sample (seed 004: no HDR fireflies): an MSAA target, resolved per sample.
-layout(location = 0) out vec4 outEmissive;
-#endif
+#include "agaa/generation/fragment.glsl"
+#include "agaa/generation/sample_material.glsl"
 
 // Adds k samples of the fragment's values to aggregate slot `slot` (pixel * c + aggregate).
 void addToAggregate(uint slot, uint k, uint ndf, AgQuantized f) {
@@ -150,88 +61,6 @@ void addToAggregate(uint slot, uint k, uint ndf, AgQuantized f) {
 #endif
 }
 
-// The fragment's values as the AG-buffer's fixed-point fields (shared/agaa.h), in either
-// normal-distribution layout.
-AgQuantized quantizeFragment(MaterialSample m, uint n) {
-    float alpha = m.roughness * m.roughness;
-    AgQuantized f;
-    // The sample's own lobe, for the two-point resolve and the environment's level (shared/agaa.h
-    // w5): not floored at kMinGgxAlpha, so that a near-mirror's level is its own (2^26 - 1 steps
-    // resolve alpha to 1.5e-8; the lighting pass floors the mean where the BRDF needs it).
-    f.q[10] = quantizeUnit(min(alpha, kMaxGgxAlpha), kMaterialAlphaScale);
-    if (kNdf == kNdfSggx) {
-        // The sample's GGX lobe as an SGGX matrix (shared/sggx.h), alpha in the BRDF's range.
-        float a = clamp(alpha, kMinGgxAlpha, kMaxGgxAlpha);
-        float a2 = a * a;
-        vec3 N = m.normal * (1.0 - a2); // S = (1 - a^2) n n^T + a^2 I
-        uint scale = unitScale(kSggxFieldBits, n);
-        f.q[0] = quantizeUnit(N.x * m.normal.x + a2, scale);
-        f.q[1] = quantizeUnit(N.y * m.normal.y + a2, scale);
-        f.q[2] = quantizeUnit(N.z * m.normal.z + a2, scale);
-        f.q[3] = quantizeUnit(N.x * m.normal.y + 0.5, scale); // off-diagonal: [-1/2, 1/2] + 1/2
-        f.q[4] = quantizeUnit(N.x * m.normal.z + 0.5, scale);
-        f.q[5] = quantizeUnit(N.y * m.normal.z + 0.5, scale);
-        f.q[6] = quantizeUnit(m.albedo.r, scale);
-        f.q[7] = quantizeUnit(m.albedo.g, scale);
-        f.q[8] = quantizeUnit(m.albedo.b, scale);
-        f.q[9] = quantizeUnit(m.metallic, unitScale(kSggxMetallicBits, n));
-    } else {
-        vec3 t = m.normal * toksvigLength(alpha, agaa.toksvig.x, agaa.toksvig.y, agaa.toksvig.z);
-        f.q[0] = quantizeSigned(t.x, toksvigScaleX(n));
-        f.q[1] = quantizeSigned(t.y, toksvigScaleYZ(n));
-        f.q[2] = quantizeSigned(t.z, toksvigScaleYZ(n));
-        f.q[3] = 0u;
-        f.q[4] = 0u;
-        f.q[5] = 0u;
-        f.q[6] = quantizeUnit(m.albedo.r, kUnormScale);
-        f.q[7] = quantizeUnit(m.albedo.g, kUnormScale);
-        f.q[8] = quantizeUnit(m.albedo.b, kUnormScale);
-        f.q[9] = quantizeUnit(m.metallic, kUnormScale);
-    }
-    return f;
-}
-
-#if AGAA_RECORD
-void recordFragment(uvec2 pixel, uint pixelIndex, uint mask, AgQuantized f, MaterialSample m) {
-    uvec2 origin = uvec2(frame.extent.xy) / 2u - kRecordWindow / 2u;
-    if (any(lessThan(pixel, origin)) || any(greaterThanEqual(pixel, origin + kRecordWindow))) return;
-    uint slot = atomicAdd(recordCount, 1u);
-    if (slot >= recordCapacity) return;
-    uint r = slot * kRecordWords;
-    records[r + 0u] = pixelIndex;
-    records[r + 1u] = inLayer;
-    records[r + 2u] = mask;
-    for (uint j = 0u; j < kQuantizedFields; ++j) records[r + 3u + j] = f.q[j];
-    uint inputs = r + 3u + kQuantizedFields;
-    records[inputs + 0u] = floatBitsToUint(m.normal.x);
-    records[inputs + 1u] = floatBitsToUint(m.normal.y);
-    records[inputs + 2u] = floatBitsToUint(m.normal.z);
-    records[inputs + 3u] = floatBitsToUint(m.roughness);
-    records[inputs + 4u] = floatBitsToUint(m.albedo.r);
-    records[inputs + 5u] = floatBitsToUint(m.albedo.g);
-    records[inputs + 6u] = floatBitsToUint(m.albedo.b);
-    records[inputs + 7u] = floatBitsToUint(m.metallic);
-}
-#endif
-
-#if !AGAA_RECORD
-// The fragment's material into each of its covered samples' words (shared/sample_material.h). The
-// stencil's first-fragment test leaves one fragment per sample, so no word is written twice, and
-// an add into the cleared word (agaa.clear) stores the value. Atomic all the same, as every access
-// to the AG-buffer here: a plain store would make the synchronisation validation see writes racing
-// between draws.
-void writeSampleMaterial(uint pixelIndex, uint mask, MaterialSample m) {
-    uint words[kSampleMaterialWords] =
-        uint[](packSnorm2x16(encodeOctahedral(m.normal)), packUnorm4x8(vec4(srgbEncode(m.albedo), m.metallic)),
-               packUnorm2x16(vec2(m.roughness, 0.0)));
-    for (uint hw = 0u; hw < 4u; ++hw) {
-        if ((mask & (1u << hw)) == 0u) continue;
-        uint at = sampleMaterialWord(pixelIndex, agaa.shape.w, inLayer * 4u + hw);
-        for (uint w = 0u; w < kSampleMaterialWords; ++w) atomicAdd(sampleMaterial[at + w], words[w]);
-    }
-}
-#endif
-
 // c = 1: the k of the fragment's samples off the aggregate's layer (shared/clustering.h
 // kOffLayer) add their diffuse colour, normal, F0 and alpha to the pixel's off-layer words
 // (shared/ag_buffer.h kOffLayerWords), apart from the aggregate's fields.
@@ -258,15 +87,6 @@ uint sampleAggregate(uint s, uint pixelIndex) {
 void accumulateFragment(uint pixelIndex, uint mask, AgQuantized f, MaterialSample m) {
     uint c = agaa.shape.x;
     uint n = agaa.shape.w;
-#if AGAA_BREAKDOWN_MATERIAL_ONLY
-    {
-        // Keep the material's evaluation alive without the atomics: an add no value reaches (an
-        // atomic, as every other access to the AG-buffer here: a plain store would make the
-        // synchronisation validation see writes racing between draws).
-        if (f.q[0] + f.q[6] + f.q[9] == 0xFFFFFFFFu) atomicAdd(agBuffer[0], 1u);
-        return;
-    }
-#endif
     if (kRouteFragment != 0u) {
         // Algorithm 2: the first visible sample's aggregate takes the whole fragment. c = 1: whole
         // fragments cannot follow the per-sample layer flag; everything to aggregate 0 (the
@@ -293,23 +113,11 @@ void accumulateFragment(uint pixelIndex, uint mask, AgQuantized f, MaterialSampl
 }
 
 void main() {
-#if AGAA_BREAKDOWN_EMPTY
-    return;
-#endif
-    GpuMaterial gm = materials[pc.material];
-    MaterialSample m = evaluateMaterial(gm, inUvs, inColor, inNormal, inTangent, gl_FrontFacing);
-#if AGAA_EMISSIVE
-    outEmissive = vec4(min(m.emissive, vec3(kMaxRadiance)), 1.0);
-#endif
-    uint mask = uint(gl_SampleMaskIn[0]) & 0xFu;
-    if (mask == 0u) return;
-    uvec2 pixel = uvec2(gl_FragCoord.xy);
-    uint pixelIndex = pixel.y * uint(frame.extent.x) + pixel.x;
-    AgQuantized f = quantizeFragment(m, agaa.shape.w);
-#if AGAA_RECORD
-    recordFragment(pixel, pixelIndex, mask, f, m);
-#else
+    uvec2 pixel;
+    uint pixelIndex, mask;
+    MaterialSample m;
+    AgQuantized f;
+    if (!generationFragment(pixel, pixelIndex, mask, m, f)) return;
     accumulateFragment(pixelIndex, mask, f, m);
     if (kSampleMaterial != 0u) writeSampleMaterial(pixelIndex, mask, m);
-#endif
 }

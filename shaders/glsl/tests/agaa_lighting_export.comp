@@ -1,12 +1,12 @@
-// Test support, compiled into the test build of the lighting pass only
-// (tests/agaa_lighting_export.comp, AGAA_EXPORT 1; tests/support/aggregate_instrumentation.h): what
-// step 1 read and built, for a CPU aggregation written apart from this shader. 16 floats per
-// record: sample s of pixel p at p * n + s, aggregate a of pixel p at pixels * n + p * c + a.
-// The shipping variants compile the calls away and have no binding 14.
-#ifndef AGAA_EXPORT
-#define AGAA_EXPORT 0
-#endif
-#if AGAA_EXPORT
+#version 460
+#extension GL_GOOGLE_include_directive : require
+// Test build of AGAA's lighting pass (tests/support/aggregate_instrumentation.h): the shipping pass
+// (agaa/lighting.comp) that also writes what step 1 read and built, for a CPU aggregation written
+// apart from the shader. 16 floats per record: sample s of pixel p at p * n + s, aggregate a of
+// pixel p at pixels * n + p * c + a.
+#include "agaa/lighting/lighting_pass.glsl"
+#include "agaa/lighting/shade_aggregates.glsl"
+
 layout(set = 0, binding = 14, std430) writeonly buffer Export { float exportData[]; };
 
 void exportRecord(uint record, vec4 a, vec4 b, vec4 c, vec4 d) {
@@ -18,9 +18,6 @@ void exportRecord(uint record, vec4 a, vec4 b, vec4 c, vec4 d) {
         exportData[o + 12u + i] = d[i];
     }
 }
-#else
-void exportRecord(uint record, vec4 a, vec4 b, vec4 c, vec4 d) {}
-#endif
 
 void exportSample(uint pixelIndex, uint s, vec4 a, vec4 b, vec4 c, vec4 d) {
     exportRecord(pixelIndex * kSamples + s, a, b, c, d);
