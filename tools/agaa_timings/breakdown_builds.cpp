@@ -1,60 +1,62 @@
 #include "tools/agaa_timings/breakdown_builds.h"
 
-#include "shaders/breakdown/generation_emissive_empty_frag.h"
-#include "shaders/breakdown/generation_emissive_material_only_frag.h"
-#include "shaders/breakdown/generation_empty_frag.h"
-#include "shaders/breakdown/generation_material_only_frag.h"
-#include "shaders/breakdown/lighting_emissive_no_shading_comp.h"
-#include "shaders/breakdown/lighting_emissive_shadow_no_shading_comp.h"
-#include "shaders/breakdown/lighting_gbuffer_emissive_no_shading_comp.h"
-#include "shaders/breakdown/lighting_gbuffer_emissive_shadow_no_shading_comp.h"
-#include "shaders/breakdown/lighting_gbuffer_no_shading_comp.h"
-#include "shaders/breakdown/lighting_gbuffer_shadow_no_shading_comp.h"
-#include "shaders/breakdown/lighting_no_shading_comp.h"
-#include "shaders/breakdown/lighting_shadow_no_shading_comp.h"
-#include "shaders/breakdown/visibility_no_normals_frag.h"
+#include "shaders/agaa_breakdown_shaders_programs.h"
 
+#include <stdexcept>
 #include <string>
+#include <string_view>
+#include <vector>
 
 namespace agaa::timings {
 
-ProgramOverrides lightingWithoutShading() {
-    return {
-        {"agaa/lighting.comp", kBreakdownLightingNoShadingComp},
-        {"agaa/lighting_emissive.comp", kBreakdownLightingEmissiveNoShadingComp},
-        {"agaa/lighting_shadow.comp", kBreakdownLightingShadowNoShadingComp},
-        {"agaa/lighting_emissive_shadow.comp", kBreakdownLightingEmissiveShadowNoShadingComp},
-        {"agaa/lighting_gbuffer.comp", kBreakdownLightingGbufferNoShadingComp},
-        {"agaa/lighting_gbuffer_emissive.comp", kBreakdownLightingGbufferEmissiveNoShadingComp},
-        {"agaa/lighting_gbuffer_shadow.comp", kBreakdownLightingGbufferShadowNoShadingComp},
-        {"agaa/lighting_gbuffer_emissive_shadow.comp", kBreakdownLightingGbufferEmissiveShadowNoShadingComp}};
-}
-
 namespace {
 
-// Every generation variant's name ([emissive] [int64] [subgroup]) to the build for its output.
-ProgramOverrides everyGeneration(std::span<const uint32_t> plain, std::span<const uint32_t> emissive) {
-    ProgramOverrides o;
-    for (const char* atomics : {"", "_int64"})
-        for (const char* subgroup : {"", "_subgroup"}) {
-            const std::string suffix = std::string(atomics) + subgroup + ".frag";
-            o["agaa/generation" + suffix] = plain;
-            o["agaa/generation_emissive" + suffix] = emissive;
-        }
-    return o;
+// Every breakdown build named "breakdown/<pass><variant><part>.<stage>" (its part the one it leaves
+// out) as the replacement of "agaa/<pass><variant><suffix>.<stage>" for each of `suffixes`: the
+// shipping variants it stands for (shaders/CMakeLists.txt, tools/agaa_timings/CMakeLists.txt).
+void replace(ProgramOverrides& o, std::string_view pass, std::string_view part,
+             const std::vector<std::string_view>& suffixes) {
+    const std::string prefix = "breakdown/" + std::string(pass);
+    bool found = false;
+    for (const EmbeddedProgram& p : kAgaaBreakdownShadersPrograms) {
+        const std::string_view name = p.name;
+        const size_t dot = name.rfind('.');
+        if (name.substr(0, prefix.size()) != prefix || dot < part.size() ||
+            name.substr(dot - part.size(), part.size()) != part)
+            continue;
+        const std::string_view variant = name.substr(prefix.size(), dot - part.size() - prefix.size());
+        for (std::string_view suffix : suffixes)
+            o["agaa/" + std::string(pass) + std::string(variant) + std::string(suffix) +
+              std::string(name.substr(dot))] = p.code;
+        found = true;
+    }
+    if (!found)
+        throw std::logic_error("agaa-timings: no breakdown build of " + prefix + "*" + std::string(part));
 }
+
+// Without atomics, 64-bit atomics and subgroup pre-reduction change nothing: one build stands for
+// every generation variant of its output.
+const std::vector<std::string_view> kEveryAtomics = {"", "_subgroup", "_int64", "_int64_subgroup"};
 
 } // namespace
 
+ProgramOverrides lightingWithoutShading() {
+    ProgramOverrides o;
+    replace(o, "lighting", "_no_shading", {""});
+    return o;
+}
+
 ProgramOverrides generationWithoutAtomicsVisibilityWithoutNormals() {
-    ProgramOverrides o =
-        everyGeneration(kBreakdownGenerationMaterialOnlyFrag, kBreakdownGenerationEmissiveMaterialOnlyFrag);
-    o["agaa/visibility.frag"] = kBreakdownVisibilityNoNormalsFrag;
+    ProgramOverrides o;
+    replace(o, "generation", "_material_only", kEveryAtomics);
+    replace(o, "visibility", "_no_normals", {""});
     return o;
 }
 
 ProgramOverrides generationEmpty() {
-    return everyGeneration(kBreakdownGenerationEmptyFrag, kBreakdownGenerationEmissiveEmptyFrag);
+    ProgramOverrides o;
+    replace(o, "generation", "_empty", kEveryAtomics);
+    return o;
 }
 
 } // namespace agaa::timings
