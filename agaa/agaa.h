@@ -9,6 +9,7 @@
 
 #include "agaa/aggregate/aggregate.h"
 #include "agaa/common/frame_inputs.h"
+#include "agaa/common/frame_recorder.h"
 #include "agaa/common/host_targets.h"
 #include "agaa/common/technique.h"
 #include "agaa/fxaa/fxaa.h"

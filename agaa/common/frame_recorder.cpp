@@ -1,0 +1,41 @@
+// agaa::FrameRecorder (agaa/common/frame_recorder.h).
+
+#include "agaa/common/frame_recorder.h"
+
+#include <stdexcept>
+#include <string>
+
+namespace agaa {
+
+FrameRecorder::FrameRecorder(eng::vk::Device& device, const eng::frame::GpuScene& scene)
+    : m_device(device), m_inputs(device, scene), m_writer(device), m_pool(device) {}
+
+FrameRecorder::~FrameRecorder() {
+    // The host waited for its submissions (the header's lifetimes); the transients go back first.
+    for (std::unique_ptr<eng::rg::Graph>& frame : m_frames)
+        if (frame) frame->releaseTransients();
+}
+
+void FrameRecorder::record(VkCommandBuffer cmd, Technique& technique, const eng::frame::ViewSettings& view,
+                           const HostTargets& targets, uint32_t frameSlot) {
+    if (frameSlot >= kMaxSlots)
+        throw std::out_of_range("FrameRecorder: frame slot " + std::to_string(frameSlot) +
+                                " (allowed: 0 to " + std::to_string(kMaxSlots - 1) + ")");
+    // The slot's previous frame has completed (the host's fence): its transients are free again.
+    std::unique_ptr<eng::rg::Graph>& frame = m_frames[frameSlot];
+    if (frame) frame->releaseTransients();
+    frame = std::make_unique<eng::rg::Graph>();
+    const FrameInputs in = m_inputs.write(*frame, view, technique.samples(), frameSlot);
+    const HostTargetVersions out = m_writer.write(*frame, technique.addPasses(*frame, in), in, targets);
+    frame->markOutput(out.color);
+    if (out.depth.valid()) frame->markOutput(out.depth);
+    frame->compile();
+    eng::rg::Graph::ExecuteInfo info;
+    info.cmd = cmd;
+    info.allocator = &m_pool;
+    info.beginLabel = m_device.beginLabel();
+    info.endLabel = m_device.endLabel();
+    frame->execute(info);
+}
+
+} // namespace agaa
