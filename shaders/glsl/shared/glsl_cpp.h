@@ -26,8 +26,10 @@ using std::sqrt;
 #define SHARED_CONST inline constexpr uint32_t
 #define SHARED_CONST_FLOAT inline constexpr float
 #define inline_fn inline
+#define inout_param(T) T& // a GLSL inout parameter
 #else
 #define inline_fn
+#define inout_param(T) inout T
 #define SHARED_BEGIN
 #define SHARED_END
 #define SHARED_CONST const uint

@@ -26,6 +26,36 @@ struct SggxLobe {
     float alphaB;
 };
 
+// One Jacobi rotation of the symmetric A zeroing A_pq (p < q), accumulated into Q, whose columns
+// become the eigenvectors; skipped when |A_pq| <= offDiagonalEpsilon (theta would divide by zero).
+// Called with constant pairs rather than from a loop over them: with the pair a loop variable every
+// index into A and Q was dynamic, which cost lavapipe about a fifth of SGGX's lighting (issue 49).
+inline_fn void sggxJacobiRotation(inout_param(mat3) A, inout_param(mat3) Q, uint p, uint q,
+                                  float offDiagonalEpsilon) {
+    float apq = A[q][p];
+    if (abs(apq) <= offDiagonalEpsilon) return;
+    // tan of the rotation angle that zeroes S_pq, the smaller root (stable form).
+    float theta = (A[q][q] - A[p][p]) / (2.0f * apq);
+    float t = (theta >= 0.0f ? 1.0f : -1.0f) / (abs(theta) + sqrt(theta * theta + 1.0f));
+    float c = 1.0f / sqrt(t * t + 1.0f);
+    float s = t * c;
+    for (uint k = 0u; k < 3u; ++k) { // A <- A J (columns p, q)
+        float akp = A[p][k], akq = A[q][k];
+        A[p][k] = c * akp - s * akq;
+        A[q][k] = s * akp + c * akq;
+    }
+    for (uint k = 0u; k < 3u; ++k) { // A <- J^T A (rows p, q)
+        float apk = A[k][p], aqk = A[k][q];
+        A[k][p] = c * apk - s * aqk;
+        A[k][q] = s * apk + c * aqk;
+    }
+    for (uint k = 0u; k < 3u; ++k) { // Q <- Q J: the columns are the eigenvectors
+        float qkp = Q[p][k], qkq = Q[q][k];
+        Q[p][k] = c * qkp - s * qkq;
+        Q[q][k] = s * qkp + c * qkq;
+    }
+}
+
 // Eigen-decomposition of the symmetric S by cyclic Jacobi rotations (Golub and Van Loan 8.5).
 // Guards: a rotation is skipped when |S_pq| <= offDiagonalEpsilon (already diagonal: theta would
 // divide by zero); the normal's eigenvalue is floored at eigenvalueFloor (a valid mean has
@@ -43,32 +73,9 @@ inline_fn SggxLobe sggxLobe(float sxx, float syy, float szz, float sxy, float sx
         if (abs(A[1][0]) <= offDiagonalEpsilon && abs(A[2][0]) <= offDiagonalEpsilon &&
             abs(A[2][1]) <= offDiagonalEpsilon)
             break;
-        for (uint r = 0u; r < 3u; ++r) {
-            uint p = r == 2u ? 1u : 0u;
-            uint q = r == 0u ? 1u : 2u;
-            float apq = A[q][p];
-            if (abs(apq) <= offDiagonalEpsilon) continue;
-            // tan of the rotation angle that zeroes S_pq, the smaller root (stable form).
-            float theta = (A[q][q] - A[p][p]) / (2.0f * apq);
-            float t = (theta >= 0.0f ? 1.0f : -1.0f) / (abs(theta) + sqrt(theta * theta + 1.0f));
-            float c = 1.0f / sqrt(t * t + 1.0f);
-            float s = t * c;
-            for (uint k = 0u; k < 3u; ++k) { // A <- A J (columns p, q)
-                float akp = A[p][k], akq = A[q][k];
-                A[p][k] = c * akp - s * akq;
-                A[q][k] = s * akp + c * akq;
-            }
-            for (uint k = 0u; k < 3u; ++k) { // A <- J^T A (rows p, q)
-                float apk = A[k][p], aqk = A[k][q];
-                A[k][p] = c * apk - s * aqk;
-                A[k][q] = s * apk + c * aqk;
-            }
-            for (uint k = 0u; k < 3u; ++k) { // Q <- Q J: the columns are the eigenvectors
-                float qkp = Q[p][k], qkq = Q[q][k];
-                Q[p][k] = c * qkp - s * qkq;
-                Q[q][k] = s * qkp + c * qkq;
-            }
-        }
+        sggxJacobiRotation(A, Q, 0u, 1u, offDiagonalEpsilon);
+        sggxJacobiRotation(A, Q, 0u, 2u, offDiagonalEpsilon);
+        sggxJacobiRotation(A, Q, 1u, 2u, offDiagonalEpsilon);
     }
     float l0 = A[0][0], l1 = A[1][1], l2 = A[2][2];
     uint iN = l0 >= l1 ? (l0 >= l2 ? 0u : 2u) : (l1 >= l2 ? 1u : 2u);
