@@ -26,7 +26,7 @@
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
 cd "$root"
-lvp="$(ls /usr/share/vulkan/icd.d/lvp_icd.*.json 2>/dev/null | head -n1)"
+lvp="$(ls /usr/share/vulkan/icd.d/lvp_icd.*.json 2>/dev/null | head -n1 || true)"
 export VK_ICD_FILENAMES="${VK_ICD_FILENAMES:-$lvp}"
 variants=("$@")
 [ ${#variants[@]} -gt 0 ] || variants=(brdf methods scene)

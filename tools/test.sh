@@ -14,10 +14,6 @@
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
 cd "$root"
-# Software Vulkan only: a machine with a GPU still tests the same driver CI uses.
-lvp="$(ls /usr/share/vulkan/icd.d/lvp_icd.*.json 2>/dev/null | head -n1)"
-export VK_ICD_FILENAMES="${VK_ICD_FILENAMES:-$lvp}"
-
 # Every stage's wall time, printed when it ends and again as a summary when the script exits
 # (also on failure), so CI time can be attributed: stage NAME COMMAND...
 stage_times=()
@@ -38,6 +34,11 @@ trap stage_summary EXIT
 # --browser: Chromium for the report's browser test (label `browser`), part of the whole suite;
 # --fuzz: clang and its runtime for the loader's fuzz stage.
 stage deps tools/deps.sh --browser --fuzz --validator
+# Software Vulkan only: a machine with a GPU still tests the same driver CI uses. Looked up after
+# deps, which installs lavapipe on a fresh machine.
+lvp="$(ls /usr/share/vulkan/icd.d/lvp_icd.*.json 2>/dev/null | head -n1 || true)"
+[ -n "$lvp" ] || { echo "test.sh: no lavapipe ICD in /usr/share/vulkan/icd.d after tools/deps.sh" >&2; exit 1; }
+export VK_ICD_FILENAMES="${VK_ICD_FILENAMES:-$lvp}"
 
 # The module built with AddressSanitizer and UndefinedBehaviorSanitizer (GCC, -O1, assertions on;
 # the tests' own code is not instrumented: AGAA_SANITIZE in the top-level CMakeLists.txt).
