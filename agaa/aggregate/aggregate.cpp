@@ -59,9 +59,6 @@ FrameTargets AggregateAA::addPasses(rg::Graph& graph, const FrameInputs& in) {
     // Per frame slot, so views and frames recorded before any executes keep their own (issue 18).
     AggregateFrame frame{
         in, m_plan, m_constantsRing.write(graph, in.frameSlot, std::as_bytes(std::span(&m_constants, 1)))};
-    const vk::Buffer& materials = in.scene->materials();
-    frame.materials =
-        graph.importBuffer("scene.materials", {materials.buffer, materials.size}, std::nullopt, std::nullopt);
     if (m_gbuffer) {
         frame.gbuffer = m_gbuffer->add(graph, in);
         frame.depth = frame.gbuffer.depth;
@@ -96,10 +93,10 @@ vk::Specialization AggregateAA::lightingVariant() const {
     return m_lighting->variant();
 }
 
-vk::GraphicsPipelineDesc AggregateAA::generationPipelineDesc(bool doubleSided) const {
+const RasterPass& AggregateAA::generationRasterPass() const {
     if (!m_accumulation)
-        throw std::logic_error("agaa: generationPipelineDesc() on the samples path (no generation)");
-    return m_accumulation->pipelineDesc(doubleSided);
+        throw std::logic_error("agaa: generationRasterPass() on the samples path (no generation)");
+    return m_accumulation->rasterPass();
 }
 
 std::vector<VariantChoice> AggregateAA::variants() const {

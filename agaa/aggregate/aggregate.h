@@ -72,9 +72,9 @@ class AggregateAA final : public Technique {
     // test build of the pass must match (tests/support/aggregate_instrumentation.h).
     std::span<const uint32_t> lightingCode() const;
     eng::vk::Specialization lightingVariant() const;
-    // The accumulate path's generation pipeline for a material's sidedness, as this scene and
-    // device run it (a test build of the pass draws with the same state; accumulate path only).
-    eng::vk::GraphicsPipelineDesc generationPipelineDesc(bool doubleSided) const;
+    // The accumulate path's generation pass as a drawer draws it (agaa/common/raster_pass.h; a
+    // test build of the pass draws with the same state; accumulate path only).
+    const RasterPass& generationRasterPass() const;
 
   private:
     eng::vk::Device& m_device;

@@ -1,17 +1,18 @@
 #pragma once
 // The per-sample G-buffer raster pass (DESIGN section 5): 16 bytes per sample plus
-// 4 bytes depth, at n = 1, 4 natively and 8, 16, 32 by layered 4x emulation, drawn
-// with the reference's shaders (reference/gbuffer.vert, .frag). Shared by the methods
-// that light a per-sample G-buffer (the reference, no-AA, Simple/Complex), so they all
-// see exactly the same samples; SBAA's visibility prepass is its material-free variant
-// (GBufferOptions::visibilityOnly), rasterised by the same vertex shader.
+// 4 bytes depth, at n = 1, 4 natively and 8, 16, 32 by layered 4x emulation. Shared by the
+// methods that light a per-sample G-buffer (the reference, no-AA, Simple/Complex, streaming,
+// AGAA's samples path), so they all see exactly the same samples; SBAA's visibility prepass is
+// its material-free variant (GBufferOptions::visibilityOnly). The draws are the host's
+// (FrameInputs::geometry, agaa/common/raster_pass.h) or, without one, the scene's with this
+// project's shaders (agaa::SceneDrawer: reference/gbuffer.vert, .frag).
 
+#include "agaa/common/raster_pass.h"
+#include "agaa/common/scene_drawer.h"
 #include "agaa/common/technique.h"
 #include "engine/graph/graph.h"
 #include "engine/vk/descriptors.h"
 #include "engine/vk/device.h"
-#include "engine/vk/pipeline.h"
-#include "engine/vk/pipeline_cache.h"
 
 #include <array>
 #include <span>
@@ -88,23 +89,23 @@ class SampleGBufferPass {
     SampleGBufferPass(const SampleGBufferPass&) = delete;
     SampleGBufferPass& operator=(const SampleGBufferPass&) = delete;
 
-    // Adds the "<name>.gbuffer" graphics pass.
+    // Adds the "<name>.gbuffer" graphics pass, drawn by inputs.geometry or the scene's drawer.
     SampleGBuffer add(eng::rg::Graph& graph, const FrameInputs& inputs);
     bool isStorage(const std::string& resourceName) const;
     uint32_t samples() const { return m_samples; }
     const GBufferOptions& options() const { return m_options; }
+    // What a host's drawer draws (agaa/common/raster_pass.h): output SampleGBuffer (with
+    // primitiveIds SampleGBufferPrimitive, visibilityOnly SurfaceVisibility); set 0 binding 0 is
+    // shared::FrameConstants; the curvature roughness's specialisation ids 8 to 10.
+    const RasterPass& rasterPass() const { return m_raster; }
 
   private:
-    VkPipeline makePipeline(const DrawVariant& variant);
-    std::span<const uint32_t> fragmentCode() const; // the fill for these options (any alpha path)
-
     eng::vk::Device& m_device;
     uint32_t m_samples;
     std::string m_name;
-    eng::vk::PipelineLayout m_layout;
-    eng::scene::SceneFeatures m_features;
     GBufferOptions m_options;
-    eng::vk::PipelineCache<DrawVariant> m_pipelines; // one per draw variant met, made on first use
+    RasterPass m_raster;
+    SceneDrawer m_sceneDrawer; // the scene's, when the host gives no drawer
 };
 
 } // namespace agaa

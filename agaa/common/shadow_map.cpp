@@ -3,9 +3,6 @@
 #include "engine/frame/frame_constants.h"
 #include "engine/vk/check.h"
 #include "engine/vk/descriptors.h"
-#include "engine/vk/reflection.h"
-#include "shaders/common/shadow_map_frag.h"
-#include "shaders/common/shadow_map_vert.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -105,25 +102,15 @@ ShadowMapPass::ShadowMapPass(vk::Device& device, const eng::frame::GpuScene& sce
       m_mapCount(uint32_t(std::min<size_t>(features.shadowedLights.size(), shared::kMaxShadowMaps))) {
     validate(settings);
     if (!enabled()) return;
-    vk::LayoutDesc layout;
-    // Shared by the opaque (depth-only) and the masked pipeline: the masked one's stages.
-    layout.pushBindings = vk::reflectBindings({{kCommonShadowMapVert, VK_SHADER_STAGE_VERTEX_BIT},
-                                               {kCommonShadowMapFrag, VK_SHADER_STAGE_FRAGMENT_BIT}});
-    layout.extraSets = {scene.textureSetLayout()};
-    layout.pushConstantBytes = 4; // material index
-    m_layout = vk::createPipelineLayout(device, layout, m_name + ".shadow.layout");
-    for (int masked = 0; masked < 2; ++masked) {
-        vk::GraphicsPipelineDesc d;
-        d.vertex = kCommonShadowMapVert;
-        if (masked) d.fragment = kCommonShadowMapFrag;
-        d.layout = m_layout.layout;
-        d.depthFormat = kFormat;
-        d.cullMode = VK_CULL_MODE_NONE;      // both faces cast: thin and open meshes do not leak light
-        d.depthCompare = VK_COMPARE_OP_LESS; // standard depth: 0 nearest the light
-        addMaterialSpecialization(d.specialization, features);
-        m_pipelines[masked] =
-            vk::createGraphicsPipeline(device, d, m_name + ".shadow" + (masked ? ".masked" : ".opaque"));
-    }
+    m_raster.name = m_name + ".shadow";
+    m_raster.output = RasterOutput::ShadowDepth;
+    m_raster.depthFormat = kFormat;
+    m_raster.depthCompare = VK_COMPARE_OP_LESS; // standard depth: 0 nearest the light
+    m_raster.layers = m_mapCount;               // instance l renders light l's map
+    m_raster.bothFaces = true;                  // both faces cast: thin and open meshes do not leak light
+    m_raster.moduleSet = {
+        {0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 1}};
+    m_sceneDrawer = std::make_unique<SceneDrawer>(device, scene, features);
     m_sampler = vk::createSampler(device, VK_FILTER_NEAREST, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE, 0.0f,
                                   m_name + ".shadow.sampler");
 }
@@ -136,10 +123,8 @@ ShadowMapPass::~ShadowMapPass() {
 void ShadowMapPass::release() {
     VkDevice d = m_device.device();
     vkDeviceWaitIdle(d);
-    for (VkPipeline p : m_pipelines)
-        if (p) vkDestroyPipeline(d, p, nullptr);
     vkDestroySampler(d, m_sampler, nullptr);
-    vk::destroyPipelineLayout(m_device, m_layout);
+    m_sceneDrawer.reset();
 }
 
 ShadowMaps ShadowMapPass::add(rg::Graph& graph, const FrameInputs& in) {
@@ -171,39 +156,32 @@ ShadowMaps ShadowMapPass::add(rg::Graph& graph, const FrameInputs& in) {
     const rg::Buffer constants =
         m_constantsRing.write(graph, in.frameSlot, std::as_bytes(std::span(&m_constants, 1)));
 
-    const eng::frame::GpuScene* gpuScene = in.scene;
-    std::vector<VkPipeline> drawPipelines;
-    for (const eng::scene::Draw& draw : scene.draws) {
-        const eng::scene::Material& m = scene.materials.at(draw.material);
-        drawPipelines.push_back(m_pipelines[m.alphaMode == eng::scene::AlphaMode::Mask ? 1 : 0]);
-    }
-    rg::Buffer materials = graph.importBuffer(m_name + ".shadow.materials",
-                                              {gpuScene->materials().buffer, gpuScene->materials().size},
-                                              std::nullopt, std::nullopt);
+    GeometryDrawer* drawer = in.geometry ? in.geometry : m_sceneDrawer.get();
+    drawer->prepare(m_raster); // pipelines now, never while a command buffer records
     // An array view needs two layers under the transient pool's view rule (1 layer: a 2D view).
     const uint32_t layers = std::max(2u, m_mapCount);
     struct Data {
-        rg::Buffer constants, materials;
+        rg::Buffer constants;
         rg::Texture map;
     };
     const Data& out = graph.addGraphics<Data>(
-        m_name + ".shadow",
+        m_raster.name,
         [&](rg::Builder& b, Data& d) {
             d.constants = b.read(constants, rg::Use::UniformRead);
-            d.materials = b.read(materials, rg::Use::StorageReadFragment);
             rg::Attachment clearDepth;
             clearDepth.clear.depthStencil = {1.0f, 0}; // nothing occludes
             d.map = b.depthStencil(
                 b.create(m_name + ".shadow.map", {kFormat, size, size, layers, VK_SAMPLE_COUNT_1_BIT}),
                 rg::Use::DepthStencilWrite, clearDepth);
         },
-        [this, gpuScene, drawPipelines](const rg::Context& ctx, const Data& d) {
-            VkCommandBuffer cmd = ctx.cmd();
-            vk::PushDescriptors()
-                .uniform(0, ctx.buffer(d.constants).buffer)
-                .storage(1, ctx.buffer(d.materials).buffer)
-                .push(m_device, cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, m_layout.layout);
-            gpuScene->recordDraws(cmd, m_layout.layout, drawPipelines, m_mapCount); // instance = layer
+        [this, drawer](const rg::Context& ctx, const Data& d) {
+            const VkBuffer constants = ctx.buffer(d.constants).buffer;
+            drawer->recordDraws(ctx.cmd(), m_raster,
+                                [this, constants](VkCommandBuffer cmd, VkPipelineLayout layout) {
+                                    vk::PushDescriptors()
+                                        .uniform(0, constants)
+                                        .push(m_device, cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout);
+                                });
         });
     return {out.map, out.constants};
 }

@@ -13,6 +13,8 @@
 //    the farthest scene-bounds corner.
 
 #include "agaa/common/effects.h"
+#include "agaa/common/raster_pass.h"
+#include "agaa/common/scene_drawer.h"
 #include "agaa/common/technique.h"
 #include "engine/frame/uniform_ring.h"
 #include "engine/vk/descriptors.h"
@@ -22,6 +24,7 @@
 #include "shared/shadow.h"
 
 #include <array>
+#include <memory>
 #include <string>
 
 namespace agaa {
@@ -43,8 +46,9 @@ class ShadowMapPass {
     ShadowMapPass& operator=(const ShadowMapPass&) = delete;
 
     bool enabled() const { return m_mapCount > 0; }
-    // Adds "<name>.shadow" (only call when enabled()). Writes the frame's ShadowConstants into the
-    // ring slot inputs.frameSlot (engine/frame/uniform_ring.h for its lifetime).
+    // Adds "<name>.shadow" (only call when enabled()), drawn by inputs.geometry or the scene's
+    // drawer. Writes the frame's ShadowConstants into the ring slot inputs.frameSlot
+    // (engine/frame/uniform_ring.h for its lifetime).
     ShadowMaps add(eng::rg::Graph& graph, const FrameInputs& inputs);
     VkSampler sampler() const { return m_sampler; }
     // The maps and their constants read by a lighting pass, and pushed at the bindings its shader
@@ -53,6 +57,9 @@ class ShadowMapPass {
     void push(eng::vk::PushDescriptors& pd, const eng::rg::Context& ctx, const ShadowMaps& maps,
               uint32_t mapBinding, uint32_t constantsBinding) const;
     const shared::ShadowConstants& constants() const { return m_constants; }
+    // What a host's drawer draws (agaa/common/raster_pass.h): output ShadowDepth, one instance per
+    // shadowed light, set 0 binding 0 the frame's shared::ShadowConstants.
+    const RasterPass& rasterPass() const { return m_raster; }
 
     // The light-space fit, exposed for tests: world -> shadow clip (z in [0, 1], 0 near).
     // frame: the camera (its view and proj), to fit a directional map to the visible part of the
@@ -68,8 +75,8 @@ class ShadowMapPass {
     EffectSettings m_settings;
     std::vector<uint32_t> m_lights; // scene light indices, one per layer
     uint32_t m_mapCount = 0;
-    eng::vk::PipelineLayout m_layout;
-    std::array<VkPipeline, 2> m_pipelines{}; // [masked]
+    RasterPass m_raster;
+    std::unique_ptr<SceneDrawer> m_sceneDrawer; // the scene's, when the host gives no drawer
     VkSampler m_sampler = VK_NULL_HANDLE;
     shared::ShadowConstants m_constants{}; // the last add()'s, for tests
 };

@@ -33,9 +33,15 @@
 
 namespace agaa {
 
+class GeometryDrawer;
+
 // Inputs every technique reads; the host imports these buffers into its graph.
 struct FrameInputs {
     const eng::frame::GpuScene* scene = nullptr;
+    // The host's drawer for every raster pass (agaa/common/raster_pass.h); null: each pass draws
+    // `scene` with this project's materials (agaa::SceneDrawer). It must outlive the recording of
+    // the graph.
+    GeometryDrawer* geometry = nullptr;
     const shared::FrameConstants* constants = nullptr; // the values behind frameConstants
     eng::rg::Buffer frameConstants;                    // shared::FrameConstants, uniform
     eng::rg::Buffer lights;                            // shared::GpuLight[], storage

@@ -8,10 +8,11 @@
 // per pixel, not n times. Needs fragmentStoresAndAtomics (required by the device) and
 // gl_PrimitiveID / gl_Layer in a fragment shader (geometryShader, probed by the prepass).
 
+#include "agaa/common/raster_pass.h"
+#include "agaa/common/scene_drawer.h"
 #include "agaa/common/technique.h"
 #include "engine/graph/graph.h"
 #include "engine/vk/device.h"
-#include "engine/vk/pipeline.h"
 
 namespace agaa {
 
@@ -25,16 +26,20 @@ class SurfaceFillPass {
     SurfaceFillPass(const SurfaceFillPass&) = delete;
     SurfaceFillPass& operator=(const SurfaceFillPass&) = delete;
 
-    // Adds "sbaa.fill": reads the prepass `depth` (EQUAL, read-only) and writes the material words
-    // of `surfaces`; returns the buffer's new version.
+    // Adds "sbaa.fill", drawn by inputs.geometry or the scene's drawer: reads the prepass `depth`
+    // (EQUAL, read-only) and writes the material words of `surfaces`; returns the buffer's new
+    // version.
     eng::rg::Buffer add(eng::rg::Graph& graph, const FrameInputs& inputs, eng::rg::Texture depth,
                         eng::rg::Buffer surfaces);
 
+    // What a host's drawer draws: output SurfaceFill; set 0 binding 0 shared::FrameConstants,
+    // binding 2 the per-surface records; specialisation id 24 S.
+    const RasterPass& rasterPass() const { return m_raster; }
+
   private:
     eng::vk::Device& m_device;
-    uint32_t m_samples;
-    eng::vk::PipelineLayout m_layout;
-    VkPipeline m_pipelines[2] = {}; // [double-sided]
+    RasterPass m_raster;
+    SceneDrawer m_sceneDrawer; // the scene's, when the host gives no drawer
 };
 
 } // namespace agaa

@@ -12,6 +12,7 @@
 #include <glm/gtc/packing.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstring>
 #include <stdexcept>
@@ -137,21 +138,28 @@ GpuScene::GpuScene(vk::Device& device, const scene::Scene& scene) : m_device(dev
         createEnvironment();
         uploadTextures();
 
-        vk::Binding binding{0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
-                            VK_SHADER_STAGE_FRAGMENT_BIT | VK_SHADER_STAGE_COMPUTE_BIT,
-                            shared::kMaxSceneTextures};
-        m_textureSetLayout = vk::createSetLayout(device, std::span(&binding, 1), "scene.textures.layout");
-        VkDescriptorPoolSize size{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, shared::kMaxSceneTextures};
+        // Set 1 of every pass that draws this scene (shaders/glsl/common/scene_materials.glsl):
+        // the textures, then the material table.
+        const std::array<vk::Binding, 2> bindings{
+            vk::Binding{0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
+                        VK_SHADER_STAGE_FRAGMENT_BIT | VK_SHADER_STAGE_COMPUTE_BIT,
+                        shared::kMaxSceneTextures},
+            vk::Binding{1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
+                        VK_SHADER_STAGE_FRAGMENT_BIT | VK_SHADER_STAGE_COMPUTE_BIT, 1}};
+        m_materialSetLayout = vk::createSetLayout(device, bindings, "scene.materials.layout");
+        const std::array<VkDescriptorPoolSize, 2> sizes{
+            VkDescriptorPoolSize{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, shared::kMaxSceneTextures},
+            VkDescriptorPoolSize{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1}};
         VkDescriptorPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
         poolInfo.maxSets = 1;
-        poolInfo.poolSizeCount = 1;
-        poolInfo.pPoolSizes = &size;
+        poolInfo.poolSizeCount = uint32_t(sizes.size());
+        poolInfo.pPoolSizes = sizes.data();
         VK_CHECK(vkCreateDescriptorPool(device.device(), &poolInfo, nullptr, &m_pool));
         VkDescriptorSetAllocateInfo alloc{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
         alloc.descriptorPool = m_pool;
         alloc.descriptorSetCount = 1;
-        alloc.pSetLayouts = &m_textureSetLayout;
-        VK_CHECK(vkAllocateDescriptorSets(device.device(), &alloc, &m_textureSet));
+        alloc.pSetLayouts = &m_materialSetLayout;
+        VK_CHECK(vkAllocateDescriptorSets(device.device(), &alloc, &m_materialSet));
         // Unused slots point at the white fallback, so no descriptor is ever undefined.
         std::vector<VkDescriptorImageInfo> infos(shared::kMaxSceneTextures);
         for (uint32_t i = 0; i < shared::kMaxSceneTextures; ++i) {
@@ -159,12 +167,20 @@ GpuScene::GpuScene(vk::Device& device, const scene::Scene& scene) : m_device(dev
             // The layout the upload graph leaves them in (its final state, SampledFragment).
             infos[i] = {m_sampler, img.view, rg::useInfo(rg::Use::SampledFragment).layout};
         }
-        VkWriteDescriptorSet write{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
-        write.dstSet = m_textureSet;
-        write.descriptorCount = shared::kMaxSceneTextures;
-        write.descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
-        write.pImageInfo = infos.data();
-        vkUpdateDescriptorSets(device.device(), 1, &write, 0, nullptr);
+        const VkDescriptorBufferInfo materialsInfo{m_materials.buffer, 0, VK_WHOLE_SIZE};
+        std::array<VkWriteDescriptorSet, 2> writes{};
+        writes[0] = {VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+        writes[0].dstSet = m_materialSet;
+        writes[0].descriptorCount = shared::kMaxSceneTextures;
+        writes[0].descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
+        writes[0].pImageInfo = infos.data();
+        writes[1] = {VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+        writes[1].dstSet = m_materialSet;
+        writes[1].dstBinding = 1;
+        writes[1].descriptorCount = 1;
+        writes[1].descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+        writes[1].pBufferInfo = &materialsInfo;
+        vkUpdateDescriptorSets(device.device(), uint32_t(writes.size()), writes.data(), 0, nullptr);
     } catch (...) {
         release();
         throw;
@@ -376,7 +392,7 @@ void GpuScene::release() {
     VkDevice d = m_device.device();
     vkDeviceWaitIdle(d);
     if (m_pool) vkDestroyDescriptorPool(d, m_pool, nullptr);
-    if (m_textureSetLayout) vkDestroyDescriptorSetLayout(d, m_textureSetLayout, nullptr);
+    if (m_materialSetLayout) vkDestroyDescriptorSetLayout(d, m_materialSetLayout, nullptr);
     if (m_sampler) vkDestroySampler(d, m_sampler, nullptr);
     if (m_environmentSampler) vkDestroySampler(d, m_environmentSampler, nullptr);
     if (m_dfgSampler) vkDestroySampler(d, m_dfgSampler, nullptr);
@@ -390,7 +406,7 @@ void GpuScene::release() {
     vk::destroyBuffer(m_device, m_materials);
     m_textures.clear();
     m_pool = VK_NULL_HANDLE;
-    m_textureSetLayout = VK_NULL_HANDLE;
+    m_materialSetLayout = VK_NULL_HANDLE;
     m_sampler = VK_NULL_HANDLE;
     m_environmentSampler = VK_NULL_HANDLE;
     m_dfgSampler = VK_NULL_HANDLE;
@@ -402,7 +418,7 @@ void GpuScene::recordDraws(VkCommandBuffer cmd, VkPipelineLayout layout,
     VkDeviceSize offset = 0;
     vkCmdBindVertexBuffers(cmd, 0, 1, &m_vertices.buffer, &offset);
     vkCmdBindIndexBuffer(cmd, m_indices.buffer, 0, VK_INDEX_TYPE_UINT32);
-    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout, 1, 1, &m_textureSet, 0, nullptr);
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout, 1, 1, &m_materialSet, 0, nullptr);
     VkPipeline bound = VK_NULL_HANDLE;
     const auto& draws = m_scene.draws;
     for (size_t i = 0; i < draws.size() && i < pipelinePerDraw.size(); ++i) {

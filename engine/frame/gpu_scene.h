@@ -1,9 +1,9 @@
 #pragma once
 // A scene's device copy, shared by every technique: world-space vertices and
 // indices, the material table, decoded textures with CPU-built mip chains, and
-// descriptor set 1 (sampler2D textures[kMaxSceneTextures]) that every material-
-// evaluating pass binds. Uploads run through a render graph, which owns the
-// layout transitions like everywhere else.
+// descriptor set 1 (the textures and the material table; shaders/glsl/common/
+// scene_materials.glsl) that every pass drawing the scene binds. Uploads run through a render graph, which
+// owns the layout transitions like everywhere else.
 
 #include "engine/scene/scene.h"
 #include "engine/vk/device.h"
@@ -30,7 +30,7 @@ class GpuScene {
     bool hasEmissive() const; // any material emits light
 
     // Records every draw of the scene into a rendering pass: binds the vertex and index
-    // buffers and the texture set (set 1 of `layout`), and per draw its pipeline
+    // buffers and the material set (set 1 of `layout`), and per draw its pipeline
     // (pipelinePerDraw[i]) and its material index (push constant, 4 bytes at offset 0), with
     // `instances` instances (one per emulation layer or shadow-map layer). With
     // `pushFirstTriangle` the push constant is 8 bytes: the material, then the draw's first
@@ -39,8 +39,8 @@ class GpuScene {
                      std::span<const VkPipeline> pipelinePerDraw, uint32_t instances,
                      bool pushFirstTriangle = false) const;
     const vk::Buffer& materials() const { return m_materials; }
-    VkDescriptorSetLayout textureSetLayout() const { return m_textureSetLayout; }
-    VkDescriptorSet textureSet() const { return m_textureSet; }
+    VkDescriptorSetLayout materialSetLayout() const { return m_materialSetLayout; }
+    VkDescriptorSet materialSet() const { return m_materialSet; }
     // The environment (issue 16; engine/frame/environment_maps.h), bound by every lighting pass:
     // its pre-filtered specular levels as an RGBA16F 2D array (one layer per level, u repeats,
     // v clamps) and its constants (uniform, shared::EnvironmentConstants). A scene without one
@@ -69,9 +69,9 @@ class GpuScene {
     std::vector<uint16_t> m_environmentTexels, m_dfgTexels; // half floats, until uploaded
     std::vector<vk::Image> m_textures;                      // scene textures, then one 1x1 white fallback
     VkSampler m_sampler = VK_NULL_HANDLE;
-    VkDescriptorSetLayout m_textureSetLayout = VK_NULL_HANDLE;
+    VkDescriptorSetLayout m_materialSetLayout = VK_NULL_HANDLE;
     VkDescriptorPool m_pool = VK_NULL_HANDLE;
-    VkDescriptorSet m_textureSet = VK_NULL_HANDLE;
+    VkDescriptorSet m_materialSet = VK_NULL_HANDLE;
 };
 
 } // namespace eng::frame

@@ -134,6 +134,11 @@ VkPipeline createGraphicsPipeline(const Device& device, const GraphicsPipelineDe
         vertexInput.pVertexBindingDescriptions = &binding;
         vertexInput.vertexAttributeDescriptionCount = 6;
         vertexInput.pVertexAttributeDescriptions = attributes;
+    } else {
+        vertexInput.vertexBindingDescriptionCount = uint32_t(d.vertexBindings.size());
+        vertexInput.pVertexBindingDescriptions = d.vertexBindings.data();
+        vertexInput.vertexAttributeDescriptionCount = uint32_t(d.vertexAttributes.size());
+        vertexInput.pVertexAttributeDescriptions = d.vertexAttributes.data();
     }
     VkPipelineInputAssemblyStateCreateInfo assembly{
         VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO};

@@ -20,6 +20,7 @@ struct Binding {
     VkDescriptorType type = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
     VkShaderStageFlags stages = VK_SHADER_STAGE_ALL;
     uint32_t count = 1;
+    bool operator==(const Binding&) const = default;
 };
 
 struct LayoutDesc {
@@ -43,6 +44,7 @@ VkDescriptorSetLayout createSetLayout(const Device&, std::span<const Binding>, c
 struct Specialization {
     std::vector<uint32_t> values;
     std::vector<std::pair<uint32_t, uint32_t>> byId;
+    bool operator==(const Specialization&) const = default;
 };
 
 VkPipeline createComputePipeline(const Device&, std::span<const uint32_t> spirv, VkPipelineLayout,
@@ -57,6 +59,9 @@ struct GraphicsPipelineDesc {
     VkFormat depthFormat = VK_FORMAT_UNDEFINED;
     VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;
     bool sceneVertexInput = true; // eng::scene::Vertex at binding 0
+    // Without sceneVertexInput: a host's own vertex layout (none: the vertex shader makes its own).
+    std::vector<VkVertexInputBindingDescription> vertexBindings;
+    std::vector<VkVertexInputAttributeDescription> vertexAttributes;
     VkCullModeFlags cullMode = VK_CULL_MODE_BACK_BIT;
     VkFrontFace frontFace = VK_FRONT_FACE_COUNTER_CLOCKWISE;
     bool depthTest = true;

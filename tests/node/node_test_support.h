@@ -4,6 +4,7 @@
 
 #include "agaa/common/technique.h"
 #include "engine/frame/frame_constants.h"
+#include "engine/frame/frame_runner.h"
 #include "engine/frame/gpu_scene.h"
 #include "engine/frame/readback.h"
 #include "engine/vk/resources.h"
@@ -44,10 +45,12 @@ class HostView {
     // Imports this view's buffers, adds the technique's passes writing frame slot `slot`, and
     // reads HDR and display back into this view's buffers.
     // Returns the inputs it handed the technique; lastTargets holds what the technique returned.
+    // `geometry`: the host's drawer (FrameInputs::geometry), or none.
     FrameInputs record(eng::rg::Graph& graph, Technique& technique, const eng::frame::GpuScene& scene,
-                       uint32_t slot, const std::string& prefix) {
+                       uint32_t slot, const std::string& prefix, GeometryDrawer* geometry = nullptr) {
         FrameInputs in;
         in.scene = &scene;
+        in.geometry = geometry;
         in.constants = &constants;
         in.width = m_width;
         in.height = m_height;
@@ -81,6 +84,20 @@ class HostView {
     uint32_t m_width, m_height;
     eng::vk::Buffer m_frame, m_lights, m_hdr, m_display;
 };
+
+// One 64x64 frame of scene camera 0 through `technique`, drawn by `geometry` (FrameInputs::geometry;
+// null: the scene's own drawer): HDR then display, as HostView::read.
+inline std::vector<float> renderFrame(eng::vk::Device& device, const eng::frame::GpuScene& scene,
+                                      Technique& technique, GeometryDrawer* geometry) {
+    eng::frame::ViewSettings view;
+    view.width = view.height = 64;
+    HostView host(device, scene.scene(), view, technique.samples());
+    eng::rg::Graph graph;
+    host.record(graph, technique, scene, 0, "host", geometry);
+    eng::frame::FrameRunner runner(device);
+    runner.run(graph);
+    return host.read();
+}
 
 // Values that differ bit for bit (NaN-safe: compares the bits, not the floats).
 inline size_t countDifferentBits(const std::vector<float>& a, const std::vector<float>& b) {

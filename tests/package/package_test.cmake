@@ -25,6 +25,8 @@ run("cmake --install" ${CMAKE_COMMAND} --install ${BUILD} --prefix ${prefix})
 # What a host gets and only that: the umbrella header, no test content, no tool harness, and no
 # include directory but <prefix>/include/agaa.
 foreach(path include/agaa/agaa/agaa.h include/agaa/engine/vk/device.h include/agaa/shared/frame.h
+             include/agaa/agaa/common/raster_pass.h include/agaa/glsl/raster/sample_gbuffer_output.glsl
+             include/agaa/glsl/raster/camera_pass.glsl include/agaa/glsl/raster/shadow_pass.glsl
              lib/cmake/agaa/agaa-config.cmake lib/cmake/agaa/agaa-targets.cmake)
   if(NOT EXISTS ${prefix}/${path})
     message(FATAL_ERROR "package test: the install lacks ${path}")
@@ -42,6 +44,10 @@ if(EXISTS ${prefix}/include/agaa/agaa/aggregate/passes)
 endif()
 # The public surface a host reads, printed so that a change to it shows in the log.
 file(GLOB_RECURSE headers ${prefix}/include/agaa/*.h)
+list(FILTER headers EXCLUDE REGEX "/include/agaa/glsl/") # the GLSL includes' copy of shared/
+file(GLOB_RECURSE glsl_includes ${prefix}/include/agaa/glsl/*)
+list(LENGTH glsl_includes glsl_count)
+message(STATUS "package test: ${glsl_count} GLSL include files for a host's shaders (include/agaa/glsl)")
 list(LENGTH headers header_count)
 set(header_lines 0)
 foreach(header IN LISTS headers)

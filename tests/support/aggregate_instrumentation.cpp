@@ -202,13 +202,7 @@ void AggregateExportPass::add(rg::Graph& graph, const AggregateAA& aggregate, co
 
 FragmentRecordPass::FragmentRecordPass(vk::Device& device) : m_device(device) {}
 
-FragmentRecordPass::~FragmentRecordPass() {
-    vkDeviceWaitIdle(m_device.device());
-    for (VkPipeline p : m_pipelines)
-        vkDestroyPipeline(m_device.device(), p, nullptr);
-    for (vk::PipelineLayout& l : m_layouts)
-        vk::destroyPipelineLayout(m_device, l);
-}
+FragmentRecordPass::~FragmentRecordPass() = default;
 
 void FragmentRecordPass::add(rg::Graph& graph, const AggregateAA& aggregate, const FrameInputs& in,
                              const vk::Buffer& host) {
@@ -220,30 +214,24 @@ void FragmentRecordPass::add(rg::Graph& graph, const AggregateAA& aggregate, con
     if (aggregate.features().hasEmissive())
         throw std::logic_error("test: the generation pass's test build has no emissive output (a scene "
                                "without emissive materials only)");
-    const eng::frame::GpuScene& scene = *in.scene;
-    vk::LayoutDesc layoutDesc;
-    layoutDesc.pushBindings =
-        vk::reflectBindings({{kAgaaSceneVert, VK_SHADER_STAGE_VERTEX_BIT},
-                             {kTestsAgaaGenerationRecordFrag, VK_SHADER_STAGE_FRAGMENT_BIT}});
-    layoutDesc.extraSets = {scene.textureSetLayout()};
-    layoutDesc.pushConstantBytes = 4; // material index
-    m_layouts.push_back(vk::createPipelineLayout(m_device, layoutDesc, "test.fragmentRecords.layout"));
-    const VkPipelineLayout layout = m_layouts.back().layout;
-    // The shipping pass's state, its test build's shader, and a stencil that lets through the one
-    // fragment per sample the shipping pass counted (its stencil is 1 there, 0 on sky): EQUAL 1,
-    // then incremented so no later fragment of that sample passes.
-    VkPipeline sided[2] = {};
-    for (int doubleSided = 0; doubleSided < 2; ++doubleSided) {
-        vk::GraphicsPipelineDesc d = aggregate.generationPipelineDesc(doubleSided != 0);
-        d.fragment = kTestsAgaaGenerationRecordFrag;
-        d.layout = layout;
-        d.stencil.compareOp = VK_COMPARE_OP_EQUAL;
-        sided[doubleSided] = vk::createGraphicsPipeline(m_device, d, "test.fragmentRecords");
-        m_pipelines.push_back(sided[doubleSided]);
-    }
-    std::vector<VkPipeline> pipelines;
-    for (const eng::scene::Draw& draw : scene.scene().draws)
-        pipelines.push_back(sided[scene.scene().materials.at(draw.material).doubleSided ? 1 : 0]);
+    // The shipping pass's state drawn by this project's scene drawer with the test build in place
+    // of the generation program (its one build: 32-bit atomics, no subgroups, binding 5 the
+    // records instead of 7), and a stencil that lets through the one fragment per sample the
+    // shipping pass counted (its stencil is 1 there, 0 on sky): EQUAL 1, then incremented so no
+    // later fragment of that sample passes.
+    RasterPass raster = aggregate.generationRasterPass();
+    raster.name = "test.fragmentRecords";
+    raster.defines.clear();
+    const VkShaderStageFlags fs = VK_SHADER_STAGE_FRAGMENT_BIT;
+    raster.moduleSet = {{0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_SHADER_STAGE_VERTEX_BIT | fs, 1},
+                        {2, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, fs, 1},
+                        {5, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, fs, 1}};
+    raster.stencil.compareOp = VK_COMPARE_OP_EQUAL;
+    m_drawers.push_back(std::make_unique<SceneDrawer>(
+        m_device, *in.scene, aggregate.features(),
+        ProgramOverrides{{"agaa/generation.frag", kTestsAgaaGenerationRecordFrag}}));
+    SceneDrawer* drawer = m_drawers.back().get();
+    drawer->prepare(raster);
 
     const AggregateResources& r = aggregate.resources();
     rg::Buffer imported =
@@ -260,35 +248,31 @@ void FragmentRecordPass::add(rg::Graph& graph, const AggregateAA& aggregate, con
                     vkCmdFillBuffer(ctx.cmd(), ctx.buffer(d.records).buffer, 0, 4, 0); // the count only
                 })
             .records;
-    rg::Buffer materials =
-        graph.importBuffer("test.fragmentRecords.materials",
-                           {scene.materials().buffer, scene.materials().size}, std::nullopt, std::nullopt);
     struct Record {
-        rg::Buffer frame, agaa, materials, records;
+        rg::Buffer frame, agaa, records;
         rg::Texture depth;
     };
-    const uint32_t layers = aggregate.settings().samples / 4;
     graph.addGraphics<Record>(
         "test.fragmentRecords",
         [&](rg::Builder& b, Record& d) {
             d.frame = b.read(in.frameConstants, rg::Use::UniformRead);
             d.agaa = b.read(r.agaaConstants, rg::Use::UniformRead);
-            d.materials = b.read(materials, rg::Use::StorageReadFragment);
             d.records = b.readWrite(records, rg::Use::StorageReadWriteFragment);
             rg::Attachment loadDepth;
             loadDepth.load = VK_ATTACHMENT_LOAD_OP_LOAD;
             d.depth = b.depthStencil(r.depth, rg::Use::DepthStencilRead, loadDepth); // EQUAL, stencil written
             b.sideEffect();
         },
-        [this, layout, pipelines, layers, &scene](const rg::Context& ctx, const Record& d) {
-            VkCommandBuffer cmd = ctx.cmd();
-            vk::PushDescriptors()
-                .uniform(0, ctx.buffer(d.frame).buffer)
-                .storage(1, ctx.buffer(d.materials).buffer)
-                .uniform(2, ctx.buffer(d.agaa).buffer)
-                .storage(5, ctx.buffer(d.records).buffer)
-                .push(m_device, cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout);
-            scene.recordDraws(cmd, layout, pipelines, layers);
+        [this, drawer, raster](const rg::Context& ctx, const Record& d) {
+            const VkBuffer frame = ctx.buffer(d.frame).buffer, agaa = ctx.buffer(d.agaa).buffer,
+                           records = ctx.buffer(d.records).buffer;
+            drawer->recordDraws(ctx.cmd(), raster, [=, this](VkCommandBuffer cmd, VkPipelineLayout layout) {
+                vk::PushDescriptors()
+                    .uniform(0, frame)
+                    .uniform(2, agaa)
+                    .storage(5, records)
+                    .push(m_device, cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout);
+            });
         });
 }
 

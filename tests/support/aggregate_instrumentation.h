@@ -5,9 +5,11 @@
 // here is in the shipping class, its shaders or its layouts.
 
 #include "agaa/aggregate/aggregate.h"
+#include "agaa/common/scene_drawer.h"
 #include "engine/vk/pipeline.h"
 #include "engine/vk/resources.h"
 
+#include <memory>
 #include <vector>
 
 namespace agaa::test {
@@ -80,8 +82,7 @@ class FragmentRecordPass {
 
   private:
     eng::vk::Device& m_device;
-    std::vector<eng::vk::PipelineLayout> m_layouts; // made per add(): each scene its texture set
-    std::vector<VkPipeline> m_pipelines;
+    std::vector<std::unique_ptr<SceneDrawer>> m_drawers; // made per add(): each scene its own
 };
 
 // A host buffer for `capacity` fragment records of `recordWords` words each (FragmentRecordPass's

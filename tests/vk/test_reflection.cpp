@@ -81,14 +81,17 @@ TEST(Reflection, ShadowBindingsOnlyInTheShadowedVariant) {
 // fragment stage only; set 1 (the scene's textures) is kept apart from set 0, with its array's count.
 TEST(Reflection, GraphicsStagesMergeAndSetsStayApart) {
     const std::vector<Binding> set0 = reflectBindings({{kAgaaSceneVert, kVs}, {kAgaaVisibilityFrag, kFs}});
-    ASSERT_TRUE(find(set0, 0) && find(set0, 1));
+    ASSERT_TRUE(find(set0, 0) && find(set0, 2));
+    EXPECT_FALSE(find(set0, 1)) << "the scene's materials are in its own set 1 (common/scene_materials.glsl)";
     EXPECT_EQ(find(set0, 0)->stages, VkShaderStageFlags(kVs | kFs));
-    EXPECT_EQ(find(set0, 1)->stages, VkShaderStageFlags(kFs));
-    EXPECT_EQ(find(set0, 1)->type, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER);
+    EXPECT_EQ(find(set0, 2)->type, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER);
     const std::vector<Binding> set1 = reflectBindings({{kAgaaSceneVert, kVs}, {kAgaaVisibilityFrag, kFs}}, 1);
-    ASSERT_EQ(set1.size(), 1u);
-    EXPECT_EQ(set1[0].type, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER);
-    EXPECT_EQ(set1[0].count, shared::kMaxSceneTextures);
+    ASSERT_EQ(set1.size(), 2u);
+    ASSERT_TRUE(find(set1, 0) && find(set1, 1));
+    EXPECT_EQ(find(set1, 0)->type, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER);
+    EXPECT_EQ(find(set1, 0)->count, shared::kMaxSceneTextures);
+    EXPECT_EQ(find(set1, 1)->type, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER);
+    EXPECT_EQ(find(set1, 1)->stages, VkShaderStageFlags(kFs));
 
     // The generation variants: the test record's buffer (5) and the 64-bit view of the AG-buffer (6).
     const std::vector<Binding> record =

@@ -2,10 +2,7 @@
 
 #include "agaa/aggregate/passes/accumulation_pass.h"
 
-#include "agaa/aggregate/passes/aggregate_programs.h"
 #include "engine/vk/descriptors.h"
-#include "engine/vk/reflection.h"
-#include "shaders/agaa/scene_vert.h"
 #include "shared/ag_buffer.h"
 #include "shared/sample_material.h"
 
@@ -15,66 +12,50 @@ namespace vk = eng::vk;
 
 AccumulationPass::AccumulationPass(vk::Device& device, const eng::frame::GpuScene& scene,
                                    const AggregatePlan& plan)
-    : m_device(device), m_plan(plan), m_pipelines(device, [this](const DrawVariant& v) {
-          return vk::createGraphicsPipeline(m_device, pipelineDesc(v.doubleSided),
-                                            std::string("agaa.generation") +
-                                                (v.doubleSided ? ".twoSided" : ""));
-      }) {
-    vk::LayoutDesc layout;
-    layout.extraSets = {scene.textureSetLayout()};
-    layout.pushConstantBytes = 4;
-    layout.pushBindings = vk::reflectBindings(
-        {{kAgaaSceneVert, VK_SHADER_STAGE_VERTEX_BIT}, {code(), VK_SHADER_STAGE_FRAGMENT_BIT}});
-    m_layout = vk::createPipelineLayout(m_device, layout, "agaa.generation.layout");
-}
-
-AccumulationPass::~AccumulationPass() {
-    m_pipelines.release();
-    vk::destroyPipelineLayout(m_device, m_layout);
-}
-
-std::span<const uint32_t> AccumulationPass::code() const {
-    const AggregateSettings& s = m_plan.settings;
-    return programCode(s.programs, generationProgram(m_plan.emissive(), s.atomics == AggregateAtomics::Bits64,
-                                                     s.subgroupReduction == SubgroupReduction::On));
-}
-
-vk::GraphicsPipelineDesc AccumulationPass::pipelineDesc(bool doubleSided) const {
-    vk::GraphicsPipelineDesc d;
-    d.vertex = kAgaaSceneVert;
-    d.fragment = code();
-    d.layout = m_layout.layout;
-    d.specialization = effectSpecialization(m_plan.features, 1);
-    d.specialization.byId.insert(d.specialization.byId.end(),
-                                 {{shared::kSpecGenerationNdf, uint32_t(m_plan.settings.ndf)},
-                                  {shared::kSpecGenerationRouting, uint32_t(m_plan.settings.routing)},
-                                  {shared::kSpecGenerationSampleMaterial, m_plan.shadingRate() ? 1u : 0u}});
-    addMaterialSpecialization(d.specialization, m_plan.features);
-    if (m_plan.emissive()) d.colorFormats = {VK_FORMAT_B10G11R11_UFLOAT_PACK32};
-    d.depthFormat = m_plan.depthFormat;
-    d.samples = VK_SAMPLE_COUNT_4_BIT;
-    d.cullMode = doubleSided ? VK_CULL_MODE_NONE : VK_CULL_MODE_BACK_BIT;
+    : m_device(device), m_plan(plan), m_sceneDrawer(device, scene, plan.features, plan.settings.programs) {
+    const AggregateSettings& s = plan.settings;
+    m_raster.name = "agaa.generation";
+    m_raster.output = RasterOutput::AggregateAccumulation;
+    if (plan.emissive()) m_raster.colorFormats = {kEmissiveFormat};
+    m_raster.depthFormat = plan.depthFormat;
+    m_raster.samples = VK_SAMPLE_COUNT_4_BIT;
+    m_raster.layers = plan.layers(); // one instance per emulation layer (common/scene_vertex.glsl)
     // Algorithm 2 step 1: depth EQUAL without writes; stencil keeps the first fragment per sample
     // (GREATER against reference 1 passes while the sample's stencil is 0; INCREMENT_AND_CLAMP on pass).
-    d.depthCompare = VK_COMPARE_OP_EQUAL;
-    d.depthWrite = false;
-    d.stencilTest = true;
-    d.stencil = {VK_STENCIL_OP_KEEP,
-                 VK_STENCIL_OP_INCREMENT_AND_CLAMP,
-                 VK_STENCIL_OP_KEEP,
-                 VK_COMPARE_OP_GREATER,
-                 0xFF,
-                 0xFF,
-                 1};
-    return d;
+    m_raster.depthCompare = VK_COMPARE_OP_EQUAL;
+    m_raster.depthWrite = false;
+    m_raster.stencilTest = true;
+    m_raster.stencil = {VK_STENCIL_OP_KEEP,
+                        VK_STENCIL_OP_INCREMENT_AND_CLAMP,
+                        VK_STENCIL_OP_KEEP,
+                        VK_COMPARE_OP_GREATER,
+                        0xFF,
+                        0xFF,
+                        1};
+    const bool int64 = s.atomics == AggregateAtomics::Bits64;
+    const VkShaderStageFlags fs = VK_SHADER_STAGE_FRAGMENT_BIT;
+    m_raster.moduleSet = {{0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_SHADER_STAGE_VERTEX_BIT | fs, 1},
+                          {2, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, fs, 1},
+                          {3, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, fs, 1},
+                          {4, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, fs, 1},
+                          {7, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, fs, 1}};
+    if (int64) m_raster.moduleSet.push_back({6, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, fs, 1});
+    m_raster.specialization.byId = {{shared::kSpecGenerationNdf, uint32_t(s.ndf)},
+                                    {shared::kSpecGenerationRouting, uint32_t(s.routing)},
+                                    {shared::kSpecGenerationSampleMaterial, plan.shadingRate() ? 1u : 0u}};
+    if (plan.emissive()) m_raster.defines.push_back("AGAA_EMISSIVE");
+    if (int64) m_raster.defines.push_back("AGAA_INT64");
+    if (s.subgroupReduction == SubgroupReduction::On) m_raster.defines.push_back("AGAA_SUBGROUP");
 }
+
+AccumulationPass::~AccumulationPass() = default;
 
 void AccumulationPass::add(rg::Graph& graph, AggregateFrame& frame) {
     struct Clear {
         rg::Buffer agBuffer, sampleMaterial;
     };
     struct Generation {
-        rg::Buffer frame, agaa, materials, metadata, agBuffer, sampleMaterial;
+        rg::Buffer frame, agaa, metadata, agBuffer, sampleMaterial;
         rg::Texture depth, emissive;
     };
     const FrameInputs& in = frame.in;
@@ -98,21 +79,15 @@ void AccumulationPass::add(rg::Graph& graph, AggregateFrame& frame) {
             vkCmdFillBuffer(ctx.cmd(), ctx.buffer(d.sampleMaterial).buffer, 0, VK_WHOLE_SIZE, 0);
         });
 
-    const eng::frame::GpuScene* scene = in.scene;
-    std::vector<VkPipeline> pipelines;
-    for (const eng::scene::Draw& draw : scene->scene().draws)
-        pipelines.push_back(
-            m_pipelines.get({AlphaPath::Opaque, scene->scene().materials.at(draw.material).doubleSided}));
     const bool emissive = m_plan.emissive();
     const bool int64 = m_plan.settings.atomics == AggregateAtomics::Bits64;
-    const uint32_t layers = m_plan.layers();
-    const VkPipelineLayout layout = m_layout.layout;
+    GeometryDrawer* drawer = in.geometry ? in.geometry : &m_sceneDrawer;
+    drawer->prepare(m_raster); // pipelines now, never while a command buffer records
     const Generation& gen = graph.addGraphics<Generation>(
-        "agaa.generation",
+        m_raster.name,
         [&](rg::Builder& b, Generation& d) {
             d.frame = b.read(in.frameConstants, rg::Use::UniformRead);
             d.agaa = b.read(frame.constants, rg::Use::UniformRead);
-            d.materials = b.read(frame.materials, rg::Use::StorageReadFragment);
             d.metadata = b.read(frame.clusters.metadata, rg::Use::StorageReadFragment);
             d.agBuffer = b.readWrite(clear.agBuffer, rg::Use::StorageReadWriteFragment);
             d.sampleMaterial = b.readWrite(clear.sampleMaterial, rg::Use::StorageReadWriteFragment);
@@ -120,23 +95,22 @@ void AccumulationPass::add(rg::Graph& graph, AggregateFrame& frame) {
             loadDepth.load = VK_ATTACHMENT_LOAD_OP_LOAD;
             d.depth = b.depthStencil(frame.depth, rg::Use::DepthStencilRead,
                                      loadDepth); // EQUAL test, stencil written
-            if (emissive)
-                d.emissive =
-                    b.color(b.create("agaa.emissive", frame.sampleDesc(VK_FORMAT_B10G11R11_UFLOAT_PACK32)));
+            if (emissive) d.emissive = b.color(b.create("agaa.emissive", frame.sampleDesc(kEmissiveFormat)));
         },
-        [=, this](const rg::Context& ctx, const Generation& d) {
-            VkCommandBuffer cmd = ctx.cmd();
-            vk::PushDescriptors pd;
-            pd.uniform(0, ctx.buffer(d.frame).buffer)
-                .storage(1, ctx.buffer(d.materials).buffer)
-                .uniform(2, ctx.buffer(d.agaa).buffer)
-                .storage(3, ctx.buffer(d.metadata).buffer)
-                .storage(4, ctx.buffer(d.agBuffer).buffer)
-                .storage(7, ctx.buffer(d.sampleMaterial).buffer);
-            if (int64) pd.storage(6, ctx.buffer(d.agBuffer).buffer); // the same buffer as 64-bit words
-            pd.push(m_device, cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout);
-            // One instance per emulation layer (common/scene_vertex.glsl).
-            scene->recordDraws(cmd, layout, pipelines, layers);
+        [this, drawer, int64](const rg::Context& ctx, const Generation& d) {
+            const VkBuffer frameConstants = ctx.buffer(d.frame).buffer, agaa = ctx.buffer(d.agaa).buffer,
+                           metadata = ctx.buffer(d.metadata).buffer, agBuffer = ctx.buffer(d.agBuffer).buffer,
+                           sampleMaterial = ctx.buffer(d.sampleMaterial).buffer;
+            drawer->recordDraws(ctx.cmd(), m_raster, [=, this](VkCommandBuffer cmd, VkPipelineLayout layout) {
+                vk::PushDescriptors pd;
+                pd.uniform(0, frameConstants)
+                    .uniform(2, agaa)
+                    .storage(3, metadata)
+                    .storage(4, agBuffer)
+                    .storage(7, sampleMaterial);
+                if (int64) pd.storage(6, agBuffer); // the same buffer as 64-bit words
+                pd.push(m_device, cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout);
+            });
         });
     frame.accumulation = {gen.agBuffer, gen.sampleMaterial, gen.depth,
                           emissive ? gen.emissive : rg::Texture{}};

@@ -6,9 +6,8 @@
 // tolerance it also keeps each covered sample's material for the per-sample pass.
 
 #include "agaa/aggregate/passes/aggregate_frame.h"
-#include "engine/vk/pipeline_cache.h"
-
-#include <span>
+#include "agaa/common/raster_pass.h"
+#include "agaa/common/scene_drawer.h"
 
 namespace agaa {
 
@@ -19,20 +18,23 @@ class AccumulationPass {
     AccumulationPass(const AccumulationPass&) = delete;
     AccumulationPass& operator=(const AccumulationPass&) = delete;
 
-    // Adds the two passes: reads frame.depth (the visibility prepass's) and frame.clusters, sets
-    // frame.accumulation and frame.depth to the depth with generation's stencil.
-    void add(eng::rg::Graph& graph, AggregateFrame& frame);
+    static constexpr VkFormat kEmissiveFormat = VK_FORMAT_B10G11R11_UFLOAT_PACK32;
 
-    // The generation program and pipeline for a material's sidedness, as this scene and device run
-    // them (a test build of the pass draws with the same state).
-    std::span<const uint32_t> code() const;
-    eng::vk::GraphicsPipelineDesc pipelineDesc(bool doubleSided) const;
+    // Adds the two passes, generation drawn by frame.in.geometry or the scene's drawer: reads
+    // frame.depth (the visibility prepass's) and frame.clusters, sets frame.accumulation and
+    // frame.depth to the depth with generation's stencil.
+    void add(eng::rg::Graph& graph, AggregateFrame& frame);
+    // What a host's drawer draws: output AggregateAccumulation; set 0 bindings 0 the frame, 2
+    // AGAA's constants, 3 the metadata, 4 (and 6 under AGAA_INT64) the AG-buffer, 7 the per-sample
+    // materials; specialisation ids 0, 1 and 20; the defines of the build. A test build of the pass
+    // draws with the same state.
+    const RasterPass& rasterPass() const { return m_raster; }
 
   private:
     eng::vk::Device& m_device;
     const AggregatePlan& m_plan;
-    eng::vk::PipelineLayout m_layout;
-    eng::vk::PipelineCache<DrawVariant> m_pipelines; // alpha: the prepass's, not read
+    RasterPass m_raster;
+    SceneDrawer m_sceneDrawer; // the scene's, when the host gives no drawer
 };
 
 } // namespace agaa

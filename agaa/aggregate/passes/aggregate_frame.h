@@ -30,7 +30,6 @@ struct AggregateFrame {
     const FrameInputs& in;
     const AggregatePlan& plan;
     eng::rg::Buffer constants; // shared::AgaaConstants of in.frameSlot
-    eng::rg::Buffer materials; // the scene's, imported
     // What the clustering reads: the samples path's G-buffer, or the visibility prepass's depth and
     // face normals. `depth` is then the lighting's: after generation, the version with its stencil.
     SampleGBuffer gbuffer; // samples path

@@ -3,6 +3,8 @@
 
 #include "agaa/aggregate/passes/aggregate_programs.h"
 
+#include "agaa/common/shipping_programs.h"
+
 #include "shaders/agaa_shaders_programs.h"
 
 #include <algorithm>
@@ -13,11 +15,8 @@ namespace agaa {
 
 namespace {
 
-// The shipping program called `name`; a name the table lacks is this file's mistake.
 NamedProgram shipping(const std::string& name) {
-    for (const EmbeddedProgram& p : kAgaaShadersPrograms)
-        if (p.name == name) return {p.name, p.code};
-    throw std::logic_error("agaa: the shader table (shaders/CMakeLists.txt) has no program " + name);
+    return shippingProgram(name);
 }
 
 const char* suffix(bool on, const char* text) {

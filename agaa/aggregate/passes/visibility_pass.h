@@ -4,7 +4,8 @@
 // masked materials run alpha-to-coverage here only (paper section 3.6).
 
 #include "agaa/aggregate/passes/aggregate_frame.h"
-#include "engine/vk/pipeline_cache.h"
+#include "agaa/common/raster_pass.h"
+#include "agaa/common/scene_drawer.h"
 
 namespace agaa {
 
@@ -15,16 +16,20 @@ class VisibilityPass {
     VisibilityPass(const VisibilityPass&) = delete;
     VisibilityPass& operator=(const VisibilityPass&) = delete;
 
-    // Adds the pass: reads frame.constants and frame.materials, sets frame.depth and frame.normal.
+    static constexpr VkFormat kNormalFormat = VK_FORMAT_R8G8_UNORM;
+
+    // Adds the pass, drawn by frame.in.geometry or the scene's drawer: reads frame.constants, sets
+    // frame.depth and frame.normal.
     void add(eng::rg::Graph& graph, AggregateFrame& frame);
+    // What a host's drawer draws: output AggregateVisibility; set 0 binding 0 the frame, 2 AGAA's
+    // constants.
+    const RasterPass& rasterPass() const { return m_raster; }
 
   private:
-    VkPipeline makePipeline(const DrawVariant& variant);
-
     eng::vk::Device& m_device;
     const AggregatePlan& m_plan;
-    eng::vk::PipelineLayout m_layout;
-    eng::vk::PipelineCache<DrawVariant> m_pipelines; // one per draw variant met, made on first use
+    RasterPass m_raster;
+    SceneDrawer m_sceneDrawer; // the scene's, when the host gives no drawer
 };
 
 } // namespace agaa

@@ -7,8 +7,7 @@
 
 void main() {
     // Derivatives first: they must be taken in uniform control flow, before any discard.
-    vec3 V = pixelToCamera(uvec2(gl_FragCoord.xy), agaa.ndcParams);
-    vec3 N = viewFaceNormal(inViewPosition, V);
+    vec2 normal = aggregateVisibilityNormal(inViewPosition);
     float coverage = visibilityCoverage();
-    outNormal = vec4(vec2(encodeHemisphereNormal(N, V)) / 255.0, 0.0, coverage);
+    writeAggregateVisibility(normal, coverage);
 }

@@ -4,6 +4,5 @@
 // declares the shipping pass's bindings (agaa/generation.frag), whose descriptors the pass pushes.
 #extension GL_GOOGLE_include_directive : require
 #include "agaa/generation/fragment.glsl"
-#include "agaa/generation/sample_material.glsl"
 
 void main() {}

@@ -4,7 +4,6 @@
 // material is still evaluated and quantised, and kept per sample with a tolerance.
 #extension GL_GOOGLE_include_directive : require
 #include "agaa/generation/fragment.glsl"
-#include "agaa/generation/sample_material.glsl"
 
 void main() {
     uvec2 pixel;
@@ -16,5 +15,5 @@ void main() {
     // as every other access to the AG-buffer here: a plain store would make the synchronisation
     // validation see writes racing between draws).
     if (f.q[0] + f.q[6] + f.q[9] == 0xFFFFFFFFu) atomicAdd(agBuffer[0], 1u);
-    if (kSampleMaterial != 0u) writeSampleMaterial(pixelIndex, mask, m);
+    if (kSampleMaterial != 0u) writeSampleMaterial(inLayer, pixelIndex, mask, m);
 }

@@ -5,5 +5,5 @@
 #include "agaa/visibility/fragment.glsl"
 
 void main() {
-    outNormal = vec4(0.0, 0.0, 0.0, visibilityCoverage());
+    writeAggregateVisibility(vec2(0.0), visibilityCoverage());
 }

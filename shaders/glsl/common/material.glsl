@@ -29,14 +29,7 @@ float toksvigRoughness(float roughness, float normalLength) {
     return sqrt(max(a2, a)); // never smoother than the material
 }
 
-struct MaterialSample {
-    vec3 albedo;
-    float alpha;
-    float metallic;
-    float roughness;
-    vec3 emissive; // radiance, linear
-    vec3 normal; // shading normal, view space, unit
-};
+#include "common/material_sample.glsl"
 
 vec4 sampleTexture(int index, vec2 uv, vec4 fallback) {
     return index >= 0 ? texture(textures[index], uv) : fallback;

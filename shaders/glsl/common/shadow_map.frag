@@ -4,8 +4,7 @@
 // discard, no coverage). Opaque casters use no fragment shader at all.
 #include "shared/frame.h"
 
-layout(set = 0, binding = 1, std430) readonly buffer Materials { GpuMaterial materials[]; };
-layout(set = 1, binding = 0) uniform sampler2D textures[kMaxSceneTextures];
+#include "common/scene_materials.glsl"
 layout(push_constant) uniform Push { uint material; } pc;
 
 #include "common/material.glsl"

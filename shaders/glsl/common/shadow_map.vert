@@ -4,9 +4,7 @@
 // Depth-only shadow-map pass (agaa/common/shadow_map.cpp): instance l of each draw renders
 // into layer l of the shadow-map array, seen from shadowed light l.
 #include "shared/frame.h"
-#include "shared/shadow.h"
-
-layout(set = 0, binding = 0) uniform Shadow { ShadowConstants shadow; };
+#include "raster/shadow_pass.glsl"
 
 layout(location = 0) in vec3 inPosition;
 // The scene's vertex layout has all four attributes; declared so every one is consumed.
@@ -19,9 +17,8 @@ layout(location = 0) out vec4 outUvs; // xy TEXCOORD_0, zw TEXCOORD_1
 layout(location = 1) out vec4 outColor;
 
 void main() {
-    uint layer = uint(gl_InstanceIndex);
-    gl_Position = shadow.relativeToShadow[layer] * vec4(inPosition - shadow.eye.xyz, 1.0);
-    gl_Layer = int(layer);
+    gl_Position = shadowClipPosition(inPosition);
+    gl_Layer = gl_InstanceIndex;
     outUvs = vec4(inUv, inUv1);
     outColor = inColor;
 }

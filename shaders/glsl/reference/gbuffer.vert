@@ -1,10 +1,8 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
-// Per-sample G-buffer fill (the per-sample deferred reference, DESIGN section 5).
-#include "shared/frame.h"
-#include "common/scene_vertex.glsl"
-
-layout(set = 0, binding = 0) uniform Frame { FrameConstants frame; };
+// Per-sample G-buffer fill (the per-sample deferred reference, DESIGN section 5): this project's
+// scene's vertices through the camera passes' include a host's vertex shaders use.
+#include "raster/camera_pass.glsl"
 
 layout(location = 0) in vec3 inPosition;
 layout(location = 1) in vec3 inNormal;
@@ -19,10 +17,9 @@ layout(location = 2) out vec4 outUvs; // xy TEXCOORD_0, zw TEXCOORD_1
 layout(location = 3) out vec4 outColor;
 
 void main() {
-    uint layer = uint(gl_InstanceIndex);
-    gl_Position = sceneClipPosition(inPosition, layer, frame);
-    gl_Layer = int(layer);
-    outNormal = mat3(frame.view) * inNormal;
+    gl_Position = cameraClipPosition(inPosition);
+    gl_Layer = gl_InstanceIndex;
+    outNormal = cameraViewDirection(inNormal);
     outTangent = vec4(mat3(frame.view) * inTangent.xyz, inTangent.w);
     outUvs = vec4(inUv, inUv1);
     outColor = inColor;

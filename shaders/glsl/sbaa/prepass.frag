@@ -20,8 +20,7 @@
 layout(constant_id = kSpecFillAlphaPath) const uint kAlphaPath = 0u;
 
 layout(set = 0, binding = 0) uniform Frame { FrameConstants frame; };
-layout(set = 0, binding = 1, std430) readonly buffer Materials { GpuMaterial materials[]; };
-layout(set = 1, binding = 0) uniform sampler2D textures[kMaxSceneTextures];
+#include "common/scene_materials.glsl"
 layout(push_constant) uniform Push { uint material; uint firstTriangle; } pc;
 
 #include "common/material.glsl"

@@ -6,6 +6,7 @@
 // AG-buffer: the quantised fields (the replay), then the material inputs before quantisation (the
 // double-precision reference).
 #extension GL_GOOGLE_include_directive : require
+#define AGAA_SAMPLE_MATERIAL 0 // records here, binding 5, instead
 #include "agaa/generation/fragment.glsl"
 
 const uint kRecordWindow = 16u;

@@ -1,21 +1,17 @@
 // AGAA's visibility prepass fragment, shared by the shipping pass (agaa/visibility.frag) and
 // agaa-timings --breakdown's build without the normals (breakdown/visibility_no_normals.frag): its
-// declarations, and the coverage of masked materials.
-#include "shared/agaa.h"
+// declarations, and the coverage of masked materials. Its target and the face normal are the
+// include a host's shaders use (raster/aggregate_visibility_output.glsl).
 #include "shared/frame.h"
 #include "shared/specialization.h"
 
 // Masked materials: 0 opaque, 1 discard, 2 alpha-to-coverage (common/alpha_coverage.glsl).
 layout(constant_id = kSpecVisibilityAlphaPath) const uint kAlphaPath = 0u;
 
-layout(set = 0, binding = 0) uniform Frame { FrameConstants frame; };
-layout(set = 0, binding = 1, std430) readonly buffer Materials { GpuMaterial materials[]; };
-layout(set = 0, binding = 2) uniform Agaa { AgaaConstants agaa; };
-layout(set = 1, binding = 0) uniform sampler2D textures[kMaxSceneTextures];
+#include "raster/aggregate_visibility_output.glsl"
+#include "common/scene_materials.glsl"
 layout(push_constant) uniform Push { uint material; } pc;
 
-#include "common/face_normal.glsl"
-#include "common/hemisphere_normal.glsl"
 #include "common/material.glsl"
 #include "common/alpha_coverage.glsl"
 
@@ -28,8 +24,6 @@ layout(location = 2) centroid in vec4 inUvs; // xy TEXCOORD_0, zw TEXCOORD_1
 layout(location = 3) flat in uint inLayer;
 layout(location = 4) in vec3 inViewPosition;
 layout(location = 5) centroid in vec4 inColor;
-
-layout(location = 0) out vec4 outNormal; // xy encoded normal; w coverage alpha (alpha-to-coverage)
 
 // The fragment's coverage alpha for alpha-to-coverage (1 for opaque materials); a masked material's
 // fragment below its cutoff is discarded at one sample per pixel.

@@ -1,0 +1,15 @@
+#version 460
+#extension GL_GOOGLE_include_directive : require
+// A host's own material shader for RasterOutput::AggregateAccumulation
+// (tests/node/test_host_geometry.cpp): its material into AGAA's accumulation kernel. One build: no
+// emissive, 32-bit atomics, no subgroup reduction (RasterPass::defines empty).
+#include "raster/aggregate_accumulation_output.glsl"
+#include "tests/host_material.glsl"
+
+layout(location = 0) centroid in vec3 inNormal;
+layout(location = 2) flat in uint inLayer;
+
+void main() {
+    MaterialSample m = hostMaterial(hostNormal(inNormal), clamp(material.albedoRoughness.w, 0.0, 1.0));
+    accumulateAggregateFragment(inLayer, m);
+}

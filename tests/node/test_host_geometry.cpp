@@ -1,0 +1,263 @@
+// Issue 50, the geometry and material contract from a host's side (agaa/common/raster_pass.h): a
+// drawer with its own vertex format (interleaved position and normal, 16-bit indices with a base
+// vertex per draw), its own buffers, its own material (a constant per draw, in its own push
+// constant) and its own shaders (shaders/glsl/tests/host_*), which include only the module's
+// raster includes (shaders/glsl/raster/). It draws the built-in scene's triangles; the methods'
+// images must match what this project's own drawer makes of the same scene within display RMSE
+// 1e-4 (the issue's bound), validation-clean.
+
+#include "agaa/common/raster_pass.h"
+#include "agaa/methods.h"
+#include "engine/scene/scenegen.h"
+#include "engine/vk/resources.h"
+#include "shaders/tests/host_accumulation_frag.h"
+#include "shaders/tests/host_gbuffer_frag.h"
+#include "shaders/tests/host_gbuffer_sample_rate_frag.h"
+#include "shaders/tests/host_gbuffer_vert.h"
+#include "shaders/tests/host_shadow_vert.h"
+#include "shaders/tests/host_visibility_frag.h"
+#include "tests/gpu/gpu_test_support.h"
+#include "tests/node/node_test_support.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstring>
+#include <iostream>
+#include <memory>
+#include <ostream>
+#include <span>
+#include <stdexcept>
+#include <vector>
+
+namespace agaa::test {
+namespace {
+
+namespace vk = eng::vk;
+
+// The host's content: its own layout, built here from the scene's triangles (as a host's importer
+// would from its own files).
+struct HostVertex {
+    float position[3];
+    float normal[3];
+};
+struct HostMaterial {
+    float albedoRoughness[4];
+    float metallic[4];
+};
+struct HostDraw {
+    uint32_t firstIndex, indexCount;
+    int32_t vertexOffset;
+    HostMaterial material;
+    bool twoSided;
+};
+struct HostMesh {
+    std::vector<HostVertex> vertices;
+    std::vector<uint16_t> indices;
+    std::vector<HostDraw> draws;
+};
+
+HostMesh hostMesh(const eng::scene::Scene& scene) {
+    HostMesh mesh;
+    for (const eng::scene::Vertex& v : scene.vertices)
+        mesh.vertices.push_back(
+            {{v.position.x, v.position.y, v.position.z}, {v.normal.x, v.normal.y, v.normal.z}});
+    for (const eng::scene::Draw& d : scene.draws) {
+        if (d.indexCount == 0) continue;
+        const auto first = scene.indices.begin() + d.firstIndex;
+        const auto [lo, hi] = std::minmax_element(first, first + d.indexCount);
+        if (*hi - *lo > 0xFFFFu) throw std::invalid_argument("a draw spans more than 16-bit indices reach");
+        const eng::scene::Material& m = scene.materials.at(d.material);
+        HostDraw draw{uint32_t(mesh.indices.size()), d.indexCount, int32_t(*lo), {}, m.doubleSided};
+        draw.material = {{m.baseColorFactor.r, m.baseColorFactor.g, m.baseColorFactor.b, m.roughnessFactor},
+                         {m.metallicFactor, 0.0f, 0.0f, 0.0f}};
+        for (uint32_t i = 0; i < d.indexCount; ++i)
+            mesh.indices.push_back(uint16_t(first[i] - *lo));
+        mesh.draws.push_back(draw);
+    }
+    return mesh;
+}
+
+class HostGeometry final : public GeometryDrawer {
+  public:
+    HostGeometry(vk::Device& device, HostMesh mesh) : m_device(device), m_mesh(std::move(mesh)) {
+        m_vertices =
+            vk::createBuffer(device, m_mesh.vertices.size() * sizeof(HostVertex),
+                             VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, vk::MemoryUse::Upload, "host.vertices");
+        m_indices = vk::createBuffer(device, std::max<size_t>(4, m_mesh.indices.size() * 2),
+                                     VK_BUFFER_USAGE_INDEX_BUFFER_BIT, vk::MemoryUse::Upload, "host.indices");
+        vk::writeBuffer(device, m_vertices, std::as_bytes(std::span(m_mesh.vertices)));
+        vk::writeBuffer(device, m_indices, std::as_bytes(std::span(m_mesh.indices)));
+    }
+    ~HostGeometry() override {
+        vkDeviceWaitIdle(m_device.device());
+        for (Pass& p : m_passes) {
+            for (VkPipeline pipeline : p.pipelines)
+                vkDestroyPipeline(m_device.device(), pipeline, nullptr);
+            vk::destroyPipelineLayout(m_device, p.layout);
+        }
+        vk::destroyBuffer(m_device, m_vertices);
+        vk::destroyBuffer(m_device, m_indices);
+    }
+
+    void prepare(const RasterPass& pass) override {
+        if (find(pass)) return;
+        const std::span<const uint32_t> fragment = fragmentCode(pass);
+        Pass p{pass, {}, {}};
+        vk::LayoutDesc layout;
+        layout.pushBindings = pass.moduleSet; // set 0: the module's; this host has no set of its own
+        layout.pushConstantBytes = sizeof(HostMaterial);
+        p.layout = vk::createPipelineLayout(m_device, layout, pass.name + ".host.layout");
+        for (int twoSided = 0; twoSided < 2; ++twoSided) {
+            vk::GraphicsPipelineDesc d;
+            const bool shadow = pass.output == RasterOutput::ShadowDepth;
+            d.vertex = shadow ? std::span<const uint32_t>(kTestsHostShadowVert) : kTestsHostGbufferVert;
+            d.fragment = fragment;
+            d.layout = p.layout.layout;
+            d.specialization = pass.specialization;
+            d.sceneVertexInput = false;
+            d.vertexBindings = {{0, sizeof(HostVertex), VK_VERTEX_INPUT_RATE_VERTEX}};
+            d.vertexAttributes = {{0, 0, VK_FORMAT_R32G32B32_SFLOAT, 0},
+                                  {1, 0, VK_FORMAT_R32G32B32_SFLOAT, 12}};
+            d.colorFormats = pass.colorFormats;
+            d.depthFormat = pass.depthFormat;
+            d.depthCompare = pass.depthCompare;
+            d.depthWrite = pass.depthWrite;
+            d.stencilTest = pass.stencilTest;
+            d.stencil = pass.stencil;
+            d.samples = pass.samples;
+            d.sampleShading = pass.sampleRateShading;
+            d.cullMode = twoSided || pass.bothFaces ? VK_CULL_MODE_NONE : VK_CULL_MODE_BACK_BIT;
+            p.pipelines[twoSided] = vk::createGraphicsPipeline(m_device, d, pass.name + ".host");
+        }
+        m_passes.push_back(std::move(p));
+    }
+
+    void recordDraws(VkCommandBuffer cmd, const RasterPass& pass, const PushModuleSet& push) const override {
+        const Pass* p = find(pass);
+        if (!p) throw std::logic_error(pass.name + ": not prepared");
+        push(cmd, p->layout.layout);
+        VkDeviceSize offset = 0;
+        vkCmdBindVertexBuffers(cmd, 0, 1, &m_vertices.buffer, &offset);
+        vkCmdBindIndexBuffer(cmd, m_indices.buffer, 0, VK_INDEX_TYPE_UINT16);
+        for (const HostDraw& d : m_mesh.draws) {
+            vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, p->pipelines[d.twoSided ? 1 : 0]);
+            vkCmdPushConstants(cmd, p->layout.layout, VK_SHADER_STAGE_ALL, 0, sizeof(HostMaterial),
+                               &d.material);
+            vkCmdDrawIndexed(cmd, d.indexCount, pass.layers, d.firstIndex, d.vertexOffset, 0);
+        }
+    }
+
+  private:
+    // This host's builds: what it draws, by the pass's output and build (RasterPass::defines).
+    static std::span<const uint32_t> fragmentCode(const RasterPass& pass) {
+        const bool plainBuild = pass.defines.empty();
+        switch (pass.output) {
+        case RasterOutput::SampleGBuffer:
+            return pass.sampleRateShading ? std::span<const uint32_t>(kTestsHostGbufferSampleRateFrag)
+                                          : kTestsHostGbufferFrag;
+        case RasterOutput::ShadowDepth:
+            return {};
+        case RasterOutput::AggregateVisibility:
+            return kTestsHostVisibilityFrag;
+        case RasterOutput::AggregateAccumulation:
+            if (plainBuild) return kTestsHostAccumulationFrag;
+            break;
+        default:
+            break;
+        }
+        throw std::invalid_argument(std::string("this host has no build of ") +
+                                    rasterOutputName(pass.output) +
+                                    (plainBuild ? "" : " with " + pass.defines.front()));
+    }
+
+    struct Pass {
+        RasterPass pass;
+        vk::PipelineLayout layout;
+        std::array<VkPipeline, 2> pipelines{}; // [two-sided]
+    };
+    const Pass* find(const RasterPass& pass) const {
+        for (const Pass& p : m_passes)
+            if (p.pass == pass) return &p;
+        return nullptr;
+    }
+
+    vk::Device& m_device;
+    HostMesh m_mesh;
+    vk::Buffer m_vertices, m_indices;
+    std::vector<Pass> m_passes;
+};
+
+// The display image (HostView::read's second half).
+std::vector<float> render(vk::Device& device, const eng::frame::GpuScene& scene, Technique& technique,
+                          GeometryDrawer* geometry) {
+    const std::vector<float> both = renderFrame(device, scene, technique, geometry);
+    return {both.begin() + std::ptrdiff_t(both.size() / 2), both.end()};
+}
+
+double displayRmse(const std::vector<float>& a, const std::vector<float>& b) {
+    double sum = 0.0;
+    size_t n = 0;
+    for (size_t i = 0; i < a.size(); ++i) {
+        if (i % 4 == 3) continue; // alpha
+        const double d = double(a[i]) - double(b[i]);
+        sum += d * d;
+        ++n;
+    }
+    return std::sqrt(sum / double(n));
+}
+
+struct Case {
+    const char* method;
+    AggregateGeneration generation = AggregateGeneration::Auto;
+};
+void PrintTo(const Case& c, std::ostream* os) {
+    *os << c.method << (c.generation == AggregateGeneration::Accumulate ? " accumulate" : "");
+}
+
+class HostGeometryCase : public ::testing::TestWithParam<Case> {};
+
+TEST_P(HostGeometryCase, AHostsOwnVerticesAndMaterialShadersMatchTheScenesOwnDrawer) {
+    auto device = makeValidatedDevice();
+    const eng::scene::Scene scene = eng::scene::loadBuiltin("railings");
+    // What this host's constant material can stand for: no textures, masks or vertex colours.
+    ASSERT_TRUE(scene.textures.empty());
+    for (const eng::scene::Material& m : scene.materials)
+        ASSERT_EQ(m.alphaMode, eng::scene::AlphaMode::Opaque);
+    eng::frame::GpuScene gpuScene(*device, scene);
+    MethodSettings settings;
+    // The accumulate path in the one build this host has (RasterPass::defines empty).
+    settings.agaaGeneration = GetParam().generation;
+    settings.agaaAtomics = AggregateAtomics::Bits32;
+    settings.agaaSubgroupReduce = SubgroupReduction::Off;
+    std::unique_ptr<Technique> technique = createTechnique(GetParam().method, *device, gpuScene, settings);
+    ASSERT_FALSE(effectiveFeatures(scene, settings.effects).vertexColors);
+    const std::vector<float> own = render(*device, gpuScene, *technique, nullptr);
+    HostGeometry host(*device, hostMesh(scene));
+    const std::vector<float> hosts = render(*device, gpuScene, *technique, &host);
+    double mean = 0.0;
+    for (float v : own)
+        mean += v;
+    ASSERT_GT(mean / double(own.size()), 0.01) << "the scene must be visible to test anything";
+    const double rmse = displayRmse(hosts, own);
+    std::cout << GetParam().method << ": display RMSE " << rmse << " against the scene's drawer, "
+              << countDifferentBits(hosts, own) << " of " << own.size() << " values differ\n";
+    EXPECT_LE(rmse, 1e-4);
+    expectNoValidationErrors(*device);
+}
+
+INSTANTIATE_TEST_SUITE_P(Node, HostGeometryCase,
+                         ::testing::Values(Case{"reference"}, Case{"noaa"}, Case{"simple-complex"},
+                                           Case{"agaa"}, Case{"agaa", AggregateGeneration::Accumulate}),
+                         [](const auto& info) {
+                             std::string name = info.param.method;
+                             std::replace(name.begin(), name.end(), '-', '_');
+                             return name + (info.param.generation == AggregateGeneration::Accumulate
+                                                ? "_accumulate"
+                                                : "");
+                         });
+
+} // namespace
+} // namespace agaa::test
