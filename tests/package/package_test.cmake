@@ -62,6 +62,20 @@ if(NOT at EQUAL -1)
   message(FATAL_ERROR "package test: the exported targets name the source tree ${SOURCE}")
 endif()
 
+# A host's own shaders (tests/node/test_host_geometry.cpp's, copied out of the source tree) built
+# against the installed GLSL alone: the module's raster includes and what they include are complete.
+if(DEFINED GLSLANG)
+  set(host_glsl ${WORK}/host_glsl)
+  file(GLOB host_shaders ${SOURCE}/shaders/glsl/tests/host_*)
+  file(COPY ${host_shaders} DESTINATION ${host_glsl}/tests)
+  foreach(shader host_gbuffer.vert host_gbuffer.frag host_shadow.vert host_visibility.frag
+                 host_accumulation.frag)
+    run("compiling the host's ${shader} against the installed GLSL" ${GLSLANG} -V --target-env vulkan1.3
+        -I${prefix}/include/agaa/glsl -I${host_glsl} -o ${host_glsl}/${shader}.spv ${host_glsl}/tests/${shader})
+  endforeach()
+  message(STATUS "package test: a host's shaders build against include/agaa/glsl alone")
+endif()
+
 set(args -S ${SOURCE}/tests/package/consumer -B ${WORK}/build -G ${GENERATOR} -DCMAKE_BUILD_TYPE=Release
          -DCMAKE_PREFIX_PATH=${prefix} -DCMAKE_CXX_COMPILER=${CXX} "-DCMAKE_CXX_FLAGS=${CXX_FLAGS}"
          "-DCMAKE_EXE_LINKER_FLAGS=${LINKER_FLAGS}")
