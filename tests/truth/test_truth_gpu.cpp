@@ -95,6 +95,10 @@ TEST(ConvergedTruthGpu, TheCacheServesTheSameTruthOnce) {
     EXPECT_NE(agaa::truthKey(scene, brighter, 2.0f, {2, 32}), first.key) << "exposure is part of the key";
     EXPECT_NE(agaa::truthKey(scene, agaa::test::truthView(16, 16), 1.0f, {4, 32}), first.key)
         << "k is part of the key";
+    ASSERT_FALSE(scene.lights.empty());
+    scene.lights.front().castsShadows = !scene.lights.front().castsShadows;
+    EXPECT_NE(agaa::truthKey(scene, agaa::test::truthView(16, 16), 1.0f, {2, 32}), first.key)
+        << "which lights cast shadows is part of the key";
     std::filesystem::remove_all(dir);
     agaa::test::expectNoValidationErrors(*device);
 }

@@ -194,6 +194,10 @@ std::string truthKey(const eng::scene::Scene& scene, const RenderRequest& reques
         eng::frame::makeFrameConstants(scene, view, eng::frame::makeSamplePattern(settings.samples));
     h.value(frame);
     h.vector(eng::frame::makeGpuLights(scene, frame.view));
+    // Which lights cast shadows is not in GpuLight, and it changes the truth: two tests rendering
+    // one scene with and without its shadows shared a key and, run in parallel, each other's truth.
+    for (const eng::scene::Light& l : scene.lights)
+        h.value(l.castsShadows);
     const EffectSettings& e = request.settings.effects;
     h.value(e.forceAll);
     h.value(e.shadowMapSize);
