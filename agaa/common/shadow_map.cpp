@@ -8,6 +8,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
+#include <string>
 
 namespace agaa {
 namespace rg = eng::rg;
@@ -127,31 +129,57 @@ void ShadowMapPass::release() {
     m_sceneDrawer.reset();
 }
 
-ShadowMaps ShadowMapPass::add(rg::Graph& graph, const FrameInputs& in) {
-    const eng::scene::Scene& scene = in.scene->scene();
-    const uint32_t size = m_settings.shadowMapSize;
-    m_constants = {};
-    m_constants.lightIndex = glm::uvec4(shared::kMaxLights);
-    // Hosts that fill only the frame-constants buffer (in.constants == nullptr) render scene
+shared::ShadowConstants ShadowMapPass::makeConstants(const eng::scene::Scene& scene,
+                                                     std::span<const uint32_t> lights, uint32_t size,
+                                                     const shared::FrameConstants* frame) {
+    const uint32_t maps = uint32_t(std::min<size_t>(lights.size(), shared::kMaxShadowMaps));
+    shared::ShadowConstants c{};
+    c.lightIndex = glm::uvec4(shared::kMaxLights);
+    // Hosts that fill only the frame-constants buffer (no FrameConstants given) render scene
     // camera 0 (what makeFrameConstants builds by default); the fit then covers the whole scene.
     const glm::mat4 view =
-        in.constants ? in.constants->view : (scene.cameras.empty() ? glm::mat4(1.0f) : scene.cameras[0].view);
+        frame ? frame->view : (scene.cameras.empty() ? glm::mat4(1.0f) : scene.cameras[0].view);
     // In double: the product's translation is a difference of terms as large as the world
     // coordinates (1e5 m from the origin fp32 cancels them to millimetres; FrameConstants::eye).
     const glm::dmat4 viewToWorld = glm::inverse(glm::dmat4(view));
-    m_constants.eye = glm::vec4(glm::vec3(eng::frame::cameraEye(view)), 0.0f);
-    for (uint32_t l = 0; l < m_mapCount; ++l) {
+    c.eye = glm::vec4(glm::vec3(eng::frame::cameraEye(view)), 0.0f);
+    for (uint32_t l = 0; l < maps; ++l) {
         float texel = 0.0f;
-        const glm::dmat4 worldToShadow = fitLight(scene, scene.lights.at(m_lights[l]), in.constants, &texel);
+        const glm::dmat4 worldToShadow = fitLight(scene, scene.lights.at(lights[l]), frame, &texel);
         texel *= 1024.0f / float(size);
-        m_constants.relativeToShadow[l] =
-            glm::mat4(glm::translate(worldToShadow, eng::frame::cameraEye(view)));
-        m_constants.viewToShadow[l] = glm::mat4(worldToShadow * viewToWorld);
-        m_constants.lightIndex[l] = m_lights[l];
-        m_constants.normalOffset[l] = 1.5f * texel;
+        c.relativeToShadow[l] = glm::mat4(glm::translate(worldToShadow, eng::frame::cameraEye(view)));
+        c.viewToShadow[l] = glm::mat4(worldToShadow * viewToWorld);
+        c.lightIndex[l] = lights[l];
+        c.normalOffset[l] = 1.5f * texel;
     }
     // Depth bias in shadow clip z: a few ulps of D32 plus a small constant for the comparison.
-    m_constants.params = {float(m_mapCount), 1.0f / float(size), 2.0e-4f, 0.0f};
+    c.params = {float(maps), 1.0f / float(size), 2.0e-4f, 0.0f};
+    return c;
+}
+
+ShadowMaps ShadowMapPass::importHostMaps(rg::Graph& graph, const HostShadowMaps& host) const {
+    const rg::TextureDesc& d = host.map.desc;
+    auto refuse = [](const std::string& what) {
+        throw std::invalid_argument("FrameInputs::shadowMaps: " + what);
+    };
+    if (d.format != kFormat) refuse("map.desc.format must be VK_FORMAT_D32_SFLOAT");
+    if (d.layers < std::max(2u, m_mapCount))
+        refuse("map.desc.layers is " + std::to_string(d.layers) + "; a 2D array needs at least " +
+               std::to_string(std::max(2u, m_mapCount)) + " (one per shadowed light, at least 2)");
+    if (d.samples != VK_SAMPLE_COUNT_1_BIT) refuse("map.desc.samples must be VK_SAMPLE_COUNT_1_BIT");
+    if (host.map.image == VK_NULL_HANDLE || host.map.sampledView == VK_NULL_HANDLE)
+        refuse("map.image and map.sampledView (a depth-aspect 2D array view) are required");
+    if (host.constants.buffer == VK_NULL_HANDLE || host.constants.size < sizeof(shared::ShadowConstants))
+        refuse("constants must be a uniform buffer of at least " +
+               std::to_string(sizeof(shared::ShadowConstants)) + " bytes (shared::ShadowConstants)");
+    return {graph.importTexture(m_name + ".shadow.hostMap", host.map, host.initial, std::nullopt),
+            graph.importBuffer(m_name + ".shadow.hostConstants", host.constants, std::nullopt, std::nullopt)};
+}
+
+ShadowMaps ShadowMapPass::add(rg::Graph& graph, const FrameInputs& in) {
+    if (in.shadowMaps) return importHostMaps(graph, *in.shadowMaps);
+    const uint32_t size = m_settings.shadowMapSize;
+    m_constants = makeConstants(in.scene->scene(), m_lights, size, in.constants);
     // The fit follows the camera: per frame slot, so views recorded before any executes keep theirs.
     const rg::Buffer constants =
         m_constantsRing.write(graph, in.frameSlot, std::as_bytes(std::span(&m_constants, 1)));

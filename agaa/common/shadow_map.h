@@ -25,6 +25,7 @@
 
 #include <array>
 #include <memory>
+#include <span>
 #include <string>
 
 namespace agaa {
@@ -48,7 +49,8 @@ class ShadowMapPass {
     bool enabled() const { return m_mapCount > 0; }
     // Adds "<name>.shadow" (only call when enabled()), drawn by inputs.geometry or the scene's
     // drawer. Writes the frame's ShadowConstants into the ring slot inputs.frameSlot
-    // (engine/frame/uniform_ring.h for its lifetime).
+    // (engine/frame/uniform_ring.h for its lifetime). With inputs.shadowMaps: imports the host's
+    // maps instead and adds nothing (std::invalid_argument naming what they lack).
     ShadowMaps add(eng::rg::Graph& graph, const FrameInputs& inputs);
     VkSampler sampler() const { return m_sampler; }
     // The maps and their constants read by a lighting pass, and pushed at the bindings its shader
@@ -61,6 +63,14 @@ class ShadowMapPass {
     // shadowed light, set 0 binding 0 the frame's shared::ShadowConstants.
     const RasterPass& rasterPass() const { return m_raster; }
 
+    // The constants of the module's fit for a frame: one map per light of `lights` (scene light
+    // indices, at most kMaxShadowMaps) of `size` texels, seen from the camera `view` (its
+    // FrameConstants, or nullptr: scene camera 0 and the whole scene's bounds). What add() uploads,
+    // and what a host drawing its own maps (HostShadowMaps) can use.
+    static shared::ShadowConstants makeConstants(const eng::scene::Scene& scene,
+                                                 std::span<const uint32_t> lights, uint32_t size,
+                                                 const shared::FrameConstants* view);
+
     // The light-space fit, exposed for tests: world -> shadow clip (z in [0, 1], 0 near).
     // frame: the camera (its view and proj), to fit a directional map to the visible part of the
     // scene; nullptr fits it to the whole scene bounds.
@@ -68,6 +78,7 @@ class ShadowMapPass {
                                const shared::FrameConstants* frame, float* texelMetres);
 
   private:
+    ShadowMaps importHostMaps(eng::rg::Graph& graph, const HostShadowMaps& host) const;
     void release(); // the destructor's work, also for a constructor that throws
     eng::vk::Device& m_device;
     std::string m_name;

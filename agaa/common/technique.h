@@ -28,12 +28,25 @@
 #include "shared/frame.h"
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
 namespace agaa {
 
 class GeometryDrawer;
+
+// A host's own shadow maps, in place of the module's shadow pass (agaa/common/shadow_map.h): a
+// D32_SFLOAT 2D array of at least 2 layers, one sample, with a depth-aspect sampled view
+// (PhysicalTexture::sampledView) and SAMPLED usage, layer l the map of the light
+// constants.lightIndex[l]; and the shared::ShadowConstants the lighting looks them up with (a
+// uniform buffer; ShadowMapPass::makeConstants fits them as the module does). `initial`: the
+// map's state when the frame begins (e.g. Use::DepthStencilWrite after the host drew it).
+struct HostShadowMaps {
+    eng::rg::PhysicalTexture map;
+    eng::rg::PhysicalBuffer constants;
+    std::optional<eng::rg::Use> initial;
+};
 
 // Inputs every technique reads; the host imports these buffers into its graph.
 struct FrameInputs {
@@ -42,6 +55,9 @@ struct FrameInputs {
     // `scene` with this project's materials (agaa::SceneDrawer). It must outlive the recording of
     // the graph.
     GeometryDrawer* geometry = nullptr;
+    // The host's shadow maps (read where the scene has shadowed lights); null: the module draws its
+    // own. Must outlive the recording of the graph.
+    const HostShadowMaps* shadowMaps = nullptr;
     const shared::FrameConstants* constants = nullptr; // the values behind frameConstants
     eng::rg::Buffer frameConstants;                    // shared::FrameConstants, uniform
     eng::rg::Buffer lights;                            // shared::GpuLight[], storage

@@ -45,12 +45,15 @@ class HostView {
     // Imports this view's buffers, adds the technique's passes writing frame slot `slot`, and
     // reads HDR and display back into this view's buffers.
     // Returns the inputs it handed the technique; lastTargets holds what the technique returned.
-    // `geometry`: the host's drawer (FrameInputs::geometry), or none.
+    // `geometry`, `shadowMaps`: the host's drawer and shadow maps (FrameInputs::geometry,
+    // ::shadowMaps), or none.
     FrameInputs record(eng::rg::Graph& graph, Technique& technique, const eng::frame::GpuScene& scene,
-                       uint32_t slot, const std::string& prefix, GeometryDrawer* geometry = nullptr) {
+                       uint32_t slot, const std::string& prefix, GeometryDrawer* geometry = nullptr,
+                       const HostShadowMaps* shadowMaps = nullptr) {
         FrameInputs in;
         in.scene = &scene;
         in.geometry = geometry;
+        in.shadowMaps = shadowMaps;
         in.constants = &constants;
         in.width = m_width;
         in.height = m_height;
@@ -85,15 +88,22 @@ class HostView {
     eng::vk::Buffer m_frame, m_lights, m_hdr, m_display;
 };
 
-// One 64x64 frame of scene camera 0 through `technique`, drawn by `geometry` (FrameInputs::geometry;
-// null: the scene's own drawer): HDR then display, as HostView::read.
-inline std::vector<float> renderFrame(eng::vk::Device& device, const eng::frame::GpuScene& scene,
-                                      Technique& technique, GeometryDrawer* geometry) {
+// The view renderFrame renders: scene camera 0 at 64x64.
+inline eng::frame::ViewSettings frameView() {
     eng::frame::ViewSettings view;
     view.width = view.height = 64;
-    HostView host(device, scene.scene(), view, technique.samples());
+    return view;
+}
+
+// One frameView() frame through `technique`, drawn by `geometry` (FrameInputs::geometry; null: the
+// scene's own drawer), with the host's `shadowMaps` or the module's: HDR then display, as
+// HostView::read.
+inline std::vector<float> renderFrame(eng::vk::Device& device, const eng::frame::GpuScene& scene,
+                                      Technique& technique, GeometryDrawer* geometry,
+                                      const HostShadowMaps* shadowMaps = nullptr) {
+    HostView host(device, scene.scene(), frameView(), technique.samples());
     eng::rg::Graph graph;
-    host.record(graph, technique, scene, 0, "host", geometry);
+    host.record(graph, technique, scene, 0, "host", geometry, shadowMaps);
     eng::frame::FrameRunner runner(device);
     runner.run(graph);
     return host.read();

@@ -7,8 +7,12 @@
 // 1e-4 (the bound), validation-clean.
 
 #include "agaa/common/raster_pass.h"
+#include "agaa/common/shadow_map.h"
 #include "agaa/methods.h"
+#include "engine/frame/frame_constants.h"
+#include "engine/frame/sample_pattern.h"
 #include "engine/scene/scenegen.h"
+#include "engine/vk/descriptors.h"
 #include "engine/vk/resources.h"
 #include "shaders/tests/host_accumulation_frag.h"
 #include "shaders/tests/host_gbuffer_frag.h"
@@ -136,6 +140,7 @@ class HostGeometry final : public GeometryDrawer {
     }
 
     void recordDraws(VkCommandBuffer cmd, const RasterPass& pass, const PushModuleSet& push) const override {
+        if (pass.output == RasterOutput::ShadowDepth) ++shadowMapsDrawn;
         const Pass* p = find(pass);
         if (!p) throw std::logic_error(pass.name + ": not prepared");
         push(cmd, p->layout.layout);
@@ -149,6 +154,8 @@ class HostGeometry final : public GeometryDrawer {
             vkCmdDrawIndexed(cmd, d.indexCount, pass.layers, d.firstIndex, d.vertexOffset, 0);
         }
     }
+
+    mutable int shadowMapsDrawn = 0;
 
   private:
     // This host's builds: what it draws, by the pass's output and build (RasterPass::defines).
@@ -192,8 +199,8 @@ class HostGeometry final : public GeometryDrawer {
 
 // The display image (HostView::read's second half).
 std::vector<float> render(vk::Device& device, const eng::frame::GpuScene& scene, Technique& technique,
-                          GeometryDrawer* geometry) {
-    const std::vector<float> both = renderFrame(device, scene, technique, geometry);
+                          GeometryDrawer* geometry, const HostShadowMaps* shadowMaps = nullptr) {
+    const std::vector<float> both = renderFrame(device, scene, technique, geometry, shadowMaps);
     return {both.begin() + std::ptrdiff_t(both.size() / 2), both.end()};
 }
 
@@ -258,6 +265,106 @@ INSTANTIATE_TEST_SUITE_P(Node, HostGeometryCase,
                                                 ? "_accumulate"
                                                 : "");
                          });
+
+// FrameInputs::shadowMaps: the host draws its own shadow map (its own geometry, pipelines and
+// rendering, into its own image, with the module's fit from ShadowMapPass::makeConstants) and the
+// method reads it in place of drawing one: the image equals the method's own, and no shadow pass of
+// the module ran. Maps that are not what the lighting reads are refused by name.
+TEST(HostShadowMaps, AHostsOwnShadowMapsReplaceTheModulesBitForBit) {
+    auto device = makeValidatedDevice();
+    const eng::scene::Scene scene = eng::scene::loadBuiltin("railings");
+    eng::frame::GpuScene gpuScene(*device, scene);
+    const MethodSettings settings;
+    std::unique_ptr<Technique> technique = createTechnique("reference", *device, gpuScene, settings);
+    const eng::scene::SceneFeatures features = effectiveFeatures(scene, settings.effects);
+    ASSERT_FALSE(features.shadowedLights.empty());
+    HostGeometry host(*device, hostMesh(scene));
+    const std::vector<float> own = render(*device, gpuScene, *technique, &host);
+    ASSERT_EQ(host.shadowMapsDrawn, 1);
+
+    // The host's map and constants, for the frame renderFrame draws.
+    const uint32_t size = settings.effects.shadowMapSize;
+    const uint32_t layers = std::max<uint32_t>(2, uint32_t(features.shadowedLights.size()));
+    vk::Image map = vk::createImage(*device,
+                                    {ShadowMapPass::kFormat, size, size, layers, 1, VK_SAMPLE_COUNT_1_BIT,
+                                     VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT,
+                                     VK_IMAGE_VIEW_TYPE_2D_ARRAY},
+                                    "host.shadowMap");
+    const shared::FrameConstants frame = eng::frame::makeFrameConstants(
+        scene, frameView(), eng::frame::makeSamplePattern(technique->samples()));
+    const shared::ShadowConstants constants =
+        ShadowMapPass::makeConstants(scene, features.shadowedLights, size, &frame);
+    vk::Buffer constantsBuffer =
+        vk::createBuffer(*device, sizeof constants, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, vk::MemoryUse::Upload,
+                         "host.shadowConstants");
+    vk::writeBuffer(*device, constantsBuffer, std::as_bytes(std::span(&constants, 1)));
+
+    // The host's own rendering of it, through the module's description of the pass.
+    const ShadowMapPass module(*device, gpuScene, features, settings.effects, "host");
+    const RasterPass& pass = module.rasterPass();
+    host.prepare(pass);
+    const VkImageLayout drawn = eng::rg::useInfo(eng::rg::Use::DepthStencilWrite).layout;
+    device->submitAndWait([&](VkCommandBuffer cmd) {
+        VkImageMemoryBarrier2 barrier{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER_2};
+        barrier.dstStageMask =
+            VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT;
+        barrier.dstAccessMask =
+            VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_READ_BIT | VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT;
+        barrier.oldLayout = VK_IMAGE_LAYOUT_UNDEFINED;
+        barrier.newLayout = drawn;
+        barrier.image = map.image;
+        barrier.subresourceRange = {VK_IMAGE_ASPECT_DEPTH_BIT, 0, 1, 0, layers};
+        VkDependencyInfo dependency{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
+        dependency.imageMemoryBarrierCount = 1;
+        dependency.pImageMemoryBarriers = &barrier;
+        vkCmdPipelineBarrier2(cmd, &dependency);
+        VkRenderingAttachmentInfo depth{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
+        depth.imageView = map.view;
+        depth.imageLayout = drawn;
+        depth.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
+        depth.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+        depth.clearValue.depthStencil = {1.0f, 0}; // nothing occludes
+        VkRenderingInfo rendering{VK_STRUCTURE_TYPE_RENDERING_INFO};
+        rendering.renderArea = {{0, 0}, {size, size}};
+        rendering.layerCount = layers;
+        rendering.pDepthAttachment = &depth;
+        vkCmdBeginRendering(cmd, &rendering);
+        const VkViewport viewport{0.0f, 0.0f, float(size), float(size), 0.0f, 1.0f};
+        const VkRect2D scissor{{0, 0}, {size, size}};
+        vkCmdSetViewport(cmd, 0, 1, &viewport);
+        vkCmdSetScissor(cmd, 0, 1, &scissor);
+        host.recordDraws(cmd, pass, [&](VkCommandBuffer c, VkPipelineLayout layout) {
+            eng::vk::PushDescriptors()
+                .uniform(0, constantsBuffer.buffer)
+                .push(*device, c, VK_PIPELINE_BIND_POINT_GRAPHICS, layout);
+        });
+        vkCmdEndRendering(cmd);
+    });
+    ASSERT_EQ(host.shadowMapsDrawn, 2);
+
+    const HostShadowMaps maps{{map.image,
+                               map.view,
+                               map.sampledView,
+                               {ShadowMapPass::kFormat, size, size, layers, VK_SAMPLE_COUNT_1_BIT}},
+                              {constantsBuffer.buffer, constantsBuffer.size},
+                              eng::rg::Use::DepthStencilWrite};
+    const std::vector<float> hosts = render(*device, gpuScene, *technique, &host, &maps);
+    EXPECT_EQ(host.shadowMapsDrawn, 2) << "the module drew a shadow map of its own";
+    EXPECT_EQ(countDifferentBits(hosts, own), 0u);
+
+    HostShadowMaps single = maps;
+    single.map.desc.layers = 1;
+    try {
+        render(*device, gpuScene, *technique, &host, &single);
+        ADD_FAILURE() << "a one-layer map was taken";
+    } catch (const std::invalid_argument& e) {
+        EXPECT_NE(std::string(e.what()).find("FrameInputs::shadowMaps: map.desc.layers"), std::string::npos)
+            << e.what();
+    }
+    expectNoValidationErrors(*device);
+    vk::destroyImage(*device, map);
+    vk::destroyBuffer(*device, constantsBuffer);
+}
 
 } // namespace
 } // namespace agaa::test
