@@ -25,6 +25,20 @@ const char* rasterOutputName(RasterOutput output) {
     return "unknown";
 }
 
+eng::vk::GraphicsPipelineDesc rasterPipelineState(const RasterPass& pass, bool twoSided) {
+    eng::vk::GraphicsPipelineDesc d;
+    d.colorFormats = pass.colorFormats;
+    d.depthFormat = pass.depthFormat;
+    d.samples = pass.samples;
+    d.sampleShading = pass.sampleRateShading;
+    d.cullMode = pass.bothFaces || twoSided ? VK_CULL_MODE_NONE : VK_CULL_MODE_BACK_BIT;
+    d.depthCompare = pass.depthCompare;
+    d.depthWrite = pass.depthWrite;
+    d.stencilTest = pass.stencilTest;
+    d.stencil = pass.stencil;
+    return d;
+}
+
 bool RasterPass::defined(std::string_view macro) const {
     return std::find(defines.begin(), defines.end(), macro) != defines.end();
 }

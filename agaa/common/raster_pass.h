@@ -82,6 +82,12 @@ struct RasterPass {
     bool operator==(const RasterPass& other) const;
 };
 
+// The fixed-function state `pass` fixes, for a drawer that builds its pipelines with
+// eng::vk::createGraphicsPipeline: attachments' formats, samples, sample-rate shading, depth and
+// stencil, and culling (none for a two-sided material or RasterPass::bothFaces). The drawer adds
+// its shaders, layout, vertex input, specialisation (with pass.specialization) and alpha-to-coverage.
+eng::vk::GraphicsPipelineDesc rasterPipelineState(const RasterPass& pass, bool twoSided);
+
 // Pushes set 0 through `layout`, a pipeline layout whose set 0 was made from RasterPass::moduleSet.
 using PushModuleSet = std::function<void(VkCommandBuffer cmd, VkPipelineLayout layout)>;
 

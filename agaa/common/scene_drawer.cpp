@@ -127,7 +127,7 @@ void SceneDrawer::prepare(const RasterPass& pass) {
 
 VkPipeline SceneDrawer::makePipeline(const RasterPass& pass, VkPipelineLayout layout,
                                      const DrawVariant& variant) const {
-    vk::GraphicsPipelineDesc d;
+    vk::GraphicsPipelineDesc d = rasterPipelineState(pass, variant.doubleSided);
     d.vertex = program(vertexProgram(pass.output));
     d.fragment = program(fragmentProgram(pass, variant.alpha));
     d.layout = layout;
@@ -149,16 +149,7 @@ VkPipeline SceneDrawer::makePipeline(const RasterPass& pass, VkPipelineLayout la
     d.specialization.byId.insert(d.specialization.byId.end(), pass.specialization.byId.begin(),
                                  pass.specialization.byId.end());
     addMaterialSpecialization(d.specialization, m_features);
-    d.sampleShading = pass.sampleRateShading;
     d.alphaToCoverage = usesAlphaToCoverage(variant.alpha);
-    d.colorFormats = pass.colorFormats;
-    d.depthFormat = pass.depthFormat;
-    d.samples = pass.samples;
-    d.cullMode = pass.bothFaces || variant.doubleSided ? VK_CULL_MODE_NONE : VK_CULL_MODE_BACK_BIT;
-    d.depthCompare = pass.depthCompare;
-    d.depthWrite = pass.depthWrite;
-    d.stencilTest = pass.stencilTest;
-    d.stencil = pass.stencil;
     const bool shadow = pass.output == RasterOutput::ShadowDepth;
     const std::string name =
         shadow ? pass.name + (variant.alpha == AlphaPath::Opaque ? ".opaque" : ".masked")

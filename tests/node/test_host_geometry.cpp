@@ -115,7 +115,7 @@ class HostGeometry final : public GeometryDrawer {
         layout.pushConstantBytes = sizeof(HostMaterial);
         p.layout = vk::createPipelineLayout(m_device, layout, pass.name + ".host.layout");
         for (int twoSided = 0; twoSided < 2; ++twoSided) {
-            vk::GraphicsPipelineDesc d;
+            vk::GraphicsPipelineDesc d = rasterPipelineState(pass, twoSided != 0);
             const bool shadow = pass.output == RasterOutput::ShadowDepth;
             d.vertex = shadow ? std::span<const uint32_t>(kTestsHostShadowVert) : kTestsHostGbufferVert;
             d.fragment = fragment;
@@ -125,15 +125,6 @@ class HostGeometry final : public GeometryDrawer {
             d.vertexBindings = {{0, sizeof(HostVertex), VK_VERTEX_INPUT_RATE_VERTEX}};
             d.vertexAttributes = {{0, 0, VK_FORMAT_R32G32B32_SFLOAT, 0},
                                   {1, 0, VK_FORMAT_R32G32B32_SFLOAT, 12}};
-            d.colorFormats = pass.colorFormats;
-            d.depthFormat = pass.depthFormat;
-            d.depthCompare = pass.depthCompare;
-            d.depthWrite = pass.depthWrite;
-            d.stencilTest = pass.stencilTest;
-            d.stencil = pass.stencil;
-            d.samples = pass.samples;
-            d.sampleShading = pass.sampleRateShading;
-            d.cullMode = twoSided || pass.bothFaces ? VK_CULL_MODE_NONE : VK_CULL_MODE_BACK_BIT;
             p.pipelines[twoSided] = vk::createGraphicsPipeline(m_device, d, pass.name + ".host");
         }
         m_passes.push_back(std::move(p));
