@@ -79,13 +79,13 @@ bool isKnownMethod(const std::string& name) {
 }
 
 std::unique_ptr<Technique> createTechnique(const std::string& method, eng::vk::Device& device,
-                                           const eng::frame::GpuScene& scene,
-                                           const MethodSettings& settings) {
+                                           const TechniqueContent& content, const MethodSettings& settings) {
     if (method == "reference")
         return std::make_unique<Reference>(
-            device, scene, ReferenceSettings{settings.samples, settings.effects, settings.sampleRateShading});
+            device, content,
+            ReferenceSettings{settings.samples, settings.effects, settings.sampleRateShading});
     if (method == "noaa")
-        return std::make_unique<Reference>(device, scene, ReferenceSettings{1, settings.effects}, "noaa");
+        return std::make_unique<Reference>(device, content, ReferenceSettings{1, settings.effects}, "noaa");
     if (method == "simple-complex" || method == "simple-complex-naive") {
         SimpleComplexSettings s; // thresholds: the documented defaults (simple_complex.h)
         s.samples = settings.samples;
@@ -96,16 +96,16 @@ std::unique_ptr<Technique> createTechnique(const std::string& method, eng::vk::D
             throw std::invalid_argument("--debug '" + settings.debug + "' is not a debug view of " + method +
                                         " (allowed: complex)");
         if (settings.debug == "complex") s.debugView = SimpleComplexDebugView::Complex;
-        return std::make_unique<SimpleComplex>(device, scene, s, method);
+        return std::make_unique<SimpleComplex>(device, content, s, method);
     }
-    if (method == "fxaa") return std::make_unique<Fxaa>(device, scene, FxaaSettings{});
+    if (method == "fxaa") return std::make_unique<Fxaa>(device, content, FxaaSettings{});
     if (method == "sbaa") {
         SbaaSettings s;
         s.samples = settings.samples;
         if (settings.surfaces) s.surfaces = settings.surfaces;
         s.effects = settings.effects;
         s.sampleRateShading = settings.sampleRateShading;
-        return std::make_unique<Sbaa>(device, scene, s);
+        return std::make_unique<Sbaa>(device, content, s);
     }
     if (method == "streaming") {
         StreamingSettings s;
@@ -114,7 +114,7 @@ std::unique_ptr<Technique> createTechnique(const std::string& method, eng::vk::D
         if (settings.streamingNormalAngle >= 0.0f) s.normalAngleDegrees = settings.streamingNormalAngle;
         s.effects = settings.effects;
         s.sampleRateShading = settings.sampleRateShading;
-        return std::make_unique<StreamingCompression>(device, scene, s);
+        return std::make_unique<StreamingCompression>(device, content, s);
     }
     if (method == "agaa" || method == "agaa-accumulate" || method == "agaa-samples") {
         AggregateSettings s;
@@ -146,7 +146,7 @@ std::unique_ptr<Technique> createTechnique(const std::string& method, eng::vk::D
         s.tolerance = settings.agaaTolerance;
         s.aliasLimit = settings.agaaAliasLimit;
         s.programs = settings.agaaPrograms;
-        return std::make_unique<AggregateAA>(device, scene, s);
+        return std::make_unique<AggregateAA>(device, content, s);
     }
     throw std::invalid_argument("--method '" + method + "' is unknown (known: " + knownMethodNames() + ")");
 }

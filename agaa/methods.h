@@ -28,8 +28,10 @@ std::string knownMethodNames(); // "reference, noaa" for messages
 bool isKnownMethod(const std::string& name);
 
 // Throws std::invalid_argument naming the method or setting and the allowed values,
-// eng::vk::MissingCapability when the device lacks what the method needs.
+// eng::vk::MissingCapability when the device lacks what the method needs. `content`: our
+// GpuScene, or a host's SceneTraits alone (agaa/common/scene_traits.h; its frames then give
+// FrameInputs::geometry and ::environment).
 std::unique_ptr<Technique> createTechnique(const std::string& method, eng::vk::Device& device,
-                                           const eng::frame::GpuScene& scene, const MethodSettings& settings);
+                                           const TechniqueContent& content, const MethodSettings& settings);
 
 } // namespace agaa

@@ -19,9 +19,10 @@ namespace agaa {
 namespace rg = eng::rg;
 namespace vk = eng::vk;
 
-AggregateAA::AggregateAA(vk::Device& device, const eng::frame::GpuScene& scene,
+AggregateAA::AggregateAA(vk::Device& device, const TechniqueContent& content,
                          const AggregateSettings& settings)
-    : m_device(device), m_scene(scene.scene()), m_plan(planAggregate(device, scene.scene(), settings)),
+    : m_device(device), m_traits(content.traits), m_scene(content.scene),
+      m_plan(planAggregate(device, content.traits, settings)),
       m_constantsRing(device, sizeof(shared::AgaaConstants), "agaa.constants"),
       m_fetchSampler{device,
                      vk::createSampler(device, VK_FILTER_NEAREST, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE, 0.0f,
@@ -30,16 +31,16 @@ AggregateAA::AggregateAA(vk::Device& device, const eng::frame::GpuScene& scene,
     const VkSampler fetch = m_fetchSampler.sampler;
     if (m_plan.samplesPath())
         m_gbuffer =
-            std::make_unique<SampleGBufferPass>(device, scene, s.samples, "agaa", m_plan.features,
+            std::make_unique<SampleGBufferPass>(device, content, s.samples, "agaa", m_plan.features,
                                                 GBufferOptions{s.sampleRateShading, s.curvatureRoughness,
                                                                s.curvatureMaxFootprint, s.curvatureBoost});
     else
-        m_visibility = std::make_unique<VisibilityPass>(device, scene, m_plan);
+        m_visibility = std::make_unique<VisibilityPass>(device, content, m_plan);
     m_cluster = std::make_unique<ClusterPass>(device, m_plan, fetch);
-    m_shadow = std::make_unique<ShadowMapPass>(device, scene, m_plan.features, s.effects, "agaa");
+    m_shadow = std::make_unique<ShadowMapPass>(device, content, m_plan.features, s.effects, "agaa");
     if (s.debugView == AggregateDebugView::Aggregates)
         m_aggregatesView = std::make_unique<AggregatesViewPass>(device, m_plan, fetch);
-    if (!m_plan.samplesPath()) m_accumulation = std::make_unique<AccumulationPass>(device, scene, m_plan);
+    if (!m_plan.samplesPath()) m_accumulation = std::make_unique<AccumulationPass>(device, content, m_plan);
     m_lighting = std::make_unique<AggregateLightingPass>(device, m_plan, *m_shadow, fetch);
     if (m_plan.shadingRate())
         m_perSample = std::make_unique<PerSampleShadingPass>(device, m_plan, *m_shadow, fetch);
@@ -58,7 +59,8 @@ FrameTargets AggregateAA::addPasses(rg::Graph& graph, const FrameInputs& in) {
     m_constants = makeAgaaConstants(m_plan.settings, *in.constants, m_plan.emissive());
     // Per frame slot, so views and frames recorded before any executes keep their own (issue 18).
     AggregateFrame frame{
-        in, m_plan, m_constantsRing.write(graph, in.frameSlot, std::as_bytes(std::span(&m_constants, 1)))};
+        in, m_plan, m_constantsRing.write(graph, in.frameSlot, std::as_bytes(std::span(&m_constants, 1))),
+        frameEnvironment(in, m_scene, "agaa")};
     if (m_gbuffer) {
         frame.gbuffer = m_gbuffer->add(graph, in);
         frame.depth = frame.gbuffer.depth;
@@ -100,7 +102,7 @@ const RasterPass& AggregateAA::generationRasterPass() const {
 }
 
 std::vector<VariantChoice> AggregateAA::variants() const {
-    return planVariants(m_plan, m_scene, m_device.caps());
+    return planVariants(m_plan, m_traits, m_device.caps());
 }
 
 bool AggregateAA::isStorage(const std::string& name) const {

@@ -49,8 +49,7 @@ class VisibilityPass;
 
 class AggregateAA final : public Technique {
   public:
-    AggregateAA(eng::vk::Device& device, const eng::frame::GpuScene& scene,
-                const AggregateSettings& settings);
+    AggregateAA(eng::vk::Device& device, const TechniqueContent& content, const AggregateSettings& settings);
     ~AggregateAA() override;
 
     std::string name() const override { return "agaa"; }
@@ -62,6 +61,8 @@ class AggregateAA final : public Technique {
     const eng::scene::SceneFeatures& features() const { return m_plan.features; }
 
     const AggregatePlan& plan() const { return m_plan; }
+    // The GpuScene it was created with; null for a host's content (TechniqueContent).
+    const eng::frame::GpuScene* scene() const { return m_scene; }
     const AggregateSettings& settings() const { return m_plan.settings; }
     const AggregateResources& resources() const { return m_resources; }
     // The constants the last addPasses() wrote (into its FrameInputs::frameSlot).
@@ -78,7 +79,8 @@ class AggregateAA final : public Technique {
 
   private:
     eng::vk::Device& m_device;
-    const eng::scene::Scene& m_scene;
+    const SceneTraits m_traits;
+    const eng::frame::GpuScene* m_scene; // null for a host's content
     const AggregatePlan m_plan;
     eng::frame::UniformRing m_constantsRing; // shared::AgaaConstants per FrameInputs::frameSlot
     shared::AgaaConstants m_constants{};

@@ -119,11 +119,11 @@ void resolveTolerance(AggregatePlan& plan) {
 
 } // namespace
 
-AggregatePlan planAggregate(const vk::Device& device, const eng::scene::Scene& scene,
+AggregatePlan planAggregate(const vk::Device& device, const SceneTraits& traits,
                             const AggregateSettings& settings) {
     validate(settings);
     checkProgramOverrides(settings.programs);
-    AggregatePlan plan{settings, settings, effectiveFeatures(scene, settings.effects)};
+    AggregatePlan plan{settings, settings, effectiveFeatures(traits, settings.effects)};
     if (plan.settings.ndf == AggregateNdf::Auto)
         plan.settings.ndf =
             plan.features.anisotropicMetalsDominate() ? AggregateNdf::Sggx : AggregateNdf::Toksvig;
@@ -184,10 +184,10 @@ AggregatePlan planAggregate(const vk::Device& device, const eng::scene::Scene& s
     return plan;
 }
 
-std::vector<VariantChoice> planVariants(const AggregatePlan& plan, const eng::scene::Scene& scene,
+std::vector<VariantChoice> planVariants(const AggregatePlan& plan, const SceneTraits& traits,
                                         const vk::Capabilities& caps) {
     std::vector<VariantChoice> v =
-        effectVariants(plan.features, scene, plan.settings.samples, plan.settings.effects.shadowTaps);
+        effectVariants(plan.features, traits, plan.settings.samples, plan.settings.effects.shadowTaps);
     for (VariantChoice& choice : v)
         if (choice.effect == "shadows" && plan.features.hasShadows())
             choice.variant += shadowFootprintName(plan.settings.effects.shadowFootprint,

@@ -33,11 +33,11 @@ struct AggregatePlan {
 // Resolves `settings` for this device and scene. Throws std::invalid_argument for a setting out of
 // range or a combination that cannot run, naming it, and eng::vk::MissingCapability for a device
 // feature a requested setting needs, naming the feature and the values allowed on this device.
-AggregatePlan planAggregate(const eng::vk::Device& device, const eng::scene::Scene& scene,
+AggregatePlan planAggregate(const eng::vk::Device& device, const SceneTraits& traits,
                             const AggregateSettings& settings);
 
 // Each resolved choice of the plan, what runs and why (Technique::variants()).
-std::vector<VariantChoice> planVariants(const AggregatePlan& plan, const eng::scene::Scene& scene,
+std::vector<VariantChoice> planVariants(const AggregatePlan& plan, const SceneTraits& traits,
                                         const eng::vk::Capabilities& caps);
 
 } // namespace agaa

@@ -1,5 +1,6 @@
 #include "agaa/common/effects.h"
 
+#include "engine/frame/gpu_scene.h"
 #include "shared/environment.h"
 
 #include <stdexcept>
@@ -18,13 +19,14 @@ void validate(const EffectSettings& s) {
                                     " is not one of: statistics (0), samples (1), adaptive (2)");
 }
 
-eng::scene::SceneFeatures effectiveFeatures(const eng::scene::Scene& scene, const EffectSettings& settings) {
+eng::scene::SceneFeatures effectiveFeatures(const SceneTraits& traits, const EffectSettings& settings) {
     validate(settings);
-    return settings.forceAll ? eng::scene::forceAllSceneFeatures(scene)
-                             : eng::scene::deriveSceneFeatures(scene);
+    return settings.forceAll
+               ? eng::scene::forceAllSceneFeatures(traits.features, traits.lights, traits.materials)
+               : traits.features;
 }
 
-std::vector<VariantChoice> effectVariants(const eng::scene::SceneFeatures& f, const eng::scene::Scene& scene,
+std::vector<VariantChoice> effectVariants(const eng::scene::SceneFeatures& f, const SceneTraits& scene,
                                           uint32_t samples, uint32_t shadowTaps) {
     const std::string forced = f.forced ? "forced on; " : "";
     auto count = [](uint32_t n, const char* what) { return std::to_string(n) + " " + what; };
@@ -72,7 +74,7 @@ std::vector<VariantChoice> effectVariants(const eng::scene::SceneFeatures& f, co
                  f.hasEnvironment() ? "SH9 irradiance + " + std::to_string(shared::kEnvironmentLevels) +
                                           " pre-filtered specular levels"
                                     : "off",
-                 f.hasEnvironment() ? scene.environment.source : "no environment: a constant sky colour"});
+                 f.hasEnvironment() ? scene.environmentSource : "no environment: a constant sky colour"});
     v.push_back({"light-culling", f.needsLightCulling() ? "tiled" : "off",
                  f.needsLightCulling() ? forced + count(f.pointLights + f.spotLights, "point/spot lights")
                                        : "directional lights only: every light touches every tile"});
@@ -105,10 +107,18 @@ eng::vk::Specialization gbufferLightingSpecialization(const eng::scene::SceneFea
     return s;
 }
 
-void pushEnvironment(eng::vk::PushDescriptors& descriptors, const eng::frame::GpuScene& scene) {
-    descriptors.sampled(15, scene.environmentSampler(), scene.environmentView())
-        .uniform(16, scene.environmentConstants().buffer)
-        .sampled(17, scene.dfgSampler(), scene.dfgView());
+EnvironmentBindings environmentBindings(const eng::frame::GpuEnvironment& e) {
+    return {e.sampler(), e.view(), e.constants().buffer, e.dfgSampler(), e.dfgView()};
+}
+
+EnvironmentBindings environmentBindings(const eng::frame::GpuScene& scene) {
+    return environmentBindings(scene.environment());
+}
+
+void pushEnvironment(eng::vk::PushDescriptors& descriptors, const EnvironmentBindings& e) {
+    descriptors.sampled(15, e.sampler, e.prefiltered)
+        .uniform(16, e.constants)
+        .sampled(17, e.dfgSampler, e.dfg);
 }
 
 } // namespace agaa

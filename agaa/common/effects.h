@@ -5,7 +5,8 @@
 // reported: a VariantChoice names the variant and the scene feature that caused it.
 
 #include "agaa/common/named_value.h"
-#include "engine/frame/gpu_scene.h"
+#include "agaa/common/scene_traits.h"
+#include "engine/frame/gpu_environment.h"
 #include "engine/scene/scene_features.h"
 #include "engine/vk/descriptors.h"
 #include "engine/vk/pipeline.h"
@@ -48,14 +49,14 @@ struct VariantChoice {
     std::string cause;   // the scene feature behind it, e.g. "2 masked materials"
 };
 
-eng::scene::SceneFeatures effectiveFeatures(const eng::scene::Scene& scene, const EffectSettings& settings);
+// The content's features, or every effect forced on (EffectSettings::forceAll).
+eng::scene::SceneFeatures effectiveFeatures(const SceneTraits& traits, const EffectSettings& settings);
 
 // The choices the shared effects make for a technique rasterising `samples` per pixel;
 // `prefix` names the technique's passes ("reference", "agaa"). shadowTaps: taps per shading
 // event of this technique.
 std::vector<VariantChoice> effectVariants(const eng::scene::SceneFeatures& features,
-                                          const eng::scene::Scene& scene, uint32_t samples,
-                                          uint32_t shadowTaps);
+                                          const SceneTraits& traits, uint32_t samples, uint32_t shadowTaps);
 
 // Specialisation-constant ids shared by every shader that reads a scene effect: named once, for
 // GLSL and C++ alike, in shaders/glsl/shared/specialization.h.
@@ -73,12 +74,28 @@ inline void addMaterialSpecialization(eng::vk::Specialization& s, const eng::sce
     s.byId.push_back({kSpecVertexColors, f.vertexColors ? 1u : 0u});
 }
 
-// Every lighting pass: the environment's specialisation (kSpecEnvironment) added to `s`, and its
-// bindings (15: pre-filtered levels, 16: constants, 17: the split sum's BRDF table), pushed from the
-// scene, which holds a stand-in when it has no environment (engine/frame/gpu_scene.h).
+// The environment every lighting pass binds (issue 16; engine/frame/environment_maps.h): 15 its
+// pre-filtered specular levels (an RGBA16F 2D array, one layer per level; u repeats, v clamps), 16
+// its constants (uniform, shared::EnvironmentConstants), 17 the split sum's BRDF table (RG16F,
+// clamped). Images in SHADER_READ_ONLY_OPTIMAL for the whole frame. Content without an environment
+// binds a 1x1 black array and constants with params.x = 0 (what our GpuScene holds then): lighting
+// skips the term by specialisation (kSpecEnvironment), so no pass exists for it.
+struct EnvironmentBindings {
+    VkSampler sampler = VK_NULL_HANDLE;
+    VkImageView prefiltered = VK_NULL_HANDLE;
+    VkBuffer constants = VK_NULL_HANDLE;
+    VkSampler dfgSampler = VK_NULL_HANDLE;
+    VkImageView dfg = VK_NULL_HANDLE;
+};
+// An environment's (a host's own, or the stand-in of content without one: GpuEnvironment(device,
+// nullptr)), and our scene's.
+EnvironmentBindings environmentBindings(const eng::frame::GpuEnvironment& environment);
+EnvironmentBindings environmentBindings(const eng::frame::GpuScene& scene);
+
+// Every lighting pass: the environment's specialisation (kSpecEnvironment) added to `s`.
 eng::vk::Specialization lightingSpecialization(eng::vk::Specialization s,
                                                const eng::scene::SceneFeatures& features);
-void pushEnvironment(eng::vk::PushDescriptors& descriptors, const eng::frame::GpuScene& scene);
+void pushEnvironment(eng::vk::PushDescriptors& descriptors, const EnvironmentBindings& environment);
 // A lighting pass of the per-sample G-buffer (common/gbuffer_lighting.glsl: n, one shadow tap per
 // shading event), with the pass's own ids.
 eng::vk::Specialization gbufferLightingSpecialization(const eng::scene::SceneFeatures& features,

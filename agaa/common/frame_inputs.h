@@ -1,8 +1,8 @@
 #pragma once
 // The host's side of FrameInputs, for hosts that do not keep their own frame buffers: the
 // camera (ViewSettings, which takes a host's own eng::scene::Camera) becomes the frame
-// constants and the scene's lights in that view, written into per-frame-slot buffers
-// (engine/frame/uniform_ring.h) and imported into the host's graph.
+// constants and the content's lights (SceneTraits::lights) in that view, written into
+// per-frame-slot buffers (engine/frame/uniform_ring.h) and imported into the host's graph.
 //
 // Lifetimes: as the technique's own ring. Slot s may be written again once the fence of the
 // submission that last read it signalled; several views or frames recorded before any executes
@@ -15,6 +15,7 @@
 #include "engine/frame/uniform_ring.h"
 
 #include <array>
+#include <vector>
 
 namespace agaa {
 
@@ -25,15 +26,16 @@ void checkFrameInputs(const FrameInputs&);
 
 class FrameInputWriter {
   public:
-    FrameInputWriter(eng::vk::Device& device, const eng::frame::GpuScene& scene);
+    FrameInputWriter(eng::vk::Device& device, const TechniqueContent& content);
 
     // `samples`: the technique's (Technique::samples()), which selects the sample pattern.
     FrameInputs write(eng::rg::Graph& graph, const eng::frame::ViewSettings& view, uint32_t samples,
                       uint32_t frameSlot);
 
   private:
-    const eng::frame::GpuScene& m_scene;
-    eng::frame::UniformRing m_constants, m_lights;
+    std::vector<eng::scene::Camera> m_cameras;
+    std::vector<eng::scene::Light> m_lights;
+    eng::frame::UniformRing m_constantsRing, m_lightsRing;
     std::array<shared::FrameConstants, eng::frame::UniformRing::kMaxSlots> m_values{};
 };
 

@@ -7,8 +7,8 @@
 
 namespace agaa {
 
-FrameRecorder::FrameRecorder(eng::vk::Device& device, const eng::frame::GpuScene& scene)
-    : m_device(device), m_inputs(device, scene), m_writer(device), m_pool(device) {}
+FrameRecorder::FrameRecorder(eng::vk::Device& device, const TechniqueContent& content)
+    : m_device(device), m_inputs(device, content), m_writer(device), m_pool(device) {}
 
 FrameRecorder::~FrameRecorder() {
     // The host waited for its submissions (the header's lifetimes); the transients go back first.
@@ -17,7 +17,7 @@ FrameRecorder::~FrameRecorder() {
 }
 
 void FrameRecorder::record(VkCommandBuffer cmd, Technique& technique, const eng::frame::ViewSettings& view,
-                           const HostTargets& targets, uint32_t frameSlot) {
+                           const HostTargets& targets, uint32_t frameSlot, const HostFrameInputs& host) {
     if (frameSlot >= kMaxSlots)
         throw std::out_of_range("FrameRecorder: frame slot " + std::to_string(frameSlot) +
                                 " (allowed: 0 to " + std::to_string(kMaxSlots - 1) + ")");
@@ -25,7 +25,10 @@ void FrameRecorder::record(VkCommandBuffer cmd, Technique& technique, const eng:
     std::unique_ptr<eng::rg::Graph>& frame = m_frames[frameSlot];
     if (frame) frame->releaseTransients();
     frame = std::make_unique<eng::rg::Graph>();
-    const FrameInputs in = m_inputs.write(*frame, view, technique.samples(), frameSlot);
+    FrameInputs in = m_inputs.write(*frame, view, technique.samples(), frameSlot);
+    in.geometry = host.geometry;
+    in.environment = host.environment;
+    in.shadowMaps = host.shadowMaps;
     const HostTargetVersions out = m_writer.write(*frame, technique.addPasses(*frame, in), in, targets);
     frame->markOutput(out.color);
     if (out.depth.valid()) frame->markOutput(out.depth);

@@ -28,18 +28,27 @@
 
 namespace agaa {
 
+// What a host's content adds to each frame, as FrameInputs' fields of the same names: its drawer,
+// its environment and its shadow maps, each optional (null: the GpuScene's the technique was
+// created with, or the module's own maps).
+struct HostFrameInputs {
+    GeometryDrawer* geometry = nullptr;
+    const EnvironmentBindings* environment = nullptr;
+    const HostShadowMaps* shadowMaps = nullptr;
+};
+
 class FrameRecorder {
   public:
-    FrameRecorder(eng::vk::Device& device, const eng::frame::GpuScene& scene);
+    FrameRecorder(eng::vk::Device& device, const TechniqueContent& content);
     ~FrameRecorder();
     FrameRecorder(const FrameRecorder&) = delete;
     FrameRecorder& operator=(const FrameRecorder&) = delete;
 
-    // Records one view of `technique` into `cmd` through frame slot `frameSlot` (< kMaxSlots).
-    // Throws std::invalid_argument naming what is wrong with a target, std::out_of_range for the
-    // slot; nothing is recorded then.
+    // Records one view of `technique` into `cmd` through frame slot `frameSlot` (< kMaxSlots),
+    // with the host's content (`host`). Throws std::invalid_argument naming what is wrong with a
+    // target or a missing input, std::out_of_range for the slot; nothing is recorded then.
     void record(VkCommandBuffer cmd, Technique& technique, const eng::frame::ViewSettings& view,
-                const HostTargets& targets, uint32_t frameSlot = 0);
+                const HostTargets& targets, uint32_t frameSlot = 0, const HostFrameInputs& host = {});
 
     static constexpr uint32_t kMaxSlots = eng::frame::UniformRing::kMaxSlots;
 

@@ -11,11 +11,10 @@ namespace agaa {
 namespace rg = eng::rg;
 namespace vk = eng::vk;
 
-SampleGBufferPass::SampleGBufferPass(vk::Device& device, const eng::frame::GpuScene& scene, uint32_t samples,
+SampleGBufferPass::SampleGBufferPass(vk::Device& device, const TechniqueContent& content, uint32_t samples,
                                      std::string name, const eng::scene::SceneFeatures& features,
                                      const GBufferOptions& options)
-    : m_device(device), m_samples(samples), m_name(std::move(name)), m_options(options),
-      m_sceneDrawer(device, scene, features) {
+    : m_device(device), m_samples(samples), m_name(std::move(name)), m_options(options) {
     if (m_options.visibilityOnly) m_options.primitiveIds = true;
     if (!eng::frame::isSupportedSampleCount(samples))
         throw std::invalid_argument("--samples " + std::to_string(samples) + " is not supported (allowed: " +
@@ -31,9 +30,8 @@ SampleGBufferPass::SampleGBufferPass(vk::Device& device, const eng::frame::GpuSc
         throw vk::MissingCapability(device.caps().deviceName +
                                     " lacks geometryShader (gl_PrimitiveID in a fragment shader: the "
                                     "primitive id per sample)");
-    if (m_options.primitiveIds && scene.scene().triangleCount() >= (1u << 24) - 1u)
-        throw std::invalid_argument(scene.scene().source + ": " +
-                                    std::to_string(scene.scene().triangleCount()) +
+    if (m_options.primitiveIds && content.traits.triangles >= (1u << 24) - 1u)
+        throw std::invalid_argument(content.traits.source + ": " + std::to_string(content.traits.triangles) +
                                     " triangles; primitive ids per sample are exact below 2^24 - 1");
 
     const eng::frame::SamplePattern pattern = eng::frame::makeSamplePattern(m_samples);
@@ -60,6 +58,7 @@ SampleGBufferPass::SampleGBufferPass(vk::Device& device, const eng::frame::GpuSc
         {shared::kSpecFillCurvatureRoughness, m_options.curvatureRoughness ? 1u : 0u},
         {shared::kSpecFillCurvatureMaxFootprint, std::bit_cast<uint32_t>(m_options.curvatureMaxFootprint)},
         {shared::kSpecFillCurvatureBoost, std::bit_cast<uint32_t>(m_options.curvatureBoost)}};
+    m_sceneDrawer = makeSceneDrawer(device, content, features);
 }
 
 SampleGBufferPass::~SampleGBufferPass() = default;
@@ -72,7 +71,7 @@ SampleGBuffer SampleGBufferPass::add(rg::Graph& graph, const FrameInputs& in) {
     auto desc = [&](VkFormat f, VkFormat sampled = VK_FORMAT_UNDEFINED) {
         return rg::TextureDesc{f, in.width, in.height, m_raster.layers, m_raster.samples, sampled};
     };
-    GeometryDrawer* drawer = in.geometry ? in.geometry : &m_sceneDrawer;
+    GeometryDrawer* drawer = &frameDrawer(in, m_sceneDrawer.get(), m_raster.name);
     drawer->prepare(m_raster); // pipelines now, never while a command buffer records
     struct Data {
         rg::Buffer frame;

@@ -15,6 +15,7 @@
 #include "engine/vk/device.h"
 
 #include <array>
+#include <memory>
 #include <span>
 #include <string>
 #include <vector>
@@ -82,7 +83,7 @@ class SampleGBufferPass {
     // `name` prefixes the pass, its pipelines and its resources ("<name>.gbuffer.*").
     // `features`: the scene's (agaa/common/effects.h); they pick the alpha path of masked draws
     // (alpha-to-coverage at n > 1, discard at 1) and the normal-map / emissive fetch variants.
-    SampleGBufferPass(eng::vk::Device& device, const eng::frame::GpuScene& scene, uint32_t samples,
+    SampleGBufferPass(eng::vk::Device& device, const TechniqueContent& content, uint32_t samples,
                       std::string name, const eng::scene::SceneFeatures& features,
                       const GBufferOptions& options = {});
     ~SampleGBufferPass();
@@ -105,7 +106,7 @@ class SampleGBufferPass {
     std::string m_name;
     GBufferOptions m_options;
     RasterPass m_raster;
-    SceneDrawer m_sceneDrawer; // the scene's, when the host gives no drawer
+    std::unique_ptr<SceneDrawer> m_sceneDrawer; // the content's GpuScene's, when the host gives no drawer
 };
 
 } // namespace agaa

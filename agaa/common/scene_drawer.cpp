@@ -170,4 +170,11 @@ void SceneDrawer::recordDraws(VkCommandBuffer cmd, const RasterPass& pass,
     m_scene.recordDraws(cmd, p->layout.layout, p->perDraw, pass.layers, pushesFirstTriangle(pass.output));
 }
 
+std::unique_ptr<SceneDrawer> makeSceneDrawer(eng::vk::Device& device, const TechniqueContent& content,
+                                             const eng::scene::SceneFeatures& features,
+                                             ProgramOverrides overrides) {
+    if (!content.scene) return nullptr;
+    return std::make_unique<SceneDrawer>(device, *content.scene, features, std::move(overrides));
+}
+
 } // namespace agaa

@@ -12,6 +12,7 @@
 #include "agaa/common/effects.h"
 #include "agaa/common/program_overrides.h"
 #include "agaa/common/raster_pass.h"
+#include "agaa/common/scene_traits.h"
 #include "engine/frame/gpu_scene.h"
 #include "engine/vk/device.h"
 #include "engine/vk/pipeline_cache.h"
@@ -54,5 +55,11 @@ class SceneDrawer final : public GeometryDrawer {
     mutable std::mutex m_mutex; // prepare may run while another thread records a prepared pass
     std::vector<std::unique_ptr<Prepared>> m_prepared;
 };
+
+// The drawer of a pass for content that is our GpuScene; null for a host's content (its frames
+// give FrameInputs::geometry).
+std::unique_ptr<SceneDrawer> makeSceneDrawer(eng::vk::Device& device, const TechniqueContent& content,
+                                             const eng::scene::SceneFeatures& features,
+                                             ProgramOverrides overrides = {});
 
 } // namespace agaa

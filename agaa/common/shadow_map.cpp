@@ -33,9 +33,9 @@ glm::dvec3 anyPerpendicular(glm::dvec3 d) {
 // In double throughout: 1e5 m from the origin (hard-far) fp32 lost the fit's light view and the
 // camera frustum to cancellation, and the map moved against the scene between two frames that
 // differ only by where the origin is.
-glm::dmat4 ShadowMapPass::fitLight(const eng::scene::Scene& scene, const eng::scene::Light& light,
+glm::dmat4 ShadowMapPass::fitLight(const eng::scene::Bounds& bounds, const eng::scene::Light& light,
                                    const shared::FrameConstants* frame, float* texelMetres) {
-    glm::dvec3 lo = scene.bounds.min, hi = scene.bounds.max;
+    glm::dvec3 lo = bounds.min, hi = bounds.max;
     if (!(glm::all(glm::lessThanEqual(lo, hi)))) lo = hi = glm::dvec3(0.0);
     const glm::dvec3 centre = 0.5 * (lo + hi);
     const double radius = std::max(0.5 * glm::length(hi - lo), 1e-3);
@@ -95,12 +95,12 @@ glm::dmat4 ShadowMapPass::fitLight(const eng::scene::Scene& scene, const eng::sc
     return glm::orthoRH_ZO(xyLo.x, xyHi.x, xyLo.y, xyHi.y, -sceneHi.z - pad, -sceneLo.z + pad) * view;
 }
 
-ShadowMapPass::ShadowMapPass(vk::Device& device, const eng::frame::GpuScene& scene,
+ShadowMapPass::ShadowMapPass(vk::Device& device, const TechniqueContent& content,
                              const eng::scene::SceneFeatures& features, const EffectSettings& settings,
                              std::string name)
     : m_device(device), m_name(std::move(name)),
       m_constantsRing(device, sizeof(shared::ShadowConstants), m_name + ".shadow.constants"),
-      m_settings(settings), m_lights(features.shadowedLights),
+      m_settings(settings), m_traits(content.traits), m_lights(features.shadowedLights),
       m_mapCount(uint32_t(std::min<size_t>(features.shadowedLights.size(), shared::kMaxShadowMaps))) {
     validate(settings);
     if (!enabled()) return;
@@ -112,7 +112,7 @@ ShadowMapPass::ShadowMapPass(vk::Device& device, const eng::frame::GpuScene& sce
     m_raster.bothFaces = true;                  // both faces cast: thin and open meshes do not leak light
     m_raster.moduleSet = {
         {0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 1}};
-    m_sceneDrawer = std::make_unique<SceneDrawer>(device, scene, features);
+    m_sceneDrawer = makeSceneDrawer(device, content, features);
     m_sampler = vk::createSampler(device, VK_FILTER_NEAREST, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE, 0.0f,
                                   m_name + ".shadow.sampler");
 }
@@ -129,23 +129,23 @@ void ShadowMapPass::release() {
     m_sceneDrawer.reset();
 }
 
-shared::ShadowConstants ShadowMapPass::makeConstants(const eng::scene::Scene& scene,
+shared::ShadowConstants ShadowMapPass::makeConstants(const SceneTraits& traits,
                                                      std::span<const uint32_t> lights, uint32_t size,
                                                      const shared::FrameConstants* frame) {
     const uint32_t maps = uint32_t(std::min<size_t>(lights.size(), shared::kMaxShadowMaps));
     shared::ShadowConstants c{};
     c.lightIndex = glm::uvec4(shared::kMaxLights);
-    // Hosts that fill only the frame-constants buffer (no FrameConstants given) render scene
-    // camera 0 (what makeFrameConstants builds by default); the fit then covers the whole scene.
+    // Hosts that fill only the frame-constants buffer (no FrameConstants given) render camera 0
+    // (what makeFrameConstants builds by default); the fit then covers the whole scene.
     const glm::mat4 view =
-        frame ? frame->view : (scene.cameras.empty() ? glm::mat4(1.0f) : scene.cameras[0].view);
+        frame ? frame->view : (traits.cameras.empty() ? glm::mat4(1.0f) : traits.cameras[0].view);
     // In double: the product's translation is a difference of terms as large as the world
     // coordinates (1e5 m from the origin fp32 cancels them to millimetres; FrameConstants::eye).
     const glm::dmat4 viewToWorld = glm::inverse(glm::dmat4(view));
     c.eye = glm::vec4(glm::vec3(eng::frame::cameraEye(view)), 0.0f);
     for (uint32_t l = 0; l < maps; ++l) {
         float texel = 0.0f;
-        const glm::dmat4 worldToShadow = fitLight(scene, scene.lights.at(lights[l]), frame, &texel);
+        const glm::dmat4 worldToShadow = fitLight(traits.bounds, traits.lights.at(lights[l]), frame, &texel);
         texel *= 1024.0f / float(size);
         c.relativeToShadow[l] = glm::mat4(glm::translate(worldToShadow, eng::frame::cameraEye(view)));
         c.viewToShadow[l] = glm::mat4(worldToShadow * viewToWorld);
@@ -179,12 +179,12 @@ ShadowMaps ShadowMapPass::importHostMaps(rg::Graph& graph, const HostShadowMaps&
 ShadowMaps ShadowMapPass::add(rg::Graph& graph, const FrameInputs& in) {
     if (in.shadowMaps) return importHostMaps(graph, *in.shadowMaps);
     const uint32_t size = m_settings.shadowMapSize;
-    m_constants = makeConstants(in.scene->scene(), m_lights, size, in.constants);
+    m_constants = makeConstants(m_traits, m_lights, size, in.constants);
     // The fit follows the camera: per frame slot, so views recorded before any executes keep theirs.
     const rg::Buffer constants =
         m_constantsRing.write(graph, in.frameSlot, std::as_bytes(std::span(&m_constants, 1)));
 
-    GeometryDrawer* drawer = in.geometry ? in.geometry : m_sceneDrawer.get();
+    GeometryDrawer* drawer = &frameDrawer(in, m_sceneDrawer.get(), m_raster.name);
     drawer->prepare(m_raster); // pipelines now, never while a command buffer records
     // An array view needs two layers under the transient pool's view rule (1 layer: a 2D view).
     const uint32_t layers = std::max(2u, m_mapCount);

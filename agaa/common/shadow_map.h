@@ -39,7 +39,7 @@ class ShadowMapPass {
   public:
     static constexpr VkFormat kFormat = VK_FORMAT_D32_SFLOAT;
 
-    ShadowMapPass(eng::vk::Device& device, const eng::frame::GpuScene& scene,
+    ShadowMapPass(eng::vk::Device& device, const TechniqueContent& content,
                   const eng::scene::SceneFeatures& features, const EffectSettings& settings,
                   std::string name);
     ~ShadowMapPass();
@@ -65,16 +65,15 @@ class ShadowMapPass {
 
     // The constants of the module's fit for a frame: one map per light of `lights` (scene light
     // indices, at most kMaxShadowMaps) of `size` texels, seen from the camera `view` (its
-    // FrameConstants, or nullptr: scene camera 0 and the whole scene's bounds). What add() uploads,
-    // and what a host drawing its own maps (HostShadowMaps) can use.
-    static shared::ShadowConstants makeConstants(const eng::scene::Scene& scene,
-                                                 std::span<const uint32_t> lights, uint32_t size,
-                                                 const shared::FrameConstants* view);
+    // FrameConstants, or nullptr: the content's default view and its whole bounds). What add()
+    // uploads, and what a host drawing its own maps (HostShadowMaps) can use.
+    static shared::ShadowConstants makeConstants(const SceneTraits& traits, std::span<const uint32_t> lights,
+                                                 uint32_t size, const shared::FrameConstants* view);
 
     // The light-space fit, exposed for tests: world -> shadow clip (z in [0, 1], 0 near).
     // frame: the camera (its view and proj), to fit a directional map to the visible part of the
     // scene; nullptr fits it to the whole scene bounds.
-    static glm::dmat4 fitLight(const eng::scene::Scene& scene, const eng::scene::Light& light,
+    static glm::dmat4 fitLight(const eng::scene::Bounds& bounds, const eng::scene::Light& light,
                                const shared::FrameConstants* frame, float* texelMetres);
 
   private:
@@ -84,6 +83,7 @@ class ShadowMapPass {
     std::string m_name;
     eng::frame::UniformRing m_constantsRing; // shared::ShadowConstants per FrameInputs::frameSlot
     EffectSettings m_settings;
+    SceneTraits m_traits;           // the lights and bounds the maps are fitted to
     std::vector<uint32_t> m_lights; // scene light indices, one per layer
     uint32_t m_mapCount = 0;
     RasterPass m_raster;

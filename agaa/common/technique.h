@@ -23,7 +23,6 @@
 
 #include "agaa/common/effects.h"
 #include "agaa/common/program_overrides.h"
-#include "engine/frame/gpu_scene.h"
 #include "engine/graph/graph.h"
 #include "shared/frame.h"
 
@@ -50,11 +49,13 @@ struct HostShadowMaps {
 
 // Inputs every technique reads; the host imports these buffers into its graph.
 struct FrameInputs {
-    const eng::frame::GpuScene* scene = nullptr;
     // The host's drawer for every raster pass (agaa/common/raster_pass.h); null: each pass draws
-    // `scene` with this project's materials (agaa::SceneDrawer). It must outlive the recording of
-    // the graph.
+    // the GpuScene the technique was created with (TechniqueContent) with this project's materials
+    // (agaa::SceneDrawer). It must outlive the recording of the graph.
     GeometryDrawer* geometry = nullptr;
+    // The environment the lighting passes bind (agaa/common/effects.h); null: the GpuScene's the
+    // technique was created with. Must outlive the recording of the graph.
+    const EnvironmentBindings* environment = nullptr;
     // The host's shadow maps (read where the scene has shadowed lights); null: the module draws its
     // own. Must outlive the recording of the graph.
     const HostShadowMaps* shadowMaps = nullptr;
@@ -85,6 +86,14 @@ struct FrameTargets {
     // the pixel was shaded per sample, 0 elsewhere. Invalid otherwise.
     eng::rg::Texture perSampleShaded;
 };
+
+// A frame's drawer: the host's, else `sceneDrawer` (present when the technique was created with a
+// GpuScene). Throws std::invalid_argument naming FrameInputs::geometry when there is neither.
+GeometryDrawer& frameDrawer(const FrameInputs& in, GeometryDrawer* sceneDrawer, const std::string& pass);
+// A frame's environment: the host's, else `scene`'s; throws naming FrameInputs::environment when
+// there is neither.
+EnvironmentBindings frameEnvironment(const FrameInputs& in, const eng::frame::GpuScene* scene,
+                                     const std::string& technique);
 
 class Technique {
   public:

@@ -33,10 +33,10 @@ FxaaSettings checked(const FxaaSettings& s) {
 
 } // namespace
 
-Fxaa::Fxaa(vk::Device& device, const eng::frame::GpuScene& scene, const FxaaSettings& settings,
+Fxaa::Fxaa(vk::Device& device, const TechniqueContent& content, const FxaaSettings& settings,
            std::string name)
     : m_device(device), m_settings(checked(settings)), m_name(std::move(name)),
-      m_noaa(device, scene, ReferenceSettings{1}, m_name + ".noaa") {
+      m_noaa(device, content, ReferenceSettings{1}, m_name + ".noaa") {
     vk::LayoutDesc layout;
     layout.pushBindings = vk::reflectBindings({{kFxaaFxaaComp, VK_SHADER_STAGE_COMPUTE_BIT}});
     layout.pushConstantBytes = sizeof(shared::FxaaParams);

@@ -18,7 +18,7 @@ namespace agaa {
 class Fxaa final : public Technique {
   public:
     // Throws std::invalid_argument for settings out of range (naming the setting).
-    Fxaa(eng::vk::Device& device, const eng::frame::GpuScene& scene, const FxaaSettings& settings,
+    Fxaa(eng::vk::Device& device, const TechniqueContent& content, const FxaaSettings& settings,
          std::string name = "fxaa");
     ~Fxaa() override;
 

@@ -17,13 +17,13 @@ namespace agaa {
 namespace rg = eng::rg;
 namespace vk = eng::vk;
 
-Reference::Reference(vk::Device& device, const eng::frame::GpuScene& scene, const ReferenceSettings& settings,
+Reference::Reference(vk::Device& device, const TechniqueContent& content, const ReferenceSettings& settings,
                      std::string name)
-    : m_device(device), m_settings(settings), m_name(std::move(name)), m_scene(scene.scene()),
-      m_features(effectiveFeatures(scene.scene(), settings.effects)),
-      m_gbuffer(device, scene, settings.samples, m_name, m_features,
+    : m_device(device), m_settings(settings), m_name(std::move(name)), m_traits(content.traits),
+      m_scene(content.scene), m_features(effectiveFeatures(content.traits, settings.effects)),
+      m_gbuffer(device, content, settings.samples, m_name, m_features,
                 GBufferOptions{.sampleRateShading = settings.sampleRateShading}), // validates n, 4x MSAA, SRS
-      m_shadow(device, scene, m_features, settings.effects, m_name) {
+      m_shadow(device, content, m_features, settings.effects, m_name) {
 
     const bool shadows = m_shadow.enabled();
     std::span<const uint32_t> code =
@@ -54,7 +54,7 @@ bool Reference::isStorage(const std::string& resourceName) const {
 }
 
 std::vector<VariantChoice> Reference::variants() const {
-    std::vector<VariantChoice> v = effectVariants(m_features, m_scene, m_settings.samples, 1);
+    std::vector<VariantChoice> v = effectVariants(m_features, m_traits, m_settings.samples, 1);
     if (m_settings.samples > 1)
         v.push_back({"fill-shading",
                      m_settings.sampleRateShading ? "sample rate (supersampled materials)"
@@ -91,12 +91,12 @@ FrameTargets Reference::addPasses(rg::Graph& graph, const FrameInputs& in) {
             d.events =
                 b.write(b.create(m_name + ".shadingEvents", eventsDesc), rg::Use::StorageImageWriteCompute);
         },
-        [this, shadows, scene = in.scene, w = in.width, h = in.height](const rg::Context& ctx,
-                                                                       const Lighting& d) {
+        [this, shadows, environment = frameEnvironment(in, m_scene, name()), w = in.width,
+         h = in.height](const rg::Context& ctx, const Lighting& d) {
             VkCommandBuffer cmd = ctx.cmd();
             vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, m_lightingPipeline);
             vk::PushDescriptors pd;
-            pushEnvironment(pd, *scene);
+            pushEnvironment(pd, environment);
             if (shadows) m_shadow.push(pd, ctx, d.shadow, 9, 10);
             pd.uniform(0, ctx.buffer(d.frame).buffer).storage(1, ctx.buffer(d.lights).buffer);
             pushSampleGBuffer(pd, ctx, m_fetchSampler, d.g);

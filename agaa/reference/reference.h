@@ -25,7 +25,7 @@ struct ReferenceSettings {
 
 class Reference final : public Technique {
   public:
-    Reference(eng::vk::Device& device, const eng::frame::GpuScene& scene, const ReferenceSettings& settings,
+    Reference(eng::vk::Device& device, const TechniqueContent& content, const ReferenceSettings& settings,
               std::string name = "reference");
     ~Reference() override;
 
@@ -39,7 +39,8 @@ class Reference final : public Technique {
     eng::vk::Device& m_device;
     ReferenceSettings m_settings;
     std::string m_name;
-    const eng::scene::Scene& m_scene;
+    const SceneTraits m_traits;
+    const eng::frame::GpuScene* m_scene;  // null for a host's content
     eng::scene::SceneFeatures m_features; // before the passes built from it
     SampleGBufferPass m_gbuffer;
     ShadowMapPass m_shadow;

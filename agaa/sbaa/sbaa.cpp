@@ -51,13 +51,13 @@ shared::SbaaParams params(const SbaaSettings& s) {
 
 } // namespace
 
-Sbaa::Sbaa(vk::Device& device, const eng::frame::GpuScene& scene, const SbaaSettings& settings)
-    : m_device(device), m_settings(checked(settings)), m_scene(scene.scene()),
-      m_features(effectiveFeatures(scene.scene(), settings.effects)),
-      m_gbuffer(device, scene, settings.samples, "sbaa", m_features,
+Sbaa::Sbaa(vk::Device& device, const TechniqueContent& content, const SbaaSettings& settings)
+    : m_device(device), m_settings(checked(settings)), m_traits(content.traits), m_scene(content.scene),
+      m_features(effectiveFeatures(content.traits, settings.effects)),
+      m_gbuffer(device, content, settings.samples, "sbaa", m_features,
                 GBufferOptions{.sampleRateShading = settings.sampleRateShading, .visibilityOnly = true}),
-      m_fill(device, scene, settings.samples, settings.surfaces, m_features, settings.sampleRateShading),
-      m_shadow(device, scene, m_features, settings.effects, "sbaa") {
+      m_fill(device, content, settings.samples, settings.surfaces, m_features, settings.sampleRateShading),
+      m_shadow(device, content, m_features, settings.effects, "sbaa") {
     vk::LayoutDesc surfaces;
     surfaces.pushBindings = vk::reflectBindings({{kSbaaSurfacesComp, kCompute}});
     surfaces.pushConstantBytes = sizeof(shared::SbaaParams);
@@ -100,7 +100,7 @@ std::string Sbaa::storageCategory(const std::string& resourceName) const {
 }
 
 std::vector<VariantChoice> Sbaa::variants() const {
-    std::vector<VariantChoice> v = effectVariants(m_features, m_scene, m_settings.samples, 1);
+    std::vector<VariantChoice> v = effectVariants(m_features, m_traits, m_settings.samples, 1);
     v.push_back({"surfaces", std::to_string(m_settings.surfaces) + (m_settings.merge.merge ? ", merge" : ""),
                  "setting --surfaces"});
     v.push_back({"fill-shading",
@@ -179,12 +179,12 @@ FrameTargets Sbaa::addLighting(rg::Graph& graph, const FrameInputs& in, const Sa
             d.display = b.write(b.create("sbaa.display", out), rg::Use::StorageImageWriteCompute);
             d.events = b.write(b.create("sbaa.shadingEvents", eventsDesc), rg::Use::StorageImageWriteCompute);
         },
-        [this, p, shadows, scene = in.scene, w = in.width, h = in.height](const rg::Context& ctx,
-                                                                          const Lighting& d) {
+        [this, p, shadows, environment = frameEnvironment(in, m_scene, name()), w = in.width,
+         h = in.height](const rg::Context& ctx, const Lighting& d) {
             VkCommandBuffer cmd = ctx.cmd();
             vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, m_lightingPipeline);
             vk::PushDescriptors pd;
-            pushEnvironment(pd, *scene);
+            pushEnvironment(pd, environment);
             if (shadows) m_shadow.push(pd, ctx, d.shadow, 9, 10);
             pd.uniform(0, ctx.buffer(d.frame).buffer).storage(1, ctx.buffer(d.lights).buffer);
             pd.sampled(2, m_fetchSampler, ctx.texture(d.g.depth).sampledView);

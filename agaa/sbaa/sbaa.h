@@ -38,7 +38,7 @@ class Sbaa final : public Technique {
   public:
     // Throws std::invalid_argument for n below 4 or S outside 1..6 (naming the setting),
     // MissingCapability without 4x MSAA or gl_PrimitiveID in fragment shaders.
-    Sbaa(eng::vk::Device& device, const eng::frame::GpuScene& scene, const SbaaSettings& settings);
+    Sbaa(eng::vk::Device& device, const TechniqueContent& content, const SbaaSettings& settings);
     ~Sbaa() override;
 
     std::string name() const override { return "sbaa"; }
@@ -70,7 +70,8 @@ class Sbaa final : public Technique {
   private:
     eng::vk::Device& m_device;
     SbaaSettings m_settings;
-    const eng::scene::Scene& m_scene;
+    const SceneTraits m_traits;
+    const eng::frame::GpuScene* m_scene;  // null for a host's content
     eng::scene::SceneFeatures m_features; // before the passes built from it
     SampleGBufferPass m_gbuffer;
     SurfaceFillPass m_fill;

@@ -9,10 +9,10 @@ namespace agaa {
 namespace rg = eng::rg;
 namespace vk = eng::vk;
 
-SurfaceFillPass::SurfaceFillPass(vk::Device& device, const eng::frame::GpuScene& scene, uint32_t samples,
+SurfaceFillPass::SurfaceFillPass(vk::Device& device, const TechniqueContent& content, uint32_t samples,
                                  uint32_t surfaces, const eng::scene::SceneFeatures& features,
                                  bool sampleRate)
-    : m_device(device), m_sceneDrawer(device, scene, features) {
+    : m_device(device), m_sceneDrawer(makeSceneDrawer(device, content, features)) {
     const eng::frame::SamplePattern pattern = eng::frame::makeSamplePattern(samples);
     m_raster.name = "sbaa.fill";
     m_raster.output = RasterOutput::SurfaceFill;
@@ -36,7 +36,7 @@ SurfaceFillPass::~SurfaceFillPass() = default;
 
 rg::Buffer SurfaceFillPass::add(rg::Graph& graph, const FrameInputs& in, rg::Texture depth,
                                 rg::Buffer surfaces) {
-    GeometryDrawer* drawer = in.geometry ? in.geometry : &m_sceneDrawer;
+    GeometryDrawer* drawer = &frameDrawer(in, m_sceneDrawer.get(), m_raster.name);
     drawer->prepare(m_raster); // pipelines now, never while a command buffer records
     struct Data {
         rg::Buffer frame, surfaces;

@@ -20,7 +20,7 @@ class SurfaceFillPass {
   public:
     // samples: n; surfaces: S; sampleRate: the material at each sample's own position (the
     // supersampled G-buffer; needs sampleRateShading, checked by the prepass).
-    SurfaceFillPass(eng::vk::Device& device, const eng::frame::GpuScene& scene, uint32_t samples,
+    SurfaceFillPass(eng::vk::Device& device, const TechniqueContent& content, uint32_t samples,
                     uint32_t surfaces, const eng::scene::SceneFeatures& features, bool sampleRate);
     ~SurfaceFillPass();
     SurfaceFillPass(const SurfaceFillPass&) = delete;
@@ -39,7 +39,7 @@ class SurfaceFillPass {
   private:
     eng::vk::Device& m_device;
     RasterPass m_raster;
-    SceneDrawer m_sceneDrawer; // the scene's, when the host gives no drawer
+    std::unique_ptr<SceneDrawer> m_sceneDrawer; // the content's GpuScene's, when the host gives no drawer
 };
 
 } // namespace agaa

@@ -36,13 +36,13 @@ void checkSettings(const SimpleComplexSettings& s) {
 
 } // namespace
 
-SimpleComplex::SimpleComplex(vk::Device& device, const eng::frame::GpuScene& scene,
+SimpleComplex::SimpleComplex(vk::Device& device, const TechniqueContent& content,
                              const SimpleComplexSettings& settings, std::string name)
-    : m_device(device), m_settings(settings), m_name(std::move(name)), m_scene(scene.scene()),
-      m_features(effectiveFeatures(scene.scene(), settings.effects)),
-      m_gbuffer(device, scene, settings.samples, m_name, m_features,
+    : m_device(device), m_settings(settings), m_name(std::move(name)), m_traits(content.traits),
+      m_scene(content.scene), m_features(effectiveFeatures(content.traits, settings.effects)),
+      m_gbuffer(device, content, settings.samples, m_name, m_features,
                 GBufferOptions{.sampleRateShading = settings.sampleRateShading}),
-      m_shadow(device, scene, m_features, settings.effects, m_name) {
+      m_shadow(device, content, m_features, settings.effects, m_name) {
     checkSettings(settings);
     const bool shadows = m_shadow.enabled();
     std::span<const uint32_t> code =
@@ -76,7 +76,7 @@ FrameTargets SimpleComplex::addPasses(rg::Graph& graph, const FrameInputs& in) {
 }
 
 std::vector<VariantChoice> SimpleComplex::variants() const {
-    return effectVariants(m_features, m_scene, m_settings.samples, 1);
+    return effectVariants(m_features, m_traits, m_settings.samples, 1);
 }
 
 FrameTargets SimpleComplex::addLighting(rg::Graph& graph, const FrameInputs& in,
@@ -108,12 +108,12 @@ FrameTargets SimpleComplex::addLighting(rg::Graph& graph, const FrameInputs& in,
             d.events =
                 b.write(b.create(m_name + ".shadingEvents", eventsDesc), rg::Use::StorageImageWriteCompute);
         },
-        [this, params, shadows, scene = in.scene, w = in.width, h = in.height](const rg::Context& ctx,
-                                                                               const Lighting& d) {
+        [this, params, shadows, environment = frameEnvironment(in, m_scene, name()), w = in.width,
+         h = in.height](const rg::Context& ctx, const Lighting& d) {
             VkCommandBuffer cmd = ctx.cmd();
             vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, m_lightingPipeline);
             eng::vk::PushDescriptors pd;
-            pushEnvironment(pd, *scene);
+            pushEnvironment(pd, environment);
             if (shadows) m_shadow.push(pd, ctx, d.shadow, 9, 10);
             pd.uniform(0, ctx.buffer(d.frame).buffer).storage(1, ctx.buffer(d.lights).buffer);
             pushSampleGBuffer(pd, ctx, m_fetchSampler, d.g);

@@ -47,7 +47,7 @@ class SimpleComplex final : public Technique {
   public:
     // Throws std::invalid_argument for settings out of range (naming the setting),
     // MissingCapability when n > 1 and the device lacks 4x MSAA.
-    SimpleComplex(eng::vk::Device& device, const eng::frame::GpuScene& scene,
+    SimpleComplex(eng::vk::Device& device, const TechniqueContent& content,
                   const SimpleComplexSettings& settings, std::string name = "simple-complex");
     ~SimpleComplex() override;
 
@@ -70,7 +70,8 @@ class SimpleComplex final : public Technique {
     eng::vk::Device& m_device;
     SimpleComplexSettings m_settings;
     std::string m_name;
-    const eng::scene::Scene& m_scene;
+    const SceneTraits m_traits;
+    const eng::frame::GpuScene* m_scene;  // null for a host's content
     eng::scene::SceneFeatures m_features; // before the passes built from it
     SampleGBufferPass m_gbuffer;
     ShadowMapPass m_shadow; // adds its pass in addLighting() when the scene has a shadowed light

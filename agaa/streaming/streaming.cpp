@@ -48,13 +48,13 @@ shared::StreamingParams params(const StreamingSettings& s) {
 
 } // namespace
 
-StreamingCompression::StreamingCompression(vk::Device& device, const eng::frame::GpuScene& scene,
+StreamingCompression::StreamingCompression(vk::Device& device, const TechniqueContent& content,
                                            const StreamingSettings& settings)
-    : m_device(device), m_settings(checked(settings)), m_scene(scene.scene()),
-      m_features(effectiveFeatures(scene.scene(), settings.effects)),
-      m_gbuffer(device, scene, settings.samples, "streaming", m_features,
+    : m_device(device), m_settings(checked(settings)), m_traits(content.traits), m_scene(content.scene),
+      m_features(effectiveFeatures(content.traits, settings.effects)),
+      m_gbuffer(device, content, settings.samples, "streaming", m_features,
                 GBufferOptions{.sampleRateShading = settings.sampleRateShading, .primitiveIds = true}),
-      m_shadow(device, scene, m_features, settings.effects, "streaming") {
+      m_shadow(device, content, m_features, settings.effects, "streaming") {
     vk::LayoutDesc compress;
     compress.pushBindings = vk::reflectBindings({{kStreamingCompressComp, kCompute}});
     compress.pushConstantBytes = sizeof(shared::StreamingParams);
@@ -100,7 +100,7 @@ std::string StreamingCompression::storageCategory(const std::string& resourceNam
 }
 
 std::vector<VariantChoice> StreamingCompression::variants() const {
-    std::vector<VariantChoice> v = effectVariants(m_features, m_scene, m_settings.samples, 1);
+    std::vector<VariantChoice> v = effectVariants(m_features, m_traits, m_settings.samples, 1);
     v.push_back({"surfaces", std::to_string(m_settings.surfaces), "setting --surfaces"});
     char angle[48];
     std::snprintf(angle, sizeof angle, "%.4g degrees (cos %.4f)", m_settings.normalAngleDegrees,
@@ -187,12 +187,12 @@ FrameTargets StreamingCompression::addLighting(rg::Graph& graph, const FrameInpu
             d.events =
                 b.write(b.create("streaming.shadingEvents", eventsDesc), rg::Use::StorageImageWriteCompute);
         },
-        [this, p, shadows, scene = in.scene, w = in.width, h = in.height](const rg::Context& ctx,
-                                                                          const Lighting& d) {
+        [this, p, shadows, environment = frameEnvironment(in, m_scene, name()), w = in.width,
+         h = in.height](const rg::Context& ctx, const Lighting& d) {
             VkCommandBuffer cmd = ctx.cmd();
             vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, m_lightingPipeline);
             vk::PushDescriptors pd;
-            pushEnvironment(pd, *scene);
+            pushEnvironment(pd, environment);
             if (shadows) m_shadow.push(pd, ctx, d.shadow, 9, 10);
             pd.uniform(0, ctx.buffer(d.frame).buffer).storage(1, ctx.buffer(d.lights).buffer);
             pushSampleGBuffer(pd, ctx, m_fetchSampler, d.g);

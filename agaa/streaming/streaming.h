@@ -40,7 +40,7 @@ class StreamingCompression final : public Technique {
   public:
     // Throws std::invalid_argument for n below 4, S outside 1..3 or an angle outside (0, 90]
     // (naming the setting), MissingCapability without 4x MSAA or gl_PrimitiveID in fragment shaders.
-    StreamingCompression(eng::vk::Device& device, const eng::frame::GpuScene& scene,
+    StreamingCompression(eng::vk::Device& device, const TechniqueContent& content,
                          const StreamingSettings& settings);
     ~StreamingCompression() override;
 
@@ -68,7 +68,8 @@ class StreamingCompression final : public Technique {
   private:
     eng::vk::Device& m_device;
     StreamingSettings m_settings;
-    const eng::scene::Scene& m_scene;
+    const SceneTraits m_traits;
+    const eng::frame::GpuScene* m_scene;  // null for a host's content
     eng::scene::SceneFeatures m_features; // before the passes built from it
     SampleGBufferPass m_gbuffer;
     ShadowMapPass m_shadow;

@@ -87,10 +87,14 @@ void requireCameraRelative(const shared::FrameConstants& c) {
 
 shared::FrameConstants makeFrameConstants(const scene::Scene& scene, const ViewSettings& view,
                                           const SamplePattern& pattern) {
-    if (!view.cameraOverride && view.camera >= scene.cameras.size())
+    return makeFrameConstants(scene.cameras, scene.lights.size(), view, pattern);
+}
+
+shared::FrameConstants makeFrameConstants(std::span<const scene::Camera> cameras, size_t lights,
+                                          const ViewSettings& view, const SamplePattern& pattern) {
+    if (!view.cameraOverride && view.camera >= cameras.size())
         throw std::invalid_argument("camera " + std::to_string(view.camera) +
-                                    " does not exist (the scene has " + std::to_string(scene.cameras.size()) +
-                                    ")");
+                                    " does not exist (the scene has " + std::to_string(cameras.size()) + ")");
     if (const std::optional<scene::Camera>& host = view.cameraOverride) {
         // A host's camera is user input: refused here rather than turned into a NaN projection.
         if (!(host->yfov > 0.0f && host->yfov < 3.14159f))
@@ -100,7 +104,7 @@ shared::FrameConstants makeFrameConstants(const scene::Scene& scene, const ViewS
             throw std::invalid_argument("camera znear " + std::to_string(host->znear) + " / zfar " +
                                         std::to_string(host->zfar) + " are out of range (0 < znear < zfar)");
     }
-    const scene::Camera& cam = view.cameraOverride ? *view.cameraOverride : scene.cameras[view.camera];
+    const scene::Camera& cam = view.cameraOverride ? *view.cameraOverride : cameras[view.camera];
     shared::FrameConstants c{};
     float aspect = float(view.width) / float(view.height);
     c.view = view.viewOverride ? *view.viewOverride : cam.view;
@@ -119,13 +123,17 @@ shared::FrameConstants makeFrameConstants(const scene::Scene& scene, const ViewS
     c.projParams = {c.proj[0][0], c.proj[1][1], c.proj[2][0], c.proj[2][1]};
     c.viewTile = {float(view.tile.scale), 0.0f, 0.0f, 0.0f};
     c.counts = {pattern.samples, pattern.samplesPerLayer, pattern.layers,
-                uint32_t(std::min<size_t>(scene.lights.size(), shared::kMaxLights))};
+                uint32_t(std::min<size_t>(lights, shared::kMaxLights))};
     return c;
 }
 
 std::vector<shared::GpuLight> makeGpuLights(const scene::Scene& scene, const glm::mat4& view) {
+    return makeGpuLights(scene.lights, view);
+}
+
+std::vector<shared::GpuLight> makeGpuLights(std::span<const scene::Light> lights, const glm::mat4& view) {
     std::vector<shared::GpuLight> out;
-    for (const scene::Light& l : scene.lights) {
+    for (const scene::Light& l : lights) {
         shared::GpuLight g{};
         // As the vertices (common/scene_vertex.glsl): R (p - eye), here in double.
         const glm::vec3 p =

@@ -7,6 +7,7 @@
 #include "shared/frame.h"
 
 #include <optional>
+#include <span>
 #include <vector>
 
 namespace eng::frame {
@@ -50,6 +51,9 @@ glm::mat4 orbitView(const glm::mat4& view, const glm::vec3& pivot, float degrees
 glm::mat4 reversedZPerspective(float yfov, float aspect, float znear, float zfar);
 
 shared::FrameConstants makeFrameConstants(const scene::Scene&, const ViewSettings&, const SamplePattern&);
+// The same from a host's cameras (ViewSettings::camera indexes them) and its number of lights.
+shared::FrameConstants makeFrameConstants(std::span<const scene::Camera> cameras, size_t lights,
+                                          const ViewSettings&, const SamplePattern&);
 // The camera's world position for a rigid view matrix, -R^T t, in double (exact for the matrix as
 // given: the fp32 view's own rounding stays, its cancellation does not grow).
 glm::dvec3 cameraEye(const glm::mat4& view);
@@ -62,6 +66,7 @@ void setCameraRelative(shared::FrameConstants&);
 void requireCameraRelative(const shared::FrameConstants&);
 // The lights in view space, each position as R (p - eye) in double: camera-relative, as the vertices.
 std::vector<shared::GpuLight> makeGpuLights(const scene::Scene&, const glm::mat4& view);
+std::vector<shared::GpuLight> makeGpuLights(std::span<const scene::Light> lights, const glm::mat4& view);
 std::vector<shared::GpuMaterial> makeGpuMaterials(const scene::Scene&);
 
 } // namespace eng::frame

@@ -2,7 +2,7 @@
 
 #include "engine/frame/environment_maps.h"
 #include "engine/frame/frame_constants.h"
-#include "engine/frame/transient_pool.h"
+#include "engine/frame/frame_runner.h"
 #include "engine/graph/graph.h"
 #include "engine/vk/check.h"
 #include "engine/vk/pipeline.h"
@@ -135,7 +135,7 @@ GpuScene::GpuScene(vk::Device& device, const scene::Scene& scene) : m_device(dev
 
         m_sampler = vk::createSampler(device, VK_FILTER_LINEAR, VK_SAMPLER_ADDRESS_MODE_REPEAT, 16.0f,
                                       "scene.sampler");
-        createEnvironment();
+        m_environment = std::make_unique<GpuEnvironment>(m_device, &m_scene.environment);
         uploadTextures();
 
         // Set 1 of every pass that draws this scene (shaders/glsl/common/scene_materials.glsl):
@@ -187,58 +187,6 @@ GpuScene::GpuScene(vk::Device& device, const scene::Scene& scene) : m_device(dev
     }
 }
 
-void GpuScene::createEnvironment() {
-    // Pre-filtered on the CPU (a few hundred ms at most, once per scene), stored as half floats
-    // divided by a scale that keeps the brightest texel below half's range.
-    std::optional<EnvironmentMaps> maps;
-    float scale = 1.0f;
-    if (hasEnvironment()) {
-        maps = prefilterEnvironment(m_scene.environment);
-        float peak = 0.0f;
-        for (const glm::vec3& t : maps->specular)
-            peak = std::max({peak, t.x, t.y, t.z});
-        scale = std::max(1.0f, peak / 32768.0f);
-        m_environmentTexels.reserve(maps->specular.size() * 4);
-        for (const glm::vec3& t : maps->specular) {
-            for (int c = 0; c < 3; ++c)
-                m_environmentTexels.push_back(glm::packHalf1x16(t[c] / scale));
-            m_environmentTexels.push_back(glm::packHalf1x16(1.0f));
-        }
-    } else {
-        m_environmentTexels.assign(4, 0);
-    }
-    const shared::EnvironmentConstants constants = makeEnvironmentConstants(maps ? &*maps : nullptr, scale);
-    m_environmentConstants = vk::createBuffer(m_device, sizeof constants, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
-                                              vk::MemoryUse::Upload, "scene.environment.constants");
-    vk::writeBuffer(m_device, m_environmentConstants, std::as_bytes(std::span(&constants, 1)));
-    const uint32_t w = maps ? maps->width : 1, h = maps ? maps->height : 1, layers = maps ? maps->levels : 1;
-    m_environment = vk::createImage(m_device,
-                                    {VK_FORMAT_R16G16B16A16_SFLOAT, w, h, layers, 1, VK_SAMPLE_COUNT_1_BIT,
-                                     VK_IMAGE_USAGE_TRANSFER_DST_BIT | VK_IMAGE_USAGE_SAMPLED_BIT,
-                                     VK_IMAGE_VIEW_TYPE_2D_ARRAY},
-                                    "scene.environment");
-    for (const glm::vec2& ab : integrateDfgTable()) {
-        m_dfgTexels.push_back(glm::packHalf1x16(ab.x));
-        m_dfgTexels.push_back(glm::packHalf1x16(ab.y));
-    }
-    m_dfg =
-        vk::createImage(m_device,
-                        {VK_FORMAT_R16G16_SFLOAT, kDfgTableSize, kDfgTableSize, 1, 1, VK_SAMPLE_COUNT_1_BIT,
-                         VK_IMAGE_USAGE_TRANSFER_DST_BIT | VK_IMAGE_USAGE_SAMPLED_BIT, VK_IMAGE_VIEW_TYPE_2D},
-                        "scene.environment.dfg");
-    // Longitude wraps, latitude stops at the poles.
-    VkSamplerCreateInfo info{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
-    info.magFilter = info.minFilter = VK_FILTER_LINEAR;
-    info.addressModeU = VK_SAMPLER_ADDRESS_MODE_REPEAT;
-    info.addressModeV = info.addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
-    info.maxLod = 0.0f;
-    VK_CHECK(vkCreateSampler(m_device.device(), &info, nullptr, &m_environmentSampler));
-    m_device.setName(VK_OBJECT_TYPE_SAMPLER, m_environmentSampler, "scene.environment.sampler");
-    info.addressModeU = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
-    VK_CHECK(vkCreateSampler(m_device.device(), &info, nullptr, &m_dfgSampler));
-    m_device.setName(VK_OBJECT_TYPE_SAMPLER, m_dfgSampler, "scene.environment.dfg.sampler");
-}
-
 void GpuScene::uploadTextures() {
     std::vector<scene::Texture> sources = m_scene.textures;
     sources.push_back({"fallback.white", 1, 1, false, {255, 255, 255, 255}});
@@ -269,10 +217,6 @@ void GpuScene::uploadTextures() {
             total += m.rgba.size();
         pending.push_back(std::move(p));
     }
-    const VkDeviceSize environmentOffset = (total + 15) / 16 * 16; // a multiple of the texel size
-    total = environmentOffset + m_environmentTexels.size() * sizeof(uint16_t);
-    const VkDeviceSize dfgOffset = (total + 15) / 16 * 16;
-    total = dfgOffset + m_dfgTexels.size() * sizeof(uint16_t);
     // The staging buffer lives for this call only, on every path out (a texture's allocation or
     // the upload's submission may throw).
     struct Staging {
@@ -308,31 +252,12 @@ void GpuScene::uploadTextures() {
         handles.push_back(graph.importTexture("scene.texture." + std::to_string(i), physical, std::nullopt,
                                               rg::Use::SampledFragment));
     }
-    vk::writeBuffer(m_device, staging, bytesOf(m_environmentTexels), environmentOffset);
-    vk::writeBuffer(m_device, staging, bytesOf(m_dfgTexels), dfgOffset);
-    const rg::Texture dfg =
-        graph.importTexture("scene.environment.dfg",
-                            rg::PhysicalTexture{m_dfg.image,
-                                                m_dfg.view,
-                                                m_dfg.sampledView,
-                                                {VK_FORMAT_R16G16_SFLOAT, kDfgTableSize, kDfgTableSize, 1}},
-                            std::nullopt, rg::Use::SampledCompute);
-    const uint32_t environmentLayers = hasEnvironment() ? shared::kEnvironmentLevels : 1;
-    const rg::Texture environment = graph.importTexture(
-        "scene.environment",
-        rg::PhysicalTexture{m_environment.image,
-                            m_environment.view,
-                            m_environment.sampledView,
-                            {VK_FORMAT_R16G16B16A16_SFLOAT, hasEnvironment() ? m_scene.environment.width : 1,
-                             hasEnvironment() ? m_scene.environment.height : 1, environmentLayers}},
-        std::nullopt, rg::Use::SampledCompute);
     rg::PhysicalBuffer stagingPhysical{staging.buffer, staging.size};
     rg::Buffer stagingHandle =
         graph.importBuffer("scene.textures.staging", stagingPhysical, std::nullopt, std::nullopt);
     struct Data {
         rg::Buffer staging;
         std::vector<rg::Texture> textures;
-        rg::Texture environment, dfg;
     };
     graph.addPass<Data>(
         "scene.upload", rg::PassKind::Transfer,
@@ -340,8 +265,6 @@ void GpuScene::uploadTextures() {
             d.staging = b.read(stagingHandle, rg::Use::TransferSrc);
             for (rg::Texture t : handles)
                 d.textures.push_back(b.write(t, rg::Use::TransferDst));
-            d.environment = b.write(environment, rg::Use::TransferDst);
-            d.dfg = b.write(dfg, rg::Use::TransferDst);
         },
         [&](const rg::Context& ctx, const Data& d) {
             for (size_t i = 0; i < d.textures.size(); ++i) {
@@ -358,30 +281,8 @@ void GpuScene::uploadTextures() {
                     offset += m.rgba.size();
                 }
             }
-            const rg::PhysicalTexture& env = ctx.texture(d.environment);
-            VkBufferImageCopy copy{};
-            copy.bufferOffset = environmentOffset;
-            copy.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, env.desc.layers};
-            copy.imageExtent = {env.desc.width, env.desc.height, 1};
-            vkCmdCopyBufferToImage(ctx.cmd(), ctx.buffer(d.staging).buffer, env.image,
-                                   ctx.layout(d.environment), 1, &copy);
-            copy.bufferOffset = dfgOffset;
-            copy.imageSubresource.layerCount = 1;
-            copy.imageExtent = {kDfgTableSize, kDfgTableSize, 1};
-            vkCmdCopyBufferToImage(ctx.cmd(), ctx.buffer(d.staging).buffer, ctx.texture(d.dfg).image,
-                                   ctx.layout(d.dfg), 1, &copy);
         });
-    graph.compile();
-    TransientPool pool(m_device);
-    m_device.submitAndWait([&](VkCommandBuffer cmd) {
-        rg::Graph::ExecuteInfo info;
-        info.cmd = cmd;
-        info.allocator = &pool;
-        graph.execute(info);
-    });
-    graph.releaseTransients();
-    m_environmentTexels = {};
-    m_dfgTexels = {};
+    FrameRunner(m_device).run(graph); // compiles, submits, waits, releases the transients
 }
 
 GpuScene::~GpuScene() {
@@ -394,11 +295,7 @@ void GpuScene::release() {
     if (m_pool) vkDestroyDescriptorPool(d, m_pool, nullptr);
     if (m_materialSetLayout) vkDestroyDescriptorSetLayout(d, m_materialSetLayout, nullptr);
     if (m_sampler) vkDestroySampler(d, m_sampler, nullptr);
-    if (m_environmentSampler) vkDestroySampler(d, m_environmentSampler, nullptr);
-    if (m_dfgSampler) vkDestroySampler(d, m_dfgSampler, nullptr);
-    vk::destroyImage(m_device, m_environment);
-    vk::destroyImage(m_device, m_dfg);
-    vk::destroyBuffer(m_device, m_environmentConstants);
+    m_environment.reset();
     for (auto& t : m_textures)
         vk::destroyImage(m_device, t);
     vk::destroyBuffer(m_device, m_vertices);
@@ -408,8 +305,6 @@ void GpuScene::release() {
     m_pool = VK_NULL_HANDLE;
     m_materialSetLayout = VK_NULL_HANDLE;
     m_sampler = VK_NULL_HANDLE;
-    m_environmentSampler = VK_NULL_HANDLE;
-    m_dfgSampler = VK_NULL_HANDLE;
 }
 
 void GpuScene::recordDraws(VkCommandBuffer cmd, VkPipelineLayout layout,
@@ -442,7 +337,7 @@ bool GpuScene::hasEmissive() const {
 }
 
 VkDeviceSize GpuScene::bytes() const {
-    VkDeviceSize b = m_vertices.size + m_indices.size + m_materials.size + m_environment.bytes + m_dfg.bytes;
+    VkDeviceSize b = m_vertices.size + m_indices.size + m_materials.size + m_environment->bytes();
     for (const auto& t : m_textures)
         b += t.bytes;
     return b;

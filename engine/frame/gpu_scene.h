@@ -5,10 +5,12 @@
 // scene_materials.glsl) that every pass drawing the scene binds. Uploads run through a render graph, which
 // owns the layout transitions like everywhere else.
 
+#include "engine/frame/gpu_environment.h"
 #include "engine/scene/scene.h"
 #include "engine/vk/device.h"
 #include "engine/vk/resources.h"
 
+#include <memory>
 #include <span>
 #include <vector>
 
@@ -41,33 +43,21 @@ class GpuScene {
     const vk::Buffer& materials() const { return m_materials; }
     VkDescriptorSetLayout materialSetLayout() const { return m_materialSetLayout; }
     VkDescriptorSet materialSet() const { return m_materialSet; }
-    // The environment (issue 16; engine/frame/environment_maps.h), bound by every lighting pass:
-    // its pre-filtered specular levels as an RGBA16F 2D array (one layer per level, u repeats,
-    // v clamps) and its constants (uniform, shared::EnvironmentConstants). A scene without one
-    // binds a 1x1 black array and constants with params.x = 0; lighting then skips the term
-    // (specialisation id 16, agaa/common/effects.h), so no pass and no variant exist for it.
+    // The scene's environment, or the stand-in when it has none (engine/frame/gpu_environment.h).
     bool hasEnvironment() const { return !m_scene.environment.empty(); }
-    VkImageView environmentView() const { return m_environment.view; }
-    VkSampler environmentSampler() const { return m_environmentSampler; }
-    // The split sum's BRDF table (environment_maps.h integrateDfgTable), RG16F, clamped.
-    VkImageView dfgView() const { return m_dfg.view; }
-    VkSampler dfgSampler() const { return m_dfgSampler; }
-    const vk::Buffer& environmentConstants() const { return m_environmentConstants; }
+    const GpuEnvironment& environment() const { return *m_environment; }
     // Bytes of device memory the scene occupies (not counted as any technique's storage).
     VkDeviceSize bytes() const;
 
   private:
     void release(); // destroys whatever exists (the destructor, and a constructor that throws)
     void uploadTextures();
-    void createEnvironment(); // the environment's constants; its texels upload with the textures
 
     vk::Device& m_device;
     const scene::Scene& m_scene;
-    vk::Buffer m_vertices, m_indices, m_materials, m_environmentConstants;
-    vk::Image m_environment, m_dfg;
-    VkSampler m_environmentSampler = VK_NULL_HANDLE, m_dfgSampler = VK_NULL_HANDLE;
-    std::vector<uint16_t> m_environmentTexels, m_dfgTexels; // half floats, until uploaded
-    std::vector<vk::Image> m_textures;                      // scene textures, then one 1x1 white fallback
+    vk::Buffer m_vertices, m_indices, m_materials;
+    std::unique_ptr<GpuEnvironment> m_environment;
+    std::vector<vk::Image> m_textures; // scene textures, then one 1x1 white fallback
     VkSampler m_sampler = VK_NULL_HANDLE;
     VkDescriptorSetLayout m_materialSetLayout = VK_NULL_HANDLE;
     VkDescriptorPool m_pool = VK_NULL_HANDLE;

@@ -65,17 +65,19 @@ SceneFeatures deriveSceneFeatures(const Scene& scene) {
     return f;
 }
 
-SceneFeatures forceAllSceneFeatures(const Scene& scene) {
-    SceneFeatures f = deriveSceneFeatures(scene);
+SceneFeatures forceAllSceneFeatures(SceneFeatures f, std::span<const Light> lights, uint32_t materials) {
     f.forced = true;
     f.shadowedLights.clear();
     f.shadowedLightsIgnored = 0;
-    for (uint32_t i = 0; i < scene.lights.size(); ++i)
-        if (canCastShadows(scene.lights[i]) && f.shadowedLights.size() < kMaxShadowedLights)
+    for (uint32_t i = 0; i < lights.size(); ++i)
+        if (canCastShadows(lights[i]) && f.shadowedLights.size() < kMaxShadowedLights)
             f.shadowedLights.push_back(i);
-    const uint32_t materials = std::max<uint32_t>(1, uint32_t(scene.materials.size()));
-    f.maskedMaterials = f.emissiveMaterials = f.normalMappedMaterials = materials;
+    f.maskedMaterials = f.emissiveMaterials = f.normalMappedMaterials = std::max<uint32_t>(1, materials);
     return f;
+}
+
+SceneFeatures forceAllSceneFeatures(const Scene& scene) {
+    return forceAllSceneFeatures(deriveSceneFeatures(scene), scene.lights, uint32_t(scene.materials.size()));
 }
 
 std::string describe(const SceneFeatures& f, const Scene& scene) {

@@ -6,6 +6,7 @@
 #include "engine/scene/scene.h"
 
 #include <cstdint>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -85,6 +86,9 @@ SceneFeatures deriveSceneFeatures(const Scene& scene);
 // directional and spot light shadowed (up to the cap), every draw alpha-tested, normal-map and
 // emissive paths and tile culling enabled. The image changes only where the forced shadows fall.
 SceneFeatures forceAllSceneFeatures(const Scene& scene);
+// The same from what a host describes (agaa/common/scene_traits.h): the derived features, the
+// lights they index and the number of materials.
+SceneFeatures forceAllSceneFeatures(SceneFeatures derived, std::span<const Light> lights, uint32_t materials);
 
 // One line for logs: "shadowed lights 1 (sun), masked 2, blended 0, emissive 0, normal-mapped 0,
 // lights 1 directional / 0 point / 0 spot, sky visible".

@@ -180,7 +180,6 @@ ViewFrame ViewRenderer::render(const ViewRequest& request, const AcquiredImage& 
         graph.importBuffer("frame.lights", {m_lights.buffer, m_lights.size}, std::nullopt, std::nullopt);
     auto inputs = [&](int i) {
         FrameInputs in;
-        in.scene = &m_gpuScene;
         in.constants = &constants[i];
         in.width = w;
         in.height = h;

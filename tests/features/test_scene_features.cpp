@@ -60,7 +60,7 @@ TEST(SceneFeatures, EmptyOfEffectsWhenTheSceneHasNone) {
     EXPECT_FALSE(f.hasNormalMaps());
     EXPECT_FALSE(f.needsLightCulling());
     EXPECT_EQ(f.directionalLights, 1u);
-    const auto v = agaa::effectVariants(f, s, 8, 4);
+    const auto v = agaa::effectVariants(f, agaa::sceneTraits(s), 8, 4);
     EXPECT_EQ(variant(v, "shadows").variant, "off");
     EXPECT_EQ(variant(v, "alpha").variant, "opaque only");
     EXPECT_EQ(variant(v, "emissive").variant, "off");
@@ -84,7 +84,7 @@ TEST(SceneFeatures, ShadowedLightsAreDirectionalOrSpotAndCapped) {
     EXPECT_TRUE(f.needsLightCulling());          // point and spot lights exist
     EXPECT_EQ(f.pointLights, 1u);
     EXPECT_EQ(f.spotLights, 2u);
-    const auto v = agaa::effectVariants(f, s, 8, 3);
+    const auto v = agaa::effectVariants(f, agaa::sceneTraits(s), 8, 3);
     EXPECT_NE(variant(v, "shadows").cause.find("'sun'"), std::string::npos) << variant(v, "shadows").cause;
     EXPECT_NE(variant(v, "shadows").variant.find("3 taps"), std::string::npos);
 }
@@ -117,9 +117,11 @@ TEST(SceneFeatures, AlphaPathIsCoverageWithMsaaAndDiscardAtOneSample) {
     Scene s = oneDrawScene();
     s.materials[0].alphaMode = AlphaMode::Mask;
     const auto f = eng::scene::deriveSceneFeatures(s);
-    EXPECT_EQ(variant(agaa::effectVariants(f, s, 8, 4), "alpha").variant, "alpha-to-coverage");
-    EXPECT_EQ(variant(agaa::effectVariants(f, s, 4, 4), "alpha").variant, "alpha-to-coverage");
-    EXPECT_EQ(variant(agaa::effectVariants(f, s, 1, 4), "alpha").variant, "discard");
+    EXPECT_EQ(variant(agaa::effectVariants(f, agaa::sceneTraits(s), 8, 4), "alpha").variant,
+              "alpha-to-coverage");
+    EXPECT_EQ(variant(agaa::effectVariants(f, agaa::sceneTraits(s), 4, 4), "alpha").variant,
+              "alpha-to-coverage");
+    EXPECT_EQ(variant(agaa::effectVariants(f, agaa::sceneTraits(s), 1, 4), "alpha").variant, "discard");
     EXPECT_EQ(agaa::maskedAlphaPath(1), agaa::AlphaPath::Discard);
     EXPECT_EQ(agaa::maskedAlphaPath(8), agaa::AlphaPath::Coverage);
 }
@@ -129,7 +131,7 @@ TEST(SceneFeatures, ForcingTurnsEveryEffectOn) {
     s.lights.push_back(light(LightType::Directional, false, "sun"));
     agaa::EffectSettings settings;
     settings.forceAll = true;
-    const auto f = agaa::effectiveFeatures(s, settings);
+    const auto f = agaa::effectiveFeatures(agaa::sceneTraits(s), settings);
     EXPECT_TRUE(f.forced);
     EXPECT_TRUE(f.hasShadows() && f.hasMasked() && f.hasEmissive() && f.hasNormalMaps() &&
                 f.needsLightCulling());
@@ -145,7 +147,8 @@ TEST(SceneFeatures, ForcingTurnsEveryEffectOn) {
     EXPECT_EQ(value(agaa::kSpecNormalMaps), 1);
     EXPECT_EQ(value(agaa::kSpecEmissive), 1);
     EXPECT_EQ(value(agaa::kSpecShadowTaps), 4);
-    EXPECT_NE(variant(agaa::effectVariants(f, s, 8, 4), "shadows").cause.find("forced"), std::string::npos);
+    EXPECT_NE(variant(agaa::effectVariants(f, agaa::sceneTraits(s), 8, 4), "shadows").cause.find("forced"),
+              std::string::npos);
 }
 
 TEST(SceneFeatures, BuiltinScenesHaveAShadowedSunAndFoliageIsMasked) {
@@ -192,7 +195,7 @@ TEST(ShadowFit, DirectionalLightCoversTheVisibleSceneBounds) {
     frame.proj = glm::perspectiveRH_ZO(2.6f, 1.0f, 100.0f, 0.1f);
     frame.viewProj = frame.proj * frame.view;
     float texel = 0.0f;
-    const glm::mat4 m(agaa::ShadowMapPass::fitLight(s, sun, &frame, &texel));
+    const glm::mat4 m(agaa::ShadowMapPass::fitLight(s.bounds, sun, &frame, &texel));
     EXPECT_GT(texel, 0.0f);
     for (int i = 0; i < 8; ++i) {
         glm::vec3 c{(i & 1) ? s.bounds.max.x : s.bounds.min.x, (i & 2) ? s.bounds.max.y : s.bounds.min.y,
@@ -217,7 +220,7 @@ TEST(ShadowFit, SpotLightLooksAlongItsDirection) {
     spot.outerConeAngle = 0.5f;
     shared::FrameConstants frame{};
     frame.viewProj = glm::perspectiveRH_ZO(1.2f, 1.0f, 100.0f, 0.1f);
-    const glm::mat4 m(agaa::ShadowMapPass::fitLight(s, spot, &frame, nullptr));
+    const glm::mat4 m(agaa::ShadowMapPass::fitLight(s.bounds, spot, &frame, nullptr));
     glm::vec4 p = m * glm::vec4(0, 0, 0, 1); // straight below the light
     ASSERT_GT(p.w, 0.0f);
     EXPECT_NEAR(p.x / p.w, 0.0f, 1e-4f);

@@ -240,7 +240,6 @@ TEST(SimpleComplexGpu, ClassificationMatchesTheCpuTwin) {
     {
         eng::rg::Graph graph;
         agaa::FrameInputs in;
-        in.scene = &gpuScene;
         in.width = w;
         in.height = h;
         in.frameConstants =

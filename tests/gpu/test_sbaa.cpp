@@ -71,7 +71,6 @@ SbaaFrame renderSbaa(vk::Device& device, const eng::scene::Scene& scene, const a
     {
         eng::rg::Graph graph;
         agaa::FrameInputs in;
-        in.scene = &gpuScene;
         in.width = w;
         in.height = h;
         in.frameConstants =

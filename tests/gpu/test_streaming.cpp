@@ -69,7 +69,6 @@ StreamingFrame renderStreaming(vk::Device& device, const eng::scene::Scene& scen
     {
         eng::rg::Graph graph;
         agaa::FrameInputs in;
-        in.scene = &gpuScene;
         in.width = w;
         in.height = h;
         in.frameConstants =

@@ -45,15 +45,15 @@ class HostView {
     // Imports this view's buffers, adds the technique's passes writing frame slot `slot`, and
     // reads HDR and display back into this view's buffers.
     // Returns the inputs it handed the technique; lastTargets holds what the technique returned.
-    // `geometry`, `shadowMaps`: the host's drawer and shadow maps (FrameInputs::geometry,
-    // ::shadowMaps), or none.
-    FrameInputs record(eng::rg::Graph& graph, Technique& technique, const eng::frame::GpuScene& scene,
-                       uint32_t slot, const std::string& prefix, GeometryDrawer* geometry = nullptr,
-                       const HostShadowMaps* shadowMaps = nullptr) {
+    // `geometry`, `shadowMaps`, `environment`: the host's drawer, shadow maps and environment
+    // (FrameInputs::geometry, ::shadowMaps, ::environment), or none.
+    FrameInputs record(eng::rg::Graph& graph, Technique& technique, uint32_t slot, const std::string& prefix,
+                       GeometryDrawer* geometry = nullptr, const HostShadowMaps* shadowMaps = nullptr,
+                       const EnvironmentBindings* environment = nullptr) {
         FrameInputs in;
-        in.scene = &scene;
         in.geometry = geometry;
         in.shadowMaps = shadowMaps;
+        in.environment = environment;
         in.constants = &constants;
         in.width = m_width;
         in.height = m_height;
@@ -96,14 +96,15 @@ inline eng::frame::ViewSettings frameView() {
 }
 
 // One frameView() frame through `technique`, drawn by `geometry` (FrameInputs::geometry; null: the
-// scene's own drawer), with the host's `shadowMaps` or the module's: HDR then display, as
-// HostView::read.
+// scene's own drawer), with the host's `shadowMaps` or the module's and the host's `environment`
+// or the scene's: HDR then display, as HostView::read.
 inline std::vector<float> renderFrame(eng::vk::Device& device, const eng::frame::GpuScene& scene,
                                       Technique& technique, GeometryDrawer* geometry,
-                                      const HostShadowMaps* shadowMaps = nullptr) {
+                                      const HostShadowMaps* shadowMaps = nullptr,
+                                      const EnvironmentBindings* environment = nullptr) {
     HostView host(device, scene.scene(), frameView(), technique.samples());
     eng::rg::Graph graph;
-    host.record(graph, technique, scene, 0, "host", geometry, shadowMaps);
+    host.record(graph, technique, 0, "host", geometry, shadowMaps, environment);
     eng::frame::FrameRunner runner(device);
     runner.run(graph);
     return host.read();

@@ -6,10 +6,12 @@
 #include "agaa/common/frame_recorder.h"
 #include "agaa/methods.h"
 #include "engine/frame/frame_runner.h"
+#include "engine/frame/gpu_scene.h"
 #include "engine/frame/readback.h"
 #include "engine/scene/scenegen.h"
 #include "engine/vk/check.h"
 #include "tests/gpu/gpu_test_support.h"
+#include "tests/node/host_content.h"
 
 #include <gtest/gtest.h>
 
@@ -124,6 +126,58 @@ TEST_P(Recorder, TheHostsCommandBufferGetsTheGraphPathsImageBitForBit) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Node, Recorder, ::testing::Values("agaa", "reference"));
+
+// A host's content through its own command buffer: the technique created from the host's traits
+// alone (tests/node/host_content.h), its drawer and the stand-in environment handed to
+// FrameRecorder::record, its own camera. Its image is what our scene's technique records, bit for
+// bit.
+TEST(RecorderHostContent, AHostsContentRecordsAsOurScenesDoesBitForBit) {
+    auto device = makeValidatedDevice();
+    const eng::scene::Scene scene = eng::scene::loadBuiltin("railings");
+    eng::frame::GpuScene gpuScene(*device, scene);
+    MethodSettings settings; // the one accumulation build the host has (32-bit atomics, no subgroups)
+    settings.agaaAtomics = AggregateAtomics::Bits32;
+    settings.agaaSubgroupReduce = SubgroupReduction::Off;
+    std::unique_ptr<Technique> ours = createTechnique("agaa", *device, gpuScene, settings);
+    HostMesh mesh = hostMesh(scene);
+    const TechniqueContent content{hostTraits(mesh, scene.lights)};
+    HostGeometry host(*device, std::move(mesh));
+    const eng::frame::GpuEnvironment standIn(*device, nullptr);
+    const EnvironmentBindings environment = environmentBindings(standIn);
+    std::unique_ptr<Technique> hosts = createTechnique("agaa", *device, content, settings);
+    eng::frame::ViewSettings view;
+    view.width = view.height = kSize;
+    view.cameraOverride = scene.cameras.at(0); // the host's own camera (its traits list none)
+
+    vk::Image oursImage = hostImage(*device, "host.ours"), hostsImage = hostImage(*device, "host.hosts");
+    vk::Buffer oursOut =
+        eng::frame::createReadbackBuffer(*device, kSize, kSize, kColorFormat, "host.oursOut");
+    vk::Buffer hostsOut =
+        eng::frame::createReadbackBuffer(*device, kSize, kSize, kColorFormat, "host.hostsOut");
+    FrameRecorder ourRecorder(*device, gpuScene), hostRecorder(*device, content);
+    device->submitAndWait([&](VkCommandBuffer cmd) {
+        ourRecorder.record(cmd, *ours, view, {target(oursImage, rg::Use::TransferSrc), std::nullopt});
+        hostRecorder.record(cmd, *hosts, view, {target(hostsImage, rg::Use::TransferSrc), std::nullopt}, 0,
+                            {&host, &environment, nullptr});
+        copyOut(cmd, oursImage, oursOut);
+        copyOut(cmd, hostsImage, hostsOut);
+    });
+    const std::vector<float> want = read(*device, oursOut), got = read(*device, hostsOut);
+    double mean = 0.0;
+    for (float v : want)
+        mean += v;
+    ASSERT_GT(mean / double(want.size()), 0.01) << "the scene must be visible to test anything";
+    EXPECT_EQ(differentBits(got, want), 0u);
+    EXPECT_THROW(hostRecorder.record(VK_NULL_HANDLE, *hosts, view,
+                                     {target(hostsImage, rg::Use::TransferSrc), std::nullopt}),
+                 std::invalid_argument)
+        << "a frame of the host's content without its drawer";
+    expectNoValidationErrors(*device);
+    for (vk::Image* i : {&oursImage, &hostsImage})
+        vk::destroyImage(*device, *i);
+    for (vk::Buffer* b : {&oursOut, &hostsOut})
+        vk::destroyBuffer(*device, *b);
+}
 
 } // namespace
 } // namespace agaa::test

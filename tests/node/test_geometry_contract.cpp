@@ -64,7 +64,7 @@ TEST_P(GeometryContract, AHostDrawerDrawsEveryRasterPassAndGetsTheSceneDrawersIm
     std::unique_ptr<Technique> technique = createTechnique(GetParam().method, *device, gpuScene, settings);
     const std::vector<float> own = renderFrame(*device, gpuScene, *technique, nullptr);
 
-    HostDrawer host(*device, gpuScene, effectiveFeatures(scene, settings.effects));
+    HostDrawer host(*device, gpuScene, effectiveFeatures(sceneTraits(scene), settings.effects));
     const std::vector<float> hosts = renderFrame(*device, gpuScene, *technique, &host);
     std::vector<RasterOutput> outputs;
     for (const RasterPass& p : host.prepared)

@@ -233,7 +233,7 @@ TEST(NodeHostDevice, RendersIntoTheHostsOwnColourAndDepthTargets) {
                              VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, vk::MemoryUse::Readback, "test.samples");
         {
             rg::Graph graph;
-            FrameInputs in = frame.record(graph, node, gpuScene, 0, "host");
+            FrameInputs in = frame.record(graph, node, 0, "host");
             clusteringInputs.add(graph, node, in, samplesHost);
             // Fresh images: contents undefined before; the host then reads both back as a transfer.
             HostTargets targets;
@@ -312,7 +312,7 @@ TEST_P(EveryMethod, WritesTheHostsTargets) {
     {
         HostView frame(*device, scene, view, node->samples());
         rg::Graph graph;
-        const FrameInputs in = frame.record(graph, *node, gpuScene, 0, "host");
+        const FrameInputs in = frame.record(graph, *node, 0, "host");
         HostTargets targets;
         targets.color = {{color.image, color.view, color.view, {color.desc.format, kSize, kSize}}, {}, {}};
         targets.depth = HostTarget{

@@ -14,13 +14,8 @@
 #include "engine/scene/scenegen.h"
 #include "engine/vk/descriptors.h"
 #include "engine/vk/resources.h"
-#include "shaders/tests/host_accumulation_frag.h"
-#include "shaders/tests/host_gbuffer_frag.h"
-#include "shaders/tests/host_gbuffer_sample_rate_frag.h"
-#include "shaders/tests/host_gbuffer_vert.h"
-#include "shaders/tests/host_shadow_vert.h"
-#include "shaders/tests/host_visibility_frag.h"
 #include "tests/gpu/gpu_test_support.h"
+#include "tests/node/host_content.h"
 #include "tests/node/node_test_support.h"
 
 #include <gtest/gtest.h>
@@ -41,157 +36,11 @@ namespace {
 
 namespace vk = eng::vk;
 
-// The host's content: its own layout, built here from the scene's triangles (as a host's importer
-// would from its own files).
-struct HostVertex {
-    float position[3];
-    float normal[3];
-};
-struct HostMaterial {
-    float albedoRoughness[4];
-    float metallic[4];
-};
-struct HostDraw {
-    uint32_t firstIndex, indexCount;
-    int32_t vertexOffset;
-    HostMaterial material;
-    bool twoSided;
-};
-struct HostMesh {
-    std::vector<HostVertex> vertices;
-    std::vector<uint16_t> indices;
-    std::vector<HostDraw> draws;
-};
-
-HostMesh hostMesh(const eng::scene::Scene& scene) {
-    HostMesh mesh;
-    for (const eng::scene::Vertex& v : scene.vertices)
-        mesh.vertices.push_back(
-            {{v.position.x, v.position.y, v.position.z}, {v.normal.x, v.normal.y, v.normal.z}});
-    for (const eng::scene::Draw& d : scene.draws) {
-        if (d.indexCount == 0) continue;
-        const auto first = scene.indices.begin() + d.firstIndex;
-        const auto [lo, hi] = std::minmax_element(first, first + d.indexCount);
-        if (*hi - *lo > 0xFFFFu) throw std::invalid_argument("a draw spans more than 16-bit indices reach");
-        const eng::scene::Material& m = scene.materials.at(d.material);
-        HostDraw draw{uint32_t(mesh.indices.size()), d.indexCount, int32_t(*lo), {}, m.doubleSided};
-        draw.material = {{m.baseColorFactor.r, m.baseColorFactor.g, m.baseColorFactor.b, m.roughnessFactor},
-                         {m.metallicFactor, 0.0f, 0.0f, 0.0f}};
-        for (uint32_t i = 0; i < d.indexCount; ++i)
-            mesh.indices.push_back(uint16_t(first[i] - *lo));
-        mesh.draws.push_back(draw);
-    }
-    return mesh;
-}
-
-class HostGeometry final : public GeometryDrawer {
-  public:
-    HostGeometry(vk::Device& device, HostMesh mesh) : m_device(device), m_mesh(std::move(mesh)) {
-        m_vertices =
-            vk::createBuffer(device, m_mesh.vertices.size() * sizeof(HostVertex),
-                             VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, vk::MemoryUse::Upload, "host.vertices");
-        m_indices = vk::createBuffer(device, std::max<size_t>(4, m_mesh.indices.size() * 2),
-                                     VK_BUFFER_USAGE_INDEX_BUFFER_BIT, vk::MemoryUse::Upload, "host.indices");
-        vk::writeBuffer(device, m_vertices, std::as_bytes(std::span(m_mesh.vertices)));
-        vk::writeBuffer(device, m_indices, std::as_bytes(std::span(m_mesh.indices)));
-    }
-    ~HostGeometry() override {
-        vkDeviceWaitIdle(m_device.device());
-        for (Pass& p : m_passes) {
-            for (VkPipeline pipeline : p.pipelines)
-                vkDestroyPipeline(m_device.device(), pipeline, nullptr);
-            vk::destroyPipelineLayout(m_device, p.layout);
-        }
-        vk::destroyBuffer(m_device, m_vertices);
-        vk::destroyBuffer(m_device, m_indices);
-    }
-
-    void prepare(const RasterPass& pass) override {
-        if (find(pass)) return;
-        const std::span<const uint32_t> fragment = fragmentCode(pass);
-        Pass p{pass, {}, {}};
-        vk::LayoutDesc layout;
-        layout.pushBindings = pass.moduleSet; // set 0: the module's; this host has no set of its own
-        layout.pushConstantBytes = sizeof(HostMaterial);
-        p.layout = vk::createPipelineLayout(m_device, layout, pass.name + ".host.layout");
-        for (int twoSided = 0; twoSided < 2; ++twoSided) {
-            vk::GraphicsPipelineDesc d = rasterPipelineState(pass, twoSided != 0);
-            const bool shadow = pass.output == RasterOutput::ShadowDepth;
-            d.vertex = shadow ? std::span<const uint32_t>(kTestsHostShadowVert) : kTestsHostGbufferVert;
-            d.fragment = fragment;
-            d.layout = p.layout.layout;
-            d.specialization = pass.specialization;
-            d.sceneVertexInput = false;
-            d.vertexBindings = {{0, sizeof(HostVertex), VK_VERTEX_INPUT_RATE_VERTEX}};
-            d.vertexAttributes = {{0, 0, VK_FORMAT_R32G32B32_SFLOAT, 0},
-                                  {1, 0, VK_FORMAT_R32G32B32_SFLOAT, 12}};
-            p.pipelines[twoSided] = vk::createGraphicsPipeline(m_device, d, pass.name + ".host");
-        }
-        m_passes.push_back(std::move(p));
-    }
-
-    void recordDraws(VkCommandBuffer cmd, const RasterPass& pass, const PushModuleSet& push) const override {
-        if (pass.output == RasterOutput::ShadowDepth) ++shadowMapsDrawn;
-        const Pass* p = find(pass);
-        if (!p) throw std::logic_error(pass.name + ": not prepared");
-        push(cmd, p->layout.layout);
-        VkDeviceSize offset = 0;
-        vkCmdBindVertexBuffers(cmd, 0, 1, &m_vertices.buffer, &offset);
-        vkCmdBindIndexBuffer(cmd, m_indices.buffer, 0, VK_INDEX_TYPE_UINT16);
-        for (const HostDraw& d : m_mesh.draws) {
-            vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, p->pipelines[d.twoSided ? 1 : 0]);
-            vkCmdPushConstants(cmd, p->layout.layout, VK_SHADER_STAGE_ALL, 0, sizeof(HostMaterial),
-                               &d.material);
-            vkCmdDrawIndexed(cmd, d.indexCount, pass.layers, d.firstIndex, d.vertexOffset, 0);
-        }
-    }
-
-    mutable int shadowMapsDrawn = 0;
-
-  private:
-    // This host's builds: what it draws, by the pass's output and build (RasterPass::defines).
-    static std::span<const uint32_t> fragmentCode(const RasterPass& pass) {
-        const bool plainBuild = pass.defines.empty();
-        switch (pass.output) {
-        case RasterOutput::SampleGBuffer:
-            return pass.sampleRateShading ? std::span<const uint32_t>(kTestsHostGbufferSampleRateFrag)
-                                          : kTestsHostGbufferFrag;
-        case RasterOutput::ShadowDepth:
-            return {};
-        case RasterOutput::AggregateVisibility:
-            return kTestsHostVisibilityFrag;
-        case RasterOutput::AggregateAccumulation:
-            if (plainBuild) return kTestsHostAccumulationFrag;
-            break;
-        default:
-            break;
-        }
-        throw std::invalid_argument(std::string("this host has no build of ") +
-                                    rasterOutputName(pass.output) +
-                                    (plainBuild ? "" : " with " + pass.defines.front()));
-    }
-
-    struct Pass {
-        RasterPass pass;
-        vk::PipelineLayout layout;
-        std::array<VkPipeline, 2> pipelines{}; // [two-sided]
-    };
-    const Pass* find(const RasterPass& pass) const {
-        for (const Pass& p : m_passes)
-            if (p.pass == pass) return &p;
-        return nullptr;
-    }
-
-    vk::Device& m_device;
-    HostMesh m_mesh;
-    vk::Buffer m_vertices, m_indices;
-    std::vector<Pass> m_passes;
-};
-
 // The display image (HostView::read's second half).
 std::vector<float> render(vk::Device& device, const eng::frame::GpuScene& scene, Technique& technique,
-                          GeometryDrawer* geometry, const HostShadowMaps* shadowMaps = nullptr) {
-    const std::vector<float> both = renderFrame(device, scene, technique, geometry, shadowMaps);
+                          GeometryDrawer* geometry, const HostShadowMaps* shadowMaps = nullptr,
+                          const EnvironmentBindings* environment = nullptr) {
+    const std::vector<float> both = renderFrame(device, scene, technique, geometry, shadowMaps, environment);
     return {both.begin() + std::ptrdiff_t(both.size() / 2), both.end()};
 }
 
@@ -231,10 +80,19 @@ TEST_P(HostGeometryCase, AHostsOwnVerticesAndMaterialShadersMatchTheScenesOwnDra
     settings.agaaAtomics = AggregateAtomics::Bits32;
     settings.agaaSubgroupReduce = SubgroupReduction::Off;
     std::unique_ptr<Technique> technique = createTechnique(GetParam().method, *device, gpuScene, settings);
-    ASSERT_FALSE(effectiveFeatures(scene, settings.effects).vertexColors);
+    ASSERT_FALSE(effectiveFeatures(sceneTraits(scene), settings.effects).vertexColors);
     const std::vector<float> own = render(*device, gpuScene, *technique, nullptr);
-    HostGeometry host(*device, hostMesh(scene));
-    const std::vector<float> hosts = render(*device, gpuScene, *technique, &host);
+    // The host's technique knows no GpuScene: the host's traits, its drawer, and its environment,
+    // the stand-in of content without one (railings has none).
+    HostMesh mesh = hostMesh(scene);
+    const SceneTraits traits = hostTraits(mesh, scene.lights);
+    HostGeometry host(*device, std::move(mesh));
+    ASSERT_FALSE(traits.features.hasEnvironment());
+    const eng::frame::GpuEnvironment standIn(*device, nullptr);
+    const EnvironmentBindings environment = environmentBindings(standIn);
+    std::unique_ptr<Technique> hostsTechnique =
+        createTechnique(GetParam().method, *device, TechniqueContent{traits}, settings);
+    const std::vector<float> hosts = render(*device, gpuScene, *hostsTechnique, &host, nullptr, &environment);
     double mean = 0.0;
     for (float v : own)
         mean += v;
@@ -257,6 +115,28 @@ INSTANTIATE_TEST_SUITE_P(Node, HostGeometryCase,
                                                 : "");
                          });
 
+// A technique created from a host's traits alone has no scene to fall back on: a frame without
+// the host's drawer or environment is refused naming the missing input.
+TEST(HostContent, AFrameWithoutTheHostsDrawerOrEnvironmentIsRefusedByName) {
+    auto device = makeValidatedDevice();
+    const eng::scene::Scene scene = eng::scene::loadBuiltin("railings");
+    eng::frame::GpuScene gpuScene(*device, scene);
+    HostGeometry host(*device, hostMesh(scene));
+    std::unique_ptr<Technique> technique =
+        createTechnique("reference", *device, TechniqueContent{sceneTraits(scene)}, MethodSettings{});
+    auto refusal = [&](GeometryDrawer* geometry) -> std::string {
+        try {
+            render(*device, gpuScene, *technique, geometry);
+        } catch (const std::invalid_argument& e) {
+            return e.what();
+        }
+        return "(accepted)";
+    };
+    EXPECT_NE(refusal(nullptr).find("FrameInputs::geometry"), std::string::npos) << refusal(nullptr);
+    EXPECT_NE(refusal(&host).find("FrameInputs::environment"), std::string::npos) << refusal(&host);
+    expectNoValidationErrors(*device);
+}
+
 // FrameInputs::shadowMaps: the host draws its own shadow map (its own geometry, pipelines and
 // rendering, into its own image, with the module's fit from ShadowMapPass::makeConstants) and the
 // method reads it in place of drawing one: the image equals the method's own, and no shadow pass of
@@ -267,7 +147,7 @@ TEST(HostShadowMaps, AHostsOwnShadowMapsReplaceTheModulesBitForBit) {
     eng::frame::GpuScene gpuScene(*device, scene);
     const MethodSettings settings;
     std::unique_ptr<Technique> technique = createTechnique("reference", *device, gpuScene, settings);
-    const eng::scene::SceneFeatures features = effectiveFeatures(scene, settings.effects);
+    const eng::scene::SceneFeatures features = effectiveFeatures(sceneTraits(scene), settings.effects);
     ASSERT_FALSE(features.shadowedLights.empty());
     HostGeometry host(*device, hostMesh(scene));
     const std::vector<float> own = render(*device, gpuScene, *technique, &host);
@@ -284,7 +164,7 @@ TEST(HostShadowMaps, AHostsOwnShadowMapsReplaceTheModulesBitForBit) {
     const shared::FrameConstants frame = eng::frame::makeFrameConstants(
         scene, frameView(), eng::frame::makeSamplePattern(technique->samples()));
     const shared::ShadowConstants constants =
-        ShadowMapPass::makeConstants(scene, features.shadowedLights, size, &frame);
+        ShadowMapPass::makeConstants(sceneTraits(scene), features.shadowedLights, size, &frame);
     vk::Buffer constantsBuffer =
         vk::createBuffer(*device, sizeof constants, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, vk::MemoryUse::Upload,
                          "host.shadowConstants");

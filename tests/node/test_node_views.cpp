@@ -44,7 +44,7 @@ std::vector<float> renderAlone(vk::Device& device, Technique& technique, const e
                                const eng::frame::ViewSettings& view) {
     HostView host(device, gpuScene.scene(), view, technique.samples());
     rg::Graph graph;
-    host.record(graph, technique, gpuScene, 0, "solo");
+    host.record(graph, technique, 0, "solo");
     eng::frame::FrameRunner runner(device);
     runner.run(graph);
     return host.read();
@@ -66,8 +66,8 @@ TEST_P(TwoViews, OneGraphEqualsEachSoloRenderBitForBit) {
 
     HostView a(*device, scene, viewA, node->samples()), b(*device, scene, viewB, node->samples());
     rg::Graph graph;
-    a.record(graph, *node, gpuScene, 0, "viewA");
-    b.record(graph, *node, gpuScene, 1, "viewB");
+    a.record(graph, *node, 0, "viewA");
+    b.record(graph, *node, 1, "viewB");
     eng::frame::FrameRunner runner(*device);
     runner.run(graph);
     EXPECT_TRUE(ran(graph, std::string(GetParam()) + ".shadow") || ran(graph, "agaa.shadow"))
@@ -127,14 +127,13 @@ TEST(NodeFrameSlots, AreRefusedWhenReusedInOneGraphOrOutOfRange) {
     HostView b(*device, scene, orbitView(scene, 1), node->samples());
     {
         rg::Graph graph;
-        a.record(graph, *node, gpuScene, 2, "viewA");
+        a.record(graph, *node, 2, "viewA");
         // Both views in slot 2 would read one buffer holding view B's constants.
-        EXPECT_THROW(b.record(graph, *node, gpuScene, 2, "viewB"), std::logic_error);
+        EXPECT_THROW(b.record(graph, *node, 2, "viewB"), std::logic_error);
     }
     {
         rg::Graph graph;
-        EXPECT_THROW(a.record(graph, *node, gpuScene, eng::frame::UniformRing::kMaxSlots, "viewA"),
-                     std::out_of_range);
+        EXPECT_THROW(a.record(graph, *node, eng::frame::UniformRing::kMaxSlots, "viewA"), std::out_of_range);
     }
     expectNoValidationErrors(*device);
 }
@@ -170,7 +169,7 @@ TEST(NodeFramesInFlight, ThreeSubmittedWithoutWaitingEqualEachSoloFrame) {
         VK_CHECK(vkCreateFence(device->device(), &fenceInfo, nullptr, &fences[f]));
         hosts[f] = std::make_unique<HostView>(*device, scene, orbitView(scene, f), node->samples());
         // Frame f in flight uses ring slot f; all three are recorded before any is submitted.
-        hosts[f]->record(graphs[f], *node, gpuScene, f, "frame" + std::to_string(f));
+        hosts[f]->record(graphs[f], *node, f, "frame" + std::to_string(f));
         graphs[f].compile();
         VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
         begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;

@@ -174,8 +174,8 @@ void AggregateExportPass::add(rg::Graph& graph, const AggregateAA& aggregate, co
             d.target = b.write(target, rg::Use::StorageWriteCompute);
             b.sideEffect();
         },
-        [this, pipeline, scene = in.scene, w = in.width, h = in.height](const rg::Context& ctx,
-                                                                        const Data& d) {
+        [this, pipeline, environment = frameEnvironment(in, aggregate.scene(), "test"), w = in.width,
+         h = in.height](const rg::Context& ctx, const Data& d) {
             VkCommandBuffer cmd = ctx.cmd();
             vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline);
             vk::PushDescriptors pd;
@@ -194,7 +194,7 @@ void AggregateExportPass::add(rg::Graph& graph, const AggregateAA& aggregate, co
                 .storage(14, ctx.buffer(d.target).buffer)
                 .storageImage(18, ctx.texture(d.perSampleShaded).view)
                 .storage(19, ctx.buffer(d.flaggedTiles).buffer);
-            pushEnvironment(pd, *scene);
+            pushEnvironment(pd, environment);
             pd.push(m_device, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, m_layout.layout);
             vkCmdDispatch(cmd, groups(w, shared::kTileSize), groups(h, shared::kTileSize), 1);
         });
@@ -228,7 +228,7 @@ void FragmentRecordPass::add(rg::Graph& graph, const AggregateAA& aggregate, con
                         {5, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, fs, 1}};
     raster.stencil.compareOp = VK_COMPARE_OP_EQUAL;
     m_drawers.push_back(std::make_unique<SceneDrawer>(
-        m_device, *in.scene, aggregate.features(),
+        m_device, *aggregate.scene(), aggregate.features(),
         ProgramOverrides{{"agaa/generation.frag", kTestsAgaaGenerationRecordFrag}}));
     SceneDrawer* drawer = m_drawers.back().get();
     drawer->prepare(raster);

@@ -161,7 +161,6 @@ RenderResult FrameRenderer::render(const RenderRequest& original) {
 
     rg::Graph graph;
     FrameInputs inputs;
-    inputs.scene = &m_gpuScene;
     inputs.constants = &constants;
     inputs.width = w;
     inputs.height = h;

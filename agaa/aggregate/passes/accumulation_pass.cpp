@@ -10,9 +10,10 @@ namespace agaa {
 namespace rg = eng::rg;
 namespace vk = eng::vk;
 
-AccumulationPass::AccumulationPass(vk::Device& device, const eng::frame::GpuScene& scene,
+AccumulationPass::AccumulationPass(vk::Device& device, const TechniqueContent& content,
                                    const AggregatePlan& plan)
-    : m_device(device), m_plan(plan), m_sceneDrawer(device, scene, plan.features, plan.settings.programs) {
+    : m_device(device), m_plan(plan),
+      m_sceneDrawer(makeSceneDrawer(device, content, plan.features, plan.settings.programs)) {
     const AggregateSettings& s = plan.settings;
     m_raster.name = "agaa.generation";
     m_raster.output = RasterOutput::AggregateAccumulation;
@@ -81,7 +82,7 @@ void AccumulationPass::add(rg::Graph& graph, AggregateFrame& frame) {
 
     const bool emissive = m_plan.emissive();
     const bool int64 = m_plan.settings.atomics == AggregateAtomics::Bits64;
-    GeometryDrawer* drawer = in.geometry ? in.geometry : &m_sceneDrawer;
+    GeometryDrawer* drawer = &frameDrawer(in, m_sceneDrawer.get(), m_raster.name);
     drawer->prepare(m_raster); // pipelines now, never while a command buffer records
     const Generation& gen = graph.addGraphics<Generation>(
         m_raster.name,

@@ -13,7 +13,7 @@ namespace agaa {
 
 class AccumulationPass {
   public:
-    AccumulationPass(eng::vk::Device& device, const eng::frame::GpuScene& scene, const AggregatePlan& plan);
+    AccumulationPass(eng::vk::Device& device, const TechniqueContent& content, const AggregatePlan& plan);
     ~AccumulationPass();
     AccumulationPass(const AccumulationPass&) = delete;
     AccumulationPass& operator=(const AccumulationPass&) = delete;
@@ -34,7 +34,7 @@ class AccumulationPass {
     eng::vk::Device& m_device;
     const AggregatePlan& m_plan;
     RasterPass m_raster;
-    SceneDrawer m_sceneDrawer; // the scene's, when the host gives no drawer
+    std::unique_ptr<SceneDrawer> m_sceneDrawer; // the content's GpuScene's, when the host gives no drawer
 };
 
 } // namespace agaa

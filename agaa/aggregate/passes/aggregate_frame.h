@@ -29,7 +29,8 @@ struct Accumulation {
 struct AggregateFrame {
     const FrameInputs& in;
     const AggregatePlan& plan;
-    eng::rg::Buffer constants; // shared::AgaaConstants of in.frameSlot
+    eng::rg::Buffer constants;       // shared::AgaaConstants of in.frameSlot
+    EnvironmentBindings environment; // what the lighting passes bind (frameEnvironment)
     // What the clustering reads: the samples path's G-buffer, or the visibility prepass's depth and
     // face normals. `depth` is then the lighting's: after generation, the version with its stencil.
     SampleGBuffer gbuffer; // samples path

@@ -85,8 +85,8 @@ LitAggregates AggregateLightingPass::add(rg::Graph& graph, const AggregateFrame&
                                  ? b.readWrite(flaggedTiles, rg::Use::StorageReadWriteCompute)
                                  : b.write(b.create("agaa.flaggedTiles", {16}), rg::Use::StorageWriteCompute);
         },
-        [=, this, scene = in.scene, width = in.width, height = in.height](const rg::Context& ctx,
-                                                                          const Lighting& d) {
+        [=, this, environment = frame.environment, width = in.width,
+         height = in.height](const rg::Context& ctx, const Lighting& d) {
             VkCommandBuffer cmd = ctx.cmd();
             vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, m_program.pipeline());
             vk::PushDescriptors pd;
@@ -110,7 +110,7 @@ LitAggregates AggregateLightingPass::add(rg::Graph& graph, const AggregateFrame&
                 if (emissive) pd.sampled(10, m_fetchSampler, ctx.texture(d.emissive).sampledView);
             }
             if (shadows) m_shadow.push(pd, ctx, d.shadow, 11, 12);
-            pushEnvironment(pd, *scene);
+            pushEnvironment(pd, environment);
             pd.push(m_device, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, m_program.layout());
             vkCmdDispatch(cmd, groupCount(width, shared::kTileSize), groupCount(height, shared::kTileSize),
                           1);

@@ -57,7 +57,7 @@ FrameTargets PerSampleShadingPass::add(rg::Graph& graph, const AggregateFrame& f
             d.display = b.readWrite(lit.display, rg::Use::StorageImageReadWriteCompute);
             d.events = b.readWrite(lit.events, rg::Use::StorageImageReadWriteCompute);
         },
-        [=, this, scene = in.scene](const rg::Context& ctx, const PerSample& d) {
+        [=, this, environment = frame.environment](const rg::Context& ctx, const PerSample& d) {
             VkCommandBuffer cmd = ctx.cmd();
             vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, m_program.pipeline());
             vk::PushDescriptors pd;
@@ -72,7 +72,7 @@ FrameTargets PerSampleShadingPass::add(rg::Graph& graph, const AggregateFrame& f
             pushLightingTargets(pd, ctx, d.hdr, d.display, d.events);
             pd.storageImage(11, ctx.texture(d.flags).view).storage(12, ctx.buffer(d.tiles).buffer);
             if (shadows) m_shadow.push(pd, ctx, d.shadow, 9, 10);
-            pushEnvironment(pd, *scene);
+            pushEnvironment(pd, environment);
             pd.push(m_device, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, m_program.layout());
             vkCmdDispatchIndirect(cmd, ctx.buffer(d.tiles).buffer, 0); // the listed tiles only
         });

@@ -8,9 +8,9 @@ namespace agaa {
 namespace rg = eng::rg;
 namespace vk = eng::vk;
 
-VisibilityPass::VisibilityPass(vk::Device& device, const eng::frame::GpuScene& scene,
-                               const AggregatePlan& plan)
-    : m_device(device), m_plan(plan), m_sceneDrawer(device, scene, plan.features, plan.settings.programs) {
+VisibilityPass::VisibilityPass(vk::Device& device, const TechniqueContent& content, const AggregatePlan& plan)
+    : m_device(device), m_plan(plan),
+      m_sceneDrawer(makeSceneDrawer(device, content, plan.features, plan.settings.programs)) {
     m_raster.name = "agaa.visibility";
     m_raster.output = RasterOutput::AggregateVisibility;
     m_raster.colorFormats = {kNormalFormat};
@@ -32,7 +32,7 @@ void VisibilityPass::add(rg::Graph& graph, AggregateFrame& frame) {
     };
     // Paper section 3.6: masked materials sample alpha here only, with alpha-to-coverage; the
     // generation pass inherits the coverage through its depth EQUAL test (the drawer's alpha path).
-    GeometryDrawer* drawer = frame.in.geometry ? frame.in.geometry : &m_sceneDrawer;
+    GeometryDrawer* drawer = &frameDrawer(frame.in, m_sceneDrawer.get(), m_raster.name);
     drawer->prepare(m_raster); // pipelines now, never while a command buffer records
     const Visibility& pass = graph.addGraphics<Visibility>(
         m_raster.name,

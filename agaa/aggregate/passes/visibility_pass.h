@@ -11,7 +11,7 @@ namespace agaa {
 
 class VisibilityPass {
   public:
-    VisibilityPass(eng::vk::Device& device, const eng::frame::GpuScene& scene, const AggregatePlan& plan);
+    VisibilityPass(eng::vk::Device& device, const TechniqueContent& content, const AggregatePlan& plan);
     ~VisibilityPass();
     VisibilityPass(const VisibilityPass&) = delete;
     VisibilityPass& operator=(const VisibilityPass&) = delete;
@@ -29,7 +29,7 @@ class VisibilityPass {
     eng::vk::Device& m_device;
     const AggregatePlan& m_plan;
     RasterPass m_raster;
-    SceneDrawer m_sceneDrawer; // the scene's, when the host gives no drawer
+    std::unique_ptr<SceneDrawer> m_sceneDrawer; // the content's GpuScene's, when the host gives no drawer
 };
 
 } // namespace agaa

@@ -53,7 +53,6 @@ int main(int argc, char** argv) {
 
         eng::rg::Graph graph;
         agaa::FrameInputs inputs;
-        inputs.scene = &gpuScene;
         inputs.constants = &constants;
         inputs.width = inputs.height = size;
         inputs.frameConstants = graph.importBuffer("host.frame", {frameBuffer.buffer, frameBuffer.size},

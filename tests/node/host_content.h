@@ -1,0 +1,227 @@
+#pragma once
+// A host's own content for the node tests (issue 50): its vertex layout (interleaved position and
+// normal, 16-bit indices with a base vertex per draw), its material (a constant per draw, in its
+// own push constant), its shaders (shaders/glsl/tests/host_*, which include only the module's
+// raster includes), its drawer (agaa::GeometryDrawer) and what it tells the module of its content
+// (agaa::SceneTraits). Built here from a built-in scene's triangles, as a host's importer would
+// from its own files.
+
+#include "agaa/common/raster_pass.h"
+#include "agaa/common/scene_traits.h"
+#include "engine/scene/scene.h"
+#include "engine/vk/descriptors.h"
+#include "engine/vk/device.h"
+#include "engine/vk/pipeline.h"
+#include "engine/vk/resources.h"
+#include "shaders/tests/host_accumulation_frag.h"
+#include "shaders/tests/host_gbuffer_frag.h"
+#include "shaders/tests/host_gbuffer_sample_rate_frag.h"
+#include "shaders/tests/host_gbuffer_vert.h"
+#include "shaders/tests/host_shadow_vert.h"
+#include "shaders/tests/host_visibility_frag.h"
+
+#include <glm/glm.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstring>
+#include <span>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace agaa::test {
+
+// The host's content: its own layout, built here from the scene's triangles (as a host's importer
+// would from its own files).
+struct HostVertex {
+    float position[3];
+    float normal[3];
+};
+struct HostMaterial {
+    float albedoRoughness[4];
+    float metallic[4];
+};
+struct HostDraw {
+    uint32_t firstIndex, indexCount;
+    int32_t vertexOffset;
+    HostMaterial material;
+    bool twoSided;
+};
+struct HostMesh {
+    std::vector<HostVertex> vertices;
+    std::vector<uint16_t> indices;
+    std::vector<HostDraw> draws;
+};
+
+inline HostMesh hostMesh(const eng::scene::Scene& scene) {
+    HostMesh mesh;
+    for (const eng::scene::Vertex& v : scene.vertices)
+        mesh.vertices.push_back(
+            {{v.position.x, v.position.y, v.position.z}, {v.normal.x, v.normal.y, v.normal.z}});
+    for (const eng::scene::Draw& d : scene.draws) {
+        if (d.indexCount == 0) continue;
+        const auto first = scene.indices.begin() + d.firstIndex;
+        const auto [lo, hi] = std::minmax_element(first, first + d.indexCount);
+        if (*hi - *lo > 0xFFFFu) throw std::invalid_argument("a draw spans more than 16-bit indices reach");
+        const eng::scene::Material& m = scene.materials.at(d.material);
+        HostDraw draw{uint32_t(mesh.indices.size()), d.indexCount, int32_t(*lo), {}, m.doubleSided};
+        draw.material = {{m.baseColorFactor.r, m.baseColorFactor.g, m.baseColorFactor.b, m.roughnessFactor},
+                         {m.metallicFactor, 0.0f, 0.0f, 0.0f}};
+        for (uint32_t i = 0; i < d.indexCount; ++i)
+            mesh.indices.push_back(uint16_t(first[i] - *lo));
+        mesh.draws.push_back(draw);
+    }
+    return mesh;
+}
+
+// What this host tells the module of its content (agaa/common/scene_traits.h), from its own mesh,
+// materials and light list, as agaa::sceneTraits does for ours; no eng::scene::Scene behind it.
+inline SceneTraits hostTraits(const HostMesh& mesh, const std::vector<eng::scene::Light>& lights) {
+    using eng::scene::LightType;
+    SceneTraits t;
+    t.source = "host:railings";
+    t.triangles = mesh.indices.size() / 3;
+    t.bounds = {glm::vec3(INFINITY), glm::vec3(-INFINITY)};
+    for (const HostVertex& v : mesh.vertices) {
+        const glm::vec3 p(v.position[0], v.position[1], v.position[2]);
+        t.bounds.min = glm::min(t.bounds.min, p);
+        t.bounds.max = glm::max(t.bounds.max, p);
+    }
+    t.lights = lights;
+    eng::scene::SceneFeatures& f = t.features;
+    for (uint32_t i = 0; i < lights.size(); ++i) {
+        const LightType type = lights[i].type;
+        f.directionalLights += type == LightType::Directional ? 1 : 0;
+        f.pointLights += type == LightType::Point ? 1 : 0;
+        f.spotLights += type == LightType::Spot ? 1 : 0;
+        if (lights[i].castsShadows && type != LightType::Point &&
+            f.shadowedLights.size() < eng::scene::kMaxShadowedLights)
+            f.shadowedLights.push_back(i);
+    }
+    std::vector<HostMaterial> materials; // this host's materials are the distinct ones its draws push
+    for (const HostDraw& d : mesh.draws)
+        if (std::none_of(materials.begin(), materials.end(),
+                         [&](const HostMaterial& m) { return std::memcmp(&m, &d.material, sizeof m) == 0; }))
+            materials.push_back(d.material);
+    for (const HostMaterial& m : materials) {
+        const float roughness = m.albedoRoughness[3], metallic = m.metallic[0];
+        const bool glossyMetal =
+            metallic >= eng::scene::kGlossyMetallic && roughness <= eng::scene::kGlossyRoughness;
+        const bool nearMirror = roughness < eng::scene::kNearMirrorRoughness;
+        ++f.drawnMaterials;
+        f.glossyMetalMaterials += glossyMetal ? 1 : 0;
+        f.anisotropicMetalMaterials += glossyMetal && !nearMirror ? 1 : 0;
+        f.nearMirrorMaterials += nearMirror ? 1 : 0;
+    }
+    t.materials = uint32_t(materials.size());
+    return t;
+}
+
+class HostGeometry final : public GeometryDrawer {
+  public:
+    HostGeometry(eng::vk::Device& device, HostMesh mesh) : m_device(device), m_mesh(std::move(mesh)) {
+        m_vertices = eng::vk::createBuffer(device, m_mesh.vertices.size() * sizeof(HostVertex),
+                                           VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, eng::vk::MemoryUse::Upload,
+                                           "host.vertices");
+        m_indices = eng::vk::createBuffer(device, std::max<size_t>(4, m_mesh.indices.size() * 2),
+                                          VK_BUFFER_USAGE_INDEX_BUFFER_BIT, eng::vk::MemoryUse::Upload,
+                                          "host.indices");
+        eng::vk::writeBuffer(device, m_vertices, std::as_bytes(std::span(m_mesh.vertices)));
+        eng::vk::writeBuffer(device, m_indices, std::as_bytes(std::span(m_mesh.indices)));
+    }
+    ~HostGeometry() override {
+        vkDeviceWaitIdle(m_device.device());
+        for (Pass& p : m_passes) {
+            for (VkPipeline pipeline : p.pipelines)
+                vkDestroyPipeline(m_device.device(), pipeline, nullptr);
+            eng::vk::destroyPipelineLayout(m_device, p.layout);
+        }
+        eng::vk::destroyBuffer(m_device, m_vertices);
+        eng::vk::destroyBuffer(m_device, m_indices);
+    }
+
+    void prepare(const RasterPass& pass) override {
+        if (find(pass)) return;
+        const std::span<const uint32_t> fragment = fragmentCode(pass);
+        Pass p{pass, {}, {}};
+        eng::vk::LayoutDesc layout;
+        layout.pushBindings = pass.moduleSet; // set 0: the module's; this host has no set of its own
+        layout.pushConstantBytes = sizeof(HostMaterial);
+        p.layout = eng::vk::createPipelineLayout(m_device, layout, pass.name + ".host.layout");
+        for (int twoSided = 0; twoSided < 2; ++twoSided) {
+            eng::vk::GraphicsPipelineDesc d = rasterPipelineState(pass, twoSided != 0);
+            const bool shadow = pass.output == RasterOutput::ShadowDepth;
+            d.vertex = shadow ? std::span<const uint32_t>(kTestsHostShadowVert) : kTestsHostGbufferVert;
+            d.fragment = fragment;
+            d.layout = p.layout.layout;
+            d.specialization = pass.specialization;
+            d.sceneVertexInput = false;
+            d.vertexBindings = {{0, sizeof(HostVertex), VK_VERTEX_INPUT_RATE_VERTEX}};
+            d.vertexAttributes = {{0, 0, VK_FORMAT_R32G32B32_SFLOAT, 0},
+                                  {1, 0, VK_FORMAT_R32G32B32_SFLOAT, 12}};
+            p.pipelines[twoSided] = eng::vk::createGraphicsPipeline(m_device, d, pass.name + ".host");
+        }
+        m_passes.push_back(std::move(p));
+    }
+
+    void recordDraws(VkCommandBuffer cmd, const RasterPass& pass, const PushModuleSet& push) const override {
+        if (pass.output == RasterOutput::ShadowDepth) ++shadowMapsDrawn;
+        const Pass* p = find(pass);
+        if (!p) throw std::logic_error(pass.name + ": not prepared");
+        push(cmd, p->layout.layout);
+        VkDeviceSize offset = 0;
+        vkCmdBindVertexBuffers(cmd, 0, 1, &m_vertices.buffer, &offset);
+        vkCmdBindIndexBuffer(cmd, m_indices.buffer, 0, VK_INDEX_TYPE_UINT16);
+        for (const HostDraw& d : m_mesh.draws) {
+            vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, p->pipelines[d.twoSided ? 1 : 0]);
+            vkCmdPushConstants(cmd, p->layout.layout, VK_SHADER_STAGE_ALL, 0, sizeof(HostMaterial),
+                               &d.material);
+            vkCmdDrawIndexed(cmd, d.indexCount, pass.layers, d.firstIndex, d.vertexOffset, 0);
+        }
+    }
+
+    mutable int shadowMapsDrawn = 0;
+
+  private:
+    // This host's builds: what it draws, by the pass's output and build (RasterPass::defines).
+    static std::span<const uint32_t> fragmentCode(const RasterPass& pass) {
+        const bool plainBuild = pass.defines.empty();
+        switch (pass.output) {
+        case RasterOutput::SampleGBuffer:
+            return pass.sampleRateShading ? std::span<const uint32_t>(kTestsHostGbufferSampleRateFrag)
+                                          : kTestsHostGbufferFrag;
+        case RasterOutput::ShadowDepth:
+            return {};
+        case RasterOutput::AggregateVisibility:
+            return kTestsHostVisibilityFrag;
+        case RasterOutput::AggregateAccumulation:
+            if (plainBuild) return kTestsHostAccumulationFrag;
+            break;
+        default:
+            break;
+        }
+        throw std::invalid_argument(std::string("this host has no build of ") +
+                                    rasterOutputName(pass.output) +
+                                    (plainBuild ? "" : " with " + pass.defines.front()));
+    }
+
+    struct Pass {
+        RasterPass pass;
+        eng::vk::PipelineLayout layout;
+        std::array<VkPipeline, 2> pipelines{}; // [two-sided]
+    };
+    const Pass* find(const RasterPass& pass) const {
+        for (const Pass& p : m_passes)
+            if (p.pass == pass) return &p;
+        return nullptr;
+    }
+
+    eng::vk::Device& m_device;
+    HostMesh m_mesh;
+    eng::vk::Buffer m_vertices, m_indices;
+    std::vector<Pass> m_passes;
+};
+
+} // namespace agaa::test
