@@ -59,19 +59,19 @@ MethodOption choice(std::string name, std::vector<std::string> choices, std::str
     return o;
 }
 
-// A choice that stores an enum: its words are the enum's NamedValue table, its default the
-// MethodSettings default's word, and the value is parsed once, here.
+// One of AGAA's choices (MethodSettings::agaa), an enum: its words are the enum's NamedValue table,
+// its default the AggregateChoices default's word, and the value is parsed once, here.
 template <typename T, size_t N>
-MethodOption enumChoice(std::string name, const NamedValue<T> (&table)[N], T MethodSettings::*field,
+MethodOption enumChoice(std::string name, const NamedValue<T> (&table)[N], T AggregateChoices::*field,
                         std::string methods, std::string doc) {
     const std::string flag = "--" + name;
     return choice(
-        std::move(name), words(table), nameOf(MethodSettings{}.*field, table), std::move(methods),
+        std::move(name), words(table), nameOf(AggregateChoices{}.*field, table), std::move(methods),
         std::move(doc),
         [&table, field, flag](MethodSettings& s, const std::string& v) {
-            s.*field = namedValue(flag.c_str(), v, table);
+            s.agaa.*field = namedValue(flag.c_str(), v, table);
         },
-        [&table, field](const MethodSettings& s) { return std::string(nameOf(s.*field, table)); });
+        [&table, field](const MethodSettings& s) { return std::string(nameOf(s.agaa.*field, table)); });
 }
 
 MethodOption ranged(Kind kind, std::string name, std::string syntax, double lo, double hi,
@@ -154,28 +154,28 @@ std::vector<MethodOption> declareOptions() {
                        kAggregatePositionNames));
         }));
     o.push_back(enumChoice(
-        "agaa-ndf", kAggregateNdfNames, &MethodSettings::ndf, "agaa*",
+        "agaa-ndf", kAggregateNdfNames, &AggregateChoices::ndf, "agaa*",
         "the normal distribution per aggregate: anisotropic SGGX with the two-point tone-mapped resolve, "
         "or the paper's isotropic Toksvig; auto: SGGX when glossy metals that are not near mirrors "
         "(roughness 0.1 to 0.4) are at least half of the drawn materials, else Toksvig"));
     o.push_back(enumChoice(
-        "agaa-lighting", kAggregateShadingNames, &MethodSettings::agaaLighting, "agaa*",
+        "agaa-lighting", kAggregateShadingNames, &AggregateChoices::shading, "agaa*",
         "the lighting schedule: a tile's further aggregates packed into a shared-memory list (compact), "
         "or each pixel shading its own (registers); auto: compact for c >= 2, registers at c = 1"));
     o.push_back(enumChoice(
-        "agaa-routing", kAggregateRoutingNames, &MethodSettings::agaaRouting, "agaa*",
+        "agaa-routing", kAggregateRoutingNames, &AggregateChoices::routing, "agaa*",
         "generation: each visible sample feeds its own aggregate, or the whole fragment its first visible "
         "sample's (Algorithm 2)"));
     o.push_back(enumChoice(
-        "agaa-atomics", kAggregateAtomicsNames, &MethodSettings::agaaAtomics, "agaa*",
+        "agaa-atomics", kAggregateAtomicsNames, &AggregateChoices::atomics, "agaa*",
         "generation atomics: 64-bit pairs of words where the device has shaderBufferInt64Atomics (auto), "
         "or 32-bit words"));
     o.push_back(enumChoice(
-        "agaa-subgroup-reduce", kSubgroupReductionNames, &MethodSettings::agaaSubgroupReduce, "agaa*",
+        "agaa-subgroup-reduce", kSubgroupReductionNames, &AggregateChoices::subgroupReduction, "agaa*",
         "generation: sum the atomics of fragments that hit one pixel across the subgroup first; auto: on "
         "for GPUs, off on CPU devices"));
     o.push_back(enumChoice(
-        "agaa-distance", kAggregateDistanceNames, &MethodSettings::agaaDistance, "agaa*",
+        "agaa-distance", kAggregateDistanceNames, &AggregateChoices::distance, "agaa*",
         "clustering: Equation 1, or the samples' distance to each other's tangent plane (a flat surface "
         "stays one aggregate)"));
     {
@@ -189,12 +189,12 @@ std::vector<MethodOption> declareOptions() {
                 " on the samples path, never on the accumulate path (where a tolerance keeps 12 bytes of "
                 "material per sample)",
             [=](MethodSettings& s, const std::string& v) {
-                s.agaaTolerance = v == "auto" ? kToleranceAuto : v == "never" ? kToleranceNever : number(v);
+                s.agaa.tolerance = v == "auto" ? kToleranceAuto : v == "never" ? kToleranceNever : number(v);
             },
             [](const MethodSettings& s) {
-                return s.agaaTolerance == kToleranceAuto ? std::string("auto")
-                       : s.agaaTolerance < 0.0f          ? std::string("never")
-                                                         : numberText(s.agaaTolerance);
+                return s.agaa.tolerance == kToleranceAuto ? std::string("auto")
+                       : s.agaa.tolerance < 0.0f          ? std::string("never")
+                                                          : numberText(s.agaa.tolerance);
             });
         t.words = {"auto", "never"};
         o.push_back(std::move(t));
@@ -207,16 +207,16 @@ std::vector<MethodOption> declareOptions() {
             "much narrower than its normals' spread that n samples alias the highlight the aggregate's lobe "
             "integrates (measured at n = 8 in docs/decisions/shading-rate-estimate.md)",
             [=](MethodSettings& s, const std::string& v) {
-                s.agaaAliasLimit = v == "none" ? kAliasLimitNone : number(v);
+                s.agaa.aliasLimit = v == "none" ? kAliasLimitNone : number(v);
             },
             [](const MethodSettings& s) {
-                return std::isinf(s.agaaAliasLimit) ? std::string("none") : numberText(s.agaaAliasLimit);
+                return std::isinf(s.agaa.aliasLimit) ? std::string("none") : numberText(s.agaa.aliasLimit);
             });
         l.words = {"none"};
         o.push_back(std::move(l));
     }
     o.push_back(enumChoice(
-        "agaa-generation", kAggregateGenerationNames, &MethodSettings::agaaGeneration, "agaa",
+        "agaa-generation", kAggregateGenerationNames, &AggregateChoices::generation, "agaa",
         "the generation path: the accumulation kernel after a visibility prepass, or one per-sample "
         "G-buffer pass aggregated at the top of each lighting tile (UE4); coverage routing needs mixed "
         "samples and the sample-mask override and is not built (exit 3); auto: samples for n <= 16, else "
@@ -349,7 +349,7 @@ std::string methodSettingsKey(const MethodSettings& settings) {
     for (const MethodOption& o : methodOptions())
         key += o.name + "=" + o.get(settings) + ";";
     // A replaced program by its name and its code's address: two builds are two renders.
-    for (const auto& [name, code] : settings.agaaPrograms) {
+    for (const auto& [name, code] : settings.agaa.programs) {
         char address[32];
         std::snprintf(address, sizeof address, "%p", static_cast<const void*>(code.data()));
         key += "program:" + name + "@" + address + ";";

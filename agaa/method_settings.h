@@ -30,30 +30,15 @@ struct MethodSettings {
     // AGAA shading position: false = mean of the aggregate's sample positions, true = the UE4
     // shortcut (seed 004): the mean depth on the pixel centre's ray.
     bool pixelCentrePosition = false;
-    // AGAA's choices, each the enum AggregateSettings takes (agaa/aggregate/agaa_constants.h, where
-    // each says what it does and what Auto resolves to): the normal distribution per aggregate,
-    // the lighting schedule, the generation routing, atomics and subgroup pre-reduction, the
-    // clustering distance and the generation path.
-    AggregateNdf ndf = AggregateNdf::Auto;
-    AggregateShading agaaLighting = AggregateShading::Auto;
-    AggregateRouting agaaRouting = AggregateRouting::Samples;
-    AggregateAtomics agaaAtomics = AggregateAtomics::Auto;
-    SubgroupReduction agaaSubgroupReduce = SubgroupReduction::Auto;
-    AggregateDistance agaaDistance = AggregateDistance::Plane;
-    AggregateGeneration agaaGeneration = AggregateGeneration::Auto;
+    // AGAA's choices (agaa/aggregate/agaa_constants.h, where each says what it does and what Auto
+    // resolves to): what AggregateSettings takes of them, as they are.
+    AggregateChoices agaa;
     // The fill pass of the per-sample G-buffer (reference, Simple/Complex, AGAA's samples path):
     // sample-rate shading (supersampled materials) instead of pixel rate with per-sample coverage.
     bool sampleRateShading = false;
     // AGAA samples path: Kaplanyan curvature roughness in the fill pass (seed 004).
     bool curvatureRoughness = false;
-    // AGAA: the error-driven shading rate's tolerance (AggregateSettings::tolerance; kToleranceNever,
-    // kToleranceAuto: the path's default) and its alias limit (kAliasLimitNone: none).
-    float agaaTolerance = kToleranceAuto;
-    float agaaAliasLimit = kDefaultAliasLimit;
     EffectSettings effects; // scene-driven shadows, alpha-to-coverage, emissive, normal maps
-    // AGAA: builds to run in place of its shipping programs (agaa/common/program_overrides.h), such
-    // as agaa-timings' part-removed builds. Not an option: a tool's, set in code.
-    ProgramOverrides agaaPrograms;
 };
 
 struct MethodOption {

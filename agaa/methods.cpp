@@ -118,6 +118,7 @@ std::unique_ptr<Technique> createTechnique(const std::string& method, eng::vk::D
     }
     if (method == "agaa" || method == "agaa-accumulate" || method == "agaa-samples") {
         AggregateSettings s;
+        static_cast<AggregateChoices&>(s) = settings.agaa;
         s.samples = settings.samples;
         s.aggregates = settings.aggregates;
         s.effects = settings.effects;
@@ -127,15 +128,8 @@ std::unique_ptr<Technique> createTechnique(const std::string& method, eng::vk::D
         if (settings.characteristicLength >= 0.0f) s.characteristicLength = settings.characteristicLength;
         if (settings.seedThreshold >= 0.0f) s.seedThreshold = settings.seedThreshold;
         if (settings.pixelCentrePosition) s.position = AggregatePosition::PixelCentre;
-        s.ndf = settings.ndf;
-        s.shading = settings.agaaLighting;
-        s.routing = settings.agaaRouting;
-        s.atomics = settings.agaaAtomics;
-        s.subgroupReduction = settings.agaaSubgroupReduce;
-        s.distance = settings.agaaDistance;
-        s.generation = settings.agaaGeneration;
         if (method != "agaa") {
-            if (settings.agaaGeneration != AggregateGeneration::Auto)
+            if (settings.agaa.generation != AggregateGeneration::Auto)
                 throw std::invalid_argument("--agaa-generation applies to --method agaa only; " + method +
                                             " is the " + method.substr(5) + " path already");
             s.generation =
@@ -143,9 +137,6 @@ std::unique_ptr<Technique> createTechnique(const std::string& method, eng::vk::D
         }
         s.sampleRateShading = settings.sampleRateShading;
         s.curvatureRoughness = settings.curvatureRoughness;
-        s.tolerance = settings.agaaTolerance;
-        s.aliasLimit = settings.agaaAliasLimit;
-        s.programs = settings.agaaPrograms;
         return std::make_unique<AggregateAA>(device, content, s);
     }
     throw std::invalid_argument("--method '" + method + "' is unknown (known: " + knownMethodNames() + ")");

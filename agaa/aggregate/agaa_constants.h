@@ -130,15 +130,11 @@ inline constexpr float kAliasedSaturation = 16.0f;
 inline constexpr float kMeanNormalGap = 0.5f;
 inline constexpr float kAliasLimitNone = std::numeric_limits<float>::infinity();
 
-struct AggregateSettings {
-    uint32_t samples = 8;              // n
-    uint32_t aggregates = 2;           // c
-    float characteristicLength = 0.1f; // k, metres (paper: 10 cm)
-    // t in Equation 1 units: a further aggregate is only created from samples farther than t
-    // from every seed. Default measured on the scenegen scenes (agaa/aggregate/README.md).
-    float seedThreshold = 0.05f;
-    AggregateDebugView debugView = AggregateDebugView::None;
-    AggregatePosition position = AggregatePosition::SampleMean;
+// AGAA's own choices: the options of the method table only AGAA reads, held as they are by
+// MethodSettings::agaa (agaa/method_settings.h) and by AggregateSettings, which adds what AGAA
+// shares with every method. A new choice is a field here, its enum and names above, and its row
+// in the option table.
+struct AggregateChoices {
     AggregateNdf ndf = AggregateNdf::Auto;
     AggregateShading shading = AggregateShading::Auto;
     AggregateRouting routing = AggregateRouting::Samples;
@@ -146,12 +142,6 @@ struct AggregateSettings {
     SubgroupReduction subgroupReduction = SubgroupReduction::Auto;
     AggregateDistance distance = AggregateDistance::Plane;
     AggregateGeneration generation = AggregateGeneration::Auto;
-    // Samples path only: sample-rate shading in the fill pass (every sample runs the material),
-    // and Kaplanyan curvature roughness there (seed 004's constants; common/curvature_roughness.glsl).
-    bool sampleRateShading = false;
-    bool curvatureRoughness = false;
-    float curvatureMaxFootprint = 0.3f;
-    float curvatureBoost = 2.0f;
     // The error-driven shading rate (samples path; docs/decisions/shading-rate-estimate.md): a
     // pixel whose aggregates' normal spread, against their sharpest member's lobe, reaches this is
     // shaded per sample as the reference shades it; 0 shades every pixel so. Below 0: never (AGAA
@@ -161,8 +151,26 @@ struct AggregateSettings {
     // [tolerance, aliasLimit); kAliasLimitNone: no limit. A tolerance of 0 ignores it (every pixel).
     float aliasLimit = kDefaultAliasLimit;
     // Builds to run in place of AGAA's shipping programs, by name (agaa/common/program_overrides.h);
-    // a name AGAA does not run is refused. Empty: the shipping builds.
+    // a name AGAA does not run is refused. Empty: the shipping builds. Not an option: a tool's (such
+    // as agaa-timings' part-removed builds), set in code.
     ProgramOverrides programs;
+};
+
+struct AggregateSettings : AggregateChoices {
+    uint32_t samples = 8;              // n
+    uint32_t aggregates = 2;           // c
+    float characteristicLength = 0.1f; // k, metres (paper: 10 cm)
+    // t in Equation 1 units: a further aggregate is only created from samples farther than t
+    // from every seed. Default measured on the scenegen scenes (agaa/aggregate/README.md).
+    float seedThreshold = 0.05f;
+    AggregateDebugView debugView = AggregateDebugView::None;
+    AggregatePosition position = AggregatePosition::SampleMean;
+    // Samples path only: sample-rate shading in the fill pass (every sample runs the material),
+    // and Kaplanyan curvature roughness there (seed 004's constants; common/curvature_roughness.glsl).
+    bool sampleRateShading = false;
+    bool curvatureRoughness = false;
+    float curvatureMaxFootprint = 0.3f;
+    float curvatureBoost = 2.0f;
     EffectSettings effects; // scene-driven shadows (taps: the footprint filter), alpha-to-coverage, ...
 };
 

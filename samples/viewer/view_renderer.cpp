@@ -60,7 +60,7 @@ Technique& ViewRenderer::technique(const std::string& method, const MethodSettin
     // Everything the viewer can change; the rest stays at MethodSettings' defaults.
     const std::string key =
         method + "/" + std::to_string(s.samples) + "/" + std::to_string(s.aggregates) + "/" + s.debug + "/" +
-        nameOf(s.ndf, kAggregateNdfNames) + "/" + nameOf(s.agaaGeneration, kAggregateGenerationNames) +
+        nameOf(s.agaa.ndf, kAggregateNdfNames) + "/" + nameOf(s.agaa.generation, kAggregateGenerationNames) +
         (s.effects.forceAll ? "/all" : "") + "/" + std::to_string(s.effects.shadowMapSize) + "/" +
         std::to_string(s.effects.shadowTaps) + "/" + std::to_string(uint32_t(s.effects.shadowFootprint));
     auto it = m_techniques.find(key);

@@ -90,7 +90,8 @@ TEST(AgaaClusteringGpu, MetadataMatchesTheCpuReferenceBitForBit) {
         shared::AgaaConstants constants{};
         agaa::RenderRequest r = request("agaa-accumulate", k.n, k.c, size);
         r.settings.debug = "aggregates"; // clustering only: the graph culls generation
-        r.settings.agaaDistance = agaa::namedValue("agaaDistance", k.distance, agaa::kAggregateDistanceNames);
+        r.settings.agaa.distance =
+            agaa::namedValue("agaaDistance", k.distance, agaa::kAggregateDistanceNames);
         r.extraPasses = [&](eng::rg::Graph& graph, agaa::Technique& tech, const agaa::FrameInputs& in) {
             auto& aggregate = dynamic_cast<agaa::AggregateAA&>(tech);
             clusteringInputs.add(graph, aggregate, in, samples);
@@ -253,7 +254,7 @@ TEST(AgaaGpu, SampleMaterialHoldsEachCoveredSamplesFragment) {
             vk::createBuffer(*device, VkDeviceSize(shared::sampleMaterialWords(size * size, n)) * 4,
                              VK_BUFFER_USAGE_TRANSFER_DST_BIT, vk::MemoryUse::Readback, "test.material");
         agaa::RenderRequest r = request("agaa-accumulate", n, c, size);
-        r.settings.agaaTolerance = agaa::kDefaultTolerance;
+        r.settings.agaa.tolerance = agaa::kDefaultTolerance;
         r.extraPasses = [&](eng::rg::Graph& graph, agaa::Technique& tech, const agaa::FrameInputs& in) {
             auto& aggregate = dynamic_cast<agaa::AggregateAA&>(tech);
             recorder.add(graph, aggregate, in, records);
@@ -349,7 +350,7 @@ TEST(AgaaGpu, ErrorBelowHalfOfNoAaAndFallsWithMoreAggregates) {
             // (each c renders the same frame; the error must not grow with c). The aggregates alone:
             // the shading rate's per-sample pixels are ShadingRate's to test.
             agaa::RenderRequest q = request("agaa", 8, c, size);
-            q.settings.agaaTolerance = agaa::kToleranceNever;
+            q.settings.agaa.tolerance = agaa::kToleranceNever;
             agaa::RenderResult r = renderer.render(q);
             EXPECT_TRUE(eng::io::allFinite(r.hdr) && eng::io::allFinite(r.display)) << name << " c=" << c;
             EXPECT_LE(r.shadingEventsMax, c) << name << ": at most c shading events per pixel";
@@ -366,7 +367,7 @@ TEST(AgaaGpu, ErrorBelowHalfOfNoAaAndFallsWithMoreAggregates) {
         double forced[2] = {};
         for (int k = 0; k < 2; ++k) {
             agaa::RenderRequest f = request("agaa", 8, 2, size);
-            f.settings.ndf = k == 0 ? agaa::AggregateNdf::Toksvig : agaa::AggregateNdf::Sggx;
+            f.settings.agaa.ndf = k == 0 ? agaa::AggregateNdf::Toksvig : agaa::AggregateNdf::Sggx;
             forced[k] = eng::io::rmse(encoded(renderer.render(f).display), ref) / noaa;
         }
         std::printf("[ measured ] %-9s AGAA (8, 2) / no-AA: toksvig %.3f, sggx %.3f, auto %.3f\n", name,

@@ -383,8 +383,8 @@ TEST(AgaaLightingReference, AggregateShadingMatchesADoublePrecisionCpuShading) {
             l.castsShadows = false; // the export variant has no shadow maps
         agaa::FrameRenderer renderer(*device, scene);
         agaa::RenderRequest r = agaa::test::request("agaa-samples", k.n, k.c, size);
-        r.settings.agaaTolerance = agaa::kToleranceNever; // the aggregates' shading, every pixel
-        r.settings.ndf = agaa::namedValue("ndf", k.ndf, agaa::kAggregateNdfNames);
+        r.settings.agaa.tolerance = agaa::kToleranceNever; // the aggregates' shading, every pixel
+        r.settings.agaa.ndf = agaa::namedValue("ndf", k.ndf, agaa::kAggregateNdfNames);
         const bool sggx = std::string(k.ndf) == "sggx";
         agaa::RenderResult result;
         shared::AgaaConstants constants{};
@@ -543,7 +543,7 @@ TEST(AgaaLightingReference, AccumulatePathShadingMatchesADoublePrecisionCpuShadi
             l.castsShadows = false; // the reference has no shadow maps
         agaa::FrameRenderer renderer(*device, scene);
         agaa::RenderRequest r = agaa::test::request("agaa-accumulate", k.n, k.c, size);
-        r.settings.ndf = agaa::AggregateNdf::Toksvig;
+        r.settings.agaa.ndf = agaa::AggregateNdf::Toksvig;
         const uint32_t words = wordsPerPixel(k.n, k.c);
         vk::Buffer samples =
             vk::createBuffer(*device, VkDeviceSize(pixels) * k.n * 8, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,

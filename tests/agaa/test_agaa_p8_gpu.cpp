@@ -38,7 +38,7 @@ agaa::RenderRequest request(const std::string& method, uint32_t n, uint32_t c) {
     r.settings.samples = n;
     r.settings.aggregates = c;
     if (const char* ndf = std::getenv("AGAA_P8_NDF"))
-        r.settings.ndf = agaa::namedValue("AGAA_P8_NDF", ndf, agaa::kAggregateNdfNames);
+        r.settings.agaa.ndf = agaa::namedValue("AGAA_P8_NDF", ndf, agaa::kAggregateNdfNames);
     if (std::getenv("AGAA_P8_SHADOW_SAMPLES"))
         r.settings.effects.shadowFootprint = agaa::EffectSettings::ShadowFootprint::Samples;
     if (std::getenv("AGAA_P8_SHADOW_STATISTICS"))
@@ -92,7 +92,7 @@ TEST(GoalP8, MoreGeometrySamplesBeatMoreShadingSamples) {
     // The pixel's depth complexity, as the clustering sees it with four aggregates and the
     // tangent-plane distance (a flat surface stays one aggregate): 1, 2, or 3+ surfaces.
     agaa::RenderRequest classify = request("agaa-accumulate", 32, 4);
-    classify.settings.agaaDistance = agaa::AggregateDistance::Plane;
+    classify.settings.agaa.distance = agaa::AggregateDistance::Plane;
     const std::vector<uint32_t> surfaces = renderer.render(classify).shadingEvents;
     const eng::io::ImageF perSampleDisplay = eng::io::srgbEncoded(perSample.display);
     auto split = [&](const eng::io::ImageF& display) {

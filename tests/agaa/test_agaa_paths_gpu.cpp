@@ -55,9 +55,9 @@ TEST(AgaaPathsGpu, CompactedLightingEqualsThePerPixelScheduleBitForBit) {
         for (const char* path : {"agaa-accumulate", "agaa-samples"}) {
             agaa::RenderRequest compact = agaaRequest(k.n, k.c, 64);
             compact.method = path;
-            compact.settings.agaaLighting = agaa::AggregateShading::Compact;
+            compact.settings.agaa.shading = agaa::AggregateShading::Compact;
             agaa::RenderRequest registers = compact;
-            registers.settings.agaaLighting = agaa::AggregateShading::Registers;
+            registers.settings.agaa.shading = agaa::AggregateShading::Registers;
             agaa::RenderResult a = renderer.render(compact);
             agaa::RenderResult b = renderer.render(registers);
             uint64_t extra = 0; // entries that went through the list: events beyond one per pixel
@@ -109,13 +109,13 @@ TEST(AgaaPathsGpu, WideAtomicsAndSubgroupReductionLeaveTheAgBufferUnchanged) {
         eng::scene::Scene scene = eng::scene::loadTestScene(k.scene);
         agaa::FrameRenderer renderer(*device, scene);
         agaa::RenderRequest base = agaaRequest(k.n, k.c, size);
-        base.settings.agaaAtomics = agaa::AggregateAtomics::Bits32;
-        base.settings.agaaSubgroupReduce = agaa::SubgroupReduction::Off;
+        base.settings.agaa.atomics = agaa::AggregateAtomics::Bits32;
+        base.settings.agaa.subgroupReduction = agaa::SubgroupReduction::Off;
         agaa::RenderRequest wide = base, reduced = base, both = base;
-        wide.settings.agaaAtomics = agaa::AggregateAtomics::Bits64;
-        reduced.settings.agaaSubgroupReduce = agaa::SubgroupReduction::On;
-        both.settings.agaaAtomics = agaa::AggregateAtomics::Bits64;
-        both.settings.agaaSubgroupReduce = agaa::SubgroupReduction::On;
+        wide.settings.agaa.atomics = agaa::AggregateAtomics::Bits64;
+        reduced.settings.agaa.subgroupReduction = agaa::SubgroupReduction::On;
+        both.settings.agaa.atomics = agaa::AggregateAtomics::Bits64;
+        both.settings.agaa.subgroupReduction = agaa::SubgroupReduction::On;
         std::vector<uint32_t> narrow = agBufferWords(*device, renderer, base, size * size);
         EXPECT_TRUE(std::any_of(narrow.begin(), narrow.end(), [](uint32_t w) { return w != 0; }))
             << k.scene << ": the AG-buffer must hold accumulated samples";
@@ -160,9 +160,9 @@ TEST(AgaaPathsGpu, FragmentRoutingCountsEveryVisibleSampleOnce) {
         eng::scene::Scene scene = eng::scene::loadTestScene(name);
         agaa::FrameRenderer renderer(*device, scene);
         agaa::RenderRequest samples = agaaRequest(8, 2, size);
-        samples.settings.ndf = agaa::AggregateNdf::Toksvig;
+        samples.settings.agaa.ndf = agaa::AggregateNdf::Toksvig;
         agaa::RenderRequest fragments = samples;
-        fragments.settings.agaaRouting = agaa::AggregateRouting::Fragment;
+        fragments.settings.agaa.routing = agaa::AggregateRouting::Fragment;
         std::vector<uint32_t> bySample = agBufferWords(*device, renderer, samples, size * size);
         std::vector<uint32_t> byFragment = agBufferWords(*device, renderer, fragments, size * size);
         EXPECT_EQ(accumulatedPerPixel(byFragment, 2), accumulatedPerPixel(bySample, 2)) << name;
@@ -192,9 +192,9 @@ TEST(AgaaPathsGpu, PlaneDistanceLightsAFlatFloorOnce) {
     eng::scene::Scene scene = eng::scene::loadTestScene("default");
     agaa::FrameRenderer renderer(*device, scene);
     agaa::RenderRequest position = agaaRequest(8, 2, 96);
-    position.settings.agaaDistance = agaa::AggregateDistance::Position; // the default is the plane distance
+    position.settings.agaa.distance = agaa::AggregateDistance::Position; // the default is the plane distance
     agaa::RenderRequest plane = position;
-    plane.settings.agaaDistance = agaa::AggregateDistance::Plane;
+    plane.settings.agaa.distance = agaa::AggregateDistance::Plane;
     agaa::RenderRequest reference = agaaRequest(8, 1, 96);
     reference.method = "reference";
     agaa::RenderResult ref = renderer.render(reference);

@@ -236,9 +236,10 @@ TEST_P(QualityScene, AgaaIsNeverWorseThanNoAaAndKeepsTheEnergy) {
         const char* path = pathName.c_str();
         for (uint32_t c : {1u, 2u, 4u}) {
             agaa::RenderRequest r = request(scene, path, n, c, size);
-            if (ndf) r.settings.ndf = agaa::namedValue("AGAA_QUALITY_NDF", ndf, agaa::kAggregateNdfNames);
+            if (ndf)
+                r.settings.agaa.ndf = agaa::namedValue("AGAA_QUALITY_NDF", ndf, agaa::kAggregateNdfNames);
             if (const char* d = std::getenv("AGAA_QUALITY_DISTANCE"))
-                r.settings.agaaDistance =
+                r.settings.agaa.distance =
                     agaa::namedValue("AGAA_QUALITY_DISTANCE", d, agaa::kAggregateDistanceNames);
             if (const char* t = std::getenv("AGAA_QUALITY_SEED_THRESHOLD"))
                 r.settings.seedThreshold = float(std::atof(t));
@@ -248,9 +249,9 @@ TEST_P(QualityScene, AgaaIsNeverWorseThanNoAaAndKeepsTheEnergy) {
                                                          : agaa::EffectSettings::ShadowFootprint::Statistics;
             if (std::getenv("AGAA_QUALITY_CURVATURE")) r.settings.curvatureRoughness = true;
             if (const char* t = std::getenv("AGAA_QUALITY_TOLERANCE"))
-                r.settings.agaaTolerance = float(std::atof(t));
+                r.settings.agaa.tolerance = float(std::atof(t));
             if (const char* l = std::getenv("AGAA_QUALITY_ALIAS_LIMIT"))
-                r.settings.agaaAliasLimit =
+                r.settings.agaa.aliasLimit =
                     std::string(l) == "none" ? agaa::kAliasLimitNone : float(std::atof(l));
             const agaa::RenderResult ag = renderer.render(r);
             const double error = eng::io::rmse(encoded(ag.display), truthDisplay);
@@ -272,7 +273,7 @@ TEST_P(QualityScene, AgaaIsNeverWorseThanNoAaAndKeepsTheEnergy) {
                 // The accumulate path's default is never; its shading rate, once set, closes the gap
                 // (docs/decisions/shading-rate-estimate.md, step 6).
                 agaa::RenderRequest withRate = r;
-                withRate.settings.agaaTolerance = agaa::kDefaultTolerance;
+                withRate.settings.agaa.tolerance = agaa::kDefaultTolerance;
                 const double rateError =
                     eng::io::rmse(encoded(renderer.render(withRate).display), truthDisplay);
                 std::printf("[ measured ] %-18s %s (8, %u) at tolerance %g: display RMSE %.4f\n",

@@ -122,7 +122,7 @@ TEST(AgaaClusteringReferenceGpu, GpuMetadataMatchesAlgorithm1InDouble) {
                 // Algorithm 1 with Equation 1, which the double reference implements; the plane
                 // distance (the default) is checked bit for bit against shared/clustering.h by
                 // AgaaClusteringGpu.MetadataMatchesTheCpuReferenceBitForBit.
-                r.settings.agaaDistance = agaa::AggregateDistance::Position;
+                r.settings.agaa.distance = agaa::AggregateDistance::Position;
                 r.extraPasses = [&](eng::rg::Graph& graph, agaa::Technique& tech,
                                     const agaa::FrameInputs& in) {
                     auto& aggregate = dynamic_cast<agaa::AggregateAA&>(tech);
@@ -290,7 +290,7 @@ TEST(AgaaAccumulationReferenceGpu, AgBufferMatchesDoubleSumsOfTheMaterialInputs)
             vk::createBuffer(*device, std::max<VkDeviceSize>(4, VkDeviceSize(size) * size * words * 4),
                              VK_BUFFER_USAGE_TRANSFER_DST_BIT, vk::MemoryUse::Readback, "test.meta");
         agaa::RenderRequest r = agaa::test::request("agaa-accumulate", k.n, k.c, size);
-        r.settings.ndf = agaa::namedValue("ndf", k.ndf, agaa::kAggregateNdfNames);
+        r.settings.agaa.ndf = agaa::namedValue("ndf", k.ndf, agaa::kAggregateNdfNames);
         auto& technique = dynamic_cast<agaa::AggregateAA&>(renderer.technique(r));
         r.extraPasses = [&](eng::rg::Graph& graph, agaa::Technique& tech, const agaa::FrameInputs& in) {
             auto& aggregate = dynamic_cast<agaa::AggregateAA&>(tech);

@@ -89,7 +89,7 @@ TEST(AgaaSamplesGpu, AggregationMatchesAnIndependentCpuAggregation) {
         eng::scene::Scene scene = unshadowed(eng::scene::loadTestScene(k.scene));
         agaa::FrameRenderer renderer(*device, scene);
         agaa::RenderRequest r = request("agaa-samples", k.n, k.c, size);
-        r.settings.ndf = agaa::namedValue("ndf", k.ndf, agaa::kAggregateNdfNames);
+        r.settings.agaa.ndf = agaa::namedValue("ndf", k.ndf, agaa::kAggregateNdfNames);
         shared::AgaaConstants constants{};
         const std::vector<float> e = renderExport(exporter, renderer, r, &constants);
         const bool sggx = std::string(k.ndf) == "sggx";
@@ -369,7 +369,7 @@ TEST(AgaaSamplesGpu, CoverageRoutingIsRefusedByName) {
     eng::scene::Scene scene = eng::scene::loadTestScene("plane");
     agaa::FrameRenderer renderer(*device, scene);
     agaa::RenderRequest r = request("agaa", 8, 2, 64);
-    r.settings.agaaGeneration = agaa::AggregateGeneration::Coverage;
+    r.settings.agaa.generation = agaa::AggregateGeneration::Coverage;
     try {
         renderer.render(r);
         ADD_FAILURE() << "coverage routing must be refused on " << device->caps().deviceName;

@@ -46,7 +46,7 @@ constexpr float kNothingFlagged = 1.0e7f; // above any estimate: 2 * 2 / kMinGgx
 
 agaa::RenderRequest withTolerance(const std::string& method, uint32_t n, uint32_t c, float tolerance) {
     agaa::RenderRequest r = request(method, n, c, kSize);
-    r.settings.agaaTolerance = tolerance;
+    r.settings.agaa.tolerance = tolerance;
     return r;
 }
 
@@ -153,16 +153,16 @@ TEST(ShadingRate, ZeroIsTheReferenceAtTheSameSampleCount) {
         // tile's list: the same image as the per-pixel schedule.
         if (std::string(name) == "metal" || std::string(name) == "spikes") {
             agaa::RenderRequest compact = withTolerance("agaa-samples", 8, 2, 0.0f);
-            compact.settings.agaaLighting = agaa::AggregateShading::Compact;
+            compact.settings.agaa.shading = agaa::AggregateShading::Compact;
             const agaa::RenderResult packed = renderer.render(compact);
             EXPECT_LE(
                 eng::io::rmse(eng::io::srgbEncoded(packed.display), eng::io::srgbEncoded(reference.display)),
                 kPerSampleAgreement)
                 << name << ", compacted";
             agaa::RenderRequest some = withTolerance("agaa-samples", 8, 2, 30.0f);
-            some.settings.agaaLighting = agaa::AggregateShading::Registers;
+            some.settings.agaa.shading = agaa::AggregateShading::Registers;
             const agaa::RenderResult registers = renderer.render(some);
-            some.settings.agaaLighting = agaa::AggregateShading::Compact;
+            some.settings.agaa.shading = agaa::AggregateShading::Compact;
             EXPECT_EQ(maxAbsDifference(renderer.render(some).display, registers.display), 0.0)
                 << name << ": the schedules differ at tolerance 30";
         }
@@ -370,7 +370,7 @@ void checkFlagCase(const FlagCase& k, const char* method, float unflagged,
     const float limit = k.defaults ? agaa::kDefaultAliasLimit : float(values[values.size() * 3 / 4]);
     ASSERT_LT(tolerance, limit) << k.scene;
     agaa::RenderRequest banded = withTolerance(method, 8, k.c, tolerance);
-    banded.settings.agaaAliasLimit = limit;
+    banded.settings.agaa.aliasLimit = limit;
     const EstimateInputs run = render(banded);
     const FlagComparison f = compareFlags(cpuEstimates(run.records, 8, k.c), run.frame, aggregates.frame,
                                           tolerance, limit, k.c, k.scene);
@@ -540,7 +540,7 @@ TEST(ShadingRate, TheDebugViewShowsTheFlaggedPixels) {
         for (const agaa::VariantChoice& v : view.variants)
             if (v.effect == "shading-rate") rate = v.variant;
         EXPECT_NE(rate.find("per sample where"), std::string::npos) << method << ": " << rate;
-        r.settings.agaaTolerance = -1.0f; // never: nothing to show
+        r.settings.agaa.tolerance = -1.0f; // never: nothing to show
         EXPECT_THROW(renderer.render(r), std::invalid_argument) << method;
     }
     agaa::test::expectNoValidationErrors(*device);

@@ -65,7 +65,7 @@ constexpr std::array<const char*, kStatistics> kStatisticNames = {
 // AGAA as the paper has it: every pixel lit through its aggregates, which the bookkeeping then
 // replaces by the reference's where a rule flags it.
 agaa::RenderRequest paperAgaa(agaa::RenderRequest r) {
-    r.settings.agaaTolerance = agaa::kToleranceNever;
+    r.settings.agaa.tolerance = agaa::kToleranceNever;
     return r;
 }
 
@@ -271,7 +271,7 @@ TEST(ShadingRateStudy, TheToleranceTradesShadingEventsForError) {
         double previousEvents = 0.0;
         for (float t : tolerances) {
             agaa::RenderRequest r = agaa::test::request("agaa-samples", kSamples, kAggregates, kSize);
-            r.settings.agaaTolerance = t;
+            r.settings.agaa.tolerance = t;
             const agaa::RenderResult frame = renderer.render(r);
             const double error = eng::io::rmse(eng::io::srgbEncoded(frame.display), truthDisplay);
             std::printf(" %s: %.4f, %.2f ev |", t < 0.0f ? "never" : std::to_string(int(t)).c_str(), error,

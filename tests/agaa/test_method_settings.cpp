@@ -11,6 +11,7 @@
 
 #include <set>
 #include <stdexcept>
+#include <type_traits>
 
 namespace {
 
@@ -62,19 +63,13 @@ TEST(MethodSettings, EveryOptionIsDeclaredOnceWithItsDocAndMethods) {
 TEST(MethodSettings, AgaaDefaultsAreTheHostApisDefaults) {
     const MethodSettings m;
     const agaa::AggregateSettings a;
-    EXPECT_EQ(m.agaaDistance, a.distance);
-    EXPECT_EQ(m.ndf, a.ndf);
-    EXPECT_EQ(m.agaaLighting, a.shading);
-    EXPECT_EQ(m.agaaRouting, a.routing);
-    EXPECT_EQ(m.agaaAtomics, a.atomics);
-    EXPECT_EQ(m.agaaSubgroupReduce, a.subgroupReduction);
-    EXPECT_EQ(m.agaaGeneration, a.generation);
-    EXPECT_EQ(m.agaaAliasLimit, a.aliasLimit);
+    // AGAA's own choices are one struct on both sides (AggregateChoices): the same defaults by
+    // construction. What the method table shares with every method is copied.
+    static_assert(std::is_base_of_v<agaa::AggregateChoices, agaa::AggregateSettings>);
+    static_assert(std::is_same_v<decltype(MethodSettings::agaa), agaa::AggregateChoices>);
     EXPECT_EQ(m.samples, a.samples);
     EXPECT_EQ(m.aggregates, a.aggregates);
-    EXPECT_EQ(m.agaaTolerance, a.tolerance);
     EXPECT_EQ(a.tolerance, agaa::kToleranceAuto);
-    EXPECT_EQ(m.agaaAliasLimit, a.aliasLimit);
     EXPECT_EQ(a.aliasLimit, agaa::kDefaultAliasLimit);
     EXPECT_EQ(agaa::findMethodOption("agaa-tolerance")->defaultText, "auto");
     EXPECT_EQ(agaa::findMethodOption("agaa-alias-limit")->defaultText, "5000");
@@ -108,9 +103,9 @@ TEST(MethodSettings, EveryOptionRoundTripsAndMovesTheCacheKey) {
     // the same settings with three sets of builds.
     static const uint32_t buildA[] = {0x07230203u}, buildB[] = {0x07230203u, 0u};
     MethodSettings replaced, replacedOther, replacedElsewhere;
-    replaced.agaaPrograms["agaa/lighting.comp"] = buildA;
-    replacedOther.agaaPrograms["agaa/lighting.comp"] = buildB;
-    replacedElsewhere.agaaPrograms["agaa/visibility.frag"] = buildA;
+    replaced.agaa.programs["agaa/lighting.comp"] = buildA;
+    replacedOther.agaa.programs["agaa/lighting.comp"] = buildB;
+    replacedElsewhere.agaa.programs["agaa/visibility.frag"] = buildA;
     const std::string keys[] = {defaultKey, agaa::methodSettingsKey(replaced),
                                 agaa::methodSettingsKey(replacedOther),
                                 agaa::methodSettingsKey(replacedElsewhere)};
@@ -149,7 +144,7 @@ TEST(MethodSettings, BadValuesNameTheFlagAndTheAllowedValues) {
     EXPECT_EQ(message("surfaces", "default"), "accepted");
     EXPECT_EQ(message("aggregates", "default"), "--aggregates 'default' is not an integer in 1..4")
         << "c's default does not depend on the method: it is 2";
-    EXPECT_EQ(s.agaaGeneration, agaa::AggregateGeneration::Coverage);
+    EXPECT_EQ(s.agaa.generation, agaa::AggregateGeneration::Coverage);
     EXPECT_EQ(s.aggregates, 2u) << "a refused value leaves the setting alone";
 }
 

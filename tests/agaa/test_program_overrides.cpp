@@ -33,13 +33,13 @@ TEST(AgaaProgramOverrides, ReplaceTheShippingProgramAndOnlyIt) {
     const agaa::RenderResult shipping = renderer.render(planeRequest());
 
     agaa::RenderRequest same = planeRequest();
-    same.settings.agaaPrograms["agaa/lighting_gbuffer_shadow.comp"] = kAgaaLightingGbufferShadowComp;
+    same.settings.agaa.programs["agaa/lighting_gbuffer_shadow.comp"] = kAgaaLightingGbufferShadowComp;
     const agaa::RenderResult replacedBySelf = renderer.render(same);
     EXPECT_EQ(replacedBySelf.hdr.rgba, shipping.hdr.rgba) << "the shipping build as its own replacement";
     EXPECT_EQ(replacedBySelf.shadingEvents, shipping.shadingEvents);
 
     agaa::RenderRequest noShading = planeRequest();
-    noShading.settings.agaaPrograms["agaa/lighting_gbuffer_shadow.comp"] =
+    noShading.settings.agaa.programs["agaa/lighting_gbuffer_shadow.comp"] =
         kTestsAgaaLightingGbufferShadowNoShadingComp;
     const agaa::RenderResult replaced = renderer.render(noShading);
     // Step 3 compiled out: no aggregate is lit, so no covered pixel keeps the shipping colour.
@@ -63,7 +63,7 @@ TEST(AgaaProgramOverrides, ANameAgaaDoesNotRunIsRefusedByName) {
     const eng::scene::Scene scene = eng::scene::loadTestScene("plane");
     agaa::FrameRenderer renderer(*device, scene);
     agaa::RenderRequest r = planeRequest();
-    r.settings.agaaPrograms["agaa/lighting_gbufer.comp"] = kAgaaLightingGbufferShadowComp; // misspelt
+    r.settings.agaa.programs["agaa/lighting_gbufer.comp"] = kAgaaLightingGbufferShadowComp; // misspelt
     try {
         renderer.render(r);
         FAIL() << "a replacement for a program AGAA does not run must be refused";

@@ -29,7 +29,7 @@ RenderRequest GoldenCase::request(uint32_t size) const {
     r.method = method;
     r.settings.samples = samples;
     r.settings.aggregates = aggregates;
-    if (tolerance) r.settings.agaaTolerance = *tolerance;
+    if (tolerance) r.settings.agaa.tolerance = *tolerance;
     r.view.width = r.view.height = size;
     return r;
 }

@@ -24,7 +24,7 @@ struct GoldenCase {
     std::string method; // agaa/methods.h
     uint32_t samples = 8;
     uint32_t aggregates = 2;
-    // AGAA's shading rate (MethodSettings::agaaTolerance); none: the method's default, as a host's
+    // AGAA's shading rate (MethodSettings::agaa.tolerance); none: the method's default, as a host's
     // cases have it. The built-in cases store AGAA as the paper has it (never), which the shading
     // rate must leave bit for bit, and the samples path's default once per scene.
     std::optional<float> tolerance;

@@ -136,8 +136,8 @@ TEST(RecorderHostContent, AHostsContentRecordsAsOurScenesDoesBitForBit) {
     const eng::scene::Scene scene = eng::scene::loadBuiltin("railings");
     eng::frame::GpuScene gpuScene(*device, scene);
     MethodSettings settings; // the one accumulation build the host has (32-bit atomics, no subgroups)
-    settings.agaaAtomics = AggregateAtomics::Bits32;
-    settings.agaaSubgroupReduce = SubgroupReduction::Off;
+    settings.agaa.atomics = AggregateAtomics::Bits32;
+    settings.agaa.subgroupReduction = SubgroupReduction::Off;
     std::unique_ptr<Technique> ours = createTechnique("agaa", *device, gpuScene, settings);
     HostMesh mesh = hostMesh(scene);
     const TechniqueContent content{hostTraits(mesh, scene.lights)};

@@ -60,7 +60,7 @@ TEST_P(GeometryContract, AHostDrawerDrawsEveryRasterPassAndGetsTheSceneDrawersIm
     const eng::scene::Scene scene = eng::scene::loadBuiltin("railings");
     eng::frame::GpuScene gpuScene(*device, scene);
     MethodSettings settings;
-    settings.agaaGeneration = GetParam().generation;
+    settings.agaa.generation = GetParam().generation;
     std::unique_ptr<Technique> technique = createTechnique(GetParam().method, *device, gpuScene, settings);
     const std::vector<float> own = renderFrame(*device, gpuScene, *technique, nullptr);
 

@@ -76,9 +76,9 @@ TEST_P(HostGeometryCase, AHostsOwnVerticesAndMaterialShadersMatchTheScenesOwnDra
     eng::frame::GpuScene gpuScene(*device, scene);
     MethodSettings settings;
     // The accumulate path in the one build this host has (RasterPass::defines empty).
-    settings.agaaGeneration = GetParam().generation;
-    settings.agaaAtomics = AggregateAtomics::Bits32;
-    settings.agaaSubgroupReduce = SubgroupReduction::Off;
+    settings.agaa.generation = GetParam().generation;
+    settings.agaa.atomics = AggregateAtomics::Bits32;
+    settings.agaa.subgroupReduction = SubgroupReduction::Off;
     std::unique_ptr<Technique> technique = createTechnique(GetParam().method, *device, gpuScene, settings);
     ASSERT_FALSE(effectiveFeatures(sceneTraits(scene), settings.effects).vertexColors);
     const std::vector<float> own = render(*device, gpuScene, *technique, nullptr);

@@ -57,9 +57,10 @@ TEST(Soak, AThousandFramesSwitchingSettingsHoldMemoryAndObjectsFlat) {
             r.method = k.method;
             r.settings.samples = k.n;
             r.settings.aggregates = k.c;
-            r.settings.agaaLighting =
+            r.settings.agaa.shading =
                 agaa::namedValue("agaaLighting", k.lighting, agaa::kAggregateShadingNames);
-            r.settings.agaaRouting = agaa::namedValue("agaaRouting", k.routing, agaa::kAggregateRoutingNames);
+            r.settings.agaa.routing =
+                agaa::namedValue("agaaRouting", k.routing, agaa::kAggregateRoutingNames);
             r.view.width = r.view.height = 64;
             r.timedFrames = kFramesPerSwitch;
             agaa::RenderResult result = renderer.render(r);

@@ -270,7 +270,7 @@ int main(int argc, char** argv) {
                         namespace parts = agaa::timings;
                         auto without = [&](agaa::ProgramOverrides builds) {
                             agaa::RenderRequest r = request(job);
-                            r.settings.agaaPrograms = std::move(builds);
+                            r.settings.agaa.programs = std::move(builds);
                             return renderer.render(r);
                         };
                         agaa::RenderResult noShading = without(parts::lightingWithoutShading());
