@@ -4,7 +4,8 @@
 // own push constant), its shaders (shaders/glsl/tests/host_*, which include only the module's
 // raster includes), its drawer (agaa::GeometryDrawer) and what it tells the module of its content
 // (agaa::SceneTraits). Built here from a built-in scene's triangles, as a host's importer would
-// from its own files.
+// from its own files. Header-only and on installed headers alone: the package test's consumer
+// (tests/package) builds it against the installed package with the shaders it compiled itself.
 
 #include "agaa/common/raster_pass.h"
 #include "agaa/common/scene_traits.h"
@@ -13,12 +14,6 @@
 #include "engine/vk/device.h"
 #include "engine/vk/pipeline.h"
 #include "engine/vk/resources.h"
-#include "shaders/tests/host_accumulation_frag.h"
-#include "shaders/tests/host_gbuffer_frag.h"
-#include "shaders/tests/host_gbuffer_sample_rate_frag.h"
-#include "shaders/tests/host_gbuffer_vert.h"
-#include "shaders/tests/host_shadow_vert.h"
-#include "shaders/tests/host_visibility_frag.h"
 
 #include <glm/glm.hpp>
 
@@ -119,9 +114,16 @@ inline SceneTraits hostTraits(const HostMesh& mesh, const std::vector<eng::scene
     return t;
 }
 
+// The host's SPIR-V, one program per stage and output (shaders/glsl/tests/host_*): embedded in the
+// node tests (tests/node/host_programs.h), read from files by the package test's consumer.
+struct HostPrograms {
+    std::span<const uint32_t> vertex, shadowVertex, gbuffer, gbufferSampleRate, visibility, accumulation;
+};
+
 class HostGeometry final : public GeometryDrawer {
   public:
-    HostGeometry(eng::vk::Device& device, HostMesh mesh) : m_device(device), m_mesh(std::move(mesh)) {
+    HostGeometry(eng::vk::Device& device, HostMesh mesh, HostPrograms programs)
+        : m_device(device), m_mesh(std::move(mesh)), m_programs(programs) {
         m_vertices = eng::vk::createBuffer(device, m_mesh.vertices.size() * sizeof(HostVertex),
                                            VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, eng::vk::MemoryUse::Upload,
                                            "host.vertices");
@@ -153,7 +155,7 @@ class HostGeometry final : public GeometryDrawer {
         for (int twoSided = 0; twoSided < 2; ++twoSided) {
             eng::vk::GraphicsPipelineDesc d = rasterPipelineState(pass, twoSided != 0);
             const bool shadow = pass.output == RasterOutput::ShadowDepth;
-            d.vertex = shadow ? std::span<const uint32_t>(kTestsHostShadowVert) : kTestsHostGbufferVert;
+            d.vertex = shadow ? m_programs.shadowVertex : m_programs.vertex;
             d.fragment = fragment;
             d.layout = p.layout.layout;
             d.specialization = pass.specialization;
@@ -186,18 +188,17 @@ class HostGeometry final : public GeometryDrawer {
 
   private:
     // This host's builds: what it draws, by the pass's output and build (RasterPass::defines).
-    static std::span<const uint32_t> fragmentCode(const RasterPass& pass) {
+    std::span<const uint32_t> fragmentCode(const RasterPass& pass) const {
         const bool plainBuild = pass.defines.empty();
         switch (pass.output) {
         case RasterOutput::SampleGBuffer:
-            return pass.sampleRateShading ? std::span<const uint32_t>(kTestsHostGbufferSampleRateFrag)
-                                          : kTestsHostGbufferFrag;
+            return pass.sampleRateShading ? m_programs.gbufferSampleRate : m_programs.gbuffer;
         case RasterOutput::ShadowDepth:
             return {};
         case RasterOutput::AggregateVisibility:
-            return kTestsHostVisibilityFrag;
+            return m_programs.visibility;
         case RasterOutput::AggregateAccumulation:
-            if (plainBuild) return kTestsHostAccumulationFrag;
+            if (plainBuild) return m_programs.accumulation;
             break;
         default:
             break;
@@ -220,6 +221,7 @@ class HostGeometry final : public GeometryDrawer {
 
     eng::vk::Device& m_device;
     HostMesh m_mesh;
+    HostPrograms m_programs;
     eng::vk::Buffer m_vertices, m_indices;
     std::vector<Pass> m_passes;
 };

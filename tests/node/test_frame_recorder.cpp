@@ -11,7 +11,7 @@
 #include "engine/scene/scenegen.h"
 #include "engine/vk/check.h"
 #include "tests/gpu/gpu_test_support.h"
-#include "tests/node/host_content.h"
+#include "tests/node/host_programs.h"
 
 #include <gtest/gtest.h>
 
@@ -141,7 +141,7 @@ TEST(RecorderHostContent, AHostsContentRecordsAsOurScenesDoesBitForBit) {
     std::unique_ptr<Technique> ours = createTechnique("agaa", *device, gpuScene, settings);
     HostMesh mesh = hostMesh(scene);
     const TechniqueContent content{hostTraits(mesh, scene.lights)};
-    HostGeometry host(*device, std::move(mesh));
+    HostGeometry host(*device, std::move(mesh), embeddedHostPrograms());
     const eng::frame::GpuEnvironment standIn(*device, nullptr);
     const EnvironmentBindings environment = environmentBindings(standIn);
     std::unique_ptr<Technique> hosts = createTechnique("agaa", *device, content, settings);

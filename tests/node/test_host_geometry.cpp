@@ -15,7 +15,7 @@
 #include "engine/vk/descriptors.h"
 #include "engine/vk/resources.h"
 #include "tests/gpu/gpu_test_support.h"
-#include "tests/node/host_content.h"
+#include "tests/node/host_programs.h"
 #include "tests/node/node_test_support.h"
 
 #include <gtest/gtest.h>
@@ -86,7 +86,7 @@ TEST_P(HostGeometryCase, AHostsOwnVerticesAndMaterialShadersMatchTheScenesOwnDra
     // the stand-in of content without one (railings has none).
     HostMesh mesh = hostMesh(scene);
     const SceneTraits traits = hostTraits(mesh, scene.lights);
-    HostGeometry host(*device, std::move(mesh));
+    HostGeometry host(*device, std::move(mesh), embeddedHostPrograms());
     ASSERT_FALSE(traits.features.hasEnvironment());
     const eng::frame::GpuEnvironment standIn(*device, nullptr);
     const EnvironmentBindings environment = environmentBindings(standIn);
@@ -121,7 +121,7 @@ TEST(HostContent, AFrameWithoutTheHostsDrawerOrEnvironmentIsRefusedByName) {
     auto device = makeValidatedDevice();
     const eng::scene::Scene scene = eng::scene::loadBuiltin("railings");
     eng::frame::GpuScene gpuScene(*device, scene);
-    HostGeometry host(*device, hostMesh(scene));
+    HostGeometry host(*device, hostMesh(scene), embeddedHostPrograms());
     std::unique_ptr<Technique> technique =
         createTechnique("reference", *device, TechniqueContent{sceneTraits(scene)}, MethodSettings{});
     auto refusal = [&](GeometryDrawer* geometry) -> std::string {
@@ -149,7 +149,7 @@ TEST(HostShadowMaps, AHostsOwnShadowMapsReplaceTheModulesBitForBit) {
     std::unique_ptr<Technique> technique = createTechnique("reference", *device, gpuScene, settings);
     const eng::scene::SceneFeatures features = effectiveFeatures(sceneTraits(scene), settings.effects);
     ASSERT_FALSE(features.shadowedLights.empty());
-    HostGeometry host(*device, hostMesh(scene));
+    HostGeometry host(*device, hostMesh(scene), embeddedHostPrograms());
     const std::vector<float> own = render(*device, gpuScene, *technique, &host);
     ASSERT_EQ(host.shadowMapsDrawn, 1);
 

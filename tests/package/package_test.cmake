@@ -1,7 +1,10 @@
 # The installed package from outside (issue 18): installs the build to a temporary prefix,
 # configures tests/package/consumer against it with find_package(agaa CONFIG REQUIRED) (no
 # repository path reaches it), builds it with the build's own compiler and runs it: one small
-# frame on lavapipe under the validation layer, which must be validation-clean and non-blank.
+# frame on lavapipe under the validation layer, which must be validation-clean and non-blank; then,
+# for reference, no-AA, Simple/Complex and AGAA's two paths, the same frame as a host's own content
+# (tests/node/host_content.h and shaders/glsl/tests/host_*, built here against the installed
+# headers and GLSL alone; no GpuScene), which must match the scene's frame (HDR RMSE at most 1e-4).
 #   cmake -DBUILD=<build> -DSOURCE=<repo> -DWORK=<folder> -DCXX=<compiler> [-DLAUNCHER=ccache]
 #         -DGENERATOR=<generator> [-DCXX_FLAGS=...] [-DLINKER_FLAGS=...] -P package_test.cmake
 foreach(var BUILD SOURCE WORK CXX GENERATOR)
@@ -73,12 +76,18 @@ if(DEFINED GLSLANG)
     run("compiling the host's ${shader} against the installed GLSL" ${GLSLANG} -V --target-env vulkan1.3
         -I${prefix}/include/agaa/glsl -I${host_glsl} -o ${host_glsl}/${shader}.spv ${host_glsl}/tests/${shader})
   endforeach()
+  run("compiling the host's sample-rate G-buffer against the installed GLSL" ${GLSLANG} -V
+      --target-env vulkan1.3 -DHOST_SAMPLE_RATE=1 -I${prefix}/include/agaa/glsl -I${host_glsl}
+      -o ${host_glsl}/host_gbuffer_sample_rate.frag.spv ${host_glsl}/tests/host_gbuffer.frag)
   message(STATUS "package test: a host's shaders build against include/agaa/glsl alone")
 endif()
 
+# The host's C++ (its vertex layout, material, drawer and traits), copied out of the source tree
+# alone so that no other repository header can reach the consumer.
+file(COPY ${SOURCE}/tests/node/host_content.h DESTINATION ${WORK}/host_include/tests/node)
 set(args -S ${SOURCE}/tests/package/consumer -B ${WORK}/build -G ${GENERATOR} -DCMAKE_BUILD_TYPE=Release
          -DCMAKE_PREFIX_PATH=${prefix} -DCMAKE_CXX_COMPILER=${CXX} "-DCMAKE_CXX_FLAGS=${CXX_FLAGS}"
-         "-DCMAKE_EXE_LINKER_FLAGS=${LINKER_FLAGS}")
+         "-DCMAKE_EXE_LINKER_FLAGS=${LINKER_FLAGS}" -DHOST_INCLUDE=${WORK}/host_include)
 if(LAUNCHER)
   list(APPEND args -DCMAKE_CXX_COMPILER_LAUNCHER=${LAUNCHER})
 endif()
@@ -88,4 +97,13 @@ run("running the consumer" ${WORK}/build/consumer agaa plane 32)
 message(STATUS "${last_output}")
 if(NOT last_output MATCHES "not blank, 0 validation error")
   message(FATAL_ERROR "package test: the consumer's frame is not a clean non-blank one:\n${last_output}")
+endif()
+# As a host with its own content: the technique from the host's traits alone, the host's drawer,
+# vertex layout, material and the shaders compiled above, against the scene's own frame.
+if(DEFINED GLSLANG)
+  foreach(method reference noaa simple-complex agaa agaa-accumulate)
+    run("running the consumer as a host's content (${method})" ${WORK}/build/consumer ${method} railings 32
+        ${host_glsl})
+    message(STATUS "${last_output}")
+  endforeach()
 endif()
