@@ -32,6 +32,7 @@ void FrameRecorder::record(VkCommandBuffer cmd, Technique& technique, const eng:
     const HostTargetVersions out = m_writer.write(*frame, technique.addPasses(*frame, in), in, targets);
     frame->markOutput(out.color);
     if (out.depth.valid()) frame->markOutput(out.depth);
+    if (out.hdr.valid()) frame->markOutput(out.hdr);
     frame->compile();
     eng::rg::Graph::ExecuteInfo info;
     info.cmd = cmd;

@@ -49,6 +49,39 @@ void check(const HostTarget& target, const char* what, uint32_t w, uint32_t h) {
                                     std::to_string(w) + "x" + std::to_string(h));
 }
 
+// `source` into the host's `target` by a 1:1 blit: a format conversion, never a resample. Returns
+// the target's version after it.
+rg::Texture blitInto(rg::Graph& graph, const char* name, rg::Texture source, const HostTarget& target,
+                     uint32_t w, uint32_t h) {
+    const rg::Texture imported = graph.importTexture(name, target.texture, target.initial, target.final);
+    struct Blit {
+        rg::Texture source, target;
+    };
+    const Blit& blit = graph.addPass<Blit>(
+        name, rg::PassKind::Transfer,
+        [&](rg::Builder& b, Blit& d) {
+            d.source = b.read(source, rg::Use::TransferSrc);
+            d.target = b.write(imported, rg::Use::TransferDst);
+        },
+        [w, h](const rg::Context& ctx, const Blit& d) {
+            VkImageBlit2 region{VK_STRUCTURE_TYPE_IMAGE_BLIT_2};
+            region.srcSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+            region.dstSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+            region.srcOffsets[1] = {int32_t(w), int32_t(h), 1};
+            region.dstOffsets[1] = {int32_t(w), int32_t(h), 1};
+            VkBlitImageInfo2 info{VK_STRUCTURE_TYPE_BLIT_IMAGE_INFO_2};
+            info.srcImage = ctx.texture(d.source).image;
+            info.srcImageLayout = rg::useInfo(rg::Use::TransferSrc).layout; // the graph's table
+            info.dstImage = ctx.texture(d.target).image;
+            info.dstImageLayout = rg::useInfo(rg::Use::TransferDst).layout;
+            info.regionCount = 1;
+            info.pRegions = &region;
+            info.filter = VK_FILTER_NEAREST;
+            vkCmdBlitImage2(ctx.cmd(), &info);
+        });
+    return blit.target;
+}
+
 } // namespace
 
 HostTargetVersions HostTargetWriter::write(rg::Graph& graph, const FrameTargets& frame, const FrameInputs& in,
@@ -57,35 +90,15 @@ HostTargetVersions HostTargetWriter::write(rg::Graph& graph, const FrameTargets&
     check(host.color, "colour", w, h);
     if (vk::isDepthFormat(host.color.texture.desc.format))
         throw std::invalid_argument("host colour target has a depth format");
-    const rg::Texture color =
-        graph.importTexture("host.color", host.color.texture, host.color.initial, host.color.final);
-    struct Blit {
-        rg::Texture display, color;
-    };
-    const Blit& blit = graph.addPass<Blit>(
-        "host.color", rg::PassKind::Transfer,
-        [&](rg::Builder& b, Blit& d) {
-            d.display = b.read(frame.display, rg::Use::TransferSrc);
-            d.color = b.write(color, rg::Use::TransferDst);
-        },
-        [w, h](const rg::Context& ctx, const Blit& d) {
-            const rg::PhysicalTexture& dst = ctx.texture(d.color);
-            VkImageBlit2 region{VK_STRUCTURE_TYPE_IMAGE_BLIT_2};
-            region.srcSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-            region.dstSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-            region.srcOffsets[1] = {int32_t(w), int32_t(h), 1};
-            region.dstOffsets[1] = {int32_t(w), int32_t(h), 1};
-            VkBlitImageInfo2 info{VK_STRUCTURE_TYPE_BLIT_IMAGE_INFO_2};
-            info.srcImage = ctx.texture(d.display).image;
-            info.srcImageLayout = rg::useInfo(rg::Use::TransferSrc).layout; // the graph's table
-            info.dstImage = dst.image;
-            info.dstImageLayout = rg::useInfo(rg::Use::TransferDst).layout;
-            info.regionCount = 1;
-            info.pRegions = &region;
-            info.filter = VK_FILTER_NEAREST; // 1:1: a format conversion, never a resample
-            vkCmdBlitImage2(ctx.cmd(), &info);
-        });
-    HostTargetVersions out{blit.color, {}};
+    HostTargetVersions out{blitInto(graph, "host.color", frame.display, host.color, w, h), {}, {}};
+    if (host.hdr) {
+        check(*host.hdr, "HDR", w, h);
+        if (host.hdr->texture.desc.format != VK_FORMAT_R32G32B32A32_SFLOAT)
+            throw std::invalid_argument("host HDR target: format " +
+                                        std::to_string(int(host.hdr->texture.desc.format)) +
+                                        " is not R32G32B32A32_SFLOAT (the node's HDR, copied exactly)");
+        out.hdr = blitInto(graph, "host.hdr", frame.hdr, *host.hdr, w, h);
+    }
     if (!host.depth) return out;
     if (!frame.depth.valid())
         throw std::invalid_argument("host depth target given, but this technique hands back no depth");

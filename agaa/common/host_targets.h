@@ -17,7 +17,8 @@
 //    drawing after the node must use the same projection (FrameConstants::proj) and a GREATER /
 //    GREATER_OR_EQUAL depth test. D32_SFLOAT or D32_SFLOAT_S8_UINT (stencil left as it was),
 //    single-sample, frame-sized, TRANSFER_DST usage.
-// HDR stays a graph resource (FrameTargets::hdr) for a host's own post-processing.
+//  - hdr (optional) <- FrameTargets::hdr, copied exactly, for a host's own post-processing (a host
+//    of our graph can read FrameTargets::hdr itself).
 //
 // Lifetimes: the writer owns two compute pipelines and must outlive every submitted graph that
 // holds its passes; it keeps no per-frame state, so any number of views and frames may be
@@ -41,11 +42,14 @@ struct HostTarget {
 struct HostTargets {
     HostTarget color;                // required
     std::optional<HostTarget> depth; // nullopt: the node leaves the host's depth alone
+    // FrameTargets::hdr copied exactly (R32G32B32A32_SFLOAT, single-sample, frame-sized,
+    // TRANSFER_DST), for a host's own post-processing; nullopt: none.
+    std::optional<HostTarget> hdr;
 };
 
 // The host targets as graph resources after the node wrote them, for the host's later passes.
 struct HostTargetVersions {
-    eng::rg::Texture color, depth; // depth invalid without a host depth target
+    eng::rg::Texture color, depth, hdr; // depth, hdr: invalid without those host targets
 };
 
 class HostTargetWriter {

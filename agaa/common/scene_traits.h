@@ -20,6 +20,18 @@ class GpuScene;
 
 namespace agaa {
 
+// The content types a host fills, under the module's names (engine/scene/scene.h and
+// scene_features.h say what each field means).
+using Light = eng::scene::Light;
+using LightType = eng::scene::LightType;
+using Camera = eng::scene::Camera;
+using Bounds = eng::scene::Bounds;
+using SceneFeatures = eng::scene::SceneFeatures;
+using eng::scene::kGlossyMetallic;
+using eng::scene::kGlossyRoughness;
+using eng::scene::kMaxShadowedLights;
+using eng::scene::kNearMirrorRoughness;
+
 struct SceneTraits {
     std::string source; // names the content in messages, e.g. a file or "host:<name>"
     // Derived from the content, never forced: EffectSettings::forceAll forces them

@@ -1,19 +1,22 @@
 #pragma once
-// The host's programs (tests/node/host_content.h) as the node tests embed them.
+// The host sample's programs (samples/host_engine/shaders) as the node tests embed them.
 
-#include "shaders/tests/host_accumulation_frag.h"
-#include "shaders/tests/host_gbuffer_frag.h"
-#include "shaders/tests/host_gbuffer_sample_rate_frag.h"
-#include "shaders/tests/host_gbuffer_vert.h"
-#include "shaders/tests/host_shadow_vert.h"
-#include "shaders/tests/host_visibility_frag.h"
-#include "tests/node/host_content.h"
+#include "shaders/host_engine/shaders/host_accumulation_frag.h"
+#include "shaders/host_engine/shaders/host_gbuffer_frag.h"
+#include "shaders/host_engine/shaders/host_gbuffer_sample_rate_frag.h"
+#include "shaders/host_engine/shaders/host_gbuffer_vert.h"
+#include "shaders/host_engine/shaders/host_shadow_vert.h"
+#include "shaders/host_engine/shaders/host_visibility_frag.h"
+#include "tests/node/host_mesh.h"
 
 namespace agaa::test {
 
+using host_engine::HostPrograms;
+
 inline HostPrograms embeddedHostPrograms() {
-    return {kTestsHostGbufferVert,           kTestsHostShadowVert,     kTestsHostGbufferFrag,
-            kTestsHostGbufferSampleRateFrag, kTestsHostVisibilityFrag, kTestsHostAccumulationFrag};
+    return {kHostEngineShadersHostGbufferVert,    kHostEngineShadersHostShadowVert,
+            kHostEngineShadersHostGbufferFrag,    kHostEngineShadersHostGbufferSampleRateFrag,
+            kHostEngineShadersHostVisibilityFrag, kHostEngineShadersHostAccumulationFrag};
 }
 
 } // namespace agaa::test

@@ -128,7 +128,7 @@ TEST_P(Recorder, TheHostsCommandBufferGetsTheGraphPathsImageBitForBit) {
 INSTANTIATE_TEST_SUITE_P(Node, Recorder, ::testing::Values("agaa", "reference"));
 
 // A host's content through its own command buffer: the technique created from the host's traits
-// alone (tests/node/host_content.h), its drawer and the stand-in environment handed to
+// alone (samples/host_engine/host_content.h), its drawer and the stand-in environment handed to
 // FrameRecorder::record, its own camera. Its image is what our scene's technique records, bit for
 // bit.
 TEST(RecorderHostContent, AHostsContentRecordsAsOurScenesDoesBitForBit) {
@@ -140,7 +140,7 @@ TEST(RecorderHostContent, AHostsContentRecordsAsOurScenesDoesBitForBit) {
     settings.agaa.subgroupReduction = SubgroupReduction::Off;
     std::unique_ptr<Technique> ours = createTechnique("agaa", *device, gpuScene, settings);
     HostMesh mesh = hostMesh(scene);
-    const TechniqueContent content{hostTraits(mesh, scene.lights)};
+    const TechniqueContent content{hostTraits(mesh, scene.lights, "host:railings")};
     HostGeometry host(*device, std::move(mesh), embeddedHostPrograms());
     const eng::frame::GpuEnvironment standIn(*device, nullptr);
     const EnvironmentBindings environment = environmentBindings(standIn);

@@ -1,7 +1,7 @@
 // Issue 50, the geometry and material contract from a host's side (agaa/common/raster_pass.h): a
 // drawer with its own vertex format (interleaved position and normal, 16-bit indices with a base
 // vertex per draw), its own buffers, its own material (a constant per draw, in its own push
-// constant) and its own shaders (shaders/glsl/tests/host_*), which include only the module's
+// constant) and its own shaders (samples/host_engine/shaders), which include only the module's
 // raster includes (shaders/glsl/raster/). It draws the built-in scene's triangles; the methods'
 // images must match what this project's own drawer makes of the same scene within display RMSE
 // 1e-4 (the issue's bound), validation-clean.
@@ -85,7 +85,7 @@ TEST_P(HostGeometryCase, AHostsOwnVerticesAndMaterialShadersMatchTheScenesOwnDra
     // The host's technique knows no GpuScene: the host's traits, its drawer, and its environment,
     // the stand-in of content without one (railings has none).
     HostMesh mesh = hostMesh(scene);
-    const SceneTraits traits = hostTraits(mesh, scene.lights);
+    const SceneTraits traits = hostTraits(mesh, scene.lights, "host:railings");
     HostGeometry host(*device, std::move(mesh), embeddedHostPrograms());
     ASSERT_FALSE(traits.features.hasEnvironment());
     const eng::frame::GpuEnvironment standIn(*device, nullptr);

@@ -35,8 +35,14 @@ function(_agaa_camel out text)
 endfunction()
 
 function(agaa_embed_shaders)
-  cmake_parse_arguments(ARG "" "TARGET" "PROGRAMS" ${ARGN})
+  cmake_parse_arguments(ARG "" "TARGET;ROOT" "PROGRAMS" ${ARGN})
+  # The programs' folder: shaders/glsl, or ROOT (a sample's own shaders), which then include the
+  # module's GLSL from shaders/glsl as a host's do from <prefix>/include/agaa/glsl.
   set(glsl_root ${PROJECT_SOURCE_DIR}/shaders/glsl)
+  set(module_glsl ${glsl_root})
+  if(ARG_ROOT)
+    set(glsl_root ${ARG_ROOT})
+  endif()
   set(out_root ${PROJECT_BINARY_DIR}/generated/${ARG_TARGET})
   set(raws "")
   set(index_includes "")
@@ -92,7 +98,7 @@ function(agaa_embed_shaders)
       OUTPUT ${raw}
       BYPRODUCTS ${header}
       COMMAND ${CMAKE_COMMAND} -E make_directory ${out_root}/shaders/${dir}
-      COMMAND ${GLSLANG_VALIDATOR} -V --target-env vulkan1.3 -I${glsl_root} -g0 ${perturb} ${defines}
+      COMMAND ${GLSLANG_VALIDATOR} -V --target-env vulkan1.3 -I${glsl_root} -I${module_glsl} -g0 ${perturb} ${defines}
               --vn ${symbol}Words --depfile ${raw}.d -o ${raw} ${glsl_root}/${src}
       COMMAND ${CMAKE_COMMAND} -DRAW=${raw} -DOUT=${header} -DSYMBOL=${symbol}
               -P ${PROJECT_SOURCE_DIR}/tools/cmake/wrap_spirv.cmake

@@ -5,21 +5,20 @@
 // With HOST_SPIRV_DIR (the host's shaders, which the package test compiled against the installed
 // GLSL alone), the frame is rendered a second time as a host with its own content renders it:
 // the technique created from the host's traits alone (no GpuScene), the host's drawer with its own
-// vertex layout, material and programs (tests/node/host_content.h, built on installed headers
+// vertex layout, material and programs (samples/host_engine/host_content.h, built on installed headers
 // only) and the stand-in environment. Exit 0 then also needs the two frames to agree.
 //
 //   consumer METHOD SCENE SIZE [HOST_SPIRV_DIR]
 
 #include <agaa/agaa.h>
 
-#include "tests/node/host_content.h"
+#include "tests/node/host_mesh.h"
 
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <exception>
-#include <fstream>
 #include <span>
 #include <stdexcept>
 #include <string>
@@ -73,18 +72,6 @@ std::vector<float> render(vk::Device& device, agaa::Technique& technique, const 
     return hdr;
 }
 
-std::vector<uint32_t> readSpirv(const std::string& path) {
-    std::ifstream file(path, std::ios::binary | std::ios::ate);
-    if (!file) throw std::runtime_error(path + ": cannot be read");
-    const std::streamsize bytes = file.tellg();
-    if (bytes <= 0 || bytes % 4 != 0)
-        throw std::runtime_error(path + ": not SPIR-V (size " + std::to_string(bytes) + ")");
-    std::vector<uint32_t> words(size_t(bytes) / 4);
-    file.seekg(0);
-    file.read(reinterpret_cast<char*>(words.data()), bytes);
-    return words;
-}
-
 } // namespace
 
 int main(int argc, char** argv) {
@@ -131,17 +118,11 @@ int main(int argc, char** argv) {
         bool hostAgrees = true;
         if (argc == 5) {
             const std::string dir = argv[4];
-            const std::vector<uint32_t> vertex = readSpirv(dir + "/host_gbuffer.vert.spv"),
-                                        shadowVertex = readSpirv(dir + "/host_shadow.vert.spv"),
-                                        gbuffer = readSpirv(dir + "/host_gbuffer.frag.spv"),
-                                        sampleRate = readSpirv(dir + "/host_gbuffer_sample_rate.frag.spv"),
-                                        visibility = readSpirv(dir + "/host_visibility.frag.spv"),
-                                        accumulation = readSpirv(dir + "/host_accumulation.frag.spv");
+            const host_engine::HostProgramFiles programs = host_engine::readHostPrograms(dir);
             agaa::test::HostMesh mesh = agaa::test::hostMesh(scene);
-            const agaa::TechniqueContent content{agaa::test::hostTraits(mesh, scene.lights)};
-            agaa::test::HostGeometry drawer(
-                device, std::move(mesh),
-                {vertex, shadowVertex, gbuffer, sampleRate, visibility, accumulation});
+            const agaa::TechniqueContent content{
+                agaa::test::hostTraits(mesh, scene.lights, "host:" + sceneName)};
+            agaa::test::HostGeometry drawer(device, std::move(mesh), programs.programs());
             const eng::frame::GpuEnvironment standIn(device, nullptr);
             const agaa::EnvironmentBindings environment = agaa::environmentBindings(standIn);
             std::unique_ptr<agaa::Technique> hosts = agaa::createTechnique(method, device, content, settings);

@@ -4,7 +4,7 @@
 // (tests/node/test_host_geometry.cpp): its material into AGAA's accumulation kernel. One build: no
 // emissive, 32-bit atomics, no subgroup reduction (RasterPass::defines empty).
 #include "raster/aggregate_accumulation_output.glsl"
-#include "tests/host_material.glsl"
+#include "host_material.glsl"
 
 layout(location = 0) centroid in vec3 inNormal;
 layout(location = 2) flat in uint inLayer;

@@ -3,7 +3,7 @@
 // A host's own material shader for RasterOutput::SampleGBuffer (tests/node/test_host_geometry.cpp),
 // written through the module's include. HOST_SAMPLE_RATE: the build for RasterPass::sampleRateShading.
 #include "raster/sample_gbuffer_output.glsl"
-#include "tests/host_material.glsl"
+#include "host_material.glsl"
 
 #if HOST_SAMPLE_RATE
 layout(location = 0) sample in vec3 inNormal;

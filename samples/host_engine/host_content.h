@@ -1,15 +1,13 @@
 #pragma once
-// A host's own content for the node tests (issue 50): its vertex layout (interleaved position and
-// normal, 16-bit indices with a base vertex per draw), its material (a constant per draw, in its
-// own push constant), its shaders (shaders/glsl/tests/host_*, which include only the module's
-// raster includes), its drawer (agaa::GeometryDrawer) and what it tells the module of its content
-// (agaa::SceneTraits). Built here from a built-in scene's triangles, as a host's importer would
-// from its own files. Header-only and on installed headers alone: the package test's consumer
-// (tests/package) builds it against the installed package with the shaders it compiled itself.
+// The host sample's content (issue 50): its vertex layout (interleaved position and normal, 16-bit
+// indices with a base vertex per draw), its material (a constant per draw, in its own push
+// constant), its shaders (shaders/, which include only the module's installed GLSL), its drawer
+// (agaa::GeometryDrawer) and what it tells the module of its content (agaa::SceneTraits).
+// Header-only, on installed headers alone: the sample, the package test's consumer and the node
+// tests draw with it.
 
 #include "agaa/common/raster_pass.h"
 #include "agaa/common/scene_traits.h"
-#include "engine/scene/scene.h"
 #include "engine/vk/descriptors.h"
 #include "engine/vk/device.h"
 #include "engine/vk/pipeline.h"
@@ -21,15 +19,16 @@
 #include <array>
 #include <cmath>
 #include <cstring>
+#include <fstream>
 #include <span>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
-namespace agaa::test {
+namespace host_engine {
 
-// The host's content: its own layout, built here from the scene's triangles (as a host's importer
-// would from its own files).
+// The host's content in its own layout: interleaved position and normal, 16-bit indices with a
+// base vertex per draw, and a constant material per draw (its push constant).
 struct HostVertex {
     float position[3];
     float normal[3];
@@ -50,33 +49,13 @@ struct HostMesh {
     std::vector<HostDraw> draws;
 };
 
-inline HostMesh hostMesh(const eng::scene::Scene& scene) {
-    HostMesh mesh;
-    for (const eng::scene::Vertex& v : scene.vertices)
-        mesh.vertices.push_back(
-            {{v.position.x, v.position.y, v.position.z}, {v.normal.x, v.normal.y, v.normal.z}});
-    for (const eng::scene::Draw& d : scene.draws) {
-        if (d.indexCount == 0) continue;
-        const auto first = scene.indices.begin() + d.firstIndex;
-        const auto [lo, hi] = std::minmax_element(first, first + d.indexCount);
-        if (*hi - *lo > 0xFFFFu) throw std::invalid_argument("a draw spans more than 16-bit indices reach");
-        const eng::scene::Material& m = scene.materials.at(d.material);
-        HostDraw draw{uint32_t(mesh.indices.size()), d.indexCount, int32_t(*lo), {}, m.doubleSided};
-        draw.material = {{m.baseColorFactor.r, m.baseColorFactor.g, m.baseColorFactor.b, m.roughnessFactor},
-                         {m.metallicFactor, 0.0f, 0.0f, 0.0f}};
-        for (uint32_t i = 0; i < d.indexCount; ++i)
-            mesh.indices.push_back(uint16_t(first[i] - *lo));
-        mesh.draws.push_back(draw);
-    }
-    return mesh;
-}
-
 // What this host tells the module of its content (agaa/common/scene_traits.h), from its own mesh,
-// materials and light list, as agaa::sceneTraits does for ours; no eng::scene::Scene behind it.
-inline SceneTraits hostTraits(const HostMesh& mesh, const std::vector<eng::scene::Light>& lights) {
-    using eng::scene::LightType;
-    SceneTraits t;
-    t.source = "host:railings";
+// materials and light list, as agaa::sceneTraits does for the module's own scenes.
+inline agaa::SceneTraits hostTraits(const HostMesh& mesh, const std::vector<agaa::Light>& lights,
+                                    std::string source) {
+    using agaa::LightType;
+    agaa::SceneTraits t;
+    t.source = std::move(source);
     t.triangles = mesh.indices.size() / 3;
     t.bounds = {glm::vec3(INFINITY), glm::vec3(-INFINITY)};
     for (const HostVertex& v : mesh.vertices) {
@@ -85,14 +64,14 @@ inline SceneTraits hostTraits(const HostMesh& mesh, const std::vector<eng::scene
         t.bounds.max = glm::max(t.bounds.max, p);
     }
     t.lights = lights;
-    eng::scene::SceneFeatures& f = t.features;
+    agaa::SceneFeatures& f = t.features;
     for (uint32_t i = 0; i < lights.size(); ++i) {
         const LightType type = lights[i].type;
         f.directionalLights += type == LightType::Directional ? 1 : 0;
         f.pointLights += type == LightType::Point ? 1 : 0;
         f.spotLights += type == LightType::Spot ? 1 : 0;
         if (lights[i].castsShadows && type != LightType::Point &&
-            f.shadowedLights.size() < eng::scene::kMaxShadowedLights)
+            f.shadowedLights.size() < agaa::kMaxShadowedLights)
             f.shadowedLights.push_back(i);
     }
     std::vector<HostMaterial> materials; // this host's materials are the distinct ones its draws push
@@ -102,9 +81,8 @@ inline SceneTraits hostTraits(const HostMesh& mesh, const std::vector<eng::scene
             materials.push_back(d.material);
     for (const HostMaterial& m : materials) {
         const float roughness = m.albedoRoughness[3], metallic = m.metallic[0];
-        const bool glossyMetal =
-            metallic >= eng::scene::kGlossyMetallic && roughness <= eng::scene::kGlossyRoughness;
-        const bool nearMirror = roughness < eng::scene::kNearMirrorRoughness;
+        const bool glossyMetal = metallic >= agaa::kGlossyMetallic && roughness <= agaa::kGlossyRoughness;
+        const bool nearMirror = roughness < agaa::kNearMirrorRoughness;
         ++f.drawnMaterials;
         f.glossyMetalMaterials += glossyMetal ? 1 : 0;
         f.anisotropicMetalMaterials += glossyMetal && !nearMirror ? 1 : 0;
@@ -114,13 +92,38 @@ inline SceneTraits hostTraits(const HostMesh& mesh, const std::vector<eng::scene
     return t;
 }
 
-// The host's SPIR-V, one program per stage and output (shaders/glsl/tests/host_*): embedded in the
-// node tests (tests/node/host_programs.h), read from files by the package test's consumer.
+// The host's SPIR-V, one program per stage and output (samples/host_engine/shaders): read from
+// files by the sample and the package test's consumer, embedded in the node tests
+// (tests/node/host_programs.h).
 struct HostPrograms {
     std::span<const uint32_t> vertex, shadowVertex, gbuffer, gbufferSampleRate, visibility, accumulation;
 };
 
-class HostGeometry final : public GeometryDrawer {
+// The same programs as SPIR-V files in `dir`, named as the sample's CMakeLists.txt compiles them
+// (<program>.spv: host_gbuffer.vert.spv, ...). Throws std::runtime_error naming a missing file.
+struct HostProgramFiles {
+    std::vector<uint32_t> vertex, shadowVertex, gbuffer, gbufferSampleRate, visibility, accumulation;
+    HostPrograms programs() const {
+        return {vertex, shadowVertex, gbuffer, gbufferSampleRate, visibility, accumulation};
+    }
+};
+inline HostProgramFiles readHostPrograms(const std::string& dir) {
+    const auto read = [&](const char* name) {
+        const std::string path = dir + "/" + name;
+        std::ifstream file(path, std::ios::binary | std::ios::ate);
+        const std::streamsize bytes = file ? std::streamsize(file.tellg()) : 0;
+        if (bytes <= 0 || bytes % 4 != 0) throw std::runtime_error(path + ": not a SPIR-V file");
+        std::vector<uint32_t> words(size_t(bytes) / 4);
+        file.seekg(0);
+        file.read(reinterpret_cast<char*>(words.data()), bytes);
+        return words;
+    };
+    return {read("host_gbuffer.vert.spv"),    read("host_shadow.vert.spv"),
+            read("host_gbuffer.frag.spv"),    read("host_gbuffer_sample_rate.frag.spv"),
+            read("host_visibility.frag.spv"), read("host_accumulation.frag.spv")};
+}
+
+class HostGeometry final : public agaa::GeometryDrawer {
   public:
     HostGeometry(eng::vk::Device& device, HostMesh mesh, HostPrograms programs)
         : m_device(device), m_mesh(std::move(mesh)), m_programs(programs) {
@@ -144,7 +147,7 @@ class HostGeometry final : public GeometryDrawer {
         eng::vk::destroyBuffer(m_device, m_indices);
     }
 
-    void prepare(const RasterPass& pass) override {
+    void prepare(const agaa::RasterPass& pass) override {
         if (find(pass)) return;
         const std::span<const uint32_t> fragment = fragmentCode(pass);
         Pass p{pass, {}, {}};
@@ -153,8 +156,8 @@ class HostGeometry final : public GeometryDrawer {
         layout.pushConstantBytes = sizeof(HostMaterial);
         p.layout = eng::vk::createPipelineLayout(m_device, layout, pass.name + ".host.layout");
         for (int twoSided = 0; twoSided < 2; ++twoSided) {
-            eng::vk::GraphicsPipelineDesc d = rasterPipelineState(pass, twoSided != 0);
-            const bool shadow = pass.output == RasterOutput::ShadowDepth;
+            eng::vk::GraphicsPipelineDesc d = agaa::rasterPipelineState(pass, twoSided != 0);
+            const bool shadow = pass.output == agaa::RasterOutput::ShadowDepth;
             d.vertex = shadow ? m_programs.shadowVertex : m_programs.vertex;
             d.fragment = fragment;
             d.layout = p.layout.layout;
@@ -168,8 +171,9 @@ class HostGeometry final : public GeometryDrawer {
         m_passes.push_back(std::move(p));
     }
 
-    void recordDraws(VkCommandBuffer cmd, const RasterPass& pass, const PushModuleSet& push) const override {
-        if (pass.output == RasterOutput::ShadowDepth) ++shadowMapsDrawn;
+    void recordDraws(VkCommandBuffer cmd, const agaa::RasterPass& pass,
+                     const agaa::PushModuleSet& push) const override {
+        if (pass.output == agaa::RasterOutput::ShadowDepth) ++shadowMapsDrawn;
         const Pass* p = find(pass);
         if (!p) throw std::logic_error(pass.name + ": not prepared");
         push(cmd, p->layout.layout);
@@ -187,33 +191,33 @@ class HostGeometry final : public GeometryDrawer {
     mutable int shadowMapsDrawn = 0;
 
   private:
-    // This host's builds: what it draws, by the pass's output and build (RasterPass::defines).
-    std::span<const uint32_t> fragmentCode(const RasterPass& pass) const {
+    // This host's builds: what it draws, by the pass's output and build (agaa::RasterPass::defines).
+    std::span<const uint32_t> fragmentCode(const agaa::RasterPass& pass) const {
         const bool plainBuild = pass.defines.empty();
         switch (pass.output) {
-        case RasterOutput::SampleGBuffer:
+        case agaa::RasterOutput::SampleGBuffer:
             return pass.sampleRateShading ? m_programs.gbufferSampleRate : m_programs.gbuffer;
-        case RasterOutput::ShadowDepth:
+        case agaa::RasterOutput::ShadowDepth:
             return {};
-        case RasterOutput::AggregateVisibility:
+        case agaa::RasterOutput::AggregateVisibility:
             return m_programs.visibility;
-        case RasterOutput::AggregateAccumulation:
+        case agaa::RasterOutput::AggregateAccumulation:
             if (plainBuild) return m_programs.accumulation;
             break;
         default:
             break;
         }
         throw std::invalid_argument(std::string("this host has no build of ") +
-                                    rasterOutputName(pass.output) +
+                                    agaa::rasterOutputName(pass.output) +
                                     (plainBuild ? "" : " with " + pass.defines.front()));
     }
 
     struct Pass {
-        RasterPass pass;
+        agaa::RasterPass pass;
         eng::vk::PipelineLayout layout;
         std::array<VkPipeline, 2> pipelines{}; // [two-sided]
     };
-    const Pass* find(const RasterPass& pass) const {
+    const Pass* find(const agaa::RasterPass& pass) const {
         for (const Pass& p : m_passes)
             if (p.pass == pass) return &p;
         return nullptr;
@@ -226,4 +230,4 @@ class HostGeometry final : public GeometryDrawer {
     std::vector<Pass> m_passes;
 };
 
-} // namespace agaa::test
+} // namespace host_engine
