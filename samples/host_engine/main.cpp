@@ -12,6 +12,8 @@
 // 1e-4. What it imports: triangle primitives with POSITION, NORMAL and indices, constant
 // metallic-roughness materials, punctual lights (extras.castsShadows, or the first directional
 // light), the first perspective camera; anything else is refused by name.
+// Exit codes: 0 rendered (and within 1e-4), 1 a validation message or a frame over 1e-4, 2 bad
+// arguments, a file or shader folder it cannot use, or a method it has no shaders for.
 
 #include <agaa/agaa.h>
 #include <engine/io/exr.h>
@@ -54,6 +56,16 @@ struct Importer {
     HostScene scene;
     bool castsSaid = false;
 
+    // The element `index` of one of the file's arrays, or a refusal naming the field.
+    template <typename T>
+    const T& element(const std::vector<T>& array, int index, const std::string& field,
+                     const char* what) const {
+        if (index < 0 || size_t(index) >= array.size())
+            refuse(field, std::string(what) + " " + std::to_string(index) + " does not exist (the file has " +
+                              std::to_string(array.size()) + ")");
+        return array[size_t(index)];
+    }
+
     [[noreturn]] void refuse(const std::string& field, const std::string& what) const {
         throw std::runtime_error(path + ": " + field + ": " + what);
     }
@@ -77,8 +89,8 @@ struct Importer {
         if (accessorIndex < 0 || size_t(accessorIndex) >= model.accessors.size())
             refuse(field, "no accessor");
         const tinygltf::Accessor& a = model.accessors[size_t(accessorIndex)];
-        const tinygltf::BufferView& view = model.bufferViews.at(size_t(a.bufferView));
-        const tinygltf::Buffer& buffer = model.buffers.at(size_t(view.buffer));
+        const tinygltf::BufferView& view = element(model.bufferViews, a.bufferView, field, "bufferView");
+        const tinygltf::Buffer& buffer = element(model.buffers, view.buffer, field, "buffer");
         const size_t stride =
             a.ByteStride(view) > 0 ? size_t(a.ByteStride(view)) : sizeof(T) * size_t(components);
         const size_t start = view.byteOffset + a.byteOffset;
@@ -93,7 +105,7 @@ struct Importer {
     }
 
     std::vector<uint32_t> indices(int accessorIndex, const std::string& field) const {
-        const int type = model.accessors.at(size_t(accessorIndex)).componentType;
+        const int type = element(model.accessors, accessorIndex, field, "accessor").componentType;
         std::vector<uint32_t> out;
         if (type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT) return read<uint32_t>(accessorIndex, 1, field);
         if (type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT)
@@ -116,12 +128,21 @@ struct Importer {
             const auto attribute = [&](const char* name) {
                 const auto it = prim.attributes.find(name);
                 if (it == prim.attributes.end()) refuse(at + ".attributes", std::string("no ") + name);
+                const tinygltf::Accessor& a = element(model.accessors, it->second, at, "accessor");
+                if (a.componentType != TINYGLTF_COMPONENT_TYPE_FLOAT || a.type != TINYGLTF_TYPE_VEC3)
+                    refuse(at + ".attributes." + name, "this engine reads float VEC3 only");
                 return it->second;
             };
             const std::vector<float> positions = read<float>(attribute("POSITION"), 3, at + ".POSITION");
             const std::vector<float> normals = read<float>(attribute("NORMAL"), 3, at + ".NORMAL");
             if (prim.indices < 0) refuse(at, "no indices");
             const std::vector<uint32_t> index = indices(prim.indices, at + ".indices");
+            if (normals.size() != positions.size())
+                refuse(at + ".attributes.NORMAL", "count differs from POSITION's");
+            if (index.size() % 3 != 0) refuse(at + ".indices", "not whole triangles");
+            for (uint32_t i : index)
+                if (i >= positions.size() / 3)
+                    refuse(at + ".indices", "index " + std::to_string(i) + " past the vertices");
             if (prim.material < 0 || size_t(prim.material) >= model.materials.size())
                 refuse(at, "no material");
             const tinygltf::Material& m = model.materials[size_t(prim.material)];
@@ -170,7 +191,9 @@ struct Importer {
         light.position = glm::vec3(world[3]);
         light.direction = glm::normalize(glm::mat3(world) * glm::vec3(0.0f, 0.0f, -1.0f)); // down its -Z
         if (in.extras.IsObject() && in.extras.Has("castsShadows")) {
-            light.castsShadows = in.extras.Get("castsShadows").Get<bool>();
+            const tinygltf::Value& casts = in.extras.Get("castsShadows");
+            if (!casts.IsBool()) refuse(field + " light extras.castsShadows", "not a boolean");
+            light.castsShadows = casts.Get<bool>();
             castsSaid = true;
         }
         scene.lights.push_back(light);
@@ -178,7 +201,7 @@ struct Importer {
 
     void addCamera(int index, const glm::mat4& world, const std::string& field) {
         if (scene.camera) return; // the first one
-        const tinygltf::Camera& in = model.cameras.at(size_t(index));
+        const tinygltf::Camera& in = element(model.cameras, index, field, "camera");
         if (in.type != "perspective" || !(in.perspective.zfar > in.perspective.znear))
             refuse(field, "this engine takes a perspective camera with a finite zfar");
         agaa::Camera camera;
@@ -207,13 +230,16 @@ struct Importer {
             while (!stack.empty()) {
                 const Pending p = stack.back();
                 stack.pop_back();
-                const tinygltf::Node& node = model.nodes.at(size_t(p.node));
+                const tinygltf::Node& node = element(model.nodes, p.node, "scenes", "node");
                 const std::string field = "nodes[" + std::to_string(p.node) + "]";
                 const glm::mat4 world = p.parent * local(node);
-                if (node.mesh >= 0) addMesh(model.meshes.at(size_t(node.mesh)), world, field);
+                if (node.mesh >= 0) addMesh(element(model.meshes, node.mesh, field, "mesh"), world, field);
                 if (const auto light = node.extensions.find("KHR_lights_punctual");
                     light != node.extensions.end())
-                    addLight(light->second.Get("light").GetNumberAsInt(), world, field);
+                    addLight(light->second.Has("light") && light->second.Get("light").IsInt()
+                                 ? light->second.Get("light").GetNumberAsInt()
+                                 : -1,
+                             world, field + ".extensions.KHR_lights_punctual.light");
                 if (node.camera >= 0) addCamera(node.camera, world, field);
                 for (size_t c = node.children.size(); c-- > 0;)
                     stack.push_back({node.children[c], world});
@@ -339,6 +365,12 @@ int main(int argc, char** argv) {
         const uint32_t errors = device.validationErrors();
         std::printf("host_engine: wrote %s, %u validation error(s)\n", out.c_str(), errors);
         return errors == 0 ? status : 1;
+    } catch (const std::runtime_error& e) { // the file, the shaders or the method: bad input
+        std::fprintf(stderr, "host_engine: %s\n", e.what());
+        return 2;
+    } catch (const std::invalid_argument& e) {
+        std::fprintf(stderr, "host_engine: %s\n", e.what());
+        return 2;
     } catch (const std::exception& e) {
         std::fprintf(stderr, "host_engine: %s\n", e.what());
         return 1;

@@ -131,6 +131,12 @@ if(DEFINED GLSLANG AND DEFINED SCENEGEN AND DEFINED AGAA_RENDER)
                  "(main.cpp + host_content.h), installed headers only")
   set(content ${WORK}/railings.gltf)
   run("writing the sample's content" ${SCENEGEN} --kind railings --out ${content})
+  # Bad input: a method it has no shaders for is refused by name with exit code 2, nothing drawn.
+  execute_process(COMMAND ${WORK}/host_engine/host_engine ${content} sbaa 32 ${WORK}/host_sbaa.exr
+                          ${WORK}/host_engine/shaders RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE out)
+  if(NOT code EQUAL 2 OR NOT out MATCHES "no build of surface visibility" OR out MATCHES "VUID|validation error\\]")
+    message(FATAL_ERROR "package test: samples/host_engine on sbaa: want exit 2 naming the output, got ${code}:\n${out}")
+  endif()
   # SBAA and streaming draw outputs this engine has no shaders for (its refusal names them).
   foreach(method reference noaa fxaa simple-complex agaa agaa-accumulate)
     set(flags --scene ${content} --method ${method} --width 32 --height 32 --exposure 1 --lights scene
