@@ -19,7 +19,9 @@
 #include <array>
 #include <cmath>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
+#include <map>
 #include <span>
 #include <stdexcept>
 #include <string>
@@ -92,41 +94,45 @@ inline agaa::SceneTraits hostTraits(const HostMesh& mesh, const std::vector<agaa
     return t;
 }
 
-// The host's SPIR-V, one program per stage and output (samples/host_engine/shaders): read from
-// files by the sample and the package test's consumer, embedded in the node tests
-// (tests/node/host_programs.h).
-struct HostPrograms {
-    std::span<const uint32_t> vertex, shadowVertex, gbuffer, gbufferSampleRate, visibility, accumulation;
-};
+// The host's SPIR-V by program name (programs.cmake: "host_gbuffer.frag", ...): read from the
+// files the sample's build writes by the sample and the package test's consumer, embedded in the
+// node tests (tests/node/host_programs.h).
+using HostPrograms = std::map<std::string, std::span<const uint32_t>, std::less<>>;
 
-// The same programs as SPIR-V files in `dir`, named as the sample's CMakeLists.txt compiles them
-// (<program>.spv: host_gbuffer.vert.spv, ...). Throws std::runtime_error naming a missing file.
+// Every <name>.spv in `dir` (the sample's build writes them to <build>/shaders). Throws
+// std::runtime_error naming a folder without programs or a file that is not SPIR-V.
 struct HostProgramFiles {
-    std::vector<uint32_t> vertex, shadowVertex, gbuffer, gbufferSampleRate, visibility, accumulation;
+    std::map<std::string, std::vector<uint32_t>, std::less<>> code;
     HostPrograms programs() const {
-        return {vertex, shadowVertex, gbuffer, gbufferSampleRate, visibility, accumulation};
+        HostPrograms p;
+        for (const auto& [name, words] : code)
+            p.emplace(name, words);
+        return p;
     }
 };
 inline HostProgramFiles readHostPrograms(const std::string& dir) {
-    const auto read = [&](const char* name) {
-        const std::string path = dir + "/" + name;
+    HostProgramFiles files;
+    std::error_code error;
+    for (const auto& entry : std::filesystem::directory_iterator(dir, error)) {
+        const std::filesystem::path& path = entry.path();
+        if (path.extension() != ".spv") continue;
         std::ifstream file(path, std::ios::binary | std::ios::ate);
         const std::streamsize bytes = file ? std::streamsize(file.tellg()) : 0;
-        if (bytes <= 0 || bytes % 4 != 0) throw std::runtime_error(path + ": not a SPIR-V file");
-        std::vector<uint32_t> words(size_t(bytes) / 4);
+        std::vector<uint32_t> words(size_t(std::max<std::streamsize>(bytes, 0)) / 4);
         file.seekg(0);
         file.read(reinterpret_cast<char*>(words.data()), bytes);
-        return words;
-    };
-    return {read("host_gbuffer.vert.spv"),    read("host_shadow.vert.spv"),
-            read("host_gbuffer.frag.spv"),    read("host_gbuffer_sample_rate.frag.spv"),
-            read("host_visibility.frag.spv"), read("host_accumulation.frag.spv")};
+        if (bytes < 20 || bytes % 4 != 0 || !file || words[0] != 0x07230203u)
+            throw std::runtime_error(path.string() + ": not a SPIR-V file");
+        files.code.emplace(path.stem().string(), std::move(words));
+    }
+    if (files.code.empty()) throw std::runtime_error(dir + ": no host programs (*.spv) in this folder");
+    return files;
 }
 
 class HostGeometry final : public agaa::GeometryDrawer {
   public:
     HostGeometry(eng::vk::Device& device, HostMesh mesh, HostPrograms programs)
-        : m_device(device), m_mesh(std::move(mesh)), m_programs(programs) {
+        : m_device(device), m_mesh(std::move(mesh)), m_programs(std::move(programs)) {
         m_vertices = eng::vk::createBuffer(device, m_mesh.vertices.size() * sizeof(HostVertex),
                                            VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, eng::vk::MemoryUse::Upload,
                                            "host.vertices");
@@ -153,12 +159,12 @@ class HostGeometry final : public agaa::GeometryDrawer {
         Pass p{pass, {}, {}};
         eng::vk::LayoutDesc layout;
         layout.pushBindings = pass.moduleSet; // set 0: the module's; this host has no set of its own
-        layout.pushConstantBytes = sizeof(HostMaterial);
+        layout.pushConstantBytes = sizeof(DrawConstants);
         p.layout = eng::vk::createPipelineLayout(m_device, layout, pass.name + ".host.layout");
         for (int twoSided = 0; twoSided < 2; ++twoSided) {
             eng::vk::GraphicsPipelineDesc d = agaa::rasterPipelineState(pass, twoSided != 0);
             const bool shadow = pass.output == agaa::RasterOutput::ShadowDepth;
-            d.vertex = shadow ? m_programs.shadowVertex : m_programs.vertex;
+            d.vertex = program(shadow ? "host_shadow.vert" : "host_gbuffer.vert", pass);
             d.fragment = fragment;
             d.layout = p.layout.layout;
             d.specialization = pass.specialization;
@@ -182,8 +188,8 @@ class HostGeometry final : public agaa::GeometryDrawer {
         vkCmdBindIndexBuffer(cmd, m_indices.buffer, 0, VK_INDEX_TYPE_UINT16);
         for (const HostDraw& d : m_mesh.draws) {
             vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, p->pipelines[d.twoSided ? 1 : 0]);
-            vkCmdPushConstants(cmd, p->layout.layout, VK_SHADER_STAGE_ALL, 0, sizeof(HostMaterial),
-                               &d.material);
+            const DrawConstants constants{d.material, d.firstIndex / 3};
+            vkCmdPushConstants(cmd, p->layout.layout, VK_SHADER_STAGE_ALL, 0, sizeof constants, &constants);
             vkCmdDrawIndexed(cmd, d.indexCount, pass.layers, d.firstIndex, d.vertexOffset, 0);
         }
     }
@@ -191,25 +197,45 @@ class HostGeometry final : public agaa::GeometryDrawer {
     mutable int shadowMapsDrawn = 0;
 
   private:
-    // This host's builds: what it draws, by the pass's output and build (agaa::RasterPass::defines).
+    // What the host's shaders push (shaders/host_material.glsl): the material and the draw's first
+    // triangle, so that a triangle's number is the same in every pass.
+    struct DrawConstants {
+        HostMaterial material;
+        uint32_t firstTriangle;
+    };
+
+    // This host's builds (programs.cmake), by the pass's output and build, as
+    // agaa::RasterPass::defines and sampleRateShading ask.
     std::span<const uint32_t> fragmentCode(const agaa::RasterPass& pass) const {
-        const bool plainBuild = pass.defines.empty();
+        using agaa::RasterOutput;
+        const std::string perSample = pass.sampleRateShading ? "_sample_rate" : "";
         switch (pass.output) {
-        case agaa::RasterOutput::SampleGBuffer:
-            return pass.sampleRateShading ? m_programs.gbufferSampleRate : m_programs.gbuffer;
-        case agaa::RasterOutput::ShadowDepth:
-            return {};
-        case agaa::RasterOutput::AggregateVisibility:
-            return m_programs.visibility;
-        case agaa::RasterOutput::AggregateAccumulation:
-            if (plainBuild) return m_programs.accumulation;
-            break;
-        default:
+        case RasterOutput::SampleGBuffer:
+            return program("host_gbuffer" + perSample + ".frag", pass);
+        case RasterOutput::SampleGBufferPrimitive:
+            return program("host_gbuffer_primitive" + perSample + ".frag", pass);
+        case RasterOutput::SurfaceVisibility:
+            return program("host_surface_visibility" + perSample + ".frag", pass);
+        case RasterOutput::SurfaceFill:
+            return program("host_surface_fill" + perSample + ".frag", pass);
+        case RasterOutput::ShadowDepth:
+            return {}; // opaque casters: depth only
+        case RasterOutput::AggregateVisibility:
+            return program("host_visibility.frag", pass);
+        case RasterOutput::AggregateAccumulation:
+            // One build: no emissive, 32-bit atomics, no subgroup reduction.
+            if (pass.defines.empty()) return program("host_accumulation.frag", pass);
             break;
         }
         throw std::invalid_argument(std::string("this host has no build of ") +
-                                    agaa::rasterOutputName(pass.output) +
-                                    (plainBuild ? "" : " with " + pass.defines.front()));
+                                    agaa::rasterOutputName(pass.output) + " with " + pass.defines.front());
+    }
+    std::span<const uint32_t> program(const std::string& name, const agaa::RasterPass& pass) const {
+        const auto found = m_programs.find(name);
+        if (found == m_programs.end())
+            throw std::invalid_argument(pass.name + ": this host has no program " + name + " (" +
+                                        agaa::rasterOutputName(pass.output) + ")");
+        return found->second;
     }
 
     struct Pass {

@@ -13,7 +13,7 @@
 // metallic-roughness materials, punctual lights (extras.castsShadows, or the first directional
 // light), the first perspective camera; anything else is refused by name.
 // Exit codes: 0 rendered (and within 1e-4), 1 a validation message or a frame over 1e-4, 2 bad
-// arguments, a file or shader folder it cannot use, or a method it has no shaders for.
+// arguments, a file or shader folder it cannot use, or a pass it has no program for.
 
 #include <agaa/agaa.h>
 #include <engine/io/exr.h>

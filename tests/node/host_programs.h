@@ -1,22 +1,21 @@
 #pragma once
-// The host sample's programs (samples/host_engine/shaders) as the node tests embed them.
+// The host sample's programs (samples/host_engine/programs.cmake) as the node tests embed them.
 
-#include "shaders/host_engine/shaders/host_accumulation_frag.h"
-#include "shaders/host_engine/shaders/host_gbuffer_frag.h"
-#include "shaders/host_engine/shaders/host_gbuffer_sample_rate_frag.h"
-#include "shaders/host_engine/shaders/host_gbuffer_vert.h"
-#include "shaders/host_engine/shaders/host_shadow_vert.h"
-#include "shaders/host_engine/shaders/host_visibility_frag.h"
+#include "shaders/agaa_host_shaders_programs.h"
 #include "tests/node/host_mesh.h"
+
+#include <string_view>
 
 namespace agaa::test {
 
 using host_engine::HostPrograms;
 
 inline HostPrograms embeddedHostPrograms() {
-    return {kHostEngineShadersHostGbufferVert,    kHostEngineShadersHostShadowVert,
-            kHostEngineShadersHostGbufferFrag,    kHostEngineShadersHostGbufferSampleRateFrag,
-            kHostEngineShadersHostVisibilityFrag, kHostEngineShadersHostAccumulationFrag};
+    constexpr std::string_view folder = "host_engine/shaders/";
+    HostPrograms programs;
+    for (const EmbeddedProgram& p : kAgaaHostShadersPrograms)
+        programs.emplace(std::string(p.name.substr(folder.size())), p.code);
+    return programs;
 }
 
 } // namespace agaa::test

@@ -95,7 +95,8 @@ INSTANTIATE_TEST_SUITE_P(
         Case{"agaa",
              AggregateGeneration::Accumulate,
              {O::ShadowDepth, O::AggregateVisibility, O::AggregateAccumulation}},
-        Case{"sbaa", AggregateGeneration::Auto, {O::SurfaceVisibility, O::SurfaceFill, O::ShadowDepth}}),
+        Case{"sbaa", AggregateGeneration::Auto, {O::SurfaceVisibility, O::SurfaceFill, O::ShadowDepth}},
+        Case{"streaming", AggregateGeneration::Auto, {O::SampleGBufferPrimitive, O::ShadowDepth}}),
     [](const auto& info) {
         return std::string(info.param.method) +
                (info.param.generation == AggregateGeneration::Accumulate ? "_accumulate" : "");

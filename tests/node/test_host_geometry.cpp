@@ -59,9 +59,11 @@ double displayRmse(const std::vector<float>& a, const std::vector<float>& b) {
 struct Case {
     const char* method;
     AggregateGeneration generation = AggregateGeneration::Auto;
+    bool sampleRate = false; // MethodSettings::sampleRateShading: the host's sample-rate builds
 };
 void PrintTo(const Case& c, std::ostream* os) {
-    *os << c.method << (c.generation == AggregateGeneration::Accumulate ? " accumulate" : "");
+    *os << c.method << (c.generation == AggregateGeneration::Accumulate ? " accumulate" : "")
+        << (c.sampleRate ? " at sample rate" : "");
 }
 
 class HostGeometryCase : public ::testing::TestWithParam<Case> {};
@@ -79,6 +81,7 @@ TEST_P(HostGeometryCase, AHostsOwnVerticesAndMaterialShadersMatchTheScenesOwnDra
     settings.agaa.generation = GetParam().generation;
     settings.agaa.atomics = AggregateAtomics::Bits32;
     settings.agaa.subgroupReduction = SubgroupReduction::Off;
+    settings.sampleRateShading = GetParam().sampleRate;
     std::unique_ptr<Technique> technique = createTechnique(GetParam().method, *device, gpuScene, settings);
     ASSERT_FALSE(effectiveFeatures(sceneTraits(scene), settings.effects).vertexColors);
     const std::vector<float> own = render(*device, gpuScene, *technique, nullptr);
@@ -106,13 +109,17 @@ TEST_P(HostGeometryCase, AHostsOwnVerticesAndMaterialShadersMatchTheScenesOwnDra
 
 INSTANTIATE_TEST_SUITE_P(Node, HostGeometryCase,
                          ::testing::Values(Case{"reference"}, Case{"noaa"}, Case{"simple-complex"},
-                                           Case{"agaa"}, Case{"agaa", AggregateGeneration::Accumulate}),
+                                           Case{"sbaa"}, Case{"streaming"},
+                                           Case{"sbaa", AggregateGeneration::Auto, true},
+                                           Case{"streaming", AggregateGeneration::Auto, true}, Case{"agaa"},
+                                           Case{"agaa", AggregateGeneration::Accumulate}),
                          [](const auto& info) {
                              std::string name = info.param.method;
                              std::replace(name.begin(), name.end(), '-', '_');
-                             return name + (info.param.generation == AggregateGeneration::Accumulate
-                                                ? "_accumulate"
-                                                : "");
+                             return name +
+                                    (info.param.generation == AggregateGeneration::Accumulate ? "_accumulate"
+                                                                                              : "") +
+                                    (info.param.sampleRate ? "_sample_rate" : "");
                          });
 
 // A technique created from a host's traits alone has no scene to fall back on: a frame without

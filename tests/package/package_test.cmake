@@ -66,21 +66,28 @@ if(NOT at EQUAL -1)
   message(FATAL_ERROR "package test: the exported targets name the source tree ${SOURCE}")
 endif()
 
-# A host's own shaders (samples/host_engine/shaders, copied out of the source tree) built
-# against the installed GLSL alone: the module's raster includes and what they include are complete.
+# samples/host_engine, built as a host builds it: against the installed package alone, its
+# shaders (programs.cmake) against <prefix>/include/agaa/glsl alone, so the module's raster includes
+# and what they include are complete. The consumer below draws with the same programs.
 if(DEFINED GLSLANG)
-  set(host_glsl ${WORK}/host_glsl)
-  file(GLOB host_shaders ${SOURCE}/samples/host_engine/shaders/*)
-  file(COPY ${host_shaders} DESTINATION ${host_glsl}/tests)
-  foreach(shader host_gbuffer.vert host_gbuffer.frag host_shadow.vert host_visibility.frag
-                 host_accumulation.frag)
-    run("compiling the host's ${shader} against the installed GLSL" ${GLSLANG} -V --target-env vulkan1.3
-        -I${prefix}/include/agaa/glsl -I${host_glsl} -o ${host_glsl}/${shader}.spv ${host_glsl}/tests/${shader})
-  endforeach()
-  run("compiling the host's sample-rate G-buffer against the installed GLSL" ${GLSLANG} -V
-      --target-env vulkan1.3 -DHOST_SAMPLE_RATE=1 -I${prefix}/include/agaa/glsl -I${host_glsl}
-      -o ${host_glsl}/host_gbuffer_sample_rate.frag.spv ${host_glsl}/tests/host_gbuffer.frag)
-  message(STATUS "package test: a host's shaders build against include/agaa/glsl alone")
+  set(sample_args -S ${SOURCE}/samples/host_engine -B ${WORK}/host_engine -G ${GENERATOR}
+      -DCMAKE_BUILD_TYPE=Release -DCMAKE_PREFIX_PATH=${prefix} -DCMAKE_CXX_COMPILER=${CXX}
+      "-DCMAKE_CXX_FLAGS=${CXX_FLAGS}" "-DCMAKE_EXE_LINKER_FLAGS=${LINKER_FLAGS}")
+  if(LAUNCHER)
+    list(APPEND sample_args -DCMAKE_CXX_COMPILER_LAUNCHER=${LAUNCHER})
+  endif()
+  run("configuring samples/host_engine" ${CMAKE_COMMAND} ${sample_args})
+  run("building samples/host_engine" ${CMAKE_COMMAND} --build ${WORK}/host_engine)
+  set(host_programs ${WORK}/host_engine/shaders)
+  file(GLOB spirv ${host_programs}/*.spv)
+  list(LENGTH spirv spirv_count)
+  message(STATUS "package test: a host's ${spirv_count} programs build against include/agaa/glsl alone")
+  file(STRINGS ${SOURCE}/samples/host_engine/main.cpp sample_lines REGEX "[^ ]")
+  file(STRINGS ${SOURCE}/samples/host_engine/host_content.h content_lines REGEX "[^ ]")
+  list(LENGTH sample_lines sample_count)
+  list(LENGTH content_lines content_count)
+  message(STATUS "package test: samples/host_engine: ${sample_count} + ${content_count} non-empty lines "
+                 "(main.cpp + host_content.h), installed headers only")
 endif()
 
 # The host's C++ (its vertex layout, material, drawer and traits), copied out of the source tree
@@ -101,44 +108,29 @@ if(NOT last_output MATCHES "not blank, 0 validation error")
   message(FATAL_ERROR "package test: the consumer's frame is not a clean non-blank one:\n${last_output}")
 endif()
 # As a host with its own content: the technique from the host's traits alone, the host's drawer,
-# vertex layout, material and the shaders compiled above, against the scene's own frame.
+# vertex layout, material and the programs built above, against the scene's own frame.
 if(DEFINED GLSLANG)
   foreach(method reference noaa simple-complex agaa agaa-accumulate)
     run("running the consumer as a host's content (${method})" ${WORK}/build/consumer ${method} railings 32
-        ${host_glsl})
+        ${host_programs})
     message(STATUS "${last_output}")
   endforeach()
 endif()
 
-# samples/host_engine, built as a host builds it (against the installed package alone, its shaders
-# against <prefix>/include/agaa/glsl), renders a scenegen file with its own importer, vertex layout,
+# samples/host_engine renders a scenegen file with its own importer, vertex layout,
 # material and command buffer; agaa-render renders the same file. Each method's display RMSE
 # between the two must stay within 1e-4 (the sample exits 1 otherwise).
 if(DEFINED GLSLANG AND DEFINED SCENEGEN AND DEFINED AGAA_RENDER)
-  set(sample_args -S ${SOURCE}/samples/host_engine -B ${WORK}/host_engine -G ${GENERATOR}
-      -DCMAKE_BUILD_TYPE=Release -DCMAKE_PREFIX_PATH=${prefix} -DCMAKE_CXX_COMPILER=${CXX}
-      "-DCMAKE_CXX_FLAGS=${CXX_FLAGS}" "-DCMAKE_EXE_LINKER_FLAGS=${LINKER_FLAGS}")
-  if(LAUNCHER)
-    list(APPEND sample_args -DCMAKE_CXX_COMPILER_LAUNCHER=${LAUNCHER})
-  endif()
-  run("configuring samples/host_engine" ${CMAKE_COMMAND} ${sample_args})
-  run("building samples/host_engine" ${CMAKE_COMMAND} --build ${WORK}/host_engine)
-  file(STRINGS ${SOURCE}/samples/host_engine/main.cpp sample_lines REGEX "[^ ]")
-  file(STRINGS ${SOURCE}/samples/host_engine/host_content.h content_lines REGEX "[^ ]")
-  list(LENGTH sample_lines sample_count)
-  list(LENGTH content_lines content_count)
-  message(STATUS "package test: samples/host_engine: ${sample_count} + ${content_count} non-empty lines "
-                 "(main.cpp + host_content.h), installed headers only")
   set(content ${WORK}/railings.gltf)
   run("writing the sample's content" ${SCENEGEN} --kind railings --out ${content})
-  # Bad input: a method it has no shaders for is refused by name with exit code 2, nothing drawn.
-  execute_process(COMMAND ${WORK}/host_engine/host_engine ${content} sbaa 32 ${WORK}/host_sbaa.exr
-                          ${WORK}/host_engine/shaders RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE out)
-  if(NOT code EQUAL 2 OR NOT out MATCHES "no build of surface visibility" OR out MATCHES "VUID|validation error\\]")
-    message(FATAL_ERROR "package test: samples/host_engine on sbaa: want exit 2 naming the output, got ${code}:\n${out}")
+  # Bad input: a folder without its programs is refused by name with exit code 2, nothing drawn.
+  execute_process(COMMAND ${WORK}/host_engine/host_engine ${content} sbaa 32 ${WORK}/host_sbaa.exr ${WORK}
+                  RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE out)
+  if(NOT code EQUAL 2 OR NOT out MATCHES "no host programs" OR out MATCHES "VUID|validation error\\]")
+    message(FATAL_ERROR "package test: samples/host_engine without its programs: want exit 2 naming the "
+                        "folder, got ${code}:\n${out}")
   endif()
-  # SBAA and streaming draw outputs this engine has no shaders for (its refusal names them).
-  foreach(method reference noaa fxaa simple-complex agaa agaa-accumulate)
+  foreach(method reference noaa fxaa simple-complex sbaa streaming agaa agaa-accumulate)
     set(flags --scene ${content} --method ${method} --width 32 --height 32 --exposure 1 --lights scene
               --out ${WORK}/render_${method})
     if(method MATCHES "^agaa")

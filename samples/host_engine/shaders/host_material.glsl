@@ -2,9 +2,12 @@
 // constant, evaluated as its own code does for every pass it draws.
 #include "common/material_sample.glsl"
 
-layout(push_constant) uniform HostMaterial {
+layout(push_constant) uniform HostDrawConstants {
     vec4 albedoRoughness;
     vec4 metallic; // x
+    // The draw's first triangle in the host's index buffer: triangle numbers for the passes that
+    // key on them (SBAA's prepass and fill, streaming's G-buffer), the same in every pass.
+    uint firstTriangle;
 } material;
 
 const float kHostShortestNormal = 1e-6;
@@ -24,4 +27,8 @@ MaterialSample hostMaterial(vec3 n, float roughness) {
     m.emissive = vec3(0.0);
     m.normal = gl_FrontFacing ? n : -n;
     return m;
+}
+
+uint hostTriangle() {
+    return material.firstTriangle + uint(gl_PrimitiveID);
 }
