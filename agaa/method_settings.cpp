@@ -227,10 +227,12 @@ std::vector<MethodOption> declareOptions() {
         [](MethodSettings& s, const std::string& v) { s.sampleRateShading = v == "on"; },
         [](const MethodSettings& s) { return onOff(s.sampleRateShading); }));
     o.push_back(choice(
-        "curvature-roughness", {"on", "off"}, "off", "agaa, agaa-samples",
-        "the samples path: Kaplanyan curvature roughness in the fill pass (max footprint 0.3, boost 2.0)",
-        [](MethodSettings& s, const std::string& v) { s.curvatureRoughness = v == "on"; },
-        [](const MethodSettings& s) { return onOff(s.curvatureRoughness); }));
+        "curvature-roughness", {"on", "off"}, "off", "all",
+        "geometric specular AA in every method's material evaluation: GGX alpha^2 widened by the geometric "
+        "normal's screen-space variance (Tokuyoshi and Kaplanyan 2019; max footprint 0.3, boost 2.0, the "
+        "UE4 AGAA talk's); the converged truth never applies it",
+        [](MethodSettings& s, const std::string& v) { s.effects.curvatureRoughness.enabled = v == "on"; },
+        [](const MethodSettings& s) { return onOff(s.effects.curvatureRoughness.enabled); }));
     o.push_back(choice(
         "effects", {"scene", "all"}, "scene", "all",
         "passes and shader variants from the scene's features, or every effect forced on (shadows, "

@@ -37,7 +37,6 @@ struct MethodSettings {
     // sample-rate shading (supersampled materials) instead of pixel rate with per-sample coverage.
     bool sampleRateShading = false;
     // AGAA samples path: Kaplanyan curvature roughness in the fill pass (seed 004).
-    bool curvatureRoughness = false;
     EffectSettings effects; // scene-driven shadows, alpha-to-coverage, emissive, normal maps
 };
 

@@ -98,7 +98,7 @@ std::unique_ptr<Technique> createTechnique(const std::string& method, eng::vk::D
         if (settings.debug == "complex") s.debugView = SimpleComplexDebugView::Complex;
         return std::make_unique<SimpleComplex>(device, content, s, method);
     }
-    if (method == "fxaa") return std::make_unique<Fxaa>(device, content, FxaaSettings{});
+    if (method == "fxaa") return std::make_unique<Fxaa>(device, content, FxaaSettings{}, settings.effects);
     if (method == "sbaa") {
         SbaaSettings s;
         s.samples = settings.samples;
@@ -136,7 +136,6 @@ std::unique_ptr<Technique> createTechnique(const std::string& method, eng::vk::D
                 method == "agaa-samples" ? AggregateGeneration::Samples : AggregateGeneration::Accumulate;
         }
         s.sampleRateShading = settings.sampleRateShading;
-        s.curvatureRoughness = settings.curvatureRoughness;
         return std::make_unique<AggregateAA>(device, content, s);
     }
     throw std::invalid_argument("--method '" + method + "' is unknown (known: " + knownMethodNames() + ")");

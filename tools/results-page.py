@@ -45,6 +45,11 @@ class Refused(Exception):
 
 
 def method_label(job):
+    """The method and its setting, and " + specular AA" for a job of the specular-AA axis."""
+    return base_label(job) + (" + specular AA" if job.get("specular_aa") else "")
+
+
+def base_label(job):
     m, n, c, s = job["method"], job["samples"], job["aggregates"], job["surfaces"]
     names = {"noaa": "no-AA", "fxaa": "FXAA", "reference": "reference", "simple-complex": "Simple/Complex",
              "simple-complex-naive": "Simple/Complex naive", "sbaa": "SBAA", "streaming": "streaming",
@@ -63,11 +68,12 @@ def method_label(job):
 def method_rank(job):
     m = job["method"]
     return (METHOD_ORDER.index(m) if m in METHOD_ORDER else len(METHOD_ORDER), m, job["samples"],
-            job["aggregates"], job["surfaces"], job.get("tolerance") or "")
+            job["aggregates"], job["surfaces"], job.get("tolerance") or "", bool(job.get("specular_aa")))
 
 
 def at_defaults(job):
-    """Not a job of AGAA's tolerance axis: the headline compares each method at its defaults."""
+    """Not a job of AGAA's tolerance axis: the headline compares each method at its defaults (with
+    and without specular anti-aliasing, what a user would switch on)."""
     return not job.get("tolerance")
 
 

@@ -22,10 +22,6 @@ void validate(const AggregateSettings& s) {
         throw std::invalid_argument("agaa: characteristic length must be a positive number of metres");
     if (!(s.seedThreshold >= 0.0f) || !std::isfinite(s.seedThreshold))
         throw std::invalid_argument("agaa: seed threshold must be >= 0");
-    if (!(s.curvatureMaxFootprint >= 0.0f && s.curvatureMaxFootprint <= 1.0f))
-        throw std::invalid_argument("agaa: curvature max footprint must be in [0, 1] (GGX alpha^2)");
-    if (!(s.curvatureBoost >= 0.0f) || !std::isfinite(s.curvatureBoost))
-        throw std::invalid_argument("agaa: curvature boost must be a finite number >= 0");
     if (std::isnan(s.tolerance) || std::isinf(s.tolerance))
         throw std::invalid_argument("agaa: --agaa-tolerance must be a finite number >= 0, or never");
     if (!(s.aliasLimit > 0.0f))

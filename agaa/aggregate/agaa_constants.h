@@ -165,12 +165,8 @@ struct AggregateSettings : AggregateChoices {
     float seedThreshold = 0.05f;
     AggregateDebugView debugView = AggregateDebugView::None;
     AggregatePosition position = AggregatePosition::SampleMean;
-    // Samples path only: sample-rate shading in the fill pass (every sample runs the material),
-    // and Kaplanyan curvature roughness there (seed 004's constants; common/curvature_roughness.glsl).
+    // Samples path only: sample-rate shading in the fill pass (every sample runs the material).
     bool sampleRateShading = false;
-    bool curvatureRoughness = false;
-    float curvatureMaxFootprint = 0.3f;
-    float curvatureBoost = 2.0f;
     EffectSettings effects; // scene-driven shadows (taps: the footprint filter), alpha-to-coverage, ...
 };
 

@@ -32,8 +32,8 @@ AggregateAA::AggregateAA(vk::Device& device, const TechniqueContent& content,
     if (m_plan.samplesPath())
         m_gbuffer =
             std::make_unique<SampleGBufferPass>(device, content, s.samples, "agaa", m_plan.features,
-                                                GBufferOptions{s.sampleRateShading, s.curvatureRoughness,
-                                                               s.curvatureMaxFootprint, s.curvatureBoost});
+                                                GBufferOptions{.sampleRateShading = s.sampleRateShading,
+                                                               .curvature = s.effects.curvatureRoughness});
     else
         m_visibility = std::make_unique<VisibilityPass>(device, content, m_plan);
     m_cluster = std::make_unique<ClusterPass>(device, m_plan, fetch);

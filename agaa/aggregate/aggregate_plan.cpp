@@ -228,13 +228,13 @@ std::vector<VariantChoice> planVariants(const AggregatePlan& plan, const SceneTr
                            shortNumber(plan.settings.tolerance) + " and stays below " +
                            shortNumber(plan.settings.aliasLimit),
                  plan.toleranceCause});
+    v.push_back({"curvature-roughness", plan.settings.effects.curvatureRoughness.enabled ? "on" : "off",
+                 "setting --curvature-roughness"});
     if (samplesPath) {
         v.push_back({"fill-shading",
                      plan.settings.sampleRateShading ? "sample rate (supersampled materials)"
                                                      : "pixel rate, per-sample coverage",
                      "setting --sample-rate-shading"});
-        v.push_back({"curvature-roughness", plan.settings.curvatureRoughness ? "on" : "off",
-                     "setting --curvature-roughness"});
         v.push_back(
             {"clustering-distance",
              plan.settings.distance == AggregateDistance::Plane ? "tangent-plane distance" : "Equation 1",

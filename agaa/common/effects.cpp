@@ -3,6 +3,8 @@
 #include "engine/frame/gpu_scene.h"
 #include "shared/environment.h"
 
+#include <bit>
+#include <cmath>
 #include <stdexcept>
 
 namespace agaa {
@@ -17,6 +19,17 @@ void validate(const EffectSettings& s) {
     if (uint32_t(s.shadowFootprint) > uint32_t(EffectSettings::ShadowFootprint::Adaptive))
         throw std::invalid_argument("shadow footprint " + std::to_string(uint32_t(s.shadowFootprint)) +
                                     " is not one of: statistics (0), samples (1), adaptive (2)");
+    const CurvatureRoughness& c = s.curvatureRoughness;
+    if (!(c.maxFootprint >= 0.0f && c.maxFootprint <= 1.0f))
+        throw std::invalid_argument("curvature roughness: max footprint must be in [0, 1] (GGX alpha^2)");
+    if (!(c.boost >= 0.0f) || !std::isfinite(c.boost))
+        throw std::invalid_argument("curvature roughness: boost must be a finite number >= 0");
+}
+
+std::vector<std::pair<uint32_t, uint32_t>> curvatureSpecialization(const CurvatureRoughness& c) {
+    return {{shared::kSpecFillCurvatureRoughness, c.enabled ? 1u : 0u},
+            {shared::kSpecFillCurvatureMaxFootprint, std::bit_cast<uint32_t>(c.maxFootprint)},
+            {shared::kSpecFillCurvatureBoost, std::bit_cast<uint32_t>(c.boost)}};
 }
 
 eng::scene::SceneFeatures effectiveFeatures(const SceneTraits& traits, const EffectSettings& settings) {

@@ -18,6 +18,19 @@
 
 namespace agaa {
 
+// Geometric specular anti-aliasing (Kaplanyan et al. 2016; Tokuyoshi and Kaplanyan 2019), an
+// option of every method's material evaluation: GGX's alpha^2 is widened by the screen-space
+// variance of the geometric normal, clamped (common/curvature_roughness.glsl; the form is
+// Tokuyoshi and Kaplanyan's kernel min(2 sigma^2 (|dN/dx|^2 + |dN/dy|^2), kappa), sigma^2 = 1/4).
+// The converged truth never applies it: it is what the filter approximates.
+struct CurvatureRoughness {
+    bool enabled = false;
+    // kappa, GGX alpha^2 units, 0..1: the UE4 AGAA talk's AgaaKaplanyanRoughnessMaxFootprint (seed
+    // 004); Tokuyoshi and Kaplanyan (2019) suggest 0.18.
+    float maxFootprint = 0.3f;
+    float boost = 2.0f; // AgaaKaplanyanRoughnessBoost: Tokuyoshi and Kaplanyan's factor 2, >= 0
+};
+
 struct EffectSettings {
     bool forceAll = false;         // every effect on, whatever the scene holds (benchmark baseline)
     uint32_t shadowMapSize = 1024; // texels per side of each shadow map, 64..4096
@@ -34,6 +47,7 @@ struct EffectSettings {
         Samples = 1,
         Adaptive = 2
     } shadowFootprint = ShadowFootprint::Adaptive;
+    CurvatureRoughness curvatureRoughness; // --curvature-roughness: every method's G-buffer or kernel
 };
 inline constexpr NamedValue<EffectSettings::ShadowFootprint> kShadowFootprintNames[] = {
     {"adaptive", EffectSettings::ShadowFootprint::Adaptive},
@@ -42,6 +56,11 @@ inline constexpr NamedValue<EffectSettings::ShadowFootprint> kShadowFootprintNam
 
 // Throws std::invalid_argument naming the setting and its range.
 void validate(const EffectSettings& settings);
+
+// The curvature roughness's specialisation constants (ids kSpecFillCurvature*, shaders/glsl/shared/
+// specialization.h) for a raster pass whose material evaluation takes it
+// (raster/sample_gbuffer_output.glsl's sampleGBufferRoughness).
+std::vector<std::pair<uint32_t, uint32_t>> curvatureSpecialization(const CurvatureRoughness& c);
 
 struct VariantChoice {
     std::string effect;  // "shadows", "alpha", "emissive", "normal-maps", "light-culling"

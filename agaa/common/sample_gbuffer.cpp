@@ -54,10 +54,7 @@ SampleGBufferPass::SampleGBufferPass(vk::Device& device, const TechniqueContent&
     m_raster.sampleRateShading = m_options.sampleRateShading && m_samples > 1; // one invocation per sample
     m_raster.moduleSet = {
         {0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 1}};
-    m_raster.specialization.byId = {
-        {shared::kSpecFillCurvatureRoughness, m_options.curvatureRoughness ? 1u : 0u},
-        {shared::kSpecFillCurvatureMaxFootprint, std::bit_cast<uint32_t>(m_options.curvatureMaxFootprint)},
-        {shared::kSpecFillCurvatureBoost, std::bit_cast<uint32_t>(m_options.curvatureBoost)}};
+    m_raster.specialization.byId = curvatureSpecialization(m_options.curvature);
     m_sceneDrawer = makeSceneDrawer(device, content, features);
 }
 

@@ -51,10 +51,9 @@ struct GBufferOptions {
     // sample runs the material, so textures and normal maps are supersampled too (the UE4 talk's
     // supersampled G-buffer, seed 004). Off: pixel-rate shading with per-sample coverage.
     bool sampleRateShading = false;
-    // Kaplanyan curvature roughness (common/curvature_roughness.glsl) with the talk's constants.
-    bool curvatureRoughness = false;
-    float curvatureMaxFootprint = 0.3f; // AgaaKaplanyanRoughnessMaxFootprint, GGX alpha^2 units
-    float curvatureBoost = 2.0f;        // AgaaKaplanyanRoughnessBoost
+    // Geometric specular anti-aliasing (agaa/common/effects.h): a technique passes its
+    // EffectSettings::curvatureRoughness.
+    CurvatureRoughness curvature;
     // A fourth target with every sample's primitive: the scene-wide triangle number + 1 as an exact
     // float (SBAA's prepass; integer MSAA colour is 1x only on lavapipe). Needs the geometryShader
     // feature (gl_PrimitiveID in a fragment shader) and fewer than 2^24 triangles.

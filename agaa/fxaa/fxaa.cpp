@@ -34,9 +34,9 @@ FxaaSettings checked(const FxaaSettings& s) {
 } // namespace
 
 Fxaa::Fxaa(vk::Device& device, const TechniqueContent& content, const FxaaSettings& settings,
-           std::string name)
+           const EffectSettings& effects, std::string name)
     : m_device(device), m_settings(checked(settings)), m_name(std::move(name)),
-      m_noaa(device, content, ReferenceSettings{1}, m_name + ".noaa") {
+      m_noaa(device, content, ReferenceSettings{1, effects}, m_name + ".noaa") {
     vk::LayoutDesc layout;
     layout.pushBindings = vk::reflectBindings({{kFxaaFxaaComp, VK_SHADER_STAGE_COMPUTE_BIT}});
     layout.pushConstantBytes = sizeof(shared::FxaaParams);

@@ -17,9 +17,10 @@ namespace agaa {
 
 class Fxaa final : public Technique {
   public:
-    // Throws std::invalid_argument for settings out of range (naming the setting).
+    // Throws std::invalid_argument for settings out of range (naming the setting). effects: the
+    // no-AA frame's, which FXAA filters.
     Fxaa(eng::vk::Device& device, const TechniqueContent& content, const FxaaSettings& settings,
-         std::string name = "fxaa");
+         const EffectSettings& effects = {}, std::string name = "fxaa");
     ~Fxaa() override;
 
     std::string name() const override { return m_name; }

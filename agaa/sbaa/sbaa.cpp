@@ -56,7 +56,8 @@ Sbaa::Sbaa(vk::Device& device, const TechniqueContent& content, const SbaaSettin
       m_features(effectiveFeatures(content.traits, settings.effects)),
       m_gbuffer(device, content, settings.samples, "sbaa", m_features,
                 GBufferOptions{.sampleRateShading = settings.sampleRateShading, .visibilityOnly = true}),
-      m_fill(device, content, settings.samples, settings.surfaces, m_features, settings.sampleRateShading),
+      m_fill(device, content, settings.samples, settings.surfaces, m_features, settings.sampleRateShading,
+             settings.effects.curvatureRoughness),
       m_shadow(device, content, m_features, settings.effects, "sbaa") {
     vk::LayoutDesc surfaces;
     surfaces.pushBindings = vk::reflectBindings({{kSbaaSurfacesComp, kCompute}});

@@ -11,7 +11,7 @@ namespace vk = eng::vk;
 
 SurfaceFillPass::SurfaceFillPass(vk::Device& device, const TechniqueContent& content, uint32_t samples,
                                  uint32_t surfaces, const eng::scene::SceneFeatures& features,
-                                 bool sampleRate)
+                                 bool sampleRate, const CurvatureRoughness& curvature)
     : m_device(device), m_sceneDrawer(makeSceneDrawer(device, content, features)) {
     const eng::frame::SamplePattern pattern = eng::frame::makeSamplePattern(samples);
     m_raster.name = "sbaa.fill";
@@ -25,11 +25,11 @@ SurfaceFillPass::SurfaceFillPass(vk::Device& device, const TechniqueContent& con
     m_raster.moduleSet = {
         {0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 1},
         {2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_FRAGMENT_BIT, 1}};
-    // Ids 8..10 (curvature roughness) off: the material's own roughness, as the per-sample
-    // G-buffer of every peer. The drawer culls as the prepass did: a culled primitive never holds
-    // a sample, and rasterising it again would cost the EQUAL test of every back-facing fragment.
-    m_raster.specialization.byId = {{shared::kSpecFillCurvatureRoughness, 0u},
-                                    {shared::kSpecFillSbaaSurfaces, surfaces}};
+    // The curvature roughness as every method's G-buffer takes it. The drawer culls as the prepass
+    // did: a culled primitive never holds a sample, and rasterising it again would cost the EQUAL
+    // test of every back-facing fragment.
+    m_raster.specialization.byId = curvatureSpecialization(curvature);
+    m_raster.specialization.byId.push_back({shared::kSpecFillSbaaSurfaces, surfaces});
 }
 
 SurfaceFillPass::~SurfaceFillPass() = default;

@@ -21,7 +21,8 @@ class SurfaceFillPass {
     // samples: n; surfaces: S; sampleRate: the material at each sample's own position (the
     // supersampled G-buffer; needs sampleRateShading, checked by the prepass).
     SurfaceFillPass(eng::vk::Device& device, const TechniqueContent& content, uint32_t samples,
-                    uint32_t surfaces, const eng::scene::SceneFeatures& features, bool sampleRate);
+                    uint32_t surfaces, const eng::scene::SceneFeatures& features, bool sampleRate,
+                    const CurvatureRoughness& curvature);
     ~SurfaceFillPass();
     SurfaceFillPass(const SurfaceFillPass&) = delete;
     SurfaceFillPass& operator=(const SurfaceFillPass&) = delete;

@@ -41,7 +41,8 @@ SimpleComplex::SimpleComplex(vk::Device& device, const TechniqueContent& content
     : m_device(device), m_settings(settings), m_name(std::move(name)), m_traits(content.traits),
       m_scene(content.scene), m_features(effectiveFeatures(content.traits, settings.effects)),
       m_gbuffer(device, content, settings.samples, m_name, m_features,
-                GBufferOptions{.sampleRateShading = settings.sampleRateShading}),
+                GBufferOptions{.sampleRateShading = settings.sampleRateShading,
+                               .curvature = settings.effects.curvatureRoughness}),
       m_shadow(device, content, m_features, settings.effects, m_name) {
     checkSettings(settings);
     const bool shadows = m_shadow.enabled();

@@ -53,7 +53,9 @@ StreamingCompression::StreamingCompression(vk::Device& device, const TechniqueCo
     : m_device(device), m_settings(checked(settings)), m_traits(content.traits), m_scene(content.scene),
       m_features(effectiveFeatures(content.traits, settings.effects)),
       m_gbuffer(device, content, settings.samples, "streaming", m_features,
-                GBufferOptions{.sampleRateShading = settings.sampleRateShading, .primitiveIds = true}),
+                GBufferOptions{.sampleRateShading = settings.sampleRateShading,
+                               .curvature = settings.effects.curvatureRoughness,
+                               .primitiveIds = true}),
       m_shadow(device, content, m_features, settings.effects, "streaming") {
     vk::LayoutDesc compress;
     compress.pushBindings = vk::reflectBindings({{kStreamingCompressComp, kCompute}});

@@ -247,7 +247,7 @@ TEST_P(QualityScene, AgaaIsNeverWorseThanNoAaAndKeepsTheEnergy) {
                 r.settings.effects.shadowFootprint = std::string(f) == "samples"
                                                          ? agaa::EffectSettings::ShadowFootprint::Samples
                                                          : agaa::EffectSettings::ShadowFootprint::Statistics;
-            if (std::getenv("AGAA_QUALITY_CURVATURE")) r.settings.curvatureRoughness = true;
+            if (std::getenv("AGAA_QUALITY_CURVATURE")) r.settings.effects.curvatureRoughness.enabled = true;
             if (const char* t = std::getenv("AGAA_QUALITY_TOLERANCE"))
                 r.settings.agaa.tolerance = float(std::atof(t));
             if (const char* l = std::getenv("AGAA_QUALITY_ALIAS_LIMIT"))

@@ -20,6 +20,7 @@
 #include "engine/scene/model_builder.h"
 #include "engine/vk/check.h"
 #include "gpu_test_support.h"
+#include "tests/support/curvature_scene.h"
 #include "tools/harness/frame_renderer.h"
 #include "tools/scenes/adversarial_scenes.h"
 
@@ -247,7 +248,7 @@ TEST(AgaaSamplesGpu, RerunsAreBitIdenticalAndTheVariantsNameThePath) {
         for (bool sampleRate : {false, true}) {
             agaa::RenderRequest r = request("agaa-samples", 8, 2, 64);
             r.settings.sampleRateShading = sampleRate;
-            r.settings.curvatureRoughness = sampleRate;
+            r.settings.effects.curvatureRoughness.enabled = sampleRate;
             agaa::RenderResult a = renderer.render(r);
             agaa::RenderResult b = renderer.render(r);
             EXPECT_EQ(a.hdr.rgba, b.hdr.rgba) << name;
@@ -283,30 +284,7 @@ TEST(AgaaSamplesGpu, DebugViewShowsTheLitFramesAggregates) {
     agaa::test::expectNoValidationErrors(*device);
 }
 
-// A lone sphere or square of roughness 0.2 lit by a point light, seen from `distance` metres.
-eng::scene::Scene curvatureScene(bool sphere, float distance) {
-    eng::scene::ModelBuilder b("test.curvature");
-    eng::scene::MaterialDesc m;
-    m.name = "glossy";
-    m.baseColor = glm::vec4(0.6f, 0.6f, 0.6f, 1.0f);
-    m.roughness = 0.2f;
-    const int material = b.addMaterial(m);
-    eng::scene::MeshData mesh;
-    if (sphere)
-        eng::scene::addSphere(mesh, {0.0f, 0.0f, 0.0f}, 0.5f, 24, 48);
-    else
-        eng::scene::addQuad(mesh, {-50.0f, -50.0f, 0.0f}, {100.0f, 0.0f, 0.0f}, {0.0f, 100.0f, 0.0f});
-    b.addMesh("subject", mesh, material);
-    b.addPointLight("light", {1.0f, 2.0f, distance}, {1.0f, 1.0f, 1.0f}, 50.0f, 0.0f);
-    eng::scene::Camera camera;
-    camera.name = "camera";
-    camera.yfov = 0.8f;
-    camera.view = eng::scene::lookAtView({0.0f, 0.0f, distance}, {0.0f, 0.0f, 0.0f});
-    camera.znear = 0.05f;
-    camera.zfar = 200.0f;
-    b.addCamera(camera, 1.0f);
-    return eng::scene::loadGltfModel(b.finish(), "test.curvature");
-}
+using agaa::test::curvatureScene;
 
 // Kaplanyan curvature roughness in the fill pass (common/curvature_roughness.glsl).
 TEST(AgaaSamplesGpu, CurvatureRoughnessKeepsFlatSurfacesAndBoundsTheSphereBias) {
@@ -319,7 +297,7 @@ TEST(AgaaSamplesGpu, CurvatureRoughnessKeepsFlatSurfacesAndBoundsTheSphereBias) 
         agaa::FrameRenderer renderer(*device, scene);
         agaa::RenderRequest r = request("agaa-samples", n, c, size);
         const std::vector<float> off = renderExport(exporter, renderer, r);
-        r.settings.curvatureRoughness = true;
+        r.settings.effects.curvatureRoughness.enabled = true;
         const std::vector<float> on = renderExport(exporter, renderer, r);
         uint32_t samples = 0, changed = 0;
         for (uint32_t i = 0; i < size * size * n; ++i) {
@@ -336,7 +314,7 @@ TEST(AgaaSamplesGpu, CurvatureRoughnessKeepsFlatSurfacesAndBoundsTheSphereBias) 
         eng::scene::Scene scene = curvatureScene(true, distance);
         agaa::FrameRenderer renderer(*device, scene);
         agaa::RenderRequest r = request("agaa-samples", n, c, size);
-        r.settings.curvatureRoughness = true;
+        r.settings.effects.curvatureRoughness.enabled = true;
         const std::vector<float> e = renderExport(exporter, renderer, r);
         uint32_t samples = 0, outside = 0;
         double biasSum = 0.0, worst = 0.0;

@@ -119,6 +119,29 @@ TEST(SweepPlan, ToleranceAxisIsAgaasOnly) {
     EXPECT_EQ(jobId("plane", "agaa", 8, 2, 0, "30"), "plane__agaa__n8__c2__t30");
 }
 
+// Issue 51: geometric specular AA as an axis, what a user would switch on instead of more samples:
+// every job twice, the second named __saa and labelled, and the id round-trips through a result.
+TEST(SweepPlan, SpecularAAAxisRunsEveryJobWithAndWithout) {
+    SweepSettings s;
+    s.scenes = {"plane"};
+    s.methods = {"noaa", "fxaa", "agaa"};
+    s.samples = {8};
+    s.aggregates = {2};
+    s.specularAA = {false, true};
+    std::vector<std::string> ids, labels;
+    for (const Job& j : planSweep(s)) {
+        ids.push_back(j.id());
+        labels.push_back(j.label());
+    }
+    EXPECT_EQ(ids, (std::vector<std::string>{"plane__noaa__n1__c0", "plane__noaa__n1__c0__saa",
+                                             "plane__fxaa__n1__c0", "plane__fxaa__n1__c0__saa",
+                                             "plane__agaa__n8__c2", "plane__agaa__n8__c2__saa"}));
+    EXPECT_EQ(labels[3], "fxaa + specular AA");
+    JobResult r;
+    r.job = planSweep(s)[1];
+    EXPECT_EQ(jobFromJson(toJson(r)).job.id(), "plane__noaa__n1__c0__saa");
+}
+
 TEST(ShadingLanes, EachLaneGroupCostsItsWorstPixel) {
     // One row of 10 pixels in 8-lane groups: the first group's worst pixel has 5 events, the
     // second (2 pixels) 2: (8 * 5 + 2 * 2) / 10.

@@ -28,7 +28,8 @@ const JobResult* find(const std::vector<JobResult>& results, const std::string& 
         if (r.job.scene != scene || r.job.method != method) continue;
         if (r.job.usesSamples && r.job.samples != samples) continue;
         if (aggregates && r.job.usesAggregates && r.job.aggregates != *aggregates) continue;
-        if (!r.job.tolerance.empty()) continue; // each method at its defaults, not a tolerance-axis job
+        if (!r.job.tolerance.empty() || r.job.specularAA)
+            continue; // each method at its defaults, not an axis's job
         return &r;
     }
     return nullptr;
@@ -96,7 +97,7 @@ const JobResult* findKey(const std::vector<JobResult>& results, const std::strin
         if (r.job.usesSamples && r.job.samples != k.samples) continue;
         if (k.aggregates && r.job.usesAggregates && r.job.aggregates != *k.aggregates) continue;
         if (k.surfaces && r.job.surfaces != *k.surfaces) continue;
-        if (!r.job.tolerance.empty()) continue; // the claims are about each method at its defaults
+        if (!r.job.tolerance.empty() || r.job.specularAA) continue; // each method at its defaults
         return &r;
     }
     return nullptr;
@@ -186,6 +187,7 @@ std::string point(const JobResult& r) {
     std::string label = r.job.method + " (n=" + std::to_string(r.job.samples);
     if (r.job.usesAggregates) label += ", c=" + std::to_string(r.job.aggregates);
     if (!r.job.tolerance.empty()) label += ", tolerance " + r.job.tolerance;
+    if (r.job.specularAA) label += ", specular AA";
     return label + ") " + format("%.4f", truthRmse(r).value_or(0.0)) + " in " +
            format("%.0f ms", r.frameMs.median);
 }

@@ -66,7 +66,9 @@ std::string joined(const std::vector<std::string>& v) {
 
 std::string usage() {
     return "usage: agaa-bench --out DIR [--scenes a,b] [--methods a,b] [--samples 8,32] [--aggregates 1,2]\n"
-           "                  [--surfaces 1,2,3] [--tolerances never,30,0] [--size WxH] [--frames K] "
+           "                  [--surfaces 1,2,3] [--tolerances never,30,0] [--specular-aa off,on] [--size "
+           "WxH] "
+           "[--frames K] "
            "[--warmup K] [--temporal K] "
            "[--full] [--job I/N]\n"
            "                  [--truth-supersampling K] [--truth-cache DIR]\n"
@@ -93,6 +95,8 @@ std::string usage() {
            "never,\n"
            "                    the paper's AGAA; or T >= 0, 0 the reference) for agaa and agaa-samples;\n"
            "                    jobs other than auto are named ...__t<T>\n"
+           "  --specular-aa off,on  geometric specular AA (--curvature-roughness) as an axis: every job\n"
+           "                    once per value, those with it named ...__saa and labelled \"+ specular AA\"\n"
            "  --size WxH        image size, 1..8192 each (default 160x90)\n"
            "  --frames K        timed frames per job, 1..1000 (default 3); times are medians with min/max\n"
            "  --warmup K        untimed frames first, 0..1000 (default 1)\n"
@@ -182,6 +186,14 @@ BenchOptions parseOptions(int argc, char** argv) {
             s.surfaces.clear();
             for (const std::string& v : splitList(a, value()))
                 s.surfaces.push_back(axisValue("surfaces", v).surfaces);
+        } else if (a == "--specular-aa") {
+            s.specularAA.clear();
+            for (const std::string& v : splitList(a, value())) {
+                if (v != "off" && v != "on")
+                    throw BadArgument("--specular-aa: '" + v + "' is not one of: off, on");
+                if (std::find(s.specularAA.begin(), s.specularAA.end(), v == "on") == s.specularAA.end())
+                    s.specularAA.push_back(v == "on");
+            }
         } else if (a == "--tolerances") {
             s.tolerances.clear();
             const MethodOption& tolerance = *findMethodOption("agaa-tolerance");

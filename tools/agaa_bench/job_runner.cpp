@@ -66,19 +66,33 @@ void JobRunner::selectScene(const std::string& name) {
     m_scene.renderer = std::make_unique<FrameRenderer>(m_device, *m_scene.scene);
 }
 
-RenderRequest JobRunner::request(const std::string& method, uint32_t samples, uint32_t aggregates,
-                                 uint32_t width, uint32_t height, float orbitDegrees, uint32_t surfaces,
-                                 const std::string& tolerance) const {
+namespace {
+
+// The same-n reference and the truth's request: the reference with the sweep's given settings
+// and no axis.
+Job referenceJob(uint32_t samples) {
+    Job j;
+    j.method = kReference;
+    j.samples = samples;
+    return j;
+}
+
+} // namespace
+
+RenderRequest JobRunner::request(const Job& job, uint32_t width, uint32_t height, float orbitDegrees) const {
     RenderRequest r;
-    r.method = method;
+    r.method = job.method;
     for (const std::string& name : m_settings.givenSettings) {
         const MethodOption& option = *findMethodOption(name);
-        if (methodReadsOption(option, method)) option.set(r.settings, option.get(m_settings.methodSettings));
+        if (methodReadsOption(option, job.method))
+            option.set(r.settings, option.get(m_settings.methodSettings));
     }
-    r.settings.samples = samples;
-    r.settings.surfaces = surfaces; // 0: the method's default
-    if (!tolerance.empty()) setMethodOption(r.settings, *findMethodOption("agaa-tolerance"), tolerance);
-    if (aggregates != kAggregatesWhenUnused) r.settings.aggregates = aggregates;
+    r.settings.samples = job.samples;
+    r.settings.surfaces = job.surfaces; // 0: the method's default
+    if (!job.tolerance.empty())
+        setMethodOption(r.settings, *findMethodOption("agaa-tolerance"), job.tolerance);
+    if (job.specularAA) r.settings.effects.curvatureRoughness.enabled = true;
+    if (job.aggregates != kAggregatesWhenUnused) r.settings.aggregates = job.aggregates;
     r.view.width = width;
     r.view.height = height;
     // A real scene gives no exposure: metered, the same for every method of the sweep.
@@ -110,16 +124,14 @@ ConvergedTruth JobRunner::renderConverged(const RenderRequest& request) {
 const eng::io::ImageF& JobRunner::referenceAtSamples(uint32_t samples) {
     auto it = m_scene.referenceAtSamples.find(samples);
     if (it != m_scene.referenceAtSamples.end()) return it->second;
-    RenderResult r = renderTruth(
-        request(kReference, samples, kAggregatesWhenUnused, m_settings.width, m_settings.height, 0.0f));
+    RenderResult r = renderTruth(request(referenceJob(samples), m_settings.width, m_settings.height, 0.0f));
     it = m_scene.referenceAtSamples.emplace(samples, srgbEncoded(r.display)).first;
     return it->second;
 }
 
 const ConvergedTruth& JobRunner::truth() {
     if (!m_scene.truth) {
-        m_scene.truth = renderConverged(
-            request(kReference, 32, kAggregatesWhenUnused, m_settings.width, m_settings.height, 0.0f));
+        m_scene.truth = renderConverged(request(referenceJob(32), m_settings.width, m_settings.height, 0.0f));
         m_scene.truthDisplay = srgbEncoded(m_scene.truth->display);
         const ConvergedTruth& t = *m_scene.truth;
         std::printf("\n  truth for %s: %ux%u tiles at n=%u, error estimate %.5f, mean %.4f%s\n  ",
@@ -134,24 +146,21 @@ const std::vector<eng::io::ImageF>& JobRunner::pathTruth() {
         uint32_t w = 0, h = 0;
         temporalSize(m_settings, w, h);
         for (uint32_t t = 0; t < m_settings.temporalFrames; ++t) {
-            const ConvergedTruth truth = renderConverged(request(kReference, 32, kAggregatesWhenUnused, w, h,
-                                                                 float(t) * m_settings.temporalStepDegrees));
+            const ConvergedTruth truth =
+                renderConverged(request(referenceJob(32), w, h, float(t) * m_settings.temporalStepDegrees));
             m_scene.pathTruth.push_back(srgbEncoded(truth.display));
         }
     }
     return m_scene.pathTruth;
 }
 
-std::vector<eng::io::ImageF> JobRunner::renderPath(const std::string& method, uint32_t samples,
-                                                   uint32_t aggregates, uint32_t surfaces,
-                                                   const std::string& tolerance) {
+std::vector<eng::io::ImageF> JobRunner::renderPath(const Job& job) {
     uint32_t w = 0, h = 0;
     temporalSize(m_settings, w, h);
     std::vector<eng::io::ImageF> frames;
     for (uint32_t t = 0; t < m_settings.temporalFrames; ++t) {
         RenderResult r =
-            m_scene.renderer->render(request(method, samples, aggregates, w, h,
-                                             float(t) * m_settings.temporalStepDegrees, surfaces, tolerance));
+            m_scene.renderer->render(request(job, w, h, float(t) * m_settings.temporalStepDegrees));
         frames.push_back(srgbEncoded(r.display));
     }
     return frames;
@@ -162,16 +171,14 @@ JobResult JobRunner::run(const Job& job) {
     const auto start = std::chrono::steady_clock::now();
     const uint32_t validationBefore = m_device.validationErrors();
 
-    RenderRequest req = request(job.method, job.samples, job.aggregates, m_settings.width, m_settings.height,
-                                0.0f, job.surfaces, job.tolerance);
+    RenderRequest req = request(job, m_settings.width, m_settings.height, 0.0f);
     req.warmupFrames = m_settings.warmupFrames;
     req.timedFrames = m_settings.timedFrames;
     RenderResult rendered = m_scene.renderer->render(req);
     if (!eng::io::allFinite(rendered.hdr) || !eng::io::allFinite(rendered.display))
         throw std::runtime_error(job.id() + ": the frame contains NaN or Inf");
     std::vector<eng::io::ImageF> path;
-    if (m_settings.temporalFrames >= 2)
-        path = renderPath(job.method, job.samples, job.aggregates, job.surfaces, job.tolerance);
+    if (m_settings.temporalFrames >= 2) path = renderPath(job);
     uint32_t validationErrors = m_device.validationErrors() - validationBefore;
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
@@ -211,7 +218,7 @@ JobResult JobRunner::run(const Job& job) {
     r.meanLuminance = meanLuminance(rendered.hdr);
 
     const eng::io::ImageF display = srgbEncoded(rendered.display);
-    if (job.method == kReference) {
+    if (job.method == kReference && !job.specularAA) {
         // The reference is itself the same-n measure: error 0 by definition. Keep its image for it.
         r.errorSameN = identical();
         m_scene.referenceAtSamples.emplace(job.samples, display);

@@ -49,14 +49,12 @@ class JobRunner {
     };
 
     void selectScene(const std::string& name);
-    RenderRequest request(const std::string& method, uint32_t samples, uint32_t aggregates, uint32_t width,
-                          uint32_t height, float orbitDegrees, uint32_t surfaces = 0,
-                          const std::string& tolerance = "") const;
+    // The job's frame: its method with the sweep's given settings, then its axes.
+    RenderRequest request(const Job& job, uint32_t width, uint32_t height, float orbitDegrees) const;
     const eng::io::ImageF& referenceAtSamples(uint32_t samples);
     const ConvergedTruth& truth();
     const std::vector<eng::io::ImageF>& pathTruth();
-    std::vector<eng::io::ImageF> renderPath(const std::string& method, uint32_t samples, uint32_t aggregates,
-                                            uint32_t surfaces, const std::string& tolerance);
+    std::vector<eng::io::ImageF> renderPath(const Job& job);
     RenderResult renderTruth(const RenderRequest& request);
     ConvergedTruth renderConverged(const RenderRequest& request);
 

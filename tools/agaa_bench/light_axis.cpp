@@ -91,17 +91,18 @@ std::vector<LightAxisTable> lightAxisTables(const std::vector<JobResult>& result
         const auto column = [&](uint32_t k) {
             return size_t(std::find(t.lightCounts.begin(), t.lightCounts.end(), k) - t.lightCounts.begin());
         };
-        using Key = std::tuple<std::string, uint32_t, uint32_t, uint32_t, std::string>;
+        using Key = std::tuple<std::string, uint32_t, uint32_t, uint32_t, std::string, bool>;
         std::map<Key, size_t> rowOf;
         std::map<std::pair<uint32_t, uint32_t>, Spread> peer; // (n, K) -> Simple/Complex frame ms
         for (const JobResult& r : results) {
             const SceneVariant v = parseSceneVariant(r.job.scene);
             if (v.base != scene) continue;
-            const Key key{r.job.method, r.job.samples, r.job.aggregates, r.job.surfaces, r.job.tolerance};
+            const Key key{r.job.method,   r.job.samples,   r.job.aggregates,
+                          r.job.surfaces, r.job.tolerance, r.job.specularAA};
             auto [it, added] = rowOf.emplace(key, t.rows.size());
             if (added) {
                 LightAxisRow row;
-                row.method = r.job.method + (r.job.tolerance.empty() ? "" : " T" + r.job.tolerance);
+                row.method = r.job.label();
                 row.samples = r.job.samples;
                 row.aggregates = r.job.aggregates;
                 row.surfaces = r.job.surfaces;

@@ -81,7 +81,7 @@ MergeOutcome mergeResults(std::vector<JobResult> results) {
             const SceneVariant v = parseSceneVariant(r.job.scene);
             return std::make_tuple(rankIn(scenes, v.base), v.base, v.extraLights,
                                    rankIn(methods, r.job.method), r.job.method, r.job.samples,
-                                   r.job.aggregates, r.job.surfaces, r.job.tolerance);
+                                   r.job.aggregates, r.job.surfaces, r.job.tolerance, r.job.specularAA);
         };
         return key(a) < key(b);
     });

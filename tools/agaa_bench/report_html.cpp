@@ -87,6 +87,7 @@ std::string setting(const Job& j) {
     if (j.usesAggregates) s += (s.empty() ? "" : " ") + std::string("c") + std::to_string(j.aggregates);
     if (j.surfaces) s += (s.empty() ? "" : " ") + std::string("S") + std::to_string(j.surfaces);
     if (!j.tolerance.empty()) s += (s.empty() ? "" : " ") + std::string("T") + j.tolerance;
+    if (j.specularAA) s += (s.empty() ? "" : " ") + std::string("+ specular AA");
     return s;
 }
 
@@ -146,9 +147,10 @@ json benchData(const std::vector<JobResult>& results) {
              {"setting", setting(r.job)},
              {"series", r.job.method + (r.job.usesAggregates ? " c" + std::to_string(r.job.aggregates) : "") +
                             (r.job.surfaces ? " S" + std::to_string(r.job.surfaces) : "") +
-                            (r.job.tolerance.empty() ? "" : " T" + r.job.tolerance)},
+                            (r.job.tolerance.empty() ? "" : " T" + r.job.tolerance) +
+                            (r.job.specularAA ? " + specular AA" : "")},
              // The knob's curve (report_script.cpp): the jobs that differ only in AGAA's tolerance.
-             {"knob", r.job.usesAggregates && r.job.method.rfind("agaa", 0) == 0
+             {"knob", r.job.usesAggregates && r.job.method.rfind("agaa", 0) == 0 && !r.job.specularAA
                           ? json(r.job.method + " n" + std::to_string(r.job.samples) + " c" +
                                  std::to_string(r.job.aggregates))
                           : json()},

@@ -95,6 +95,7 @@ json toJson(const JobResult& r) {
     j["aggregates"] = r.job.aggregates;
     j["surfaces"] = r.job.surfaces;
     j["tolerance"] = r.job.tolerance;
+    j["specular_aa"] = r.job.specularAA;
     j["uses_samples"] = r.job.usesSamples;
     j["uses_aggregates"] = r.job.usesAggregates;
     j["plan_index"] = r.job.index;
@@ -152,6 +153,7 @@ JobResult jobFromJson(const json& j) {
         r.job.aggregates = j.at("aggregates").get<uint32_t>();
         r.job.surfaces = j.value("surfaces", 0u);              // absent in results written before the S axis
         r.job.tolerance = j.value("tolerance", std::string()); // and before the tolerance axis
+        r.job.specularAA = j.value("specular_aa", false);      // and before the specular-AA axis
         r.job.usesSamples = j.at("uses_samples").get<bool>();
         r.job.usesAggregates = j.at("uses_aggregates").get<bool>();
         r.job.index = j.at("plan_index").get<size_t>();
@@ -247,7 +249,8 @@ void writeResultsCsv(const std::filesystem::path& file, const std::vector<JobRes
          "frame_ms_min,frame_ms_max,frame_ms_q1,frame_ms_q3,bytes_per_pixel,shading_events_mean,"
          "shading_events_max,rmse_same_n,psnr_same_n,ssim_same_n,p99_same_n,rmse_truth,psnr_truth,ssim_truth,"
          "p99_truth,truth_error_estimate,temporal_error_change,validation_errors,passes,surfaces,"
-         "shading_events_worst_lane,mean_luminance,truth_mean_luminance,truth_supersampling,tolerance\n";
+         "shading_events_worst_lane,mean_luminance,truth_mean_luminance,truth_supersampling,tolerance,"
+         "specular_aa\n";
     for (const JobResult& r : results) {
         auto err = [&](const std::optional<ErrorMetrics>& e) {
             if (!e) return std::string(",,,");
@@ -267,7 +270,8 @@ void writeResultsCsv(const std::filesystem::path& file, const std::vector<JobRes
           << (r.temporal ? csvNumber(r.temporal->meanErrorChange) : "") << "," << r.validationErrors << ","
           << csvField(passes) << "," << r.job.surfaces << "," << csvNumber(r.shadingEventsWorstLane) << ","
           << csvNumber(r.meanLuminance) << "," << csvNumber(r.truth.meanLuminance) << ","
-          << r.truth.supersampling << "," << csvField(r.job.tolerance) << "\n";
+          << r.truth.supersampling << "," << csvField(r.job.tolerance) << "," << (r.job.specularAA ? 1 : 0)
+          << "\n";
     }
     writeTextFile(file, s.str());
 }

@@ -34,13 +34,18 @@ bool parseUint(const std::string& s, uint32_t& out) {
 } // namespace
 
 std::string jobId(const std::string& scene, const std::string& method, uint32_t samples, uint32_t aggregates,
-                  uint32_t surfaces, const std::string& tolerance) {
+                  uint32_t surfaces, const std::string& tolerance, bool specularAA) {
     return scene + "__" + method + "__n" + std::to_string(samples) + "__c" + std::to_string(aggregates) +
-           (surfaces ? "__s" + std::to_string(surfaces) : "") + (tolerance.empty() ? "" : "__t" + tolerance);
+           (surfaces ? "__s" + std::to_string(surfaces) : "") + (tolerance.empty() ? "" : "__t" + tolerance) +
+           (specularAA ? "__saa" : "");
 }
 
 std::string Job::id() const {
-    return jobId(scene, method, samples, aggregates, surfaces, tolerance);
+    return jobId(scene, method, samples, aggregates, surfaces, tolerance, specularAA);
+}
+
+std::string Job::label() const {
+    return method + (tolerance.empty() ? "" : " T" + tolerance) + (specularAA ? " + specular AA" : "");
 }
 
 std::string sceneWithLights(const std::string& scene, uint32_t extraLights) {
@@ -92,19 +97,22 @@ std::vector<Job> planSweep(const SweepSettings& settings) {
                 for (uint32_t c : cs) {
                     for (uint32_t s : ss) {
                         for (const std::string& t : ts) {
-                            Job job;
-                            job.scene = scene;
-                            job.method = method;
-                            job.samples = n;
-                            job.aggregates = c;
-                            job.surfaces = s;
-                            // "auto" is AGAA's default: the job the sweep has without the axis.
-                            job.tolerance = t == "auto" ? "" : t;
-                            job.usesSamples = info.usesSamples;
-                            job.usesAggregates = info.usesAggregates;
-                            if (!seen.insert(job.id()).second) continue;
-                            job.index = jobs.size();
-                            jobs.push_back(job);
+                            for (const bool saa : settings.specularAA) {
+                                Job job;
+                                job.scene = scene;
+                                job.method = method;
+                                job.samples = n;
+                                job.aggregates = c;
+                                job.surfaces = s;
+                                // "auto" is AGAA's default: the job the sweep has without the axis.
+                                job.tolerance = t == "auto" ? "" : t;
+                                job.specularAA = saa;
+                                job.usesSamples = info.usesSamples;
+                                job.usesAggregates = info.usesAggregates;
+                                if (!seen.insert(job.id()).second) continue;
+                                job.index = jobs.size();
+                                jobs.push_back(job);
+                            }
                         }
                     }
                 }

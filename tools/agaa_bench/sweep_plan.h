@@ -26,6 +26,9 @@ struct SweepSettings {
     // AGAA's shading-rate tolerance (--tolerances; --agaa-tolerance's values, "auto", "never" or
     // T), for the methods that read it; empty: not an axis.
     std::vector<std::string> tolerances;
+    // Geometric specular anti-aliasing (--specular-aa off,on; --curvature-roughness): every job once
+    // per value; {false}: not an axis (the jobs take --curvature-roughness as given, if given).
+    std::vector<bool> specularAA = {false};
     // The light-count axis (--extra-lights): every scene once per K, with K generated point lights.
     std::vector<uint32_t> extraLights = {0};
     uint32_t width = 160;
@@ -60,16 +63,19 @@ struct Job {
     uint32_t aggregates = kAggregatesWhenUnused;
     bool usesSamples = false;
     bool usesAggregates = false;
-    uint32_t surfaces = 0; // S of the methods that take it (SBAA, streaming); 0 = none
-    std::string tolerance; // AGAA's --agaa-tolerance on the tolerance axis; empty: its default (auto)
+    uint32_t surfaces = 0;   // S of the methods that take it (SBAA, streaming); 0 = none
+    std::string tolerance;   // AGAA's --agaa-tolerance on the tolerance axis; empty: its default (auto)
+    bool specularAA = false; // --curvature-roughness on (the --specular-aa axis)
 
     // "<scene>__<method>__n<N>__c<C>", then "__s<S>" for methods that take S, "__t<T>" on the
-    // tolerance axis
+    // tolerance axis, "__saa" with specular anti-aliasing
     std::string id() const;
+    // The method's name with what the axes added: "fxaa + specular AA", "agaa T30".
+    std::string label() const;
 };
 
 std::string jobId(const std::string& scene, const std::string& method, uint32_t samples, uint32_t aggregates,
-                  uint32_t surfaces = 0, const std::string& tolerance = "");
+                  uint32_t surfaces = 0, const std::string& tolerance = "", bool specularAA = false);
 
 // The light-count axis: a scene with K generated point lights (engine/scene/extra_lights.h) is the
 // scene variant "<scene>+l<K>" in job ids, results and the report; K = 0 is the scene itself, so

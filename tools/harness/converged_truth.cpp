@@ -203,7 +203,7 @@ std::string truthKey(const eng::scene::Scene& scene, const RenderRequest& reques
     h.value(e.shadowMapSize);
     h.value(e.shadowTaps);
     h.value(uint32_t(e.shadowFootprint));
-    h.value(request.settings.curvatureRoughness);
+    h.value(request.settings.effects.curvatureRoughness.enabled); // always off: the key's old layout
     h.value(settings.supersampling);
     h.value(settings.samples);
     return h.hex();
@@ -222,6 +222,8 @@ ConvergedTruth renderConvergedTruth(FrameRenderer& renderer, const RenderRequest
     frame.settings.samples = settings.samples;
     frame.settings.sampleRateShading = true; // materials, textures and alpha per sample
     frame.settings.debug.clear();            // the lit frame, whatever view the caller's method shows
+    // The material's own roughness: the truth is what specular anti-aliasing approximates.
+    frame.settings.effects.curvatureRoughness.enabled = false;
     frame.warmupFrames = 0;
     frame.timedFrames = 1;
     frame.extraPasses = nullptr;

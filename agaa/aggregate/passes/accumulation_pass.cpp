@@ -44,6 +44,8 @@ AccumulationPass::AccumulationPass(vk::Device& device, const TechniqueContent& c
     m_raster.specialization.byId = {{shared::kSpecGenerationNdf, uint32_t(s.ndf)},
                                     {shared::kSpecGenerationRouting, uint32_t(s.routing)},
                                     {shared::kSpecGenerationSampleMaterial, plan.shadingRate() ? 1u : 0u}};
+    for (const auto& constant : curvatureSpecialization(s.effects.curvatureRoughness))
+        m_raster.specialization.byId.push_back(constant);
     if (plan.emissive()) m_raster.defines.push_back("AGAA_EMISSIVE");
     if (int64) m_raster.defines.push_back("AGAA_INT64");
     if (s.subgroupReduction == SubgroupReduction::On) m_raster.defines.push_back("AGAA_SUBGROUP");

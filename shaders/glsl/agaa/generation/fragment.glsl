@@ -9,6 +9,10 @@
 layout(push_constant) uniform Push { uint material; } pc;
 
 #include "common/material.glsl"
+// Geometric specular anti-aliasing (agaa/common/effects.h CurvatureRoughness), as every method's
+// per-sample G-buffer takes it: the constants and sampleGBufferRoughness, no targets.
+#define SAMPLE_GBUFFER_TARGETS 0
+#include "raster/sample_gbuffer_output.glsl"
 
 // Centroid: a fragment that covers only some samples reads its attributes inside the triangle, as
 // the reference's per-sample G-buffer does (reference/gbuffer_inputs.glsl), never extrapolated to
@@ -19,9 +23,17 @@ layout(location = 2) centroid in vec4 inUvs; // xy TEXCOORD_0, zw TEXCOORD_1
 layout(location = 3) flat in uint inLayer;
 layout(location = 5) centroid in vec4 inColor;
 
-// The fragment's material, evaluated here.
+// The fragment's material, evaluated here. Call it in uniform control flow (the geometric
+// normal's screen derivatives), as the kernel's main does first.
 MaterialSample generationMaterial() {
-    return evaluateMaterial(materials[pc.material], inUvs, inColor, inNormal, inTangent, gl_FrontFacing);
+    float glen = length(inNormal);
+    vec3 geometric = glen > kMinNormalLength ? inNormal / glen : vec3(0.0, 0.0, 1.0);
+    vec3 dNdx = kCurvatureRoughness != 0u ? dFdx(geometric) : vec3(0.0);
+    vec3 dNdy = kCurvatureRoughness != 0u ? dFdy(geometric) : vec3(0.0);
+    MaterialSample m =
+        evaluateMaterial(materials[pc.material], inUvs, inColor, inNormal, inTangent, gl_FrontFacing);
+    m.roughness = sampleGBufferRoughness(m.roughness, dNdx, dNdy);
+    return m;
 }
 
 // The material evaluated at the fragment, then aggregateFragment (its pixel, covered samples and
