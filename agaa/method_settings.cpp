@@ -259,8 +259,10 @@ std::vector<MethodOption> declareOptions() {
         [=](MethodSettings& s, const std::string& v) { s.effects.shadowMapSize = count(v); },
         [](const MethodSettings& s) { return std::to_string(s.effects.shadowMapSize); }));
     MethodOption debug = ranged(
-        Kind::Text, "debug", "VIEW", 0, 0, "none", "agaa*, simple-complex*",
-        "a method's debug view instead of the lit frame (agaa: aggregates; simple-complex: complex)",
+        Kind::Text, "debug", "VIEW", 0, 0, "none", "agaa*, simple-complex*, taa",
+        "a method's debug view instead of the lit frame (agaa: aggregates; simple-complex: complex; taa: "
+        "motion, "
+        "the reprojected pixel position)",
         [](MethodSettings& s, const std::string& v) { s.debug = v; },
         [](const MethodSettings& s) { return s.debug; });
     o.push_back(debug);

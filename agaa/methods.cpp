@@ -6,6 +6,7 @@
 #include "agaa/sbaa/sbaa.h"
 #include "agaa/simple_complex/simple_complex.h"
 #include "agaa/streaming/streaming.h"
+#include "agaa/temporal/temporal_aa.h"
 
 #include <stdexcept>
 
@@ -28,6 +29,14 @@ const std::vector<MethodInfo>& knownMethods() {
          false,
          {"complex"}},
         {"fxaa", "FXAA 3.11 quality (Lottes 2009), preset 39, on the no-AA image", false, false},
+        {"taa",
+         "temporal AA on the no-AA path (Karis 2014): a Halton (2, 3) sub-pixel jitter per frame, the "
+         "history "
+         "reprojected by depth and the camera's motion and clipped to the neighbourhood in YCoCg; converges "
+         "over --frames",
+         false,
+         false,
+         {"motion"}},
         {"sbaa",
          "surface based anti-aliasing (Salvi and Vidimce 2012): the S most covered surfaces per pixel "
          "(--surfaces, default 4; similar planes merged) lit once each; the rest's coverage is lost",
@@ -97,6 +106,15 @@ std::unique_ptr<Technique> createTechnique(const std::string& method, eng::vk::D
                                         " (allowed: complex)");
         if (settings.debug == "complex") s.debugView = SimpleComplexDebugView::Complex;
         return std::make_unique<SimpleComplex>(device, content, s, method);
+    }
+    if (method == "taa") {
+        if (!settings.debug.empty() && settings.debug != "motion")
+            throw std::invalid_argument("--debug '" + settings.debug +
+                                        "' is not a debug view of taa (allowed: motion)");
+        TemporalSettings s;
+        s.effects = settings.effects;
+        s.motionView = settings.debug == "motion";
+        return std::make_unique<TemporalAA>(device, content, s);
     }
     if (method == "fxaa") return std::make_unique<Fxaa>(device, content, FxaaSettings{}, settings.effects);
     if (method == "sbaa") {

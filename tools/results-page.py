@@ -35,7 +35,7 @@ RESULTS_SCHEMA = "agaa-bench-results/2"
 # Two errors against one truth differ by a measured amount only where the truth's own error cannot
 # account for their difference: 2.5 times it (tools/agaa_bench/claims.cpp, kDecidedDifferenceRatio).
 DECIDED_RATIO = 2.5
-METHOD_ORDER = ["noaa", "fxaa", "reference", "simple-complex", "simple-complex-naive", "sbaa",
+METHOD_ORDER = ["noaa", "fxaa", "taa", "reference", "simple-complex", "simple-complex-naive", "sbaa",
                 "streaming", "agaa", "agaa-samples", "agaa-accumulate"]
 AGAA = "agaa"
 
@@ -51,7 +51,7 @@ def method_label(job):
 
 def base_label(job):
     m, n, c, s = job["method"], job["samples"], job["aggregates"], job["surfaces"]
-    names = {"noaa": "no-AA", "fxaa": "FXAA", "reference": "reference", "simple-complex": "Simple/Complex",
+    names = {"noaa": "no-AA", "fxaa": "FXAA", "taa": "TAA", "reference": "reference", "simple-complex": "Simple/Complex",
              "simple-complex-naive": "Simple/Complex naive", "sbaa": "SBAA", "streaming": "streaming",
              "agaa": "AGAA", "agaa-samples": "AGAA samples path", "agaa-accumulate": "AGAA accumulate path"}
     name = names.get(m, m)

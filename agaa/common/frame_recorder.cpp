@@ -25,7 +25,9 @@ void FrameRecorder::record(VkCommandBuffer cmd, Technique& technique, const eng:
     std::unique_ptr<eng::rg::Graph>& frame = m_frames[frameSlot];
     if (frame) frame->releaseTransients();
     frame = std::make_unique<eng::rg::Graph>();
-    FrameInputs in = m_inputs.write(*frame, view, technique.samples(), frameSlot);
+    eng::frame::ViewSettings jittered = view;
+    if (technique.temporal()) jittered.jitter = technique.subpixelJitter(); // else the host's own
+    FrameInputs in = m_inputs.write(*frame, jittered, technique.samples(), frameSlot);
     in.geometry = host.geometry;
     in.environment = host.environment;
     in.shadowMaps = host.shadowMaps;

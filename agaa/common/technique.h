@@ -26,6 +26,8 @@
 #include "engine/graph/graph.h"
 #include "shared/frame.h"
 
+#include <glm/glm.hpp>
+
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -112,6 +114,16 @@ class Technique {
     // The shader/pass variants this technique chose from the scene's features, each with its
     // cause (agaa/common/effects.h), for the stats and the graph dump.
     virtual std::vector<VariantChoice> variants() const { return {}; }
+    // Temporal methods (agaa/temporal/temporal_aa.h) carry a history from one frame to the next:
+    // every frame must be recorded anew (addPasses once per frame, in order), with the sub-pixel
+    // jitter subpixelJitter() gives for it in eng::frame::ViewSettings::jitter. The others'
+    // recorded graph may be replayed.
+    virtual bool temporal() const { return false; }
+    // The jitter of the next frame addPasses records, in pixels (each component in [-0.5, 0.5]).
+    virtual glm::vec2 subpixelJitter() const { return {0.0f, 0.0f}; }
+    // A camera cut: a temporal method forgets its history, and its next frame is its first again
+    // (the same jitter sequence from the start).
+    virtual void resetHistory() {}
 };
 
 } // namespace agaa

@@ -104,6 +104,10 @@ shared::FrameConstants makeFrameConstants(std::span<const scene::Camera> cameras
             throw std::invalid_argument("camera znear " + std::to_string(host->znear) + " / zfar " +
                                         std::to_string(host->zfar) + " are out of range (0 < znear < zfar)");
     }
+    if (!(std::abs(view.jitter.x) <= 0.5f && std::abs(view.jitter.y) <= 0.5f))
+        throw std::invalid_argument("view jitter (" + std::to_string(view.jitter.x) + ", " +
+                                    std::to_string(view.jitter.y) +
+                                    ") is out of range ([-0.5, 0.5] pixels each)");
     const scene::Camera& cam = view.cameraOverride ? *view.cameraOverride : cameras[view.camera];
     shared::FrameConstants c{};
     float aspect = float(view.width) / float(view.height);
@@ -112,10 +116,12 @@ shared::FrameConstants makeFrameConstants(std::span<const scene::Camera> cameras
              reversedZPerspective(cam.yfov, aspect, cam.znear, cam.zfar);
     c.viewProj = c.proj * c.view;
     setCameraRelative(c);
+    // A layer's hardware samples land on q - offset (common/scene_vertex.glsl): a jitter j moves
+    // them to q + j.
     for (uint32_t l = 0; l < pattern.layers; ++l)
-        c.layerOffsets[l] = glm::vec4(pattern.layerOffsets[l], 0, 0);
+        c.layerOffsets[l] = glm::vec4(pattern.layerOffsets[l] - view.jitter, 0, 0);
     for (uint32_t s = 0; s < pattern.samples; ++s)
-        c.samplePositions[s] = glm::vec4(pattern.positions[s], 0, 0);
+        c.samplePositions[s] = glm::vec4(pattern.positions[s] + view.jitter, 0, 0);
     c.skyRadiance = glm::vec4(view.skyRadiance, 0.0f);
     c.extent = {float(view.width), float(view.height), 1.0f / float(view.width), 1.0f / float(view.height)};
     c.depthParams = {cam.znear, cam.zfar, view.exposure, 0.0f};

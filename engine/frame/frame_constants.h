@@ -35,6 +35,11 @@ struct ViewSettings {
     std::optional<scene::Camera> cameraOverride;
     // Checked: 1 <= scale <= kMaxViewTileScale, and the tile inside the larger image.
     ViewTile tile;
+    // The frame's sub-pixel offset in pixels, each component in [-0.5, 0.5] (checked): every sample
+    // of the pattern moves by it (FrameConstants::samplePositions) and the geometry is drawn
+    // shifted by its opposite (layerOffsets), so a temporal method's frames sample different
+    // points of each pixel. The projection is not jittered: a reprojection reads it as it is.
+    glm::vec2 jitter{0.0f, 0.0f};
 };
 
 inline constexpr uint32_t kMaxViewTileScale = 64;

@@ -131,10 +131,17 @@ RenderResult FrameRenderer::render(const RenderRequest& original) {
                                     " is out of range (1..8192 each)");
     Technique& tech = technique(request);
     const eng::frame::SamplePattern pattern = eng::frame::makeSamplePattern(tech.samples());
-    shared::FrameConstants constants = eng::frame::makeFrameConstants(m_scene, request.view, pattern);
-    std::vector<shared::GpuLight> lights = eng::frame::makeGpuLights(m_scene, constants.view);
-    vk::writeBuffer(m_device, m_frameConstants, std::as_bytes(std::span(&constants, 1)));
-    vk::writeBuffer(m_device, m_lights, std::as_bytes(std::span(lights)));
+    eng::frame::ViewSettings view = request.view;
+    shared::FrameConstants constants{};
+    // The frame's constants and lights; a temporal method's with the jitter of its next frame.
+    const auto writeInputs = [&] {
+        if (tech.temporal()) view.jitter = tech.subpixelJitter(); // else the request's own
+        constants = eng::frame::makeFrameConstants(m_scene, view, pattern);
+        const std::vector<shared::GpuLight> lights = eng::frame::makeGpuLights(m_scene, constants.view);
+        vk::writeBuffer(m_device, m_frameConstants, std::as_bytes(std::span(&constants, 1)));
+        vk::writeBuffer(m_device, m_lights, std::as_bytes(std::span(lights)));
+    };
+    writeInputs();
 
     // Owned for this call only; released on every path out (a graph error throws mid-way).
     struct HostBuffers {
@@ -159,40 +166,59 @@ RenderResult FrameRenderer::render(const RenderRequest& original) {
     const vk::Buffer& displayHost = host.display;
     const vk::Buffer& eventsHost = host.events;
 
+    FrameTargets targets;
+    // The frame's graph: the inputs, the technique's passes and the readbacks.
+    const auto record = [&](rg::Graph& graph) {
+        FrameInputs inputs;
+        inputs.constants = &constants;
+        inputs.width = w;
+        inputs.height = h;
+        // Host-written before submission (the submit makes them visible): no prior GPU use.
+        inputs.frameConstants = graph.importBuffer(
+            "frame.constants", {m_frameConstants.buffer, m_frameConstants.size}, std::nullopt, std::nullopt);
+        inputs.lights =
+            graph.importBuffer("frame.lights", {m_lights.buffer, m_lights.size}, std::nullopt, std::nullopt);
+        targets = tech.addPasses(graph, inputs);
+        if (request.extraPasses) request.extraPasses(graph, tech, inputs);
+        eng::frame::addReadbackPass(graph, targets.hdr, hdrHost, "readback.hdr");
+        eng::frame::addReadbackPass(graph, targets.display, displayHost, "readback.display");
+        eng::frame::addReadbackPass(graph, targets.shadingEvents, eventsHost, "readback.events");
+        if (targets.lostSamples.valid()) {
+            if (!host.lost.buffer)
+                host.lost =
+                    eng::frame::createReadbackBuffer(m_device, w, h, VK_FORMAT_R32_UINT, "readback.lost");
+            eng::frame::addReadbackPass(graph, targets.lostSamples, host.lost, "readback.lost");
+        }
+        if (targets.perSampleShaded.valid()) {
+            if (!host.perSample.buffer)
+                host.perSample = eng::frame::createReadbackBuffer(m_device, w, h, VK_FORMAT_R32_UINT,
+                                                                  "readback.perSampleShaded");
+            eng::frame::addReadbackPass(graph, targets.perSampleShaded, host.perSample,
+                                        "readback.perSampleShaded");
+        }
+        graph.compile();
+    };
     rg::Graph graph;
-    FrameInputs inputs;
-    inputs.constants = &constants;
-    inputs.width = w;
-    inputs.height = h;
-    // Host-written before submission (the submit makes them visible): no prior GPU use.
-    inputs.frameConstants = graph.importBuffer(
-        "frame.constants", {m_frameConstants.buffer, m_frameConstants.size}, std::nullopt, std::nullopt);
-    inputs.lights =
-        graph.importBuffer("frame.lights", {m_lights.buffer, m_lights.size}, std::nullopt, std::nullopt);
-    FrameTargets targets = tech.addPasses(graph, inputs);
-    if (request.extraPasses) request.extraPasses(graph, tech, inputs);
-    eng::frame::addReadbackPass(graph, targets.hdr, hdrHost, "readback.hdr");
-    eng::frame::addReadbackPass(graph, targets.display, displayHost, "readback.display");
-    eng::frame::addReadbackPass(graph, targets.shadingEvents, eventsHost, "readback.events");
-    if (targets.lostSamples.valid()) {
-        host.lost = eng::frame::createReadbackBuffer(m_device, w, h, VK_FORMAT_R32_UINT, "readback.lost");
-        eng::frame::addReadbackPass(graph, targets.lostSamples, host.lost, "readback.lost");
-    }
-    if (targets.perSampleShaded.valid()) {
-        host.perSample =
-            eng::frame::createReadbackBuffer(m_device, w, h, VK_FORMAT_R32_UINT, "readback.perSampleShaded");
-        eng::frame::addReadbackPass(graph, targets.perSampleShaded, host.perSample,
-                                    "readback.perSampleShaded");
-    }
-    graph.compile();
+    record(graph);
 
     RenderResult result;
     result.samples = tech.samples();
+    // A temporal method's frames each record anew, with their own jitter and the history the frame
+    // before left (Technique::temporal); the others replay the one recording.
+    const auto run = [&](uint32_t frame) {
+        if (frame > 0 && tech.temporal()) {
+            writeInputs();
+            graph = rg::Graph();
+            record(graph);
+        }
+        return m_runner.run(graph);
+    };
+    uint32_t frame = 0;
     for (uint32_t i = 0; i < request.warmupFrames; ++i)
-        m_runner.run(graph);
+        run(frame++);
     std::vector<eng::frame::FrameTiming> timings;
     for (uint32_t i = 0; i < std::max(1u, request.timedFrames); ++i)
-        timings.push_back(m_runner.run(graph));
+        timings.push_back(run(frame++));
 
     for (size_t p = 0; p < timings[0].passes.size(); ++p) {
         std::vector<double> samples;

@@ -1,0 +1,176 @@
+// Temporal AA (--method taa; agaa/temporal/temporal_aa.h), validation on:
+//  - the jitter: Halton (2, 3) inside the pixel, and a view jitter out of range refused;
+//  - the reprojection: after a pure camera rotation every pixel's reprojected position (--debug
+//    motion) is the rotation's own mapping, computed here in double from the two cameras'
+//    matrices, whatever the pixel's depth (geometry and sky alike);
+//  - the resolve: on a still camera, frame k's HDR is the CPU resolve in double
+//    (temporal_resolve_reference.h) of the jittered no-AA frame k and the history frame k - 1 left;
+//  - a still camera converges: after 16 frames the frame is far closer to the converged truth than
+//    no-AA's.
+
+#include "agaa/temporal/reprojection.h"
+#include "engine/frame/frame_constants.h"
+#include "engine/io/metrics.h"
+#include "engine/io/tone_map.h"
+#include "engine/scene/camera_framing.h"
+#include "gpu_test_support.h"
+#include "temporal_resolve_reference.h"
+#include "tools/harness/converged_truth.h"
+#include "tools/harness/frame_renderer.h"
+#include "tools/scenes/adversarial_scenes.h"
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+
+namespace {
+
+constexpr uint32_t kSize = 64;
+
+TEST(TemporalJitter, HaltonPointsLieInsideThePixelAndRepeatAfterThePhases) {
+    EXPECT_DOUBLE_EQ(agaa::radicalInverse(1, 2), 0.5);
+    EXPECT_DOUBLE_EQ(agaa::radicalInverse(3, 2), 0.75);
+    EXPECT_NEAR(agaa::radicalInverse(5, 3), 7.0 / 9.0, 1e-15); // 5 = 12 in base 3: 2/3 + 1/9
+    for (uint64_t f = 0; f < 16; ++f) {
+        const glm::vec2 j = agaa::haltonJitter(f, 8);
+        EXPECT_GT(j.x, -0.5f);
+        EXPECT_LT(j.x, 0.5f);
+        EXPECT_GT(j.y, -0.5f);
+        EXPECT_LT(j.y, 0.5f);
+        EXPECT_EQ(j, agaa::haltonJitter(f + 8, 8)) << "8 phases";
+    }
+    EXPECT_NE(agaa::haltonJitter(0, 8), agaa::haltonJitter(1, 8));
+    eng::scene::Camera camera;
+    eng::frame::ViewSettings view;
+    view.jitter = {0.6f, 0.0f};
+    EXPECT_THROW(
+        eng::frame::makeFrameConstants(std::span(&camera, 1), 0, view, eng::frame::makeSamplePattern(1)),
+        std::invalid_argument);
+}
+
+agaa::RenderRequest taaRequest(const std::string& debug = "") {
+    agaa::RenderRequest r;
+    r.method = "taa";
+    r.settings.debug = debug;
+    r.view.width = r.view.height = kSize;
+    r.view.exposure = 1.0f;
+    return r;
+}
+
+// Pixel-space position of a view-space direction through `proj` (Vulkan NDC: y down the rows).
+glm::dvec2 projectDirection(const glm::dmat4& proj, const glm::dvec3& direction, double w, double h) {
+    const glm::dvec4 clip = proj * glm::dvec4(direction, 0.0);
+    return {(clip.x / clip.w * 0.5 + 0.5) * w, (clip.y / clip.w * 0.5 + 0.5) * h};
+}
+
+TEST(TemporalAA, APureCameraRotationReprojectsEveryPixelExactly) {
+    auto device = agaa::test::makeValidatedDevice();
+    const eng::scene::Scene scene = eng::scene::loadTestScene("chainlink");
+    agaa::FrameRenderer renderer(*device, scene);
+    agaa::RenderRequest r = taaRequest("motion");
+    const glm::mat4 viewA = scene.cameras.at(0).view;
+    // About the camera's own centre: yaw 1.3 degrees and pitch 0.4 (view-space axes).
+    const glm::mat4 turn = glm::rotate(glm::rotate(glm::mat4(1.0f), glm::radians(1.3f), glm::vec3(0, 1, 0)),
+                                       glm::radians(0.4f), glm::vec3(1, 0, 0));
+    const glm::mat4 viewB = turn * viewA;
+    r.view.viewOverride = viewA;
+    (void)renderer.render(r); // frame 0: the history
+    r.view.viewOverride = viewB;
+    const agaa::RenderResult motion = renderer.render(r);
+
+    const eng::scene::Camera& cam = scene.cameras.at(0);
+    const glm::dmat4 proj(eng::frame::reversedZPerspective(cam.yfov, 1.0f, cam.znear, cam.zfar));
+    const glm::dmat4 bToA = glm::dmat4(viewA) * glm::inverse(glm::dmat4(viewB));
+    uint32_t checked = 0, inside = 0, wrong = 0;
+    double worst = 0.0;
+    for (uint32_t y = 0; y < kSize; ++y)
+        for (uint32_t x = 0; x < kSize; ++x) {
+            // The pixel centre's ray in B's view space, then in A's.
+            const glm::dvec2 ndc((x + 0.5) / kSize * 2.0 - 1.0, (y + 0.5) / kSize * 2.0 - 1.0);
+            const glm::dvec3 rayB(ndc.x / proj[0][0], ndc.y / proj[1][1], -1.0);
+            const glm::dvec2 expected =
+                projectDirection(proj, glm::dvec3(bToA * glm::dvec4(rayB, 0.0)), kSize, kSize);
+            const bool expectInside =
+                expected.x >= 0.0 && expected.y >= 0.0 && expected.x <= kSize && expected.y <= kSize;
+            const float* m = &motion.hdr.rgba[(size_t(y) * kSize + x) * 4];
+            ++checked;
+            if (expectInside) ++inside;
+            // A pixel within a thousandth of a pixel of the border may fall either side.
+            const bool nearBorder =
+                std::min({std::abs(expected.x), std::abs(expected.y), std::abs(expected.x - kSize),
+                          std::abs(expected.y - kSize)}) < 1e-3;
+            if (!nearBorder && (m[2] == 1.0f) != expectInside) ++wrong;
+            if (m[2] == 1.0f && expectInside)
+                worst = std::max(worst, glm::length(glm::dvec2(m[0], m[1]) - expected));
+        }
+    std::printf("[ measured ] rotation: %u of %u pixels reproject inside the previous frame; worst position "
+                "error %.2e pixels\n",
+                inside, checked, worst);
+    EXPECT_GT(inside, checked / 2);
+    EXPECT_EQ(wrong, 0u) << "a pixel found where the rotation leaves the frame, or lost inside it";
+    EXPECT_LT(worst, 2e-3) << "a rotation's reprojection does not depend on depth: it must be exact";
+    agaa::test::expectNoValidationErrors(*device);
+}
+
+TEST(TemporalAA, OnAStillCameraEachFrameIsTheCpuResolveOfItsInputs) {
+    auto device = agaa::test::makeValidatedDevice();
+    const eng::scene::Scene scene = eng::scene::loadTestScene("chainlink");
+    agaa::FrameRenderer renderer(*device, scene);
+    agaa::RenderRequest taa = taaRequest();
+    agaa::RenderRequest noaa = taaRequest();
+    noaa.method = "noaa";
+    eng::io::ImageF history = renderer.render(taa).hdr; // frame 0: the jittered no-AA frame alone
+    double worst = 0.0, mean = 0.0;
+    for (uint64_t k = 1; k <= 4; ++k) {
+        noaa.view.jitter = agaa::haltonJitter(k, 8);
+        const eng::io::ImageF current = renderer.render(noaa).hdr;
+        const eng::io::ImageF frame = renderer.render(taa).hdr;
+        const double alpha = std::max(1.0 / double(k + 1), 0.1);
+        const eng::io::ImageF expected = agaa::test::temporalResolveStill(current, history, alpha, 1.0);
+        for (size_t i = 0; i < frame.rgba.size(); ++i) {
+            if (i % 4 == 3) continue;
+            const double e = std::abs(double(frame.rgba[i]) - expected.rgba[i]) /
+                             std::max(1.0, std::abs(double(expected.rgba[i])));
+            worst = std::max(worst, e);
+            mean += e;
+        }
+        double moved = 0.0;
+        for (size_t i = 0; i < frame.rgba.size(); ++i)
+            moved = std::max(moved, double(std::abs(frame.rgba[i] - current.rgba[i])));
+        EXPECT_GT(moved, 1e-3) << "frame " << k << " must blend a history";
+        history = frame;
+    }
+    std::printf("[ measured ] resolve against its CPU twin over 4 frames: worst relative error %.2e\n",
+                worst);
+    // Float against double: the reprojected centre is off by ~1e-5 pixels, which mixes that much of
+    // the neighbouring history in.
+    EXPECT_LT(worst, 5e-4);
+    agaa::test::expectNoValidationErrors(*device);
+}
+
+TEST(TemporalAA, AStillCameraConvergesTowardsTheTruth) {
+    auto device = agaa::test::makeValidatedDevice();
+    const eng::scene::Scene scene = eng::scene::loadTestScene("chainlink");
+    agaa::FrameRenderer renderer(*device, scene);
+    agaa::RenderRequest taa = taaRequest();
+    taa.timedFrames = 16;
+    agaa::RenderRequest noaa = taaRequest();
+    noaa.method = "noaa";
+    agaa::TruthSettings settings;
+    settings.supersampling = 4;
+    const agaa::ConvergedTruth truth = agaa::renderConvergedTruth(renderer, noaa, settings, nullptr);
+    const auto error = [&](const agaa::RenderResult& r) {
+        return eng::io::rmse(eng::io::srgbEncoded(r.display), eng::io::srgbEncoded(truth.display));
+    };
+    const double noaaError = error(renderer.render(noaa)), taaError = error(renderer.render(taa));
+    std::printf(
+        "[ measured ] chainlink %ux%u, display RMSE against the truth (its own %.4f): no-AA %.4f, TAA "
+        "after 16 frames %.4f\n",
+        kSize, kSize, truth.errorEstimate, noaaError, taaError);
+    EXPECT_LT(taaError, 0.6 * noaaError);
+    agaa::test::expectNoValidationErrors(*device);
+}
+
+} // namespace
