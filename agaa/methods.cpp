@@ -37,6 +37,13 @@ const std::vector<MethodInfo>& knownMethods() {
          false,
          false,
          {"motion"}},
+        {"agaa-taa",
+         "agaa (n, c) through the same temporal pass as taa, its whole sample pattern jittered each frame "
+         "(the "
+         "Unreal AGAA talk's combination)",
+         true,
+         true,
+         {"motion"}},
         {"sbaa",
          "surface based anti-aliasing (Salvi and Vidimce 2012): the S most covered surfaces per pixel "
          "(--surfaces, default 4; similar planes merged) lit once each; the rest's coverage is lost",
@@ -107,14 +114,16 @@ std::unique_ptr<Technique> createTechnique(const std::string& method, eng::vk::D
         if (settings.debug == "complex") s.debugView = SimpleComplexDebugView::Complex;
         return std::make_unique<SimpleComplex>(device, content, s, method);
     }
-    if (method == "taa") {
+    if (method == "taa" || method == "agaa-taa") {
         if (!settings.debug.empty() && settings.debug != "motion")
-            throw std::invalid_argument("--debug '" + settings.debug +
-                                        "' is not a debug view of taa (allowed: motion)");
+            throw std::invalid_argument("--debug '" + settings.debug + "' is not a debug view of " + method +
+                                        " (allowed: motion)");
         TemporalSettings s;
-        s.effects = settings.effects;
         s.motionView = settings.debug == "motion";
-        return std::make_unique<TemporalAA>(device, content, s);
+        MethodSettings inner = settings;
+        inner.debug.clear();
+        return std::make_unique<TemporalAA>(
+            device, createTechnique(method == "taa" ? "noaa" : "agaa", device, content, inner), s, method);
     }
     if (method == "fxaa") return std::make_unique<Fxaa>(device, content, FxaaSettings{}, settings.effects);
     if (method == "sbaa") {

@@ -4,6 +4,7 @@
 #include "engine/vk/descriptors.h"
 #include "engine/vk/reflection.h"
 #include "shaders/temporal/resolve_comp.h"
+#include "shaders/temporal/resolve_ms_comp.h"
 #include "shared/temporal.h"
 
 #include <cmath>
@@ -31,16 +32,19 @@ TemporalSettings checked(const TemporalSettings& s) {
 
 } // namespace
 
-TemporalAA::TemporalAA(vk::Device& device, const TechniqueContent& content, const TemporalSettings& settings,
+TemporalAA::TemporalAA(vk::Device& device, std::unique_ptr<Technique> inner, const TemporalSettings& settings,
                        std::string name)
-    : m_device(device), m_settings(checked(settings)), m_name(std::move(name)),
-      m_noaa(device, content, ReferenceSettings{1, settings.effects}, m_name + ".noaa") {
+    : m_device(device), m_settings(checked(settings)), m_name(std::move(name)), m_inner(std::move(inner)) {
+    if (!m_inner) throw std::invalid_argument(m_name + ": no inner method");
+    // One sample per pixel, or the 4x layered per-sample depth (eng::frame::makeSamplePattern).
+    const std::span<const uint32_t> program = m_inner->samples() > 1
+                                                  ? std::span<const uint32_t>(kTemporalResolveMsComp)
+                                                  : std::span<const uint32_t>(kTemporalResolveComp);
     vk::LayoutDesc layout;
-    layout.pushBindings = vk::reflectBindings({{kTemporalResolveComp, VK_SHADER_STAGE_COMPUTE_BIT}});
+    layout.pushBindings = vk::reflectBindings({{program, VK_SHADER_STAGE_COMPUTE_BIT}});
     layout.pushConstantBytes = sizeof(shared::TemporalParams);
     m_layout = vk::createPipelineLayout(device, layout, m_name + ".layout");
-    m_pipeline =
-        vk::createComputePipeline(device, kTemporalResolveComp, m_layout.layout, {}, m_name + ".resolve");
+    m_pipeline = vk::createComputePipeline(device, program, m_layout.layout, {}, m_name + ".resolve");
     m_fetchSampler = vk::createSampler(device, VK_FILTER_NEAREST, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE, 0.0f,
                                        m_name + ".fetchSampler");
 }
@@ -63,7 +67,7 @@ void TemporalAA::releaseHistory() {
 void TemporalAA::allocateHistory(uint32_t width, uint32_t height) {
     vkDeviceWaitIdle(m_device.device()); // a frame in flight may still read the old history
     releaseHistory();
-    for (uint32_t i = 0; i < 2; ++i) {
+    for (uint32_t i = 0; i < m_history.size(); ++i) {
         vk::ImageDesc desc;
         desc.format = kHistoryFormat;
         desc.width = width;
@@ -71,7 +75,8 @@ void TemporalAA::allocateHistory(uint32_t width, uint32_t height) {
         desc.usage =
             VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
         desc.viewType = VK_IMAGE_VIEW_TYPE_2D;
-        m_history[i] = vk::createImage(m_device, desc, m_name + ".history." + std::to_string(i));
+        m_history[i] = vk::createImage(
+            m_device, desc, m_name + (i < 2 ? ".history.hdr." : ".history.display.") + std::to_string(i % 2));
     }
     resetHistory();
 }
@@ -87,11 +92,16 @@ void TemporalAA::resetHistory() {
 }
 
 bool TemporalAA::isStorage(const std::string& resourceName) const {
-    return m_noaa.isStorage(resourceName) || resourceName.rfind(m_name + ".history", 0) == 0;
+    return m_inner->isStorage(resourceName) || resourceName.rfind(m_name + ".history", 0) == 0;
+}
+
+std::string TemporalAA::storageCategory(const std::string& resourceName) const {
+    return resourceName.rfind(m_name + ".history", 0) == 0 ? "per-sample" // a pixel's one history value
+                                                           : m_inner->storageCategory(resourceName);
 }
 
 std::vector<VariantChoice> TemporalAA::variants() const {
-    std::vector<VariantChoice> v = m_noaa.variants();
+    std::vector<VariantChoice> v = m_inner->variants();
     v.push_back({"taa-jitter", "Halton (2, 3), " + std::to_string(m_settings.jitterPhases) + " phases",
                  "temporal AA's default (Karis 2014)"});
     v.push_back({"taa-history",
@@ -108,7 +118,7 @@ FrameTargets TemporalAA::addPasses(rg::Graph& graph, const FrameInputs& in) {
             m_name + ": FrameInputs::constants is missing (the reprojection needs the camera)");
     if (!m_history[0].image || m_history[0].desc.width != in.width || m_history[0].desc.height != in.height)
         allocateHistory(in.width, in.height);
-    const FrameTargets noaa = m_noaa.addPasses(graph, in);
+    const FrameTargets inner = m_inner->addPasses(graph, in);
 
     shared::TemporalParams params{};
     const bool haveHistory = m_framesInHistory > 0 && m_previous.has_value();
@@ -121,28 +131,37 @@ FrameTargets TemporalAA::addPasses(rg::Graph& graph, const FrameInputs& in) {
                                    rg::TextureDesc{image.desc.format, image.desc.width, image.desc.height, 1,
                                                    VK_SAMPLE_COUNT_1_BIT}};
     };
-    // The history read is last frame's write, left sampled; the one written starts undefined.
-    const rg::Texture historyRead =
-        haveHistory ? graph.importTexture(m_name + ".history.read", physical(m_history[1 - m_write]),
-                                          rg::Use::SampledCompute, rg::Use::SampledCompute)
-                    : noaa.hdr; // bound but not read (blend.y = 0)
-    const rg::Texture historyWrite = graph.importTexture(
-        m_name + ".history.write", physical(m_history[m_write]), std::nullopt, rg::Use::SampledCompute);
+    // Each history read is last frame's write, left sampled; the one written starts undefined.
+    // Images: [0, 1] the HDR pair, [2, 3] the display pair; m_write picks the one written.
+    const auto read = [&](uint32_t image, const char* what, rg::Texture standIn) {
+        return haveHistory
+                   ? graph.importTexture(m_name + ".history." + what + ".read", physical(m_history[image]),
+                                         rg::Use::SampledCompute, rg::Use::SampledCompute)
+                   : standIn; // bound but not read (blend.y = 0)
+    };
+    const auto written = [&](uint32_t image, const char* what) {
+        return graph.importTexture(m_name + ".history." + what + ".write", physical(m_history[image]),
+                                   std::nullopt, rg::Use::SampledCompute);
+    };
+    const rg::Texture hdrRead = read(1 - m_write, "hdr", inner.hdr);
+    const rg::Texture displayRead = read(3 - m_write, "display", inner.display);
+    const rg::Texture hdrWrite = written(m_write, "hdr"), displayWrite = written(2 + m_write, "display");
     struct Data {
         rg::Buffer frame;
-        rg::Texture hdr, depth, history, outHistory, outDisplay;
+        rg::Texture hdr, depth, display, history, historyDisplay, outHistory, outDisplay;
     };
     const Data& out = graph.addCompute<Data>(
         m_name + ".resolve",
         [&](rg::Builder& b, Data& d) {
             d.frame = b.read(in.frameConstants, rg::Use::UniformRead);
-            d.hdr = b.read(noaa.hdr, rg::Use::SampledCompute);
-            d.depth = b.read(noaa.depth, rg::Use::SampledCompute);
-            d.history = historyRead == noaa.hdr ? d.hdr : b.read(historyRead, rg::Use::SampledCompute);
-            d.outHistory = b.write(historyWrite, rg::Use::StorageImageWriteCompute);
-            const rg::TextureDesc desc{VK_FORMAT_R32G32B32A32_SFLOAT, in.width, in.height, 1,
-                                       VK_SAMPLE_COUNT_1_BIT};
-            d.outDisplay = b.write(b.create(m_name + ".display", desc), rg::Use::StorageImageWriteCompute);
+            d.hdr = b.read(inner.hdr, rg::Use::SampledCompute);
+            d.depth = b.read(inner.depth, rg::Use::SampledCompute);
+            d.display = b.read(inner.display, rg::Use::SampledCompute);
+            d.history = hdrRead == inner.hdr ? d.hdr : b.read(hdrRead, rg::Use::SampledCompute);
+            d.historyDisplay =
+                displayRead == inner.display ? d.display : b.read(displayRead, rg::Use::SampledCompute);
+            d.outHistory = b.write(hdrWrite, rg::Use::StorageImageWriteCompute);
+            d.outDisplay = b.write(displayWrite, rg::Use::StorageImageWriteCompute);
         },
         [this, params](const rg::Context& ctx, const Data& d) {
             VkCommandBuffer cmd = ctx.cmd();
@@ -154,6 +173,8 @@ FrameTargets TemporalAA::addPasses(rg::Graph& graph, const FrameInputs& in) {
                 .sampled(3, m_fetchSampler, ctx.texture(d.history).sampledView)
                 .storageImage(4, ctx.texture(d.outHistory).view)
                 .storageImage(5, ctx.texture(d.outDisplay).view)
+                .sampled(6, m_fetchSampler, ctx.texture(d.display).sampledView)
+                .sampled(7, m_fetchSampler, ctx.texture(d.historyDisplay).sampledView)
                 .push(m_device, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, m_layout.layout);
             vkCmdPushConstants(cmd, m_layout.layout, VK_SHADER_STAGE_ALL, 0, sizeof(params), &params);
             const rg::PhysicalTexture& output = ctx.texture(d.outDisplay);
@@ -166,7 +187,10 @@ FrameTargets TemporalAA::addPasses(rg::Graph& graph, const FrameInputs& in) {
     m_framesInHistory = std::min(m_framesInHistory + 1, 1u << 16);
     m_write = 1 - m_write;
     ++m_frame;
-    return {out.outHistory, out.outDisplay, noaa.shadingEvents, {}, noaa.depth};
+    FrameTargets targets = inner;
+    targets.hdr = out.outHistory;
+    targets.display = out.outDisplay;
+    return targets;
 }
 
 } // namespace agaa

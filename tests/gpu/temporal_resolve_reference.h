@@ -5,7 +5,8 @@
 //   box:    the 3x3 neighbourhood of the current frame (clamped to the edge) in YCoCg, mean mu and
 //           standard deviation sigma per channel; half-extent gamma sigma
 //   clip:   the history moved along the segment to mu until it is inside the box
-//   blend:  alpha / (1 + Y(current)) and (1 - alpha) / (1 + Y(history)), normalised (Y: Rec. 709 luma)
+//   blend:  alpha / (1 + Y(current)) and (1 - alpha) / (1 + Y(history)), normalised (Y: Rec. 709
+//           luma), for HDR; alpha and 1 - alpha for the display, whose values are bounded
 
 #include "engine/io/image.h"
 
@@ -16,7 +17,7 @@
 namespace agaa::test {
 
 inline eng::io::ImageF temporalResolveStill(const eng::io::ImageF& current, const eng::io::ImageF& history,
-                                            double alpha, double gamma) {
+                                            double alpha, double gamma, bool fireflyWeights) {
     using V = std::array<double, 3>;
     const int w = int(current.width), h = int(current.height);
     const auto at = [&](const eng::io::ImageF& img, int x, int y) {
@@ -53,7 +54,8 @@ inline eng::io::ImageF temporalResolveStill(const eng::io::ImageF& current, cons
                 for (int k = 0; k < 3; ++k)
                     hist[k] = mean[k] + (hist[k] - mean[k]) / reach;
             const V c = at(current, x, y), hr = rgb(hist);
-            const double wc = alpha / (1.0 + luma(c)), wh = (1.0 - alpha) / (1.0 + luma(hr));
+            const double wc = fireflyWeights ? alpha / (1.0 + luma(c)) : alpha;
+            const double wh = fireflyWeights ? (1.0 - alpha) / (1.0 + luma(hr)) : 1.0 - alpha;
             const size_t i = (size_t(y) * w + size_t(x)) * 4;
             for (int k = 0; k < 3; ++k)
                 out.rgba[i + k] = float((c[k] * wc + hr[k] * wh) / (wc + wh));
