@@ -233,9 +233,14 @@ JobResult JobRunner::run(const Job& job) {
         t.stepDegrees = m_settings.temporalStepDegrees;
         t.width = path[0].width;
         t.height = path[0].height;
-        t.perStep = temporalErrorChange(path, pathTruth());
+        const std::vector<eng::io::ImageF>& truths = pathTruth();
+        t.perStep = temporalErrorChange(path, truths);
         for (double v : t.perStep)
             t.meanErrorChange += v / double(t.perStep.size());
+        for (size_t f = 0; f < path.size(); ++f)
+            t.pathError.push_back(eng::io::rmse(path[f], truths[f]));
+        for (double v : t.pathError)
+            t.meanPathError += v / double(t.pathError.size());
         r.temporal = t;
     }
 

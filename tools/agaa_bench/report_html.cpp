@@ -259,7 +259,8 @@ std::string jobsTable(const std::vector<JobResult>& results) {
       << truth.supersampling << "x" << truth.supersampling << " tiles at n=" << truth.samples
       << ")</th><th rowspan=\"2\">truth's<br>own error</th><th rowspan=\"2\">linear mean<br>/ "
          "truth's</th><th "
-         "rowspan=\"2\">temporal<br>&Delta;error</th><th rowspan=\"2\">valid.<br>errors</th>"
+         "rowspan=\"2\">temporal<br>&Delta;error</th><th rowspan=\"2\">moving:<br>path RMSE</th>"
+         "<th rowspan=\"2\">valid.<br>errors</th>"
          "<th rowspan=\"2\">images</th></tr>\n<tr><th>median</th><th>min..max</th><th>mean</th><th>max</th>"
          "<th>RMSE</th><th>PSNR dB</th><th>SSIM</th><th>p99</th><th>RMSE</th><th>PSNR "
          "dB</th><th>SSIM</th><th>p99</th></tr>\n";
@@ -283,6 +284,8 @@ std::string jobsTable(const std::vector<JobResult>& results) {
           << "</td><td class=\"num\">"
           << (r.truth.meanLuminance > 0.0 ? num(r.meanLuminance / r.truth.meanLuminance, 3) : "&ndash;")
           << "</td><td class=\"num\">" << (r.temporal ? num(r.temporal->meanErrorChange, 5) : "&ndash;")
+          << "</td><td class=\"num\">"
+          << (r.temporal && !r.temporal->pathError.empty() ? num(r.temporal->meanPathError, 4) : "&ndash;")
           << "</td><td class=\"num\">" << (r.validationEnabled ? std::to_string(r.validationErrors) : "off")
           << "</td><td><a href=\"" << esc(r.imageDisplay) << "\">image</a> <a href=\"" << esc(r.imageHeatmap)
           << "\">error</a></td></tr>\n";
@@ -477,7 +480,10 @@ void writeReport(const fs::path& outDir, const std::vector<JobResult>& results, 
         h << "<li>Temporal stability: " << any->temporal->frames
           << " frames orbiting the scene's bounds centre in " << num(any->temporal->stepDegrees, 2)
           << "&deg; steps, rendered at " << any->temporal->width << "x" << any->temporal->height
-          << ".</li>\n";
+          << ", each frame against its own converged truth: &Delta;error is the flicker the truth does not "
+             "have, path RMSE the mean error a user who moves sees. The other error columns are still "
+             "frames, where a temporal method (taa, agaa-taa) has converged over the warm-up and timed "
+             "frames.</li>\n";
     else
         h << "<li>Temporal stability: not measured in this run (--temporal 0).</li>\n";
     h << "<li>Bytes per pixel: the technique's own per-pixel resources, from the sizes of their device "

@@ -129,9 +129,14 @@ json toJson(const JobResult& r) {
     j["mean_luminance"] = r.meanLuminance;
     if (r.temporal) {
         const TemporalStability& t = *r.temporal;
-        j["temporal"] = {
-            {"frames", t.frames}, {"step_degrees", t.stepDegrees},          {"width", t.width},
-            {"height", t.height}, {"mean_error_change", t.meanErrorChange}, {"per_step", t.perStep}};
+        j["temporal"] = {{"frames", t.frames},
+                         {"step_degrees", t.stepDegrees},
+                         {"width", t.width},
+                         {"height", t.height},
+                         {"mean_error_change", t.meanErrorChange},
+                         {"per_step", t.perStep},
+                         {"mean_path_error", t.meanPathError},
+                         {"path_error", t.pathError}};
     } else {
         j["temporal"] = nullptr;
     }
@@ -198,6 +203,8 @@ JobResult jobFromJson(const json& j) {
             ts.height = tj.at("height").get<uint32_t>();
             ts.meanErrorChange = tj.at("mean_error_change").get<double>();
             ts.perStep = tj.at("per_step").get<std::vector<double>>();
+            ts.meanPathError = tj.value("mean_path_error", 0.0);
+            ts.pathError = tj.value("path_error", std::vector<double>());
             r.temporal = ts;
         }
         const json& im = j.at("images");
@@ -250,7 +257,7 @@ void writeResultsCsv(const std::filesystem::path& file, const std::vector<JobRes
          "shading_events_max,rmse_same_n,psnr_same_n,ssim_same_n,p99_same_n,rmse_truth,psnr_truth,ssim_truth,"
          "p99_truth,truth_error_estimate,temporal_error_change,validation_errors,passes,surfaces,"
          "shading_events_worst_lane,mean_luminance,truth_mean_luminance,truth_supersampling,tolerance,"
-         "specular_aa\n";
+         "specular_aa,path_rmse_truth\n";
     for (const JobResult& r : results) {
         auto err = [&](const std::optional<ErrorMetrics>& e) {
             if (!e) return std::string(",,,");
@@ -271,6 +278,7 @@ void writeResultsCsv(const std::filesystem::path& file, const std::vector<JobRes
           << csvField(passes) << "," << r.job.surfaces << "," << csvNumber(r.shadingEventsWorstLane) << ","
           << csvNumber(r.meanLuminance) << "," << csvNumber(r.truth.meanLuminance) << ","
           << r.truth.supersampling << "," << csvField(r.job.tolerance) << "," << (r.job.specularAA ? 1 : 0)
+          << "," << (r.temporal && !r.temporal->pathError.empty() ? csvNumber(r.temporal->meanPathError) : "")
           << "\n";
     }
     writeTextFile(file, s.str());

@@ -41,6 +41,11 @@ struct TemporalStability {
     uint32_t width = 0, height = 0;
     double meanErrorChange = 0.0; // mean over steps (see temporalErrorChange)
     std::vector<double> perStep;
+    // Display RMSE (sRGB) of each path frame against its own converged truth, and their mean: what
+    // a user who moves sees (a temporal method's still frame has converged; its path frames carry
+    // the history's lag). Empty in results written before it was measured.
+    std::vector<double> pathError;
+    double meanPathError = 0.0;
 };
 
 // The converged truth a job's errors are measured against (tools/harness/converged_truth.h): the
