@@ -54,6 +54,12 @@ glm::mat4 orbitView(const glm::mat4& view, const glm::vec3& pivot, float degrees
     return view * fromPivot * rotate * toPivot;
 }
 
+glm::mat4 truckView(const glm::mat4& view, float metres) {
+    glm::mat4 shift(1.0f); // view space: the camera moves +x, so the scene moves -x
+    shift[3] = glm::vec4(-metres, 0.0f, 0.0f, 1.0f);
+    return shift * view;
+}
+
 glm::dvec3 cameraEye(const glm::mat4& view) {
     const glm::dmat4 v = view;
     const glm::dmat3 rotation = glm::dmat3(v);

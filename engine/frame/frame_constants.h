@@ -52,6 +52,10 @@ glm::mat4 viewTileCrop(const ViewTile& tile, uint32_t width, uint32_t height);
 // (a short orbit for temporal-stability measurements).
 glm::mat4 orbitView(const glm::mat4& view, const glm::vec3& pivot, float degrees);
 
+// The view's camera moved `metres` along its own right axis, looking the same way (a truck across
+// the scene: parallax and disocclusion for temporal measurements).
+glm::mat4 truckView(const glm::mat4& view, float metres);
+
 // Reversed Z, finite far: depth 1 at znear, 0 at zfar (see common/depth.glsl), Y flipped for Vulkan.
 glm::mat4 reversedZPerspective(float yfov, float aspect, float znear, float zfar);
 

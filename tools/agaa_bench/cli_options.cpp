@@ -69,7 +69,7 @@ std::string usage() {
            "                  [--surfaces 1,2,3] [--tolerances never,30,0] [--specular-aa off,on] [--size "
            "WxH] "
            "[--frames K] "
-           "[--warmup K] [--temporal K] "
+           "[--warmup K] [--temporal K] [--temporal-path orbit|truck] "
            "[--full] [--job I/N]\n"
            "                  [--truth-supersampling K] [--truth-cache DIR]\n"
            "                  [--extra-lights 0,4,16,64] [--validate] [--help] [--SETTING VALUE...]\n"
@@ -100,8 +100,13 @@ std::string usage() {
            "  --size WxH        image size, 1..8192 each (default 160x90)\n"
            "  --frames K        timed frames per job, 1..1000 (default 3); times are medians with min/max\n"
            "  --warmup K        untimed frames first, 0..1000 (default 1)\n"
-           "  --temporal K      frames on the orbit path for temporal stability, 0 (off) or 2..64\n"
-           "                    (default 5, 0.5 degree steps, rendered at most 320 pixels wide)\n"
+           "  --temporal K      frames on the camera path for temporal stability, 0 (off) or 2..64\n"
+           "                    (default 5, 0.5 degree steps, rendered at most 320 pixels wide), each frame\n"
+           "                    against its own truth: flicker and the path's mean error (what a user who\n"
+           "                    moves sees; a temporal method carries its history along it)\n"
+           "  --temporal-path orbit|truck  the path: an orbit about the scene's centre (default), or the\n"
+           "                    camera trucked sideways by 1 % of the bounds' diagonal a frame (parallax,\n"
+           "                    disocclusion)\n"
            "  --full            the paper's settings: 1280x720, n = 8 and 32, c = 1..4, all scenes\n"
            "                    (flags given explicitly still win)\n"
            "  --job I/N         run only jobs I, I+N, I+2N, ... of the plan (split a sweep; merge with "
@@ -223,6 +228,12 @@ BenchOptions parseOptions(int argc, char** argv) {
             s.temporalFrames = parseUint(a, v, 0, 64);
             if (s.temporalFrames == 1)
                 throw BadArgument("--temporal '1': a path needs 0 (off) or 2..64 frames");
+        } else if (a == "--temporal-path") {
+            const std::string v = value();
+            if (v != "orbit" && v != "truck")
+                throw BadArgument("--temporal-path: '" + v + "' is not one of: orbit, truck");
+            s.temporalPath =
+                v == "truck" ? SweepSettings::TemporalPath::Truck : SweepSettings::TemporalPath::Orbit;
         } else if (a == "--truth-supersampling")
             s.truthSupersampling = parseUint(a, value(), 1, agaa::kMaxTruthSupersampling);
         else if (a == "--truth-cache")

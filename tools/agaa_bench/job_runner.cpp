@@ -79,7 +79,7 @@ Job referenceJob(uint32_t samples) {
 
 } // namespace
 
-RenderRequest JobRunner::request(const Job& job, uint32_t width, uint32_t height, float orbitDegrees) const {
+RenderRequest JobRunner::request(const Job& job, uint32_t width, uint32_t height, uint32_t pathFrame) const {
     RenderRequest r;
     r.method = job.method;
     for (const std::string& name : m_settings.givenSettings) {
@@ -97,10 +97,16 @@ RenderRequest JobRunner::request(const Job& job, uint32_t width, uint32_t height
     r.view.height = height;
     // A real scene gives no exposure: metered, the same for every method of the sweep.
     r.autoExposure = !m_scene.scene->exposure.has_value();
-    if (orbitDegrees != 0.0f) {
+    if (pathFrame > 0) {
         const eng::scene::Scene& s = *m_scene.scene;
-        const glm::vec3 centre = 0.5f * (s.bounds.min + s.bounds.max);
-        r.view.viewOverride = eng::frame::orbitView(s.cameras.at(r.view.camera).view, centre, orbitDegrees);
+        const glm::mat4& view = s.cameras.at(r.view.camera).view;
+        const float t = float(pathFrame);
+        if (m_settings.temporalPath == SweepSettings::TemporalPath::Truck)
+            r.view.viewOverride = eng::frame::truckView(view, t * m_settings.temporalTruckFraction *
+                                                                  glm::length(s.bounds.max - s.bounds.min));
+        else
+            r.view.viewOverride = eng::frame::orbitView(view, 0.5f * (s.bounds.min + s.bounds.max),
+                                                        t * m_settings.temporalStepDegrees);
     }
     return r;
 }
@@ -124,14 +130,14 @@ ConvergedTruth JobRunner::renderConverged(const RenderRequest& request) {
 const eng::io::ImageF& JobRunner::referenceAtSamples(uint32_t samples) {
     auto it = m_scene.referenceAtSamples.find(samples);
     if (it != m_scene.referenceAtSamples.end()) return it->second;
-    RenderResult r = renderTruth(request(referenceJob(samples), m_settings.width, m_settings.height, 0.0f));
+    RenderResult r = renderTruth(request(referenceJob(samples), m_settings.width, m_settings.height, 0));
     it = m_scene.referenceAtSamples.emplace(samples, srgbEncoded(r.display)).first;
     return it->second;
 }
 
 const ConvergedTruth& JobRunner::truth() {
     if (!m_scene.truth) {
-        m_scene.truth = renderConverged(request(referenceJob(32), m_settings.width, m_settings.height, 0.0f));
+        m_scene.truth = renderConverged(request(referenceJob(32), m_settings.width, m_settings.height, 0));
         m_scene.truthDisplay = srgbEncoded(m_scene.truth->display);
         const ConvergedTruth& t = *m_scene.truth;
         std::printf("\n  truth for %s: %ux%u tiles at n=%u, error estimate %.5f, mean %.4f%s\n  ",
@@ -146,8 +152,7 @@ const std::vector<eng::io::ImageF>& JobRunner::pathTruth() {
         uint32_t w = 0, h = 0;
         temporalSize(m_settings, w, h);
         for (uint32_t t = 0; t < m_settings.temporalFrames; ++t) {
-            const ConvergedTruth truth =
-                renderConverged(request(referenceJob(32), w, h, float(t) * m_settings.temporalStepDegrees));
+            const ConvergedTruth truth = renderConverged(request(referenceJob(32), w, h, t));
             m_scene.pathTruth.push_back(srgbEncoded(truth.display));
         }
     }
@@ -159,8 +164,7 @@ std::vector<eng::io::ImageF> JobRunner::renderPath(const Job& job) {
     temporalSize(m_settings, w, h);
     std::vector<eng::io::ImageF> frames;
     for (uint32_t t = 0; t < m_settings.temporalFrames; ++t) {
-        RenderResult r =
-            m_scene.renderer->render(request(job, w, h, float(t) * m_settings.temporalStepDegrees));
+        RenderResult r = m_scene.renderer->render(request(job, w, h, t));
         frames.push_back(srgbEncoded(r.display));
     }
     return frames;
@@ -171,7 +175,7 @@ JobResult JobRunner::run(const Job& job) {
     const auto start = std::chrono::steady_clock::now();
     const uint32_t validationBefore = m_device.validationErrors();
 
-    RenderRequest req = request(job, m_settings.width, m_settings.height, 0.0f);
+    RenderRequest req = request(job, m_settings.width, m_settings.height, 0);
     req.warmupFrames = m_settings.warmupFrames;
     req.timedFrames = m_settings.timedFrames;
     RenderResult rendered = m_scene.renderer->render(req);
@@ -230,7 +234,10 @@ JobResult JobRunner::run(const Job& job) {
     if (!path.empty()) {
         TemporalStability t;
         t.frames = m_settings.temporalFrames;
-        t.stepDegrees = m_settings.temporalStepDegrees;
+        const bool truck = m_settings.temporalPath == SweepSettings::TemporalPath::Truck;
+        t.path = truck ? "truck" : "orbit";
+        t.stepDegrees = truck ? 0.0f : m_settings.temporalStepDegrees;
+        t.stepFraction = truck ? m_settings.temporalTruckFraction : 0.0f;
         t.width = path[0].width;
         t.height = path[0].height;
         const std::vector<eng::io::ImageF>& truths = pathTruth();

@@ -49,8 +49,9 @@ class JobRunner {
     };
 
     void selectScene(const std::string& name);
-    // The job's frame: its method with the sweep's given settings, then its axes.
-    RenderRequest request(const Job& job, uint32_t width, uint32_t height, float orbitDegrees) const;
+    // The job's frame: its method with the sweep's given settings, then its axes; pathFrame > 0 is
+    // that frame of the camera path (SweepSettings::temporalPath), 0 the scene's camera.
+    RenderRequest request(const Job& job, uint32_t width, uint32_t height, uint32_t pathFrame) const;
     const eng::io::ImageF& referenceAtSamples(uint32_t samples);
     const ConvergedTruth& truth();
     const std::vector<eng::io::ImageF>& pathTruth();

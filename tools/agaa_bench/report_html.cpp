@@ -478,8 +478,12 @@ void writeReport(const fs::path& outDir, const std::vector<JobResult>& results, 
          "than ten times it reads undecided.</li>\n";
     if (any && any->temporal)
         h << "<li>Temporal stability: " << any->temporal->frames
-          << " frames orbiting the scene's bounds centre in " << num(any->temporal->stepDegrees, 2)
-          << "&deg; steps, rendered at " << any->temporal->width << "x" << any->temporal->height
+          << (any->temporal->path == "truck"
+                  ? " frames trucking the camera sideways in steps of " +
+                        num(100.0 * any->temporal->stepFraction, 2) + " % of the scene's bounds diagonal"
+                  : " frames orbiting the scene's bounds centre in " + num(any->temporal->stepDegrees, 2) +
+                        "&deg; steps")
+          << ", rendered at " << any->temporal->width << "x" << any->temporal->height
           << ", each frame against its own converged truth: &Delta;error is the flicker the truth does not "
              "have, path RMSE the mean error a user who moves sees. The other error columns are still "
              "frames, where a temporal method (taa, agaa-taa) has converged over the warm-up and timed "

@@ -130,7 +130,9 @@ json toJson(const JobResult& r) {
     if (r.temporal) {
         const TemporalStability& t = *r.temporal;
         j["temporal"] = {{"frames", t.frames},
+                         {"path", t.path},
                          {"step_degrees", t.stepDegrees},
+                         {"step_fraction", t.stepFraction},
                          {"width", t.width},
                          {"height", t.height},
                          {"mean_error_change", t.meanErrorChange},
@@ -199,6 +201,8 @@ JobResult jobFromJson(const json& j) {
             TemporalStability ts;
             ts.frames = tj.at("frames").get<uint32_t>();
             ts.stepDegrees = tj.at("step_degrees").get<float>();
+            ts.path = tj.value("path", std::string("orbit")); // the orbit was the only path before
+            ts.stepFraction = tj.value("step_fraction", 0.0f);
             ts.width = tj.at("width").get<uint32_t>();
             ts.height = tj.at("height").get<uint32_t>();
             ts.meanErrorChange = tj.at("mean_error_change").get<double>();

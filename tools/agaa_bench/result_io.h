@@ -37,7 +37,7 @@ struct PassTime {
 
 struct TemporalStability {
     uint32_t frames = 0;
-    float stepDegrees = 0.0f;
+    float stepDegrees = 0.0f; // the orbit's step
     uint32_t width = 0, height = 0;
     double meanErrorChange = 0.0; // mean over steps (see temporalErrorChange)
     std::vector<double> perStep;
@@ -46,6 +46,8 @@ struct TemporalStability {
     // the history's lag). Empty in results written before it was measured.
     std::vector<double> pathError;
     double meanPathError = 0.0;
+    std::string path = "orbit"; // SweepSettings::TemporalPath: "orbit" or "truck"
+    float stepFraction = 0.0f;  // the truck's step, a fraction of the bounds' diagonal
 };
 
 // The converged truth a job's errors are measured against (tools/harness/converged_truth.h): the

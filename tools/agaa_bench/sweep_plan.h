@@ -40,7 +40,12 @@ struct SweepSettings {
     uint32_t truthSupersampling = 4;
     std::filesystem::path truthCache;
     uint32_t temporalFrames = 5; // camera path length for temporal stability; 0 = not measured
+    // The path (--temporal-path): an orbit about the bounds' centre in temporalStepDegrees steps,
+    // or a truck sideways across the scene (eng::frame::truckView) in steps of
+    // temporalTruckFraction of the bounds' diagonal.
+    enum class TemporalPath { Orbit, Truck } temporalPath = TemporalPath::Orbit;
     float temporalStepDegrees = 0.5f;
+    float temporalTruckFraction = 0.01f;
     uint32_t temporalMaxWidth = 320; // the path renders at the sweep size scaled down to this width
     bool validate = false;
     // The method settings given as flags (agaa/method_settings.h, agaa-render's), by name, each
