@@ -69,6 +69,8 @@ struct EdgeCase {
 std::vector<EdgeCase> shaderMathCases();
 // The footprint cases (shader_math_footprint_cases.cpp), appended to `cases`.
 void addFootprintCases(std::vector<EdgeCase>& cases);
+// The curvature roughness's cases (shader_math_roughness_cases.cpp), appended to `cases`.
+void addCurvatureRoughnessCases(std::vector<EdgeCase>& cases);
 // The sRGB encode and decode cases (shader_math_srgb_cases.cpp), appended to `cases`.
 void addSrgbCases(std::vector<EdgeCase>& cases);
 
