@@ -33,7 +33,7 @@ struct TemporalSettings {
     float minimumWeight = 0.1f;
     float clipGamma = 1.0f;    // the neighbourhood box: mean +- gamma sigma (Salvi's variance clip)
     uint32_t jitterPhases = 8; // Halton (2, 3) points before the sequence repeats, 1..256
-    bool motionView = false;   // --debug motion: the reprojected pixel position (x, y), found (z)
+    bool motionView = false;   // --debug motion: position and depths (shared::TemporalParams)
 };
 
 class TemporalAA final : public Technique {

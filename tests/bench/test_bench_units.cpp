@@ -3,6 +3,7 @@
 // JSON round trip and the merge order.
 
 #include "claims.h"
+#include "disocclusion.h"
 #include "image_error.h"
 #include "light_axis.h"
 #include "merge.h"
@@ -12,9 +13,11 @@
 
 #include "agaa/methods.h"
 #include "engine/io/image.h"
+#include "engine/io/io_error.h"
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -219,6 +222,51 @@ TEST(TemporalErrorChange, ConstantErrorIsStableFlickerIsNot) {
     EXPECT_THROW(temporalErrorChange({truth}, {truth}), std::invalid_argument);
 }
 
+// Frame t's motion view, one pixel per entry: where it reprojects into frame t - 1, whether that
+// is inside it, and its distance from that camera.
+eng::io::ImageF motionPixel(std::vector<std::array<float, 4>> pixels) {
+    eng::io::ImageF m = eng::io::makeImage(uint32_t(pixels.size()), 1, {0.0f, 0.0f, 0.0f, 0.0f});
+    for (size_t i = 0; i < pixels.size(); ++i)
+        for (size_t c = 0; c < 4; ++c)
+            m.rgba[i * 4 + c] = pixels[i][c];
+    return m;
+}
+
+TEST(Disocclusion, APointIsSeenWhereThePreviousFrameHadItsDistanceWithinAPixelAndUnseenBehindAnOccluder) {
+    // Frame t - 1, an 8x1 strip: a surface at distance 10, an occluder at 5, then sky.
+    const float distances[8] = {10.0f, 10.0f, 10.0f, 5.0f, 5.0f, 5.0f, 0.0f, 0.0f};
+    eng::io::ImageF previous = eng::io::makeImage(8, 1, {0.0f, 0.0f, 0.0f, 1.0f});
+    for (int i = 0; i < 8; ++i)
+        previous.rgba[i * 4] = distances[i];
+    // Positions in pixels, y at the row's centre.
+    const eng::io::ImageF motion = motionPixel({
+        {0.5f, 0.5f, 1.0f, 10.1f},  // texel 0, 1 % from its distance: seen
+        {4.5f, 0.5f, 1.0f, 10.0f},  // texels 3 to 5 hold the occluder: unseen
+        {4.9f, 0.5f, 1.0f, 5.05f},  // the occluder's own point: seen
+        {7.5f, 0.5f, 1.0f, 0.0f},   // sky where sky was: seen
+        {1.5f, 0.5f, 1.0f, 0.0f},   // sky where the previous frame had the surface: unseen
+        {0.5f, 0.5f, 0.0f, 10.0f},  // outside the previous frame: unseen
+        {3.2f, 0.5f, 1.0f, 10.0f},  // texel 3 holds the occluder, its neighbour 2 the point: seen
+        {0.5f, 0.5f, 1.0f, 10.25f}, // 2.5 % from the surface's distance: beyond the tolerance
+    });
+    const std::vector<uint8_t> mask = disoccludedPixels(motion, previous);
+    EXPECT_EQ(mask, (std::vector<uint8_t>{0, 1, 0, 0, 1, 1, 0, 1}));
+    EXPECT_THROW(disoccludedPixels(motion, eng::io::makeImage(4, 1)), eng::io::IoError) << "sizes differ";
+}
+
+TEST(Disocclusion, MaskedErrorPoolsTheMaskedPixelsOfEveryFrameAndSkipsTheFirst) {
+    const eng::io::ImageF truth = eng::io::makeImage(2, 1, {0.5f, 0.5f, 0.5f, 1.0f});
+    eng::io::ImageF frame = truth;
+    frame.rgba[0] = frame.rgba[1] = frame.rgba[2] = 0.8f; // pixel 0 off by 0.3, pixel 1 exact
+    const MaskedError none = maskedError({frame, frame}, {truth, truth}, {{}, {0, 0}});
+    EXPECT_EQ(none.pixels, 0u);
+    EXPECT_EQ(none.rmse, 0.0) << "no pixel: 0, not NaN";
+    const MaskedError ghost = maskedError({frame, frame, frame}, {truth, truth, truth}, {{}, {1, 0}, {1, 1}});
+    EXPECT_EQ(ghost.pixels, 3u);
+    EXPECT_NEAR(ghost.rmse, std::sqrt(2.0 * 0.09 / 3.0), 1e-6) << "two pixels off by 0.3, one exact";
+    EXPECT_THROW(maskedError({frame}, {truth}, {{1, 0, 0}}), eng::io::IoError) << "a mask of the wrong size";
+}
+
 TEST(SrgbEncoded, EncodesColourAndKeepsAlpha) {
     eng::io::ImageF img = eng::io::makeImage(1, 1, {0.0f, 1.0f, 0.5f, 0.25f});
     const eng::io::ImageF e = srgbEncoded(img);
@@ -246,6 +294,8 @@ JobResult sampleResult(const std::string& scene, const std::string& method, uint
     r.truth = TruthInfo{4, 32, 0.0004, 0.21};
     r.meanLuminance = 0.2;
     r.temporal = TemporalStability{5, 0.5f, 4, 4, 0.002, {0.001, 0.003}};
+    r.temporal->ghostingError = 0.03;
+    r.temporal->disoccludedPixels = 7;
     r.imageDisplay = "images/a.png";
     return r;
 }

@@ -1,5 +1,6 @@
 #include "job_runner.h"
 
+#include "disocclusion.h"
 #include "shading_lanes.h"
 
 #include "agaa/method_settings.h"
@@ -159,6 +160,29 @@ const std::vector<eng::io::ImageF>& JobRunner::pathTruth() {
     return m_scene.pathTruth;
 }
 
+const std::vector<std::vector<uint8_t>>& JobRunner::pathDisocclusion() {
+    if (m_scene.pathDisocclusion.empty()) {
+        uint32_t w = 0, h = 0;
+        temporalSize(m_settings, w, h);
+        // Temporal AA's motion view along the path, from its first frame (it keeps its history
+        // between requests): each frame's reprojection into the one before, and its own distances.
+        Job motion;
+        motion.method = "taa";
+        motion.samples = 1;
+        eng::io::ImageF previousDistance;
+        for (uint32_t t = 0; t < m_settings.temporalFrames; ++t) {
+            RenderRequest r = request(motion, w, h, t);
+            r.settings.debug = "motion";
+            if (t == 0) m_scene.renderer->technique(r).resetHistory();
+            RenderResult view = renderTruth(r);
+            m_scene.pathDisocclusion.push_back(t == 0 ? std::vector<uint8_t>()
+                                                      : disoccludedPixels(view.hdr, previousDistance));
+            previousDistance = std::move(view.display);
+        }
+    }
+    return m_scene.pathDisocclusion;
+}
+
 std::vector<eng::io::ImageF> JobRunner::renderPath(const Job& job) {
     uint32_t w = 0, h = 0;
     temporalSize(m_settings, w, h);
@@ -248,6 +272,9 @@ JobResult JobRunner::run(const Job& job) {
             t.pathError.push_back(eng::io::rmse(path[f], truths[f]));
         for (double v : t.pathError)
             t.meanPathError += v / double(t.pathError.size());
+        const MaskedError ghosting = maskedError(path, truths, pathDisocclusion());
+        t.ghostingError = ghosting.rmse;
+        t.disoccludedPixels = ghosting.pixels;
         r.temporal = t;
     }
 

@@ -46,6 +46,8 @@ class JobRunner {
         eng::io::ImageF truthDisplay;                           // its display, sRGB-encoded
         std::vector<eng::io::ImageF> pathTruth; // converged truth along the orbit, sRGB, temporal size
         std::string truthImage;                 // relative path of the truth PNG
+        // Per path frame, the pixels its predecessor did not see (disocclusion.h); frame 0's empty.
+        std::vector<std::vector<uint8_t>> pathDisocclusion;
     };
 
     void selectScene(const std::string& name);
@@ -55,6 +57,7 @@ class JobRunner {
     const eng::io::ImageF& referenceAtSamples(uint32_t samples);
     const ConvergedTruth& truth();
     const std::vector<eng::io::ImageF>& pathTruth();
+    const std::vector<std::vector<uint8_t>>& pathDisocclusion();
     std::vector<eng::io::ImageF> renderPath(const Job& job);
     RenderResult renderTruth(const RenderRequest& request);
     ConvergedTruth renderConverged(const RenderRequest& request);

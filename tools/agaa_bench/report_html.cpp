@@ -260,6 +260,7 @@ std::string jobsTable(const std::vector<JobResult>& results) {
       << ")</th><th rowspan=\"2\">truth's<br>own error</th><th rowspan=\"2\">linear mean<br>/ "
          "truth's</th><th "
          "rowspan=\"2\">temporal<br>&Delta;error</th><th rowspan=\"2\">moving:<br>path RMSE</th>"
+         "<th rowspan=\"2\">moving:<br>ghosting</th>"
          "<th rowspan=\"2\">valid.<br>errors</th>"
          "<th rowspan=\"2\">images</th></tr>\n<tr><th>median</th><th>min..max</th><th>mean</th><th>max</th>"
          "<th>RMSE</th><th>PSNR dB</th><th>SSIM</th><th>p99</th><th>RMSE</th><th>PSNR "
@@ -286,6 +287,8 @@ std::string jobsTable(const std::vector<JobResult>& results) {
           << "</td><td class=\"num\">" << (r.temporal ? num(r.temporal->meanErrorChange, 5) : "&ndash;")
           << "</td><td class=\"num\">"
           << (r.temporal && !r.temporal->pathError.empty() ? num(r.temporal->meanPathError, 4) : "&ndash;")
+          << "</td><td class=\"num\">"
+          << (r.temporal && r.temporal->disoccludedPixels ? num(r.temporal->ghostingError, 4) : "&ndash;")
           << "</td><td class=\"num\">" << (r.validationEnabled ? std::to_string(r.validationErrors) : "off")
           << "</td><td><a href=\"" << esc(r.imageDisplay) << "\">image</a> <a href=\"" << esc(r.imageHeatmap)
           << "\">error</a></td></tr>\n";
@@ -485,7 +488,13 @@ void writeReport(const fs::path& outDir, const std::vector<JobResult>& results, 
                         "&deg; steps")
           << ", rendered at " << any->temporal->width << "x" << any->temporal->height
           << ", each frame against its own converged truth: &Delta;error is the flicker the truth does not "
-             "have, path RMSE the mean error a user who moves sees. The other error columns are still "
+             "have, path RMSE the mean error a user who moves sees, ghosting the RMSE on the pixels the "
+             "frame "
+             "before did not see (a temporal method's history there is another surface's)"
+          << (any->temporal->disoccludedPixels
+                  ? ": " + std::to_string(any->temporal->disoccludedPixels) + " pixels over the path"
+                  : std::string())
+          << ". The other error columns are still "
              "frames, where a temporal method (taa, agaa-taa) has converged over the warm-up and timed "
              "frames.</li>\n";
     else

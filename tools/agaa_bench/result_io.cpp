@@ -138,7 +138,9 @@ json toJson(const JobResult& r) {
                          {"mean_error_change", t.meanErrorChange},
                          {"per_step", t.perStep},
                          {"mean_path_error", t.meanPathError},
-                         {"path_error", t.pathError}};
+                         {"path_error", t.pathError},
+                         {"ghosting_error", t.ghostingError},
+                         {"disoccluded_pixels", t.disoccludedPixels}};
     } else {
         j["temporal"] = nullptr;
     }
@@ -209,6 +211,8 @@ JobResult jobFromJson(const json& j) {
             ts.perStep = tj.at("per_step").get<std::vector<double>>();
             ts.meanPathError = tj.value("mean_path_error", 0.0);
             ts.pathError = tj.value("path_error", std::vector<double>());
+            ts.ghostingError = tj.value("ghosting_error", 0.0);
+            ts.disoccludedPixels = tj.value("disoccluded_pixels", uint64_t(0));
             r.temporal = ts;
         }
         const json& im = j.at("images");
@@ -261,7 +265,7 @@ void writeResultsCsv(const std::filesystem::path& file, const std::vector<JobRes
          "shading_events_max,rmse_same_n,psnr_same_n,ssim_same_n,p99_same_n,rmse_truth,psnr_truth,ssim_truth,"
          "p99_truth,truth_error_estimate,temporal_error_change,validation_errors,passes,surfaces,"
          "shading_events_worst_lane,mean_luminance,truth_mean_luminance,truth_supersampling,tolerance,"
-         "specular_aa,path_rmse_truth\n";
+         "specular_aa,path_rmse_truth,ghosting_rmse_truth\n";
     for (const JobResult& r : results) {
         auto err = [&](const std::optional<ErrorMetrics>& e) {
             if (!e) return std::string(",,,");
@@ -283,6 +287,7 @@ void writeResultsCsv(const std::filesystem::path& file, const std::vector<JobRes
           << csvNumber(r.meanLuminance) << "," << csvNumber(r.truth.meanLuminance) << ","
           << r.truth.supersampling << "," << csvField(r.job.tolerance) << "," << (r.job.specularAA ? 1 : 0)
           << "," << (r.temporal && !r.temporal->pathError.empty() ? csvNumber(r.temporal->meanPathError) : "")
+          << "," << (r.temporal && r.temporal->disoccludedPixels ? csvNumber(r.temporal->ghostingError) : "")
           << "\n";
     }
     writeTextFile(file, s.str());

@@ -46,6 +46,11 @@ struct TemporalStability {
     // the history's lag). Empty in results written before it was measured.
     std::vector<double> pathError;
     double meanPathError = 0.0;
+    // Ghosting (disocclusion.h): the display RMSE over the pixels each frame's predecessor did not
+    // see, frames 1..T-1 pooled, and how many pixels that was (0: none were, or results written
+    // before it was measured; the error is then not a figure).
+    double ghostingError = 0.0;
+    uint64_t disoccludedPixels = 0;
     std::string path = "orbit"; // SweepSettings::TemporalPath: "orbit" or "truck"
     float stepFraction = 0.0f;  // the truck's step, a fraction of the bounds' diagonal
 };

@@ -20,7 +20,10 @@ struct TemporalParams {
     mat4 reprojection;
     // x: the current frame's weight alpha, 1 / (frames in the history + 1) down to the floor;
     // y: 1 when a history exists; z: the clip box's gamma (mean +- gamma sigma); w: 1 for the
-    // motion view (--debug motion: the reprojected pixel position instead of the colour).
+    // motion view (--debug motion) instead of the colour: the HDR image holds the reprojected pixel
+    // position (x, y), found (z) and the point's distance along the previous camera's axis (w); the
+    // display holds its distance along this camera's (r). Distances are 0 for the sky; together
+    // they tell a disoccluded pixel (tools/agaa_bench/disocclusion.h).
     vec4 blend;
 };
 

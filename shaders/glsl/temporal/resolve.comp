@@ -112,15 +112,20 @@ void main() {
     vec3 result = current, resultTone = currentTone;
     vec2 previous = vec2(-1.0);
     bool found = false;
+    // The motion view's depths: the point's distance along this camera's axis and along the
+    // previous camera's (its clip w: the projection is perspective); 0 for the sky.
+    float distance = 0.0, previousDistance = 0.0;
+    float d = pixelDepth(pixel);
+    vec2 centre = vec2(pixel) + 0.5;
+    vec4 p = d > 0.0 ? vec4(viewPositionFromDepth(centre, d, frame.extent, frame.depthParams, frame.projParams), 1.0)
+                     : vec4(viewPositionAtDistance(centre, 1.0, frame.extent, frame.projParams), 0.0);
+    if (d > 0.0) distance = -p.z;
     if (params.blend.y > 0.0) {
-        float d = pixelDepth(pixel);
-        vec2 centre = vec2(pixel) + 0.5;
-        vec4 p = d > 0.0 ? vec4(viewPositionFromDepth(centre, d, frame.extent, frame.depthParams, frame.projParams), 1.0)
-                         : vec4(viewPositionAtDistance(centre, 1.0, frame.extent, frame.projParams), 0.0);
         vec4 clip = params.reprojection * p;
         if (clip.w > kTemporalMinClipW) {
             previous = (clip.xy / clip.w * 0.5 + 0.5) * frame.extent.xy;
             found = all(greaterThanEqual(previous, vec2(0.0))) && all(lessThanEqual(previous, frame.extent.xy));
+            if (d > 0.0) previousDistance = clip.w;
         }
     }
     if (found) {
@@ -136,8 +141,8 @@ void main() {
         resultTone = mix(t, currentTone, params.blend.x);
     }
     if (params.blend.w != 0.0) {
-        imageStore(outHistory, pixel, vec4(previous, found ? 1.0 : 0.0, 1.0));
-        imageStore(outDisplay, pixel, vec4(0.0, 0.0, 0.0, 1.0));
+        imageStore(outHistory, pixel, vec4(previous, found ? 1.0 : 0.0, found ? previousDistance : 0.0));
+        imageStore(outDisplay, pixel, vec4(distance, 0.0, 0.0, 1.0));
         return;
     }
     imageStore(outHistory, pixel, vec4(result, 1.0));
