@@ -105,4 +105,11 @@ ImageU8 quantizeToU8(const ImageF& display) {
     return out;
 }
 
+ImageF dequantized(const ImageU8& display) {
+    ImageF out{display.width, display.height, std::vector<float>(display.rgba.size())};
+    for (size_t i = 0; i < display.rgba.size(); ++i)
+        out.rgba[i] = float(display.rgba[i]) / 255.0f;
+    return out;
+}
+
 } // namespace eng::io

@@ -66,4 +66,7 @@ bool allFinite(const ImageF& image);
 // Throws IoError on NaN, which has no 8-bit value and must not silently become black.
 ImageU8 quantizeToU8(const ImageF& display);
 
+// The other way: v / 255, all four channels (an 8-bit display image, e.g. a PNG, for the metrics).
+ImageF dequantized(const ImageU8& display);
+
 } // namespace eng::io

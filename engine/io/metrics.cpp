@@ -26,24 +26,6 @@ std::string sizeText(const ImageF& image) {
     return std::to_string(image.width) + "x" + std::to_string(image.height);
 }
 
-void checkPair(const char* metric, const ImageF& a, const ImageF& b) {
-    if (a.width != b.width || a.height != b.height) {
-        throw IoError(std::string(metric) + ": size mismatch, " + sizeText(a) + " vs " + sizeText(b));
-    }
-    if (!isConsistent(a) || !isConsistent(b)) {
-        throw IoError(std::string(metric) + ": pixel buffer does not match the image size " + sizeText(a));
-    }
-    if (pixelCount(a) == 0) {
-        throw IoError(std::string(metric) + ": images are empty");
-    }
-    const size_t badA = countNonFinite(a);
-    const size_t badB = countNonFinite(b);
-    if (badA + badB > 0) {
-        throw IoError(std::string(metric) + ": non-finite values (" + std::to_string(badA) +
-                      " in the first image, " + std::to_string(badB) + " in the second)");
-    }
-}
-
 // max over R, G, B of |a - b| for every pixel.
 std::vector<double> maxAbsErrors(const ImageF& a, const ImageF& b) {
     std::vector<double> errors(pixelCount(a));
@@ -107,8 +89,26 @@ double ssimWholeImage(const std::vector<double>& x, const std::vector<double>& y
 
 } // namespace
 
+void checkMetricInputs(const char* metric, const ImageF& a, const ImageF& b) {
+    if (a.width != b.width || a.height != b.height) {
+        throw IoError(std::string(metric) + ": size mismatch, " + sizeText(a) + " vs " + sizeText(b));
+    }
+    if (!isConsistent(a) || !isConsistent(b)) {
+        throw IoError(std::string(metric) + ": pixel buffer does not match the image size " + sizeText(a));
+    }
+    if (pixelCount(a) == 0) {
+        throw IoError(std::string(metric) + ": images are empty");
+    }
+    const size_t badA = countNonFinite(a);
+    const size_t badB = countNonFinite(b);
+    if (badA + badB > 0) {
+        throw IoError(std::string(metric) + ": non-finite values (" + std::to_string(badA) +
+                      " in the first image, " + std::to_string(badB) + " in the second)");
+    }
+}
+
 double rmse(const ImageF& a, const ImageF& b) {
-    checkPair("rmse", a, b);
+    checkMetricInputs("rmse", a, b);
     double sum = 0.0;
     for (size_t i = 0; i < pixelCount(a); ++i) {
         for (size_t c = 0; c < 3; ++c) {
@@ -129,7 +129,7 @@ double psnr(const ImageF& a, const ImageF& b, double peak) {
 }
 
 double ssim(const ImageF& a, const ImageF& b) {
-    checkPair("ssim", a, b);
+    checkMetricInputs("ssim", a, b);
     const std::vector<double> x = luma(a);
     const std::vector<double> y = luma(b);
     const size_t width = a.width, height = a.height;
@@ -178,7 +178,7 @@ double percentileAbsError(const ImageF& a, const ImageF& b, double p) {
     if (!(p >= 0.0 && p <= 100.0)) {
         throw IoError("percentileAbsError: p must be in [0, 100], got " + std::to_string(p));
     }
-    checkPair("percentileAbsError", a, b);
+    checkMetricInputs("percentileAbsError", a, b);
     std::vector<double> errors = maxAbsErrors(a, b);
     const size_t n = errors.size();
     const size_t rank = std::clamp<size_t>(size_t(std::ceil(p * double(n) / 100.0)), 1, n);
@@ -192,7 +192,7 @@ double shareAboveRelativeError(const ImageF& a, const ImageF& b, double bound, d
             "shareAboveRelativeError: bound must be finite and >= 0 and floor finite and > 0, got " +
             std::to_string(bound) + " and " + std::to_string(floor));
     }
-    checkPair("shareAboveRelativeError", a, b);
+    checkMetricInputs("shareAboveRelativeError", a, b);
     size_t above = 0;
     for (size_t i = 0; i < pixelCount(a); ++i) {
         double e = 0.0;
@@ -209,7 +209,7 @@ ImageF errorHeatmap(const ImageF& a, const ImageF& b, float scale) {
     if (!(scale > 0.0f) || !std::isfinite(scale)) {
         throw IoError("errorHeatmap: scale must be finite and > 0, got " + std::to_string(scale));
     }
-    checkPair("errorHeatmap", a, b);
+    checkMetricInputs("errorHeatmap", a, b);
     constexpr std::array<std::array<float, 3>, 5> kRamp = {{
         {0.0f, 0.0f, 0.0f}, // no error
         {0.0f, 0.0f, 1.0f},

@@ -12,6 +12,9 @@ namespace eng::io {
 // an image is empty, or any value is NaN/Inf (a NaN metric would compare false against every
 // threshold and could pass a `!(err > limit)` check silently).
 
+// The checks above, for a metric of its own file (engine/io/flip.h); `metric` names it in the message.
+void checkMetricInputs(const char* metric, const ImageF& a, const ImageF& b);
+
 // sqrt(mean over all pixels and R, G, B of (a - b)^2).
 double rmse(const ImageF& a, const ImageF& b);
 

@@ -70,6 +70,16 @@ TEST(Image, QuantizeRoundsHalvesAwayFromZeroAndClamps) {
     EXPECT_EQ(p.a, 1);
 }
 
+TEST(Image, DequantizedIsTheByteOver255AndQuantizesBackExactly) {
+    ImageU8 bytes = makeImageU8(256, 1);
+    for (uint32_t x = 0; x < 256; ++x)
+        setPixel(bytes, x, 0, {uint8_t(x), uint8_t(255 - x), 0, 255});
+    const ImageF image = dequantized(bytes);
+    EXPECT_FLOAT_EQ(image.rgba[4 * 51], 0.2f);
+    EXPECT_EQ(image.rgba[4 * 255], 1.0f);
+    EXPECT_EQ(quantizeToU8(image).rgba, bytes.rgba) << "every byte survives the round trip";
+}
+
 TEST(Image, QuantizeRefusesNan) {
     ImageF image = makeImage(2, 2);
     image.rgba[5] = std::nanf("");
