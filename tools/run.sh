@@ -49,8 +49,9 @@ echo
 echo "out/ holds:"
 ls -1 out | sed 's/^/  out\//'
 # What accuracy costs in time: every method at its main setting (n = 8, AGAA c = 2, SBAA S = 4,
-# streaming S = 3) against the converged truth on the default scene, the ship, foliage, spikes and
-# the chain-link fence (thin glossy metal before a wall, issue 49),
+# streaming S = 3; temporal AA and AGAA + TAA, issue 51) against the converged truth on the default
+# scene, the ship, foliage, spikes and the chain-link fence (thin glossy metal before a wall, issue
+# 49), still and along a 4-frame sideways truck of the camera (each frame against its own truth),
 # and AGAA's knob (--agaa-tolerance auto, never, 30 and 0, the reference) drawn as a curve:
 # out/bench/report.html, and out/results.md written from the same run (docs/results.md is the
 # committed copy: tools/results-page.py out/bench --write docs/results.md --readme README.md).
@@ -60,8 +61,9 @@ bench_scenes=default,foliage,spikes,chainlink
 [ -f "$scenes/dutch_ship_medium/dutch_ship_medium_1k.gltf" ] && bench_scenes=default,ship,foliage,spikes,chainlink
 MALLOC_TRIM_THRESHOLD_=1073741824 MALLOC_MMAP_THRESHOLD_=33554432 AGAA_SHARED_SCENES="$scenes" \
   tools/results-page.py --record out/bench -- "$build/tools/agaa_bench/agaa-bench" --out out/bench \
-  --scenes "$bench_scenes" --methods noaa,fxaa,reference,simple-complex,sbaa,streaming,agaa --samples 8 \
-  --aggregates 2 --tolerances auto,never,30,0 --size 160x90 --frames 5 --warmup 2 --temporal 0
+  --scenes "$bench_scenes" --methods noaa,fxaa,taa,reference,simple-complex,sbaa,streaming,agaa,agaa-taa \
+  --samples 8 --aggregates 2 --tolerances auto,never,30,0 --size 160x90 --frames 5 --warmup 2 --temporal 4 \
+  --temporal-path truck
 tools/results-page.py out/bench --write out/results.md
 echo "report: $root/out/bench/report.html"
 echo "results: $root/out/results.md"

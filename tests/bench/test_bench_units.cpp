@@ -290,12 +290,13 @@ JobResult sampleResult(const std::string& scene, const std::string& method, uint
     r.passes = {{"x.lighting", makeSpread({0.5, 0.75})}};
     r.bytesPerPixel = 12.5;
     r.errorSameN = ErrorMetrics{0.0, std::numeric_limits<double>::infinity(), 1.0, 0.0};
-    r.errorTruth = ErrorMetrics{0.01, 40.0, 0.99, 0.05};
+    r.errorTruth = ErrorMetrics{0.01, 40.0, 0.99, 0.05, 0.04};
     r.truth = TruthInfo{4, 32, 0.0004, 0.21};
     r.meanLuminance = 0.2;
     r.temporal = TemporalStability{5, 0.5f, 4, 4, 0.002, {0.001, 0.003}};
     r.temporal->ghostingError = 0.03;
     r.temporal->disoccludedPixels = 7;
+    r.temporal->meanPathFlip = 0.05;
     r.imageDisplay = "images/a.png";
     return r;
 }
@@ -308,10 +309,42 @@ TEST(ResultIo, JsonRoundTripKeepsEveryFieldIncludingInfinitePsnr) {
     const JobResult back = jobFromJson(j);
     EXPECT_EQ(toJson(back), j);
     EXPECT_TRUE(std::isinf(back.errorSameN->psnr));
+    EXPECT_FALSE(back.errorSameN->flip) << "not measured stays not measured";
+    EXPECT_EQ(back.errorTruth->flip, 0.04);
     nlohmann::json broken = j;
     broken["id"] = "other";
     EXPECT_THROW(jobFromJson(broken), std::runtime_error)
         << "an id that does not match its fields is refused";
+}
+
+TEST(Claims, ClosestAtAgaasFrameTimeNamesTheBestStillAndMovingWithinTheBudget) {
+    JobResult agaa = sampleResult("plane", "agaa", 8, 2); // frame median 2 ms, slowest 3 ms
+    agaa.temporal->pathError = {0.011};
+    agaa.temporal->meanPathError = 0.011;
+    JobResult taa = sampleResult("plane", "taa", 1, 0);
+    taa.job.usesSamples = false;
+    taa.job.usesAggregates = false;
+    taa.frameMs = makeSpread({2.5, 2.5, 2.5}); // above AGAA's median, within its spread
+    taa.errorTruth->rmse = 0.005;
+    taa.errorTruth->flip = 0.05; // blur: FLIP ranks it below AGAA (0.04)
+    taa.temporal->pathError = {0.02};
+    taa.temporal->meanPathError = 0.02;
+    JobResult reference = sampleResult("plane", "reference", 8, 0);
+    reference.frameMs = makeSpread({10.0, 10.0, 10.0}); // more accurate, but slower
+    reference.errorTruth->rmse = 0.001;
+    bool seen = false;
+    for (const ClaimRow& row : measureClaims({agaa, taa, reference})) {
+        if (row.claim.find("Issue 51: closest to the truth") == std::string::npos) continue;
+        seen = true;
+        EXPECT_EQ(row.measured, "an AGAA method is closest still on 0 of 1 scenes, moving on 1 of 1");
+        ASSERT_EQ(row.perScene.size(), 1u);
+        EXPECT_NE(row.perScene[0].find("still taa 0.0050;"), std::string::npos) << row.perScene[0];
+        EXPECT_NE(row.perScene[0].find("moving agaa (8, 2) 0.0110;"), std::string::npos) << row.perScene[0];
+        EXPECT_NE(row.perScene[0].find("FLIP agaa (8, 2) 0.0400"), std::string::npos) << row.perScene[0];
+        EXPECT_EQ(row.perScene[0].find("reference"), std::string::npos)
+            << "slower than AGAA: not a candidate";
+    }
+    EXPECT_TRUE(seen);
 }
 
 TEST(Merge, DropsDuplicatesAndSortsCanonically) {

@@ -1,5 +1,6 @@
 #include "image_error.h"
 
+#include "engine/io/flip.h"
 #include "engine/io/io_error.h"
 #include "engine/io/metrics.h"
 #include "engine/io/tone_map.h"
@@ -20,6 +21,7 @@ ErrorMetrics compareImages(const eng::io::ImageF& image, const eng::io::ImageF& 
     m.psnr = eng::io::psnr(image, truth);
     m.ssim = eng::io::ssim(image, truth);
     m.p99 = eng::io::percentileAbsError(image, truth, 99.0);
+    m.flip = eng::io::flipMean(truth, image);
     return m;
 }
 

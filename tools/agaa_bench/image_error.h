@@ -2,7 +2,8 @@
 // The benchmark's error measures, all on the display image sRGB-encoded: the
 // tone-mapped resolve (RenderResult::display, linear [0,1]) through the sRGB
 // OETF per channel, the image a viewer sees. RMSE, PSNR, SSIM and the 99th
-// percentile pixel error come from engine/io/metrics; this file adds the
+// percentile pixel error come from engine/io/metrics, the mean ꟻLIP from
+// engine/io/flip (the paper's viewer, 67 pixels a degree); this file adds the
 // encoding, the window of worst error (for the report's crops) and temporal
 // stability along a camera path.
 
@@ -21,7 +22,8 @@ struct ErrorMetrics {
     double rmse = 0.0;
     double psnr = 0.0; // dB; +infinity when the images are identical
     double ssim = 1.0;
-    double p99 = 0.0; // 99th percentile over pixels of max over R, G, B of |a - b|
+    double p99 = 0.0;           // 99th percentile over pixels of max over R, G, B of |a - b|
+    std::optional<double> flip; // mean LDR ꟻLIP; empty in results written before it was measured
 };
 
 // Both images sRGB-encoded, same size. Throws eng::io::IoError on a size mismatch or NaN.

@@ -6,6 +6,7 @@
 #include "agaa/method_settings.h"
 
 #include "engine/frame/frame_constants.h"
+#include "engine/io/flip.h"
 #include "engine/io/metrics.h"
 #include "engine/io/png.h"
 #include "engine/scene/default_lighting.h"
@@ -33,6 +34,7 @@ ErrorMetrics identical() {
     e.psnr = std::numeric_limits<double>::infinity();
     e.ssim = 1.0;
     e.p99 = 0.0;
+    e.flip = 0.0;
     return e;
 }
 
@@ -268,8 +270,10 @@ JobResult JobRunner::run(const Job& job) {
         t.perStep = temporalErrorChange(path, truths);
         for (double v : t.perStep)
             t.meanErrorChange += v / double(t.perStep.size());
-        for (size_t f = 0; f < path.size(); ++f)
+        for (size_t f = 0; f < path.size(); ++f) {
             t.pathError.push_back(eng::io::rmse(path[f], truths[f]));
+            t.meanPathFlip += eng::io::flipMean(truths[f], path[f]) / double(path.size());
+        }
         for (double v : t.pathError)
             t.meanPathError += v / double(t.pathError.size());
         const MaskedError ghosting = maskedError(path, truths, pathDisocclusion());

@@ -243,8 +243,9 @@ std::string cropSection(const SceneCrops& crops, const std::vector<const JobResu
 }
 
 std::string errorCells(const std::optional<ErrorMetrics>& e) {
-    if (!e) return "<td class=\"num\" colspan=\"4\">&ndash;</td>";
-    return "<td class=\"num\">" + num(e->rmse, 4) + "</td><td class=\"num\">" + num(e->psnr, 1) +
+    if (!e) return "<td class=\"num\" colspan=\"5\">&ndash;</td>";
+    return "<td class=\"num\">" + num(e->rmse, 4) + "</td><td class=\"num\">" +
+           (e->flip ? num(*e->flip, 4) : "&ndash;") + "</td><td class=\"num\">" + num(e->psnr, 1) +
            "</td><td class=\"num\">" + num(e->ssim, 4) + "</td><td class=\"num\">" + num(e->p99, 3) + "</td>";
 }
 
@@ -255,15 +256,17 @@ std::string jobsTable(const std::vector<JobResult>& results) {
          "rowspan=\"2\">n</th>"
          "<th rowspan=\"2\">c</th><th colspan=\"2\">frame GPU ms</th><th rowspan=\"2\">shading pass ms</th>"
          "<th rowspan=\"2\">bytes / pixel</th><th colspan=\"2\">shading events / pixel</th>"
-         "<th colspan=\"4\">vs reference at the same n</th><th colspan=\"4\">vs converged truth ("
+         "<th colspan=\"5\">vs reference at the same n</th><th colspan=\"5\">vs converged truth ("
       << truth.supersampling << "x" << truth.supersampling << " tiles at n=" << truth.samples
       << ")</th><th rowspan=\"2\">truth's<br>own error</th><th rowspan=\"2\">linear mean<br>/ "
          "truth's</th><th "
-         "rowspan=\"2\">temporal<br>&Delta;error</th><th rowspan=\"2\">moving:<br>path RMSE</th>"
+         "rowspan=\"2\">temporal<br>&Delta;error</th><th rowspan=\"2\">moving:<br>path RMSE</th><th "
+         "rowspan=\"2\">moving:<br>path &#xA7FB;LIP</th>"
          "<th rowspan=\"2\">moving:<br>ghosting</th>"
          "<th rowspan=\"2\">valid.<br>errors</th>"
          "<th rowspan=\"2\">images</th></tr>\n<tr><th>median</th><th>min..max</th><th>mean</th><th>max</th>"
-         "<th>RMSE</th><th>PSNR dB</th><th>SSIM</th><th>p99</th><th>RMSE</th><th>PSNR "
+         "<th>RMSE</th><th>&#xA7FB;LIP</th><th>PSNR "
+         "dB</th><th>SSIM</th><th>p99</th><th>RMSE</th><th>&#xA7FB;LIP</th><th>PSNR "
          "dB</th><th>SSIM</th><th>p99</th></tr>\n";
     for (const JobResult& r : results) {
         std::string passes;
@@ -287,6 +290,8 @@ std::string jobsTable(const std::vector<JobResult>& results) {
           << "</td><td class=\"num\">" << (r.temporal ? num(r.temporal->meanErrorChange, 5) : "&ndash;")
           << "</td><td class=\"num\">"
           << (r.temporal && !r.temporal->pathError.empty() ? num(r.temporal->meanPathError, 4) : "&ndash;")
+          << "</td><td class=\"num\">"
+          << (r.temporal && r.temporal->meanPathFlip > 0.0 ? num(r.temporal->meanPathFlip, 4) : "&ndash;")
           << "</td><td class=\"num\">"
           << (r.temporal && r.temporal->disoccludedPixels ? num(r.temporal->ghostingError, 4) : "&ndash;")
           << "</td><td class=\"num\">" << (r.validationEnabled ? std::to_string(r.validationErrors) : "off")
@@ -467,9 +472,10 @@ void writeReport(const fs::path& outDir, const std::vector<JobResult>& results, 
          "frames "
          "(lavapipe JIT-compiles a pipeline on first use). Frame time = the sum of that frame's pass times, "
          "including the read-back copies every method pays alike.</li>\n"
-         "<li>Errors: RMSE, PSNR, SSIM (11x11 Gaussian window on luma) and the 99th percentile of the "
-         "per-pixel "
-         "max-channel error, all on the tone-mapped display image, sRGB-encoded.</li>\n"
+         "<li>Errors: RMSE, the mean &#xA7FB;LIP (LDR, Andersson et al. 2020, at 67 pixels a degree: a "
+         "0.7 m wide 4K monitor seen from 0.7 m; it charges blur and lost edges that RMSE averages away), "
+         "PSNR, SSIM (11x11 Gaussian window on luma) and the 99th percentile of the per-pixel max-channel "
+         "error, all on the tone-mapped display image, sRGB-encoded.</li>\n"
          "<li>Ground truths: the reference (per-sample shading) at the same n, for methods that take n (the "
          "reference itself is listed with error 0 by definition): the shading error at fixed visibility; and "
          "the converged truth: the reference at n="

@@ -39,8 +39,10 @@ json numberOrNull(double v) {
 
 json errorJson(const std::optional<ErrorMetrics>& e) {
     if (!e) return nullptr;
-    return {
+    json j = {
         {"rmse", e->rmse}, {"psnr_db", numberOrNull(e->psnr)}, {"ssim", e->ssim}, {"p99_abs_error", e->p99}};
+    if (e->flip) j["flip"] = *e->flip;
+    return j;
 }
 
 std::optional<ErrorMetrics> errorFromJson(const json& j) {
@@ -51,6 +53,7 @@ std::optional<ErrorMetrics> errorFromJson(const json& j) {
         j.at("psnr_db").is_null() ? std::numeric_limits<double>::infinity() : j.at("psnr_db").get<double>();
     e.ssim = j.at("ssim").get<double>();
     e.p99 = j.at("p99_abs_error").get<double>();
+    if (j.contains("flip")) e.flip = j.at("flip").get<double>();
     return e;
 }
 
@@ -140,6 +143,7 @@ json toJson(const JobResult& r) {
                          {"mean_path_error", t.meanPathError},
                          {"path_error", t.pathError},
                          {"ghosting_error", t.ghostingError},
+                         {"mean_path_flip", t.meanPathFlip},
                          {"disoccluded_pixels", t.disoccludedPixels}};
     } else {
         j["temporal"] = nullptr;
@@ -212,6 +216,7 @@ JobResult jobFromJson(const json& j) {
             ts.meanPathError = tj.value("mean_path_error", 0.0);
             ts.pathError = tj.value("path_error", std::vector<double>());
             ts.ghostingError = tj.value("ghosting_error", 0.0);
+            ts.meanPathFlip = tj.value("mean_path_flip", 0.0);
             ts.disoccludedPixels = tj.value("disoccluded_pixels", uint64_t(0));
             r.temporal = ts;
         }
@@ -265,7 +270,7 @@ void writeResultsCsv(const std::filesystem::path& file, const std::vector<JobRes
          "shading_events_max,rmse_same_n,psnr_same_n,ssim_same_n,p99_same_n,rmse_truth,psnr_truth,ssim_truth,"
          "p99_truth,truth_error_estimate,temporal_error_change,validation_errors,passes,surfaces,"
          "shading_events_worst_lane,mean_luminance,truth_mean_luminance,truth_supersampling,tolerance,"
-         "specular_aa,path_rmse_truth,ghosting_rmse_truth\n";
+         "specular_aa,path_rmse_truth,ghosting_rmse_truth,flip_truth,path_flip_truth\n";
     for (const JobResult& r : results) {
         auto err = [&](const std::optional<ErrorMetrics>& e) {
             if (!e) return std::string(",,,");
@@ -288,6 +293,8 @@ void writeResultsCsv(const std::filesystem::path& file, const std::vector<JobRes
           << r.truth.supersampling << "," << csvField(r.job.tolerance) << "," << (r.job.specularAA ? 1 : 0)
           << "," << (r.temporal && !r.temporal->pathError.empty() ? csvNumber(r.temporal->meanPathError) : "")
           << "," << (r.temporal && r.temporal->disoccludedPixels ? csvNumber(r.temporal->ghostingError) : "")
+          << "," << (r.errorTruth && r.errorTruth->flip ? csvNumber(*r.errorTruth->flip) : "") << ","
+          << (r.temporal && !r.temporal->pathError.empty() ? csvNumber(r.temporal->meanPathFlip) : "")
           << "\n";
     }
     writeTextFile(file, s.str());

@@ -50,6 +50,7 @@ struct TemporalStability {
     // see, frames 1..T-1 pooled, and how many pixels that was (0: none were, or results written
     // before it was measured; the error is then not a figure).
     double ghostingError = 0.0;
+    double meanPathFlip = 0.0; // the path frames' mean ꟻLIP against their truths (0 before it was measured)
     uint64_t disoccludedPixels = 0;
     std::string path = "orbit"; // SweepSettings::TemporalPath: "orbit" or "truck"
     float stepFraction = 0.0f;  // the truck's step, a fraction of the bounds' diagonal
