@@ -52,6 +52,7 @@ ls -1 out | sed 's/^/  out\//'
 # streaming S = 3; temporal AA and AGAA + TAA, issue 51) against the converged truth on the default
 # scene, the ship, foliage, spikes and the chain-link fence (thin glossy metal before a wall, issue
 # 49), still and along a 4-frame sideways truck of the camera (each frame against its own truth),
+# each with and without geometric specular AA (--curvature-roughness),
 # and AGAA's knob (--agaa-tolerance auto, never, 30 and 0, the reference) drawn as a curve:
 # out/bench/report.html, and out/results.md written from the same run (docs/results.md is the
 # committed copy: tools/results-page.py out/bench --write docs/results.md --readme README.md).
@@ -63,7 +64,7 @@ MALLOC_TRIM_THRESHOLD_=1073741824 MALLOC_MMAP_THRESHOLD_=33554432 AGAA_SHARED_SC
   tools/results-page.py --record out/bench -- "$build/tools/agaa_bench/agaa-bench" --out out/bench \
   --scenes "$bench_scenes" --methods noaa,fxaa,taa,reference,simple-complex,sbaa,streaming,agaa,agaa-taa \
   --samples 8 --aggregates 2 --tolerances auto,never,30,0 --size 160x90 --frames 5 --warmup 2 --temporal 4 \
-  --temporal-path truck
+  --temporal-path truck --specular-aa off,on
 tools/results-page.py out/bench --write out/results.md
 echo "report: $root/out/bench/report.html"
 echo "results: $root/out/results.md"
