@@ -308,8 +308,9 @@ ClaimRow closestClaim(const std::vector<JobResult>& results) {
         const JobResult* a = findKey(results, scene, agaa8);
         if (!a) continue;
         const double budget = std::max(a->frameMs.max, a->frameMs.median);
-        // The best and the runner-up by one error among the jobs within the budget.
-        const auto closest = [&](const Error& error, const JobResult*& best) -> std::string {
+        // The best and the runner-up by one error among the jobs within the budget. The truth's own
+        // error is an RMSE: it bounds RMSE differences only, so FLIP ranks without ties.
+        const auto closest = [&](const Error& error, const JobResult*& best, bool ties) -> std::string {
             best = nullptr;
             const JobResult* second = nullptr;
             for (const JobResult& r : results) {
@@ -323,15 +324,17 @@ ClaimRow closestClaim(const std::vector<JobResult>& results) {
             }
             if (!best) return "not measured";
             std::string text = jobName(*best) + " " + format("%.4f", *error(*best));
-            if (second &&
-                *error(*second) - *error(*best) < kDecidedDifferenceRatio * best->truth.errorEstimate)
-                text +=
-                    " (undecided with " + second->job.label() + " " + format("%.4f", *error(*second)) + ")";
+            if (!second) return text;
+            const std::string next = jobName(*second) + " " + format("%.4f", *error(*second)) + ")";
+            if (!ties) return text + " (next " + next;
+            if (*error(*second) - *error(*best) < kDecidedDifferenceRatio * best->truth.errorEstimate)
+                text += " (undecided with " + next;
             return text;
         };
         const JobResult *bestStill = nullptr, *bestMoving = nullptr, *bestFlip = nullptr;
-        const std::string stillText = closest(still, bestStill), movingText = closest(moving, bestMoving);
-        const std::string flipText = closest(flip, bestFlip);
+        const std::string stillText = closest(still, bestStill, true);
+        const std::string movingText = closest(moving, bestMoving, true);
+        const std::string flipText = closest(flip, bestFlip, false);
         ++scenes;
         agaaStill += bestStill && isAgaa(*bestStill) ? 1u : 0u;
         if (bestMoving) {
