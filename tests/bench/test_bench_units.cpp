@@ -252,6 +252,10 @@ TEST(Disocclusion, APointIsSeenWhereThePreviousFrameHadItsDistanceWithinAPixelAn
     const std::vector<uint8_t> mask = disoccludedPixels(motion, previous);
     EXPECT_EQ(mask, (std::vector<uint8_t>{0, 1, 0, 0, 1, 1, 0, 1}));
     EXPECT_THROW(disoccludedPixels(motion, eng::io::makeImage(4, 1)), eng::io::IoError) << "sizes differ";
+    eng::io::ImageF broken = previous;
+    broken.rgba[4] = std::numeric_limits<float>::quiet_NaN();
+    EXPECT_THROW(disoccludedPixels(motion, broken), eng::io::IoError)
+        << "a NaN distance is refused, not compared";
 }
 
 TEST(Disocclusion, MaskedErrorPoolsTheMaskedPixelsOfEveryFrameAndSkipsTheFirst) {

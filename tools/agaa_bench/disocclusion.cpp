@@ -1,6 +1,7 @@
 #include "disocclusion.h"
 
 #include "engine/io/io_error.h"
+#include "engine/io/metrics.h"
 
 #include <algorithm>
 #include <cmath>
@@ -9,14 +10,6 @@
 namespace agaa::bench {
 
 namespace {
-
-void checkSameSize(const char* what, const eng::io::ImageF& a, const eng::io::ImageF& b) {
-    if (a.width != b.width || a.height != b.height || a.rgba.size() != size_t(a.width) * a.height * 4 ||
-        b.rgba.size() != a.rgba.size())
-        throw eng::io::IoError(std::string(what) + ": images of different sizes (" + std::to_string(a.width) +
-                               "x" + std::to_string(a.height) + " and " + std::to_string(b.width) + "x" +
-                               std::to_string(b.height) + ")");
-}
 
 // Whether the previous frame saw, at texel (x, y), the point at distance `expected` (0: the sky).
 bool sawAt(const eng::io::ImageF& previousDistance, int x, int y, float expected) {
@@ -31,7 +24,7 @@ bool sawAt(const eng::io::ImageF& previousDistance, int x, int y, float expected
 
 std::vector<uint8_t> disoccludedPixels(const eng::io::ImageF& motion,
                                        const eng::io::ImageF& previousDistance) {
-    checkSameSize("disoccludedPixels", motion, previousDistance);
+    eng::io::checkMetricInputs("disoccludedPixels", motion, previousDistance);
     std::vector<uint8_t> mask(size_t(motion.width) * motion.height, 0);
     for (size_t i = 0; i < mask.size(); ++i) {
         const float* m = &motion.rgba[i * 4];
@@ -60,7 +53,7 @@ MaskedError maskedError(const std::vector<eng::io::ImageF>& frames,
     double sum = 0.0;
     MaskedError e;
     for (size_t f = 0; f < frames.size(); ++f) {
-        checkSameSize("maskedError", frames[f], truths[f]);
+        eng::io::checkMetricInputs("maskedError", frames[f], truths[f]);
         if (masks[f].empty()) continue;
         if (masks[f].size() != size_t(frames[f].width) * frames[f].height)
             throw eng::io::IoError("maskedError: frame " + std::to_string(f) + "'s mask has " +

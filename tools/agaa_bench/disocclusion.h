@@ -33,7 +33,8 @@ inline constexpr float kDisocclusionDistanceTolerance = 0.02f;
 // `motion` is frame t's motion-view HDR image (x, y: the reprojected position in pixels; z: 1 when
 // it falls inside the previous frame; w: the point's distance from the previous camera, 0 for the
 // sky); `previousDistance` is frame t - 1's motion-view display (r: the distance of its pixel's
-// centre point, 0 for the sky). Same size; throws eng::io::IoError otherwise.
+// centre point, 0 for the sky). Throws eng::io::IoError as the metrics do (engine/io/metrics.h:
+// sizes that differ, an empty image, a non-finite value).
 std::vector<uint8_t> disoccludedPixels(const eng::io::ImageF& motion,
                                        const eng::io::ImageF& previousDistance);
 
