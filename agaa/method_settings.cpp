@@ -182,9 +182,10 @@ std::vector<MethodOption> declareOptions() {
         MethodOption t = ranged(
             Kind::Number, "agaa-tolerance", "auto|never|T", 0.0, 1e7, "auto",
             "agaa, agaa-samples, agaa-accumulate",
-            "the error-driven shading rate: a pixel whose aggregates' normal spread, against their sharpest "
-            "member's lobe, reaches T is shaded per sample as the reference shades it (0: every pixel, the "
-            "reference's image; docs/decisions/shading-rate-estimate.md). auto: " +
+            "the error-driven shading rate: an aggregate whose normal spread, against its sharpest member's "
+            "lobe, reaches T has its samples shaded one by one as the reference shades them, and the whole "
+            "pixel is where every aggregate of it does (0: every pixel, the reference's image; "
+            "docs/decisions/shading-rate-estimate.md). auto: " +
                 numberText(kDefaultTolerance) +
                 " on the samples path, never on the accumulate path (where a tolerance keeps 12 bytes of "
                 "material per sample)",

@@ -9,8 +9,8 @@
 //   agaa.gbuffer     the per-sample G-buffer (agaa/common/sample_gbuffer.h): the only raster pass
 //   agaa.cluster     Algorithm 1 on the G-buffer's depth and shading normal, models kept apart
 //   agaa.lighting    each aggregate averaged from its samples at the top of the tile, lit once
-//   agaa.lighting.perSample  with a tolerance (--agaa-tolerance): the pixels the lighting pass
-//                    flagged, each sample lit and resolved as the reference does
+//   agaa.lighting.perSample  with a tolerance (--agaa-tolerance): the samples of the aggregates the
+//                    lighting pass distrusted, each lit and resolved as the reference does
 // With --debug aggregates the lighting is replaced by a view of the clustering, and the graph
 // culls the generation passes nothing reads any more.
 

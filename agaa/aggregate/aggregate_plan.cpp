@@ -222,11 +222,11 @@ std::vector<VariantChoice> planVariants(const AggregatePlan& plan, const SceneTr
     v.push_back({"shading-rate",
                  plan.settings.tolerance < 0.0f ? std::string("one shading event per aggregate")
                  : plan.settings.tolerance == 0.0f || std::isinf(plan.settings.aliasLimit)
-                     ? "per sample where the aggregates' normal spread over their sharpest lobe reaches " +
-                           shortNumber(plan.settings.tolerance)
-                     : "per sample where the aggregates' normal spread over their sharpest lobe reaches " +
-                           shortNumber(plan.settings.tolerance) + " and stays below " +
-                           shortNumber(plan.settings.aliasLimit),
+                     ? "per sample where an aggregate's normal spread over its sharpest lobe reaches " +
+                           shortNumber(plan.settings.tolerance) + " (its samples)"
+                     : "per sample where an aggregate's normal spread over its sharpest lobe reaches " +
+                           shortNumber(plan.settings.tolerance) + " and the pixel's stays below " +
+                           shortNumber(plan.settings.aliasLimit) + " (its samples)",
                  plan.toleranceCause});
     v.push_back({"curvature-roughness", plan.settings.effects.curvatureRoughness.enabled ? "on" : "off",
                  "setting --curvature-roughness"});

@@ -84,8 +84,9 @@ struct FrameTargets {
     // with n/4 layers for n >= 4, one sample for n = 1; D32, with stencil on AGAA's accumulate
     // path. For writing a host's depth target (agaa/common/host_targets.h).
     eng::rg::Texture depth;
-    // R32_UINT, only from AGAA with a shading-rate tolerance (AggregateSettings::tolerance): 1 where
-    // the pixel was shaded per sample, 0 elsewhere. Invalid otherwise.
+    // R32_UINT, only from AGAA with a shading-rate tolerance (AggregateSettings::tolerance): a bit
+    // per sample shaded one by one (all n where the whole pixel was), 0 where the pixel's
+    // aggregates alone lit it. Invalid otherwise.
     eng::rg::Texture perSampleShaded;
 };
 

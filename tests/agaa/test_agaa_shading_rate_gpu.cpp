@@ -1,13 +1,15 @@
 // Issue 35: AGAA's error-driven shading rate (--agaa-tolerance; shaders/glsl/agaa/lighting/
 // prefilter_estimate.glsl and shading_rate.glsl, then agaa/lighting_per_sample.comp). A pixel whose
 // aggregates' normal spread, against their sharpest member's lobe, reaches the tolerance and stays
-// below the alias limit is shaded per sample.
+// below the alias limit is shaded per sample: the members of its distrusted aggregates (issue 49),
+// or every sample where all its aggregates are distrusted.
 //   - Nothing flagged is AGAA bit for bit: the machinery changes no other pixel.
 //   - A tolerance of 0 is the reference at the same n.
-//   - At any tolerance a flagged pixel is the reference's pixel, and every other one AGAA's.
-//   - The GPU flags the pixels a CPU estimate, written here in double from the lighting pass's
-//     export of each sample's normal, roughness and aggregate, flags; the two differ only where
-//     an estimate lies within rounding of the tolerance or the limit.
+//   - At any tolerance a wholly flagged pixel is the reference's pixel, a partly flagged one has its
+//     trusted aggregate's event and one per shaded sample, and every other one is AGAA's.
+//   - The GPU flags the pixels, and shades the samples, a CPU estimate flags, written here in
+//     double from the lighting pass's export of each sample's normal, roughness and aggregate; the
+//     two differ only where an estimate lies within rounding of the tolerance or the limit.
 //   - The estimate's floor (kNormalSpreadFloor): a flat surface is never flagged above 0.
 
 #include "agaa/aggregate/agaa_constants.h"
@@ -28,6 +30,7 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -181,11 +184,13 @@ std::vector<bool> flaggedPixels(agaa::FrameRenderer& renderer, agaa::RenderReque
     return flagged;
 }
 
-// The flagged pixels' pass (agaa/lighting_per_sample.comp) writes exactly the flagged pixels, as
-// the reference shades them, and leaves every other pixel as AGAA's lighting pass wrote it. On the
-// accumulate path the flagged pixels are the reference's within kSampleMaterialAgreement's causes,
-// as their mean difference per channel.
-
+// The flagged pixels' pass (agaa/lighting_per_sample.comp) writes exactly the flagged pixels and
+// leaves every other pixel as AGAA's lighting pass wrote it. A wholly flagged pixel is the
+// reference's; on the accumulate path within kSampleMaterialAgreement's causes, as the mean
+// difference per channel. A partly flagged one (c = 2: one aggregate distrusted, one trusted) has
+// the trusted aggregate's one shading event and one for each sample it shaded, and is closer to the
+// reference than AGAA's own pixel: the samples it shades are those whose pre-filter the estimate
+// distrusts.
 TEST(ShadingRate, AFlaggedPixelIsTheReferencesAndEveryOtherAgaas) {
     auto device = agaa::test::makeValidatedDevice();
     // metal: SGGX, a shadowed sun; default: shadows, point lights; furball: fibres, c = 2 on thin
@@ -200,16 +205,33 @@ TEST(ShadingRate, AFlaggedPixelIsTheReferencesAndEveryOtherAgaas) {
         const agaa::RenderResult never = renderer.render(withTolerance(path, 8, 2, agaa::kToleranceNever));
         const agaa::RenderRequest some = withTolerance(path, 8, 2, 30.0f);
         const agaa::RenderResult rate = renderer.render(some);
-        const std::vector<bool> flagged = flaggedPixels(renderer, some);
-        size_t flaggedCount = 0, agaaMismatches = 0, eventMismatches = 0;
+        const std::vector<bool> red = flaggedPixels(renderer, some);
+        ASSERT_EQ(rate.perSampleMembers.size(), red.size()) << name;
+        constexpr uint32_t kWhole = 0xFFu; // n = 8
+        size_t wholeCount = 0, partlyCount = 0, agaaMismatches = 0, eventMismatches = 0, viewMismatches = 0;
         double referenceDifference = 0.0, referenceDifferenceSum = 0.0;
-        for (size_t p = 0; p < flagged.size(); ++p) {
-            const agaa::RenderResult& want = flagged[p] ? reference : never;
-            flaggedCount += flagged[p] ? 1 : 0;
+        double partlyToReference = 0.0, neverToReference = 0.0; // summed over the partly flagged pixels
+        for (size_t p = 0; p < red.size(); ++p) {
+            const uint32_t members = rate.perSampleMembers[p];
+            viewMismatches += red[p] != (members != 0) ? 1 : 0;
+            if (members != 0 && members != kWhole) {
+                ++partlyCount;
+                const uint32_t shaded = uint32_t(std::popcount(members));
+                eventMismatches += never.shadingEvents[p] != 2 || rate.shadingEvents[p] != 1 + shaded ? 1 : 0;
+                for (int ch = 0; ch < 3; ++ch) {
+                    const float want = reference.display.rgba[4 * p + ch];
+                    partlyToReference += std::abs(rate.display.rgba[4 * p + ch] - want);
+                    neverToReference += std::abs(never.display.rgba[4 * p + ch] - want);
+                }
+                continue;
+            }
+            const bool whole = members == kWhole;
+            const agaa::RenderResult& want = whole ? reference : never;
+            wholeCount += whole ? 1 : 0;
             eventMismatches += rate.shadingEvents[p] != want.shadingEvents[p] ? 1 : 0;
             for (int ch = 0; ch < 4; ++ch) {
                 const float got = rate.display.rgba[4 * p + ch], expected = want.display.rgba[4 * p + ch];
-                if (flagged[p]) {
+                if (whole) {
                     referenceDifference = std::max(referenceDifference, double(std::abs(got - expected)));
                     referenceDifferenceSum += std::abs(got - expected);
                 } else
@@ -217,17 +239,23 @@ TEST(ShadingRate, AFlaggedPixelIsTheReferencesAndEveryOtherAgaas) {
             }
         }
         const double referenceMeanDifference =
-            referenceDifferenceSum / double(std::max<size_t>(1, 4 * flaggedCount));
-        std::printf("[ measured ] %-14s %s tolerance 30: %zu of %zu pixels flagged, display difference to "
-                    "the reference's there largest %.2e, mean %.2e\n",
-                    name, path, flaggedCount, flagged.size(), referenceDifference, referenceMeanDifference);
-        EXPECT_GT(flaggedCount, 0u) << name << ": the case must flag some pixels";
-        EXPECT_LT(flaggedCount, flagged.size() / 2) << name << ": and leave most to the aggregates";
+            referenceDifferenceSum / double(std::max<size_t>(1, 4 * wholeCount));
+        const double partlyChannels = double(std::max<size_t>(1, 3 * partlyCount));
+        std::printf("[ measured ] %-14s %s tolerance 30: %zu of %zu pixels flagged whole, display difference "
+                    "to the reference's there largest %.2e, mean %.2e; %zu partly, mean difference to the "
+                    "reference's %.2e (AGAA's own %.2e)\n",
+                    name, path, wholeCount, red.size(), referenceDifference, referenceMeanDifference,
+                    partlyCount, partlyToReference / partlyChannels, neverToReference / partlyChannels);
+        EXPECT_GT(wholeCount + partlyCount, 0u) << name << ": the case must flag some pixels";
+        EXPECT_LT(wholeCount + partlyCount, red.size() / 2) << name << ": and leave most to the aggregates";
+        EXPECT_EQ(viewMismatches, 0u) << name << ": the debug view's red pixels are the flagged ones";
         EXPECT_EQ(agaaMismatches, 0u)
             << name << " " << path << ": pixels not flagged must be AGAA's, bit for bit";
         EXPECT_LE(accumulate ? referenceMeanDifference : referenceDifference,
                   accumulate ? kSampleMaterialAgreement : 0.0)
-            << name << " " << path << ": flagged pixels must be the reference's";
+            << name << " " << path << ": wholly flagged pixels must be the reference's";
+        EXPECT_LT(partlyToReference, neverToReference)
+            << name << " " << path << ": partly flagged pixels must come closer to the reference";
         EXPECT_EQ(eventMismatches, 0u) << name;
     }
     agaa::test::expectNoValidationErrors(*device);
@@ -250,6 +278,9 @@ struct CpuEstimate {
     double gap = 0.0;
     bool covered = false;
     uint32_t coveredSamples = 0;
+    // Per aggregate: its own estimate and its members (a bit per sample).
+    std::array<double, 4> aggregateValue{};
+    std::array<uint32_t, 4> members{};
 };
 
 std::vector<CpuEstimate> cpuEstimates(const std::vector<float>& exported, uint32_t n, uint32_t c) {
@@ -267,6 +298,7 @@ std::vector<CpuEstimate> cpuEstimates(const std::vector<float>& exported, uint32
             ++out[p].coveredSamples;
             const uint32_t a = uint32_t(rec[11]);
             if (a >= c) continue; // c = 1's off-layer samples
+            out[p].members[a] |= 1u << s;
             sum[a] += glm::dvec3(rec[0], rec[1], rec[2]);
             normals[a].emplace_back(rec[0], rec[1], rec[2]);
             alphaMin[a] = std::min(alphaMin[a], std::max(double(rec[3]) * double(rec[3]), kAlphaFloor));
@@ -277,7 +309,8 @@ std::vector<CpuEstimate> cpuEstimates(const std::vector<float>& exported, uint32
             if (count[a] < 2) continue;
             const double spread = 1.0 - glm::length(sum[a]) / double(count[a]);
             if (spread <= kSpreadFloor) continue;
-            out[p].value = std::max(out[p].value, 2.0 * spread / (alphaMin[a] * alphaMin[a]));
+            out[p].aggregateValue[a] = 2.0 * spread / (alphaMin[a] * alphaMin[a]);
+            out[p].value = std::max(out[p].value, out[p].aggregateValue[a]);
             if (count[a] < kGapMembers) continue;
             // Normals that cancel have no mean: a gap, as the shader's test without a division says.
             if (glm::length(sum[a]) == 0.0) {
@@ -294,39 +327,77 @@ std::vector<CpuEstimate> cpuEstimates(const std::vector<float>& exported, uint32
     return out;
 }
 
-// The GPU's flags (a flagged pixel has one shading event per covered sample, an unflagged one at
-// most c: the two tell apart wherever more than c samples are covered) against the CPU's estimates,
-// with the rule above the limit evaluated on the aggregates' own image (`aggregates`: nothing
-// flagged). The first three mismatches are reported as failures.
+// The samples a flagged pixel's per-sample pass shades (shading_rate.glsl perSampleSamples, from
+// its description): all n where every aggregate with samples is distrusted (its own estimate
+// reaches the tolerance), at c = 1, and for a pixel flagged once lit (the saturated rule); else
+// the distrusted aggregates' members.
+uint32_t expectedMembers(const CpuEstimate& e, bool flaggedOnceLit, float tolerance, uint32_t n, uint32_t c) {
+    const uint32_t whole = n == 32 ? ~0u : (1u << n) - 1u;
+    if (flaggedOnceLit || c == 1) return whole;
+    uint32_t members = 0;
+    bool every = true;
+    for (uint32_t a = 0; a < c; ++a) {
+        if (e.members[a] == 0) continue;
+        const bool distrusted = e.aggregateValue[a] >= double(tolerance);
+        every = every && distrusted;
+        members |= distrusted ? e.members[a] : 0u;
+    }
+    return every ? whole : members;
+}
+
+// The GPU's flags (FrameTargets::perSampleShaded: the samples the per-sample pass shaded) against
+// the CPU's estimates, with the rule above the limit evaluated on the aggregates' own image
+// (`aggregates`: nothing flagged): which pixels, and which of their samples. The first three
+// mismatches of each are reported as failures.
 struct FlagComparison {
-    uint32_t flagged = 0, compared = 0, mismatches = 0, nearTolerance = 0, aboveLimit = 0, saturated = 0,
-             inGap = 0;
+    uint32_t flagged = 0, partly = 0, compared = 0, mismatches = 0, memberMismatches = 0, nearTolerance = 0,
+             aboveLimit = 0, saturated = 0, inGap = 0;
 };
 
 FlagComparison compareFlags(const std::vector<CpuEstimate>& cpu, const agaa::RenderResult& frame,
-                            const agaa::RenderResult& aggregates, float tolerance, float limit, uint32_t c,
-                            const std::string& scene) {
+                            const agaa::RenderResult& aggregates, float tolerance, float limit, uint32_t n,
+                            uint32_t c, const std::string& scene) {
     FlagComparison f;
+    EXPECT_EQ(frame.perSampleMembers.size(), cpu.size()) << scene << ": the frame has no per-sample target";
+    if (frame.perSampleMembers.size() != cpu.size()) return f;
+    const uint32_t whole = n == 32 ? ~0u : (1u << n) - 1u;
     for (size_t p = 0; p < cpu.size(); ++p) {
-        if (cpu[p].coveredSamples <= c) continue;
+        if (!cpu[p].covered) continue;
         ++f.compared;
-        const bool gpu = frame.shadingEvents[p] == cpu[p].coveredSamples;
+        const uint32_t members = frame.perSampleMembers[p];
+        const bool gpu = members != 0;
         const float* hdr = &aggregates.hdr.rgba[4 * p];
         const bool saturatedAlias = cpu[p].value >= double(limit) && cpu[p].value >= double(tolerance) &&
                                     std::max({hdr[0], hdr[1], hdr[2]}) >= agaa::kAliasedSaturation;
         const bool gapAlias = cpu[p].value >= double(limit) && cpu[p].value >= double(tolerance) &&
                               cpu[p].gap >= double(agaa::kMeanNormalGap);
-        const bool expected =
-            (cpu[p].value >= double(tolerance) && cpu[p].value < double(limit)) || saturatedAlias || gapAlias;
+        const bool early = (cpu[p].value >= double(tolerance) && cpu[p].value < double(limit)) || gapAlias;
+        const bool expected = early || saturatedAlias;
         f.flagged += gpu ? 1u : 0u;
+        f.partly += gpu && members != whole ? 1u : 0u;
         f.aboveLimit += !gpu && cpu[p].value >= double(limit) ? 1u : 0u;
         f.saturated += gpu && saturatedAlias && !gapAlias ? 1u : 0u;
         f.inGap += gpu && gapAlias ? 1u : 0u;
+        bool nearEdge = std::abs(cpu[p].value - double(tolerance)) <= kRoundingBand * double(tolerance) ||
+                        std::abs(cpu[p].value - double(limit)) <= kRoundingBand * double(limit) ||
+                        std::abs(cpu[p].gap - double(agaa::kMeanNormalGap)) <=
+                            kRoundingBand * double(agaa::kMeanNormalGap);
+        for (double v : cpu[p].aggregateValue)
+            nearEdge = nearEdge || std::abs(v - double(tolerance)) <= kRoundingBand * double(tolerance);
+        if (gpu == expected && gpu) {
+            const uint32_t want = expectedMembers(cpu[p], !early, tolerance, n, c);
+            if (members == want) continue;
+            if (nearEdge) {
+                ++f.nearTolerance;
+                continue;
+            }
+            if (++f.memberMismatches <= 3)
+                ADD_FAILURE() << scene << " c=" << c << " pixel " << p << ": GPU shaded samples 0x"
+                              << std::hex << members << ", CPU expects 0x" << want << std::dec;
+            continue;
+        }
         if (gpu == expected) continue;
-        if (std::abs(cpu[p].value - double(tolerance)) <= kRoundingBand * double(tolerance) ||
-            std::abs(cpu[p].value - double(limit)) <= kRoundingBand * double(limit) ||
-            std::abs(cpu[p].gap - double(agaa::kMeanNormalGap)) <=
-                kRoundingBand * double(agaa::kMeanNormalGap)) {
+        if (nearEdge) {
             ++f.nearTolerance;
             continue;
         }
@@ -373,14 +444,17 @@ void checkFlagCase(const FlagCase& k, const char* method, float unflagged,
     banded.settings.agaa.aliasLimit = limit;
     const EstimateInputs run = render(banded);
     const FlagComparison f = compareFlags(cpuEstimates(run.records, 8, k.c), run.frame, aggregates.frame,
-                                          tolerance, limit, k.c, k.scene);
+                                          tolerance, limit, 8, k.c, k.scene);
     std::printf(
-        "[ measured ] %-20s %s c=%u tolerance %g, alias limit %g: %u of %u pixels flagged (%u above the "
-        "limit, saturated; %u with their mean normal in a gap), %u left above the limit, %u mismatches, "
-        "%u within rounding of an edge\n",
-        k.scene, method, k.c, double(tolerance), double(limit), f.flagged, f.compared, f.saturated, f.inGap,
-        f.aboveLimit, f.mismatches, f.nearTolerance);
+        "[ measured ] %-20s %s c=%u tolerance %g, alias limit %g: %u of %u pixels flagged (%u partly; %u "
+        "above "
+        "the limit, saturated; %u with their mean normal in a gap), %u left above the limit, %u mismatches "
+        "in which "
+        "pixels and %u in which samples, %u within rounding of an edge\n",
+        k.scene, method, k.c, double(tolerance), double(limit), f.flagged, f.compared, f.partly, f.saturated,
+        f.inGap, f.aboveLimit, f.mismatches, f.memberMismatches, f.nearTolerance);
     EXPECT_EQ(f.mismatches, 0u) << k.scene;
+    EXPECT_EQ(f.memberMismatches, 0u) << k.scene << ": the samples shaded per sample";
     EXPECT_GT(f.flagged, 0u) << k.scene << ": the case should flag some pixels";
     const std::string shows = k.shows ? k.shows : "";
     if (shows == "saturated") {
@@ -536,6 +610,9 @@ TEST(ShadingRate, TheDebugViewShowsTheFlaggedPixels) {
             << method;
         EXPECT_GT(view.perSampleShading->events, view.perSampleShading->pixels)
             << method << ": a flagged pixel takes more events";
+        // Its samples: some, and at most all n of each flagged pixel.
+        EXPECT_GT(view.perSampleShading->samples, 0.0) << method;
+        EXPECT_LE(view.perSampleShading->samples, view.perSampleShading->pixels) << method;
         std::string rate;
         for (const agaa::VariantChoice& v : view.variants)
             if (v.effect == "shading-rate") rate = v.variant;

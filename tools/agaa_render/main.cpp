@@ -278,6 +278,7 @@ nlohmann::json statsJson(const Options& o, const agaa::RenderResult& r, const en
                               {"pixels", r.pixelsWithLostCoverage}};
     if (r.perSampleShading)
         j["shading_rate"] = {{"per_sample_pixels", r.perSampleShading->pixels},
+                             {"per_sample_samples", r.perSampleShading->samples},
                              {"per_sample_events", r.perSampleShading->events}};
     j["frames_timed"] = o.frames;
     j["frames_warmup"] = o.warmup;

@@ -7,6 +7,7 @@
 #include "shared/frame.h"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstring>
 #include <stdexcept>
@@ -283,14 +284,17 @@ RenderResult FrameRenderer::render(const RenderRequest& original) {
         vk::invalidateBuffer(m_device, host.perSample);
         std::vector<uint32_t> flags(size_t(w) * h);
         std::memcpy(flags.data(), host.perSample.mapped, flags.size() * 4);
-        uint64_t flagged = 0, flaggedEvents = 0;
+        uint64_t flagged = 0, flaggedSamples = 0, flaggedEvents = 0;
         for (size_t p = 0; p < flags.size(); ++p)
             if (flags[p]) {
                 ++flagged;
+                flaggedSamples += uint64_t(std::popcount(flags[p]));
                 flaggedEvents += result.shadingEvents[p];
             }
         result.perSampleShading = RenderResult::PerSampleShading{
-            double(flagged) / pixels, sum ? double(flaggedEvents) / double(sum) : 0.0};
+            double(flagged) / pixels, double(flaggedSamples) / (pixels * double(tech.samples())),
+            sum ? double(flaggedEvents) / double(sum) : 0.0};
+        result.perSampleMembers = std::move(flags);
     }
     return result;
 }

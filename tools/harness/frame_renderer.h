@@ -63,11 +63,16 @@ struct RenderResult {
     std::optional<double> lostCoverageFraction;
     uint64_t pixelsWithLostCoverage = 0;
     // AGAA with a shading-rate tolerance (FrameTargets::perSampleShaded): the share of the pixels
-    // shaded per sample, and the share of the frame's shading events they took.
+    // the per-sample pass shaded any sample of, the share of all n w h samples it shaded, and the
+    // share of the frame's shading events those pixels took.
     struct PerSampleShading {
-        double pixels = 0.0, events = 0.0;
+        double pixels = 0.0, samples = 0.0, events = 0.0;
     };
     std::optional<PerSampleShading> perSampleShading;
+    // Per pixel, the samples the per-sample pass shaded (FrameTargets::perSampleShaded): 0 for a
+    // pixel lit by its aggregates alone, all n bits where the pass wrote the whole pixel, else the
+    // members of the aggregates the estimate distrusted. Empty without a tolerance.
+    std::vector<uint32_t> perSampleMembers;
     uint32_t samples = 0;
     std::string graphDot, graphJson;
     // The shader/pass variants the technique chose from the scene's features, with their causes

@@ -1,8 +1,8 @@
 #pragma once
 // agaa.lighting.perSample, the error-driven shading rate's second half (docs/decisions/
 // shading-rate-estimate.md): one workgroup per tile the lighting pass listed, dispatched
-// indirectly, lights and resolves each flagged pixel's samples as the reference does, over the
-// lighting pass's images (shaders/glsl/agaa/lighting_per_sample.comp). Made with a tolerance only.
+// indirectly, lights and resolves each flagged sample as the reference does, into the lighting
+// pass's images (shaders/glsl/agaa/lighting_per_sample.comp). Made with a tolerance only.
 
 #include "agaa/aggregate/passes/aggregate_lighting_pass.h"
 #include "engine/vk/compute_program.h"

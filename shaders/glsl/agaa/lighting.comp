@@ -13,11 +13,12 @@
 //      (agaa/lighting/schedule.glsl);
 //   4. resolve: each shading event tone-mapped and weighted by its samples
 //      (agaa/lighting/resolve.glsl).
-// With a tolerance (--agaa-tolerance, either path), a pixel whose aggregates' normal spread the
-// estimate distrusts (agaa/lighting/prefilter_estimate.glsl) skips steps 3 and 4 here and is
-// flagged (agaa/lighting/shading_rate.glsl), and so is a pixel above the alias limit whose
-// resolved radiance saturates the tone map: the next pass, agaa/lighting_per_sample.comp, lights
-// and resolves each of its samples on its own.
+// With a tolerance (--agaa-tolerance, either path), an aggregate whose normal spread the estimate
+// distrusts (agaa/lighting/prefilter_estimate.glsl) skips steps 3 and 4 here and its pixel is
+// flagged (agaa/lighting/shading_rate.glsl), and so is the whole of a pixel above the alias limit
+// whose resolved radiance saturates the tone map: the next pass, agaa/lighting_per_sample.comp,
+// lights and resolves each of their samples on its own, and adds them to the trusted aggregates'
+// resolve.
 #extension GL_GOOGLE_include_directive : require
 #include "agaa/lighting/lighting_pass.glsl"
 #include "agaa/lighting/shade_aggregates.glsl"

@@ -46,8 +46,9 @@ layout(set = 0, binding = 5, r8ui) uniform readonly uimage2D aggregateCount;
 layout(set = 0, binding = 7, rgba32f) uniform writeonly image2D outHdr;
 layout(set = 0, binding = 8, rgba32f) uniform writeonly image2D outDisplay;
 layout(set = 0, binding = 9, r32ui) uniform writeonly uimage2D outShadingEvents;
-// With a tolerance (kShadingRate, prefilter_estimate.glsl): 1 where the pixel was shaded per
-// sample (FrameTargets::perSampleShaded); the layout has it only then.
+// With a tolerance (kShadingRate, prefilter_estimate.glsl): the samples the next pass shades, 0
+// where it shades none (FrameTargets::perSampleShaded, shading_rate.glsl perSampleSamples); the
+// layout has it only then.
 layout(set = 0, binding = 18, r32ui) uniform writeonly uimage2D outPerSampleShaded;
 #ifndef AGAA_SHADOWS
 #define AGAA_SHADOWS 0
@@ -115,14 +116,19 @@ void main() {
     if (kOffLayerOwnColour && walk.offLayerSamples > 0u)
         offLayerMeans = loadOffLayerMeans(pixelIndex, walk.offLayerSamples);
     OffLayer offLayer = offLayerSurface(offLayerMeans);
-    // The shading rate: a pixel whose pre-filter the estimate distrusts has no aggregates to
-    // shade; the next pass takes its samples one by one instead.
+    // The shading rate: the aggregates of a pixel whose pre-filter the estimate distrusts are not
+    // shaded here; the next pass takes their samples one by one instead.
     float estimate = pixelEstimate(inside);
     bool perSample = shadePerSample(inside, estimate, pixel, pixelIndex);
     if (perSample) {
-        for (uint a = 0u; a < kAggregates; ++a)
-            aggregates[a].present = false;
+        perSampleMembers = perSampleSamples(pixel, pixelIndex);
         presentCount = 0u;
+        for (uint a = 0u; a < kAggregates; ++a) {
+            bool distrusted = perSampleMembers == kPerSampleWholePixel || walk.samplesIn[a] == 0u ||
+                              prefilterEstimate(a, walk.samplesIn[a]) >= agaa.shadingRate.x;
+            aggregates[a].present = aggregates[a].present && !distrusted;
+            presentCount += aggregates[a].present ? 1u : 0u;
+        }
     }
 
     // 2. Tile depth bounds and light culling; the pixel's slots in the tile's list.
@@ -139,18 +145,23 @@ void main() {
     OffLayerShading offLayerShaded;
     shadeAggregates(offLayer, inside, firstEntry, offLayerShaded);
 
-    // 4. Resolve; a flagged pixel is the next pass's to write. A pixel above the alias limit is
-    //    flagged here, once its radiance is known, where that radiance saturates the tone map.
-    if (inside && !perSample) {
+    // 4. Resolve; a wholly flagged pixel is the next pass's to write, a partly flagged one's
+    //    trusted aggregates are resolved here and the next pass adds the others' samples. A pixel
+    //    above the alias limit is flagged here, once its radiance is known, where that radiance
+    //    saturates the tone map.
+    if (inside && perSampleMembers != kPerSampleWholePixel) {
         Resolved resolved = resolvePixel(pixel, offLayer, offLayerShaded);
-        perSample = shadeSaturatedAlias(inside, estimate, resolved.hdr);
-        tileFlagAdd(perSample);
-        if (kShadingRateView != 0u) resolved.display = shadingRateView(resolved.display, false);
         if (!perSample) {
+            perSample = shadeSaturatedAlias(inside, estimate, resolved.hdr);
+            perSampleMembers = perSample ? kPerSampleWholePixel : 0u;
+            tileFlagAdd(perSample);
+        }
+        if (kShadingRateView != 0u && !perSample) resolved.display = shadingRateView(resolved.display, false);
+        if (perSampleMembers != kPerSampleWholePixel) {
             imageStore(outHdr, pixel, vec4(resolved.hdr, 1.0));
             imageStore(outDisplay, pixel, vec4(resolved.display, 1.0));
             imageStore(outShadingEvents, pixel, uvec4(presentCount));
         }
     }
-    if (kShadingRate != 0u && inside) imageStore(outPerSampleShaded, pixel, uvec4(perSample ? 1u : 0u));
+    if (kShadingRate != 0u && inside) imageStore(outPerSampleShaded, pixel, uvec4(perSampleMembers));
 }

@@ -29,6 +29,7 @@ Resolved resolvePixel(ivec2 pixel, OffLayer off, OffLayerShading offShaded) {
     Resolved r = Resolved(vec3(0.0), vec3(0.0));
     uint pixelIndex = aggregates[0].pixelIndex;
     for (uint s = 0u; s < kSamples; ++s) {
+        if (((perSampleMembers >> s) & 1u) != 0u) continue; // the next pass's (shading_rate.glsl)
         float d = sampleDepth(pixel, s);
         if (isSky(d)) {
             r.display += weight * toneMapAces(sky);
@@ -58,7 +59,8 @@ Resolved resolvePixel(ivec2 pixel, OffLayer off, OffLayerShading offShaded) {
 }
 #else
 // Per aggregate: every sample of an aggregate shares its radiance; one tone map per aggregate,
-// weighted by its sample count. Samples of an aggregate that received no fragment are black.
+// weighted by its sample count. Samples of an aggregate that received no fragment are black, and so
+// are those of an aggregate the shading rate distrusts: the next pass adds theirs.
 Resolved resolvePixel(ivec2 pixel, OffLayer off, OffLayerShading offShaded) {
     float exposure = frame.depthParams.z;
     float weight = 1.0 / float(kSamples);

@@ -87,6 +87,40 @@ bool shadePerSample(bool inside, float estimate, ivec2 pixel, uint pixelIndex) {
     return estimate < agaa.shadingRate.y || meanNormalInGap(pixel, pixelIndex);
 }
 
+// Which of a flagged pixel's samples the next pass shades (FrameTargets::perSampleShaded holds the
+// mask): the members of the aggregates the estimate distrusts, whose own estimate reaches the
+// tolerance; the others keep their one shading event. On the chain-link a flagged pixel is a rod's
+// curved aggregate beside a flat wall's, whose pre-filter is exact (issue 49: shading the wall's
+// samples too took most of the per-sample pass). Every sample (kPerSampleWholePixel, the sky's too,
+// resolved as the reference resolves) where every aggregate is distrusted, as a tolerance of 0
+// makes every pixel; at c = 1, whose off-layer samples are resolved with aggregate 0's shading;
+// and with fragment routing, whose aggregates stand for the samples they received, not the ones
+// the metadata assigns them.
+const uint kPerSampleWholePixel = 0xFFFFFFFFu >> (32u - kSamples);
+// Set for the resolve (resolve.glsl): the samples the next pass shades, whose aggregates are then
+// not present here. 0 for a pixel that keeps every aggregate.
+uint perSampleMembers = 0u;
+
+uint perSampleSamples(ivec2 pixel, uint pixelIndex) {
+    if (kAggregates == 1u || kRouteFragment != 0u) return kPerSampleWholePixel;
+    uint distrusted = 0u;
+    bool every = true;
+    for (uint a = 0u; a < kAggregates; ++a) {
+        if (walk.samplesIn[a] == 0u) continue;
+        bool flagged = prefilterEstimate(a, walk.samplesIn[a]) >= agaa.shadingRate.x;
+        distrusted |= flagged ? 1u << a : 0u;
+        every = every && flagged;
+    }
+    if (every) return kPerSampleWholePixel;
+    uint members = 0u;
+    for (uint s = 0u; s < kSamples; ++s) {
+        if (isSky(sampleDepth(pixel, s))) continue;
+        uint a = sampleAggregate(s, pixelIndex);
+        members |= a < kAggregates && ((distrusted >> a) & 1u) != 0u ? 1u << s : 0u;
+    }
+    return members;
+}
+
 // Whether a pixel above the alias limit (and the tolerance) is shaded per sample after all, once
 // lit: where its aggregates' exposed radiance is past the tone map's shoulder (agaa.shadingRate.z,
 // kAliasedSaturation), an aliased highlight's samples clip one by one, which the aggregate's
