@@ -52,7 +52,6 @@ layout(constant_id = kSpecPerSampleShadingRateView) const uint kShadingRateView 
 // samples' shading for each flagged pixel it held). Each flagged pixel's samples are listed
 // contiguously and in sample order, so its resolve sums them in the reference's order.
 const uint kTilePixels = kTileSize * kTileSize;
-const uint kWholePixel = 0xFFFFFFFFu >> (32u - kSampleCount);
 // The flagged pixels << 16 | their listed samples: one atomic gives a pixel both its slot and its
 // first entry, so the slots' first entries ascend.
 shared uint sFlaggedCounts;
@@ -88,18 +87,6 @@ uint listedSample(uint mask, uint k) {
     return uint(findLSB(mask));
 }
 
-// The view-distance range of the pixel's samples in mask (common/gbuffer_lighting.glsl
-// gbufferDistanceRange over the flagged ones).
-void flaggedDistanceRange(ivec2 pixel, uint mask, inout float tmin, inout float tmax) {
-    for (uint s = 0u; s < kSampleCount; ++s) {
-        float d = gbufferDepth(pixel, s);
-        if (((mask >> s) & 1u) == 0u || isSky(d)) continue;
-        float t = viewDistanceFromDepth(d, frame.depthParams.x, frame.depthParams.y);
-        tmin = min(tmin, t);
-        tmax = max(tmax, t);
-    }
-}
-
 void main() {
     ivec2 pixel = ivec2(flaggedTile() * kTileSize + gl_LocalInvocationID.xy);
     bool inside = all(lessThan(pixel, ivec2(frame.extent.xy)));
@@ -107,7 +94,7 @@ void main() {
 
     // The tile's lights, culled against the flagged samples' depth bounds only.
     float tmin = 1e30, tmax = -1e30;
-    if (mask != 0u) flaggedDistanceRange(pixel, mask, tmin, tmax);
+    if (mask != 0u) gbufferSamplesDistanceRange(pixel, mask, tmin, tmax);
     if (gl_LocalInvocationIndex == 0u) sFlaggedCounts = 0u;
     tileBoundsBegin(); // its barrier orders the counts' reset before the appends
     tileBoundsAdd(tmin, tmax);
@@ -154,7 +141,7 @@ void main() {
     }
     if (self < slots) {
         ivec2 target = listedPixel(self);
-        if (sFlaggedMask[self] != kWholePixel) { // the trusted aggregates', resolved by the lighting pass
+        if (sFlaggedMask[self] != kAllGBufferSamples) { // the trusted aggregates', resolved by the lighting pass
             display += imageLoad(outDisplay, target).rgb;
             hdr += imageLoad(outHdr, target).rgb;
             events += imageLoad(outShadingEvents, target).x;

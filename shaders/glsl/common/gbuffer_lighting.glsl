@@ -69,6 +69,8 @@ layout(set = 0, binding = 5) uniform sampler2D gEmissiveRoughness;
 // hardware rate is 4 whenever n > 1.
 layout(constant_id = kSpecGBufferLightingSamples) const uint kSampleCount = 1u;
 const uint kSamplesPerLayer = kSampleCount > 1u ? 4u : 1u;
+// A bit for each of the pixel's n samples.
+const uint kAllGBufferSamples = 0xFFFFFFFFu >> (32u - kSampleCount);
 #define FETCH_SAMPLE(tex, p, s) FETCH(tex, p, (s) / kSamplesPerLayer, (s) % kSamplesPerLayer)
 
 float gbufferDepth(ivec2 pixel, uint s) { return FETCH_SAMPLE(gDepth, pixel, s).r; }
@@ -115,18 +117,23 @@ SurfaceInputs gbufferSurface(ivec2 pixel, uint s, out vec3 emissive) {
 }
 #endif
 
-// View distances of the pixel's non-sky samples, for the tile's depth bounds
-// (tile_culling.glsl); tmin > tmax when every sample is sky.
-void gbufferDistanceRange(ivec2 pixel, out float tmin, out float tmax) {
+// View distances of the pixel's non-sky samples among `samples` (a bit each), for the tile's
+// depth bounds (tile_culling.glsl); tmin > tmax when every one is sky.
+void gbufferSamplesDistanceRange(ivec2 pixel, uint samples, out float tmin, out float tmax) {
     tmin = 1e30;
     tmax = -1e30;
     for (uint s = 0u; s < kSampleCount; ++s) {
         float d = gbufferDepth(pixel, s);
-        if (isSky(d)) continue;
+        if (((samples >> s) & 1u) == 0u || isSky(d)) continue;
         float t = viewDistanceFromDepth(d, frame.depthParams.x, frame.depthParams.y);
         tmin = min(tmin, t);
         tmax = max(tmax, t);
     }
+}
+
+// The same over all n samples.
+void gbufferDistanceRange(ivec2 pixel, out float tmin, out float tmax) {
+    gbufferSamplesDistanceRange(pixel, kAllGBufferSamples, tmin, tmax);
 }
 
 // One shading event (DESIGN section 6): the surface stored in sample s of `pixel`, seen
