@@ -2,7 +2,7 @@
 # Proof that the golden suite can fail (issues 17 and 37): builds test_golden with a deliberate
 # shader error (AGAA_TEST_PERTURB, top-level CMakeLists.txt), runs every golden against the stored
 # images and asserts what each variant must catch:
-#   brdf     every BRDF 1 % darker: every golden whose pixels the change reaches at all fails;
+#   brdf     every BRDF 1 % darker: every golden it renders whose pixels the change reaches fails;
 #   methods  one error in each method family's own logic (AGAA: sample 0's aggregate-id bit
 #            flipped; FXAA: the end-of-edge blend lost; SBAA and streaming: no merge;
 #            Simple/Complex: every pixel simple): every FXAA, SBAA, streaming and Simple/Complex
@@ -12,10 +12,13 @@
 #            (At n = 32 a flat pixel may already hold two aggregates of one plane, lit alike:
 #            moving sample 0 between them changes plane's image by rounding only.)
 #   scene    every vertex 1/16 pixel right, the constant sky 1 % darker and a tone-map black
-#            level of 1e-3, run on the scenes that hold a golden neither brdf nor methods failed
+#            level of 1e-3, run on the goldens neither brdf nor methods failed
 #            (the emissive strands on black, the sky seen alone, the unlit scene's black images):
 #            every golden it runs fails.
-# With all three run, every golden must have failed under one of them.
+# With all three run, every golden must have failed under one of them. The variants run in the
+# order given (by default methods, brdf, scene): methods renders every golden (its check reads
+# them all); each other variant renders only the goldens no earlier variant failed
+# (AGAA_GOLDEN_ONLY, tests/golden/test_golden.cpp) instead of every golden again.
 # Each variant rebuilds test_golden in the plain build folder of tools/test.sh ($AGAA_BUILD_DIR,
 # default build/test; configured as tools/test.sh does when it does not exist yet): only the
 # shaders and the sources that embed a shader whose SPIR-V changed recompile. On exit (also on
@@ -29,7 +32,7 @@ cd "$root"
 lvp="$(ls /usr/share/vulkan/icd.d/lvp_icd.*.json 2>/dev/null | head -n1 || true)"
 export VK_ICD_FILENAMES="${VK_ICD_FILENAMES:-$lvp}"
 variants=("$@")
-[ ${#variants[@]} -gt 0 ] || variants=(brdf methods scene)
+[ ${#variants[@]} -gt 0 ] || variants=(methods brdf scene)
 builtins="furball metal foliage bamboo railings default spikes glints" # plane apart (above)
 build="${AGAA_BUILD_DIR:-build/test}"
 case "$build" in /*) ;; *) build="$root/$build" ;; esac
@@ -51,24 +54,30 @@ check() { # check DESCRIPTION COUNT: COUNT must be 0
   fi
 }
 count() { grep -cE "$1" "$2" || true; }
-# The scenes holding a golden that no variant so far failed, as a gtest filter ('' when none).
-uncaught_filter() {
+# The goldens (scene/case stems) that no variant so far failed, of those the first full run
+# rendered ($tmp/all).
+uncaught() {
   cat "$tmp"/*.result 2>/dev/null | sed -n 's/^\([^:]*\):.* FAIL$/\1/p' | LC_ALL=C sort -u >"$tmp/caught"
-  cut -d: -f1 "$tmp/brdf.result" | LC_ALL=C sort -u | LC_ALL=C comm -23 - "$tmp/caught" | cut -d/ -f1 | uniq |
-    sed 's/-/_/g; s|^|Every/Golden.*/|' | paste -sd: -
+  LC_ALL=C comm -23 "$tmp/all" "$tmp/caught"
 }
+# The scenes of the stems in file $1, as a gtest filter.
+scene_filter() { cut -d/ -f1 "$1" | uniq | sed 's/-/_/g; s|^|Every/Golden.*/|' | paste -sd: -; }
 for variant in "${variants[@]}"; do
   case "$variant" in brdf | methods | scene) ;; *)
     echo "perturb-test: unknown variant '$variant': allowed values are brdf, methods, scene" >&2
     exit 2 ;;
   esac
   filter="*"
-  if [ "$variant" = scene ] && [ -f "$tmp/brdf.result" ] && [ -f "$tmp/methods.result" ]; then
-    filter="$(uncaught_filter)"
-    if [ -z "$filter" ]; then
-      echo "perturb-test: scene: every golden already failed; not run"
+  unset AGAA_GOLDEN_ONLY
+  if [ "$variant" != methods ] && [ -f "$tmp/all" ]; then
+    uncaught >"$tmp/only"
+    if [ ! -s "$tmp/only" ]; then
+      echo "perturb-test: $variant: every golden already failed; not run"
       continue
     fi
+    filter="$(scene_filter "$tmp/only")"
+    export AGAA_GOLDEN_ONLY="$tmp/only"
+    echo "perturb-test: $variant: the $(wc -l <"$tmp/only") goldens no variant failed yet"
   fi
   start=$SECONDS
   cmake -S . -B "$build" -DAGAA_TEST_PERTURB="$variant" >/dev/null
@@ -87,6 +96,7 @@ for variant in "${variants[@]}"; do
   grep -h '^\[ golden \]' "$tmp/$variant.0" "$tmp/$variant.1" | sed 's/^\[ golden \] //' | LC_ALL=C sort >"$result"
   cp "$result" "$build/perturb-results-$variant.txt" # every golden's numbers, for the record
   total=$(wc -l <"$result")
+  [ -f "$tmp/all" ] || [ "$filter" != "*" ] || cut -d: -f1 "$result" | LC_ALL=C sort -u >"$tmp/all"
   echo "perturb-test: $variant: $(count ' FAIL$' "$result") of $total goldens fail ($((SECONDS - start)) s)"
   check "$variant: the golden test did not fail" "$((1 - status))"
   check "$variant: no golden ran" "$((total == 0))"
@@ -113,10 +123,9 @@ for variant in "${variants[@]}"; do
 done
 if [ -f "$tmp/brdf.result" ] && [ -f "$tmp/methods.result" ]; then
   # Every golden failed under some variant.
-  missed="$(cut -d: -f1 "$tmp/brdf.result" | LC_ALL=C sort -u | LC_ALL=C comm -23 - \
-    <(cat "$tmp"/*.result | sed -n 's/^\([^:]*\):.* FAIL$/\1/p' | LC_ALL=C sort -u))"
+  missed="$(uncaught)"
   [ -z "$missed" ] || echo "$missed" | sed 's/^/  no variant failed: /' >&2
   check "goldens no variant failed" "$(echo "$missed" | sed '/^$/d' | wc -l)"
-  [ -n "$missed" ] || echo "perturb-test: every one of $(wc -l <"$tmp/brdf.result") goldens failed under a variant"
+  [ -n "$missed" ] || echo "perturb-test: every one of $(wc -l <"$tmp/all") goldens failed under a variant"
 fi
 exit "$fail"

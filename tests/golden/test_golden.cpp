@@ -6,6 +6,8 @@
 //
 // AGAA_GOLDEN_WRITE=DIR (tools/update-goldens.sh): render every case into DIR instead of
 // comparing, and print for each whether it differs from the stored golden and by how much.
+// AGAA_GOLDEN_ONLY=FILE (tools/perturb-test.sh): render only the goldens FILE names, one stem
+// (scene/case, as printed) a line: a later perturbation runs only what no earlier one failed.
 
 #include "golden_cases.h"
 #include "golden_compare.h"
@@ -28,8 +30,12 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <optional>
+#include <set>
 #include <sstream>
+#include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace fs = std::filesystem;
 
@@ -102,6 +108,19 @@ std::string describe(const agaa::golden::GoldenError& e) {
     return line + std::string(e.goldenBlack ? ", golden black" : "");
 }
 
+// The stems AGAA_GOLDEN_ONLY names, or nothing when it is unset (every golden runs). Throws
+// naming the file when it cannot be read.
+std::optional<std::set<std::string>> onlyStems() {
+    const char* file = std::getenv("AGAA_GOLDEN_ONLY");
+    if (!file) return std::nullopt;
+    std::ifstream in(file);
+    if (!in) throw std::runtime_error(std::string("AGAA_GOLDEN_ONLY: cannot read '") + file + "'");
+    std::set<std::string> stems;
+    for (std::string line; std::getline(in, line);)
+        if (!line.empty()) stems.insert(line);
+    return stems;
+}
+
 class Golden : public ::testing::TestWithParam<GoldenScene> {};
 
 TEST_P(Golden, MatchesStoredImages) {
@@ -109,10 +128,15 @@ TEST_P(Golden, MatchesStoredImages) {
     if (goldenScene.source == SceneSource::Gltf && !fs::exists(kSharedScenes / goldenScene.asset))
         GTEST_SKIP() << (kSharedScenes / goldenScene.asset) << " is missing (AGAA_SHARED_SCENES_DIR)";
     const char* writeDir = std::getenv("AGAA_GOLDEN_WRITE");
+    const std::optional<std::set<std::string>> only = onlyStems();
+    std::vector<GoldenCase> cases;
+    for (const GoldenCase& c : agaa::golden::goldenCases(goldenScene))
+        if (!only || only->count(c.stem(goldenScene))) cases.push_back(c);
+    if (cases.empty()) GTEST_SKIP() << "AGAA_GOLDEN_ONLY names none of its goldens";
     const eng::scene::Scene scene = loadScene(goldenScene);
     auto device = agaa::test::makeValidatedDevice();
     agaa::FrameRenderer renderer(*device, scene);
-    for (const GoldenCase& c : agaa::golden::goldenCases(goldenScene)) {
+    for (const GoldenCase& c : cases) {
         const std::string stem = c.stem(goldenScene);
         const auto start = std::chrono::steady_clock::now();
         agaa::RenderRequest request = c.request(goldenScene.size);
