@@ -1,0 +1,17 @@
+# The lints' one step: every line of FILE that matches REGEX, appended to the variable OUT as
+# "\n  <FILE relative to ROOT>: <line>" and, given a NOTE, " (<NOTE>)": what each lint prints.
+#   lint_lines(OUT ROOT FILE REGEX [NOTE])
+function(lint_lines out root file regex)
+  set(note "")
+  if(ARGC GREATER 4)
+    set(note " (${ARGV4})")
+  endif()
+  file(RELATIVE_PATH relative ${root} ${file})
+  file(STRINGS ${file} lines REGEX "${regex}")
+  set(found "${${out}}")
+  foreach(line IN LISTS lines)
+    string(STRIP "${line}" line)
+    string(APPEND found "\n  ${relative}: ${line}${note}")
+  endforeach()
+  set(${out} "${found}" PARENT_SCOPE)
+endfunction()
