@@ -100,6 +100,12 @@ for variant in "${variants[@]}"; do
   echo "perturb-test: $variant: $(count ' FAIL$' "$result") of $total goldens fail ($((SECONDS - start)) s)"
   check "$variant: the golden test did not fail" "$((1 - status))"
   check "$variant: no golden ran" "$((total == 0))"
+  # test_golden skips what AGAA_GOLDEN_ONLY does not name, so a stem it never rendered would
+  # otherwise go unnoticed: every listed golden must have run.
+  if [ -n "${AGAA_GOLDEN_ONLY:-}" ]; then
+    check "$variant: listed goldens that did not run" \
+      "$(cut -d: -f1 "$result" | LC_ALL=C sort -u | LC_ALL=C comm -13 - "$AGAA_GOLDEN_ONLY" | wc -l)"
+  fi
   case "$variant" in
     brdf)
       check "brdf: goldens the 1 % BRDF change reached that still pass" \

@@ -132,7 +132,7 @@ TEST_P(Golden, MatchesStoredImages) {
     std::vector<GoldenCase> cases;
     for (const GoldenCase& c : agaa::golden::goldenCases(goldenScene))
         if (!only || only->count(c.stem(goldenScene))) cases.push_back(c);
-    if (cases.empty()) GTEST_SKIP() << "AGAA_GOLDEN_ONLY names none of its goldens";
+    if (cases.empty()) GTEST_SKIP() << "not rendered: AGAA_GOLDEN_ONLY names none of its goldens";
     const eng::scene::Scene scene = loadScene(goldenScene);
     auto device = agaa::test::makeValidatedDevice();
     agaa::FrameRenderer renderer(*device, scene);
