@@ -116,16 +116,12 @@ echo "test.sh: CPU: $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2- | sed '
   "extensions: $(grep -m1 '^flags' /proc/cpuinfo | tr ' ' '\n' | grep -xE 'sse4_2|avx|avx2|fma|avx512f' | tr '\n' ' ')"
 echo "test.sh: llvmpipe: $("$build/tools/agaa_render/agaa-render" --caps 2>/dev/null | sed -n 's/^device *//p');" \
   "LP_NATIVE_VECTOR_WIDTH=${LP_NATIVE_VECTOR_WIDTH:-unset} LP_NUM_THREADS=${LP_NUM_THREADS:-unset (one per core)}"
-# The CPU tests run once, in the sanitizer stage below (its -O1 build with assertions on checks
-# more than this one); the GPU comparisons, goldens, quality measurements, soak, browser and
-# glTF-Validator tests once, here. The host-facing GPU tests run in both: here their pipelines
-# are JIT-compiled into Mesa's shader cache at full speed, and the sanitizer stage, whose LLVM
-# allocates through ASan, reads them from it. On a fresh machine that stage took 592 s with
-# them cold; 8 of its hard-scene tests took 165 s cold and 45 s after this stage's 38 s
-# (tests/README.md). The package and viewer tests compile nothing here worth sharing, and run
-# there only. AGAA_SANITIZE=0 runs everything here.
+# In the whole suite every test runs once: the CPU tests and the host-facing GPU tests in the
+# sanitizer stage below (its -O1 build with assertions on checks more than this one), the rest
+# here: the GPU comparisons, goldens, quality measurements, soak, browser and glTF-Validator
+# tests. AGAA_SANITIZE=0 runs everything here.
 plain=()
-[ "$#" -gt 0 ] || [ "${AGAA_SANITIZE:-1}" = 0 ] || plain=(-LE "cpu|package|viewer")
+[ "$#" -gt 0 ] || [ "${AGAA_SANITIZE:-1}" = 0 ] || plain=(-LE "cpu|$sanitized")
 stage ctest ctest --test-dir "$build" --output-on-failure -j2 "${plain[@]}" "$@"
 if [ "$#" -eq 0 ]; then
   # The same build folder with a deliberate shader error, one variant after the other: only the
