@@ -91,7 +91,7 @@ struct AgaaConstants {
     // x the shading rate's tolerance (AggregateSettings::tolerance; agaa/lighting/shading_rate.glsl)
     // and y its alias limit (AggregateSettings::aliasLimit; the largest float for none): a pixel
     // whose estimate lies in [x, y) is shaded per sample, and so is one above y whose resolved,
-    // exposed radiance reaches z (kAliasedSaturation), or one of whose aggregates has its mean
+    // exposed radiance reaches z (kAliasedSaturation), or, at c = 1, whose aggregate has its mean
     // normal in a gap of w (kMeanNormalGap) between its members' normals.
     vec4 shadingRate;
 };
