@@ -4,9 +4,13 @@
 // use); every time is the median over the timed frames. A benchmark, not a test: it prints,
 // it asserts nothing about speed.
 //
-//   agaa-timings [--scenes foliage,furball] [--size 640x360] [--frames 5] [--warmup 2]
+//   agaa-timings [--scenes foliage,furball] [--size 640x360] [--frames 5] [--warmup 2] [--rounds R]
 //                [--jobs reference:8,agaa:8:2,simple-complex:8] [--breakdown] [--validate] [--json FILE]
 //                [--extra-lights K[,K...]] [--METHOD-SETTING VALUE...]
+// --rounds R: the job list rendered R times in turn, and every ratio taken within each round, then
+// its median over the rounds. A machine whose speed drifts between jobs (lavapipe on a shared CPU:
+// one pass's median moved by up to 40 % between runs of one binary) then moves both jobs of a
+// ratio alike; the per-job detail printed is the first round's.
 // --extra-lights: each scene once per K, with K generated point lights added
 // (engine/scene/extra_lights.h); results of K > 0 are keyed "<scene>+l<K>".
 // A job is METHOD[:N[:C]][:SETTING=VALUE...] (sbaa:N:S, streaming:N:S: S surfaces), SETTING any
@@ -36,6 +40,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <charconv>
 #include <cstdio>
 #include <fstream>
@@ -138,11 +143,58 @@ double frameMs(const agaa::RenderResult& r) {
     return sum;
 }
 
+// The ratios printed: every AGAA job against every peer at the same n.
+bool isPeer(const Job& agaaJob, const Job& peer) {
+    return agaaJob.isAgaa() && !peer.isAgaa() && peer.samples == agaaJob.samples;
+}
+
+double median(std::vector<double> v) {
+    std::sort(v.begin(), v.end());
+    const size_t h = v.size() / 2;
+    return v.size() % 2 ? v[h] : 0.5 * (v[h - 1] + v[h]);
+}
+
+// Rounds 2..R of --rounds: every job again, in the same order, so that a drift in the machine's
+// speed falls on the jobs of a round alike; each ratio is taken within a round (the first is
+// `first`, the run already printed) and its median over the rounds printed and kept in `ratios`.
+template <typename Request>
+void timeRounds(agaa::FrameRenderer& renderer, const std::vector<Job>& jobs, const Request& request,
+                const std::map<std::string, agaa::RenderResult>& first, uint32_t rounds, nlohmann::json& ratios) {
+    std::map<std::string, std::vector<double>> frame, shading; // per "A vs B": one ratio a round
+    auto addRound = [&](const std::map<std::string, agaa::RenderResult>& results) {
+        for (const Job& a : jobs)
+            for (const Job& b : jobs) {
+                if (!isPeer(a, b)) continue;
+                const agaa::RenderResult &ra = results.at(a.label()), &rb = results.at(b.label());
+                const std::string key = a.label() + " vs " + b.label();
+                frame[key].push_back(frameMs(rb) / frameMs(ra));
+                shading[key].push_back(shadingMs(ra) > 0 ? shadingMs(rb) / shadingMs(ra) : 0.0);
+            }
+    };
+    addRound(first);
+    for (uint32_t round = 2; round <= rounds; ++round) {
+        std::map<std::string, agaa::RenderResult> results;
+        for (const Job& job : jobs)
+            results[job.label()] = renderer.render(request(job));
+        addRound(results);
+    }
+    for (const auto& [key, f] : frame) {
+        const std::vector<double>& sh = shading[key];
+        const auto [fmin, fmax] = std::minmax_element(f.begin(), f.end());
+        std::printf("  %s over %u rounds: frame %.2fx faster (median; %.2fx to %.2fx), shading pass %.2fx\n",
+                    key.c_str(), rounds, median(f), *fmin, *fmax, median(sh));
+        ratios[key]["frame_speedup_rounds"] = f;
+        ratios[key]["shading_speedup_rounds"] = sh;
+        ratios[key]["frame_speedup_median"] = median(f);
+        ratios[key]["shading_speedup_median"] = median(sh);
+    }
+}
+
 } // namespace
 
 int main(int argc, char** argv) {
     std::vector<std::string> scenes = {"foliage", "furball"};
-    uint32_t width = 640, height = 360, frames = 5, warmup = 2;
+    uint32_t width = 640, height = 360, frames = 5, warmup = 2, rounds = 1;
     std::vector<uint32_t> extraLights = {0};
     std::vector<Job> jobs = {{"reference", 8, 1}, {"agaa", 8, 2}};
     if (agaa::isKnownMethod("simple-complex")) jobs.push_back({"simple-complex", 8, 1});
@@ -168,6 +220,8 @@ int main(int argc, char** argv) {
                 frames = number(a, value(), 1, 1000);
             else if (a == "--warmup")
                 warmup = number(a, value(), 0, 1000);
+            else if (a == "--rounds")
+                rounds = number(a, value(), 1, 100);
             else if (a == "--jobs") {
                 jobs.clear();
                 for (const auto& j : split(value(), ','))
@@ -192,10 +246,12 @@ int main(int argc, char** argv) {
                 jsonPath = value();
             else if (a == "--help" || a == "-h") {
                 std::printf(
-                    "usage: agaa-timings [--scenes a,b] [--size WxH] [--frames K] [--warmup K]\n"
+                    "usage: agaa-timings [--scenes a,b] [--size WxH] [--frames K] [--warmup K] [--rounds R]\n"
                     "                    [--jobs METHOD[:N[:C]][:SETTING=VALUE...],...] [--breakdown] "
                     "[--validate]\n"
                     "                    [--json FILE] [--extra-lights K[,K...]] [--SETTING VALUE...]\n"
+                    "--rounds R: the jobs rendered R times in turn (1..100, default 1); each ratio is also\n"
+                    "taken within every round and its median over the rounds printed\n"
                     "SETTING: a method setting of agaa-render's, as a job's SETTING=VALUE or as a flag\n"
                     "for every job that reads it:\n%s\n"
                     "methods: %s; scenes: builtin kinds\n",
@@ -212,8 +268,9 @@ int main(int argc, char** argv) {
         out["size"] = {width, height};
         out["frames"] = frames;
         out["warmup"] = warmup;
-        std::printf("device: %s, %ux%u, median of %u frames after %u warm-up frames\n",
-                    device.caps().deviceName.c_str(), width, height, frames, warmup);
+        out["rounds"] = rounds;
+        std::printf("device: %s, %ux%u, median of %u frames after %u warm-up frames, %u round(s)\n",
+                    device.caps().deviceName.c_str(), width, height, frames, warmup, rounds);
         for (const std::string& sceneName : scenes)
             for (uint32_t lights : extraLights) {
                 const std::string name = lights == 0 ? sceneName : sceneName + "+l" + std::to_string(lights);
@@ -324,7 +381,7 @@ int main(int argc, char** argv) {
                         ratios[a.label() + " per event vs noaa"] = perEvent;
                     }
                     for (const Job& b : jobs) {
-                        if (b.isAgaa() || b.samples != a.samples) continue;
+                        if (!isPeer(a, b)) continue;
                         const auto& rb = results[b.label()];
                         double shading = shadingMs(ra) > 0 ? shadingMs(rb) / shadingMs(ra) : 0.0;
                         double frame = frameMs(rb) / frameMs(ra);
@@ -347,6 +404,7 @@ int main(int argc, char** argv) {
                         ratios[a.label() + " vs " + b.label()] = entry;
                     }
                 }
+                if (rounds > 1) timeRounds(renderer, jobs, request, results, rounds, out["scenes"][name]["ratios"]);
             }
         if (device.validationErrors()) {
             std::fprintf(stderr, "agaa-timings: %u validation error(s)\n", device.validationErrors());
