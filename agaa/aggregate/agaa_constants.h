@@ -119,9 +119,9 @@ inline constexpr float kDefaultAliasLimit = 5000.0f;
 // spikes (c = 4, shadows on) at +177 % of the truth's energy.
 inline constexpr float kAliasedSaturation = 16.0f;
 // At c = 1, above the alias limit, a pixel is still shaded per sample where its aggregate's mean
-// normal lies in a gap between its members' normals: where the nearest member is at least this share of
-// their mean distance from it (agaa/lighting/shading_rate.glsl meanNormalInGap; 1 when every
-// member is equally far). Two walls at +-45 degrees split 4 / 4 give 1 and 5 / 3 give 0.53; eight
+// normal lies in a gap between its members' normals: where the nearest member is at least this
+// share of their mean distance from it (agaa/lighting/shading_rate.glsl meanNormalInGap; 1 when
+// every member is equally far). Two walls at +-45 degrees split 4 / 4 give 1 and 5 / 3 give 0.53; eight
 // samples along one rod give far less. Measured at n = 8 against the converged truth
 // (docs/decisions/shading-rate-estimate.md, step 4): it takes hard-mirror-vgroove at c = 1 from
 // 0.170 to 0.0035 display RMSE, the reference (8)'s, and moves spikes and glints by at most 0.0007

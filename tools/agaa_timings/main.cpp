@@ -159,7 +159,8 @@ double median(std::vector<double> v) {
 // `first`, the run already printed) and its median over the rounds printed and kept in `ratios`.
 template <typename Request>
 void timeRounds(agaa::FrameRenderer& renderer, const std::vector<Job>& jobs, const Request& request,
-                const std::map<std::string, agaa::RenderResult>& first, uint32_t rounds, nlohmann::json& ratios) {
+                const std::map<std::string, agaa::RenderResult>& first, uint32_t rounds,
+                nlohmann::json& ratios) {
     std::map<std::string, std::vector<double>> frame, shading; // per "A vs B": one ratio a round
     auto addRound = [&](const std::map<std::string, agaa::RenderResult>& results) {
         for (const Job& a : jobs)
@@ -404,7 +405,8 @@ int main(int argc, char** argv) {
                         ratios[a.label() + " vs " + b.label()] = entry;
                     }
                 }
-                if (rounds > 1) timeRounds(renderer, jobs, request, results, rounds, out["scenes"][name]["ratios"]);
+                if (rounds > 1)
+                    timeRounds(renderer, jobs, request, results, rounds, out["scenes"][name]["ratios"]);
             }
         if (device.validationErrors()) {
             std::fprintf(stderr, "agaa-timings: %u validation error(s)\n", device.validationErrors());
