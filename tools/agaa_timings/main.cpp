@@ -148,12 +148,6 @@ bool isPeer(const Job& agaaJob, const Job& peer) {
     return agaaJob.isAgaa() && !peer.isAgaa() && peer.samples == agaaJob.samples;
 }
 
-double median(std::vector<double> v) {
-    std::sort(v.begin(), v.end());
-    const size_t h = v.size() / 2;
-    return v.size() % 2 ? v[h] : 0.5 * (v[h - 1] + v[h]);
-}
-
 // Rounds 2..R of --rounds: every job again, in the same order, so that a drift in the machine's
 // speed falls on the jobs of a round alike; each ratio is taken within a round (the first is
 // `first`, the run already printed) and its median over the rounds printed and kept in `ratios`.
@@ -183,11 +177,11 @@ void timeRounds(agaa::FrameRenderer& renderer, const std::vector<Job>& jobs, con
         const std::vector<double>& sh = shading[key];
         const auto [fmin, fmax] = std::minmax_element(f.begin(), f.end());
         std::printf("  %s over %u rounds: frame %.2fx faster (median; %.2fx to %.2fx), shading pass %.2fx\n",
-                    key.c_str(), rounds, median(f), *fmin, *fmax, median(sh));
+                    key.c_str(), rounds, agaa::median(f), *fmin, *fmax, agaa::median(sh));
         ratios[key]["frame_speedup_rounds"] = f;
         ratios[key]["shading_speedup_rounds"] = sh;
-        ratios[key]["frame_speedup_median"] = median(f);
-        ratios[key]["shading_speedup_median"] = median(sh);
+        ratios[key]["frame_speedup_median"] = agaa::median(f);
+        ratios[key]["shading_speedup_median"] = agaa::median(sh);
     }
 }
 

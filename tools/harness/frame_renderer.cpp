@@ -16,14 +16,14 @@ namespace agaa {
 namespace rg = eng::rg;
 namespace vk = eng::vk;
 
-namespace {
-
 double median(std::vector<double> v) {
     if (v.empty()) return 0.0;
     std::sort(v.begin(), v.end());
     size_t n = v.size();
     return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
 }
+
+namespace {
 
 eng::io::ImageF readImage(const vk::Device& device, const vk::Buffer& buffer, uint32_t w, uint32_t h) {
     vk::invalidateBuffer(device, buffer);

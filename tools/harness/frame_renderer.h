@@ -107,4 +107,8 @@ class FrameRenderer {
     std::map<std::string, std::pair<float, double>> m_meteredExposure; // keyed by view: exposure, EV100
 };
 
+// The median of v (the mean of the middle two for an even count; 0 for none): the per-pass times
+// over the timed frames, and agaa-timings' ratios over its rounds.
+double median(std::vector<double> v);
+
 } // namespace agaa
