@@ -699,12 +699,17 @@ std::vector<EdgeCase> shaderMathCases() {
         };
         const float a2 = 0.04f * 0.04f;
         for (const LobeIn& l : std::vector<LobeIn>{
-                 {"diagonal (no rotation)", {"kSggxOffDiagonal"}, {0.25f, 0.01f, 1.0f}, {0, 0, 0}, {0, 0, 1}},
-                 {"off-diagonal at the skip threshold",
-                  {"kSggxOffDiagonal"},
-                  {0.3f, 0.2f, 0.9f},
-                  {1e-8f, 0, 0},
+                 {"diagonal", {}, {0.25f, 0.01f, 1.0f}, {0, 0, 0}, {0, 0, 1}},
+                 {"tangent eigenvalues equal to rounding (any tangent)",
+                  {"kSggxDegenerate"},
+                  {1e-6f, 1e-6f + 1e-9f, 1.0f},
+                  {1e-10f, 0, 0},
                   {0, 0, 1}},
+                 {"near side-on tube (two eigenvalues nearly tie)",
+                  {},
+                  {0.52f, 0.0016f, 0.48f},
+                  {0.0f, 0.01f, 0.0f},
+                  glm::normalize(glm::vec3(0.2f, 0.1f, 1.0f))},
                  {"tilted flat pixel",
                   {},
                   glm::vec3(0.36f * (1 - a2) + a2, a2, 0.64f * (1 - a2) + a2),
@@ -716,7 +721,7 @@ std::vector<EdgeCase> shaderMathCases() {
                   {0, 0, 0},
                   glm::normalize(glm::vec3(1, 0, 1))},
                  {"corrupt: all zero",
-                  {"kMinSggxEigenvalue", "kSggxOffDiagonal"},
+                  {"kMinSggxEigenvalue", "kSggxDegenerate"},
                   {0, 0, 0},
                   {0, 0, 0},
                   {0, 0, 1}},
@@ -732,7 +737,7 @@ std::vector<EdgeCase> shaderMathCases() {
                 // The CPU build of the same shared function (fp32) is the twin; plus invariants:
                 // orthonormal frame, normal on the viewer's side, S N = lambda N.
                 const shared::SggxLobe cpu = shared::sggxLobe(l.diag.x, l.diag.y, l.diag.z, l.off.x, l.off.y,
-                                                              l.off.z, l.V, 1e-8f, 0.25f);
+                                                              l.off.z, l.V, 1e-12f, 0.25f);
                 if (std::string e = unitLength("normal", glm::vec3(r.r0)); !e.empty()) return e;
                 if (std::string e = unitLength("tangent", glm::vec3(r.r1)); !e.empty()) return e;
                 if (std::abs(glm::dot(glm::vec3(r.r0), glm::vec3(r.r1))) > 1e-4f)

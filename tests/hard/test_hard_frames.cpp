@@ -137,7 +137,7 @@ struct AgaaReadback {
                     };
                     const shared::SggxLobe lobe = shared::sggxLobe(
                         field(0, 0), field(0, 16), field(1, 0), field(1, 16) - 0.5f, field(2, 0) - 0.5f,
-                        field(2, 16) - 0.5f, glm::vec3(0.0f, 0.0f, 1.0f), 1e-8f, 0.25f);
+                        field(2, 16) - 0.5f, glm::vec3(0.0f, 0.0f, 1.0f), 1e-12f, 0.25f);
                     const float len = glm::length(lobe.normal);
                     if (!std::isfinite(len) || std::abs(len - 1.0f) > 1e-4f)
                         fail(p, "SGGX normal length " + std::to_string(len));

@@ -38,10 +38,12 @@ const float kMaxRadiance = 6.0e4;
 // tolerance, since a face-on plane has zero slope but its samples' fp32 depths still
 // differ by interpolation and reconstruction rounding (about 1e-6 relative).
 const float kDepthCompareRelative = 1.0e-4;
-// SGGX eigen-decomposition (shared/sggx.h): an off-diagonal entry at or below this is already
-// zero for the Jacobi rotation (its angle would divide by it); the matrix entries are means in
-// [-1, 1], so 1e-8 is below their fp32 rounding near 1.
-const float kSggxOffDiagonal = 1.0e-8;
+// SGGX eigen-decomposition (shared/sggx.h sggxLobe): the floor of the traces its squarings divide
+// by, and the squared length below which a vector has no direction. The matrix entries are means
+// in [-1, 1] with trace >= 1; a trace of 1e-12 is a zero matrix, and a tangent vector of squared
+// length 1e-12 comes from tangent eigenvalues equal to 1e-6 (alphas equal to 1e-6 / lambda_n),
+// where any axis of the plane gives the same lobe.
+const float kSggxDegenerate = 1.0e-12;
 // Floor of the SGGX normal's eigenvalue (the alphas divide by it). Any mean of sample matrices
 // has trace >= 1 and so a largest eigenvalue >= 1/3; only corrupt input reaches the floor.
 const float kMinSggxEigenvalue = 0.25;

@@ -14,9 +14,14 @@
 
 SHARED_BEGIN
 
-// Cyclic Jacobi sweeps over the three off-diagonal entries. The off-diagonal mass falls
-// quadratically once small; 5 sweeps leave it below fp32 rounding for every matrix tested.
-SHARED_CONST kSggxJacobiSweeps = 5u;
+// The normal's eigenvector by repeated squaring (power iteration in powers of two): S^(2^k),
+// renormalised by its trace at every step, is lambda1's projector plus terms of relative size
+// (lambda2 / lambda1)^(2^k). Where lambda2 nearly ties lambda1 (a tube seen side on) that leaves
+// a mix of the two directions, which one rotation between the normal and the tangent then takes
+// out (sggxLobe). Five 3x3 products and two closed-form 2x2 problems replace the cyclic Jacobi
+// sweeps, whose rotations (a division and two roots each, three sweeps on most means) were two
+// thirds of SGGX's walk on lavapipe (issue 49, docs/decisions/aggregate-cost.md, seventh session).
+SHARED_CONST kSggxPowerSquarings = 5u;
 
 struct SggxLobe {
     vec3 normal;    // unit, on the viewer's side
@@ -26,70 +31,86 @@ struct SggxLobe {
     float alphaB;
 };
 
-// One Jacobi rotation of the symmetric A zeroing A_pq (p < q), accumulated into Q, whose columns
-// become the eigenvectors; skipped when |A_pq| <= offDiagonalEpsilon (theta would divide by zero).
-// Called with constant pairs rather than from a loop over them: with the pair a loop variable every
-// index into A and Q was dynamic, which cost lavapipe about a fifth of SGGX's lighting (issue 49).
-inline_fn void sggxJacobiRotation(inout_param(mat3) A, inout_param(mat3) Q, uint p, uint q,
-                                  float offDiagonalEpsilon) {
-    float apq = A[q][p];
-    if (abs(apq) <= offDiagonalEpsilon) return;
-    // tan of the rotation angle that zeroes S_pq, the smaller root (stable form).
-    float theta = (A[q][q] - A[p][p]) / (2.0f * apq);
-    float t = (theta >= 0.0f ? 1.0f : -1.0f) / (abs(theta) + sqrt(theta * theta + 1.0f));
-    float c = 1.0f / sqrt(t * t + 1.0f);
-    float s = t * c;
-    for (uint k = 0u; k < 3u; ++k) { // A <- A J (columns p, q)
-        float akp = A[p][k], akq = A[q][k];
-        A[p][k] = c * akp - s * akq;
-        A[q][k] = s * akp + c * akq;
-    }
-    for (uint k = 0u; k < 3u; ++k) { // A <- J^T A (rows p, q)
-        float apk = A[k][p], aqk = A[k][q];
-        A[k][p] = c * apk - s * aqk;
-        A[k][q] = s * apk + c * aqk;
-    }
-    for (uint k = 0u; k < 3u; ++k) { // Q <- Q J: the columns are the eigenvectors
-        float qkp = Q[p][k], qkq = Q[q][k];
-        Q[p][k] = c * qkp - s * qkq;
-        Q[q][k] = s * qkp + c * qkq;
-    }
+// The symmetric 2x2 [[a, b], [b, d]]: its eigenvalues, and the unit eigenvector (c, s) of the
+// larger one, in the form without cancellation: (larger - d, b) or (b, larger - a). Where the two
+// agree to rounding (squared length at or below `degenerate`) every vector is one: (1, 0).
+struct SggxEigenPair {
+    float c, s;
+    float larger, smaller;
+};
+
+inline_fn SggxEigenPair sggxEigenPair(float a, float b, float d, float degenerate) {
+    float halfGap = 0.5f * (a - d);
+    float root = sqrt(halfGap * halfGap + b * b);
+    float x = halfGap >= 0.0f ? halfGap + root : b;
+    float y = halfGap >= 0.0f ? b : root - halfGap;
+    float length2 = x * x + y * y;
+    float scale = length2 > degenerate ? 1.0f / sqrt(length2) : 0.0f;
+    SggxEigenPair pair;
+    pair.c = length2 > degenerate ? x * scale : 1.0f;
+    pair.s = y * scale;
+    pair.larger = 0.5f * (a + d) + root;
+    pair.smaller = 0.5f * (a + d) - root;
+    return pair;
 }
 
-// Eigen-decomposition of the symmetric S by cyclic Jacobi rotations (Golub and Van Loan 8.5).
-// Guards: a rotation is skipped when |S_pq| <= offDiagonalEpsilon (already diagonal: theta would
-// divide by zero); the normal's eigenvalue is floored at eigenvalueFloor (a valid mean has
+// The eigen-decomposition of the symmetric S without a loop that ends on convergence, a rotation
+// angle or a dynamic index: the same work for every mean.
+//  1. The normal by repeated squaring (kSggxPowerSquarings).
+//  2. The tangent and bitangent: the eigenvectors of S restricted to the plane across it.
+//  3. One rotation between the normal and the tangent, which zeroes what the squarings left of
+//     their coupling; the larger of the two is the normal.
+// Guards: `degenerate` floors the traces the squarings divide by (only a zero matrix reaches it)
+// and is the squared length below which a vector has no direction (sggxEigenPair; the normal of a
+// zero matrix is then V); the normal's eigenvalue is floored at eigenvalueFloor (a valid mean has
 // trace >= 1, so its largest eigenvalue is >= 1/3; the floor only meets corrupt input).
 inline_fn SggxLobe sggxLobe(float sxx, float syy, float szz, float sxy, float sxz, float syz, vec3 V,
-                            float offDiagonalEpsilon, float eigenvalueFloor) {
+                            float degenerate, float eigenvalueFloor) {
     mat3 A = mat3(sxx, sxy, sxz, sxy, syy, syz, sxz, syz, szz);
-    mat3 Q = mat3(1.0f);
-    for (uint sweep = 0u; sweep < kSggxJacobiSweeps; ++sweep) {
-        // Once all three off-diagonal entries are at or below the epsilon, every rotation of this
-        // sweep and of the later ones is skipped: stopping gives the same matrices. On realistic
-        // means 97 to 99.6 % stop within 3 sweeps (FixedPointSggx.StoppedSweepsMatchAConverged-
-        // DoubleDecomposition); on lavapipe each sweep cost about 7 ms of metal's lighting at
-        // 320x180 (issue 49, docs/decisions/aggregate-cost.md).
-        if (abs(A[1][0]) <= offDiagonalEpsilon && abs(A[2][0]) <= offDiagonalEpsilon &&
-            abs(A[2][1]) <= offDiagonalEpsilon)
-            break;
-        sggxJacobiRotation(A, Q, 0u, 1u, offDiagonalEpsilon);
-        sggxJacobiRotation(A, Q, 0u, 2u, offDiagonalEpsilon);
-        sggxJacobiRotation(A, Q, 1u, 2u, offDiagonalEpsilon);
+    float trace = sxx + syy + szz;
+    mat3 P = A * (1.0f / (trace > degenerate ? trace : degenerate));
+    for (uint k = 0u; k < kSggxPowerSquarings; ++k) {
+        P = P * P; // symmetric: its trace is the sum of its squared eigenvalues
+        float t = P[0][0] + P[1][1] + P[2][2];
+        P = P * (1.0f / (t > degenerate ? t : degenerate));
     }
-    float l0 = A[0][0], l1 = A[1][1], l2 = A[2][2];
-    uint iN = l0 >= l1 ? (l0 >= l2 ? 0u : 2u) : (l1 >= l2 ? 1u : 2u);
-    uint i1 = (iN + 1u) % 3u, i2 = (iN + 2u) % 3u;
-    uint iT = A[i1][i1] >= A[i2][i2] ? i1 : i2;
-    uint iB = iT == i1 ? i2 : i1;
+    // The projector's column along the axis the normal leans on most (its largest diagonal entry,
+    // >= 1/3 of the trace), by constant indices: lavapipe keeps a dynamically indexed matrix in
+    // memory.
+    vec3 column =
+        P[0][0] >= P[1][1] ? (P[0][0] >= P[2][2] ? P[0] : P[2]) : (P[1][1] >= P[2][2] ? P[1] : P[2]);
+    float columnLength2 = dot(column, column);
+    vec3 N = columnLength2 > degenerate ? column * (1.0f / sqrt(columnLength2)) : V;
+    // 2. An orthonormal pair across N: N x the coordinate axis N leans on least (|N x e| >= sqrt(2/3)).
+    vec3 an = vec3(abs(N.x), abs(N.y), abs(N.z));
+    vec3 axis = an.x <= an.y && an.x <= an.z
+                    ? vec3(1.0f, 0.0f, 0.0f)
+                    : (an.y <= an.z ? vec3(0.0f, 1.0f, 0.0f) : vec3(0.0f, 0.0f, 1.0f));
+    vec3 u = cross(N, axis);
+    u = u * (1.0f / sqrt(dot(u, u)));
+    vec3 w = cross(N, u);
+    vec3 Au = A * u;
+    SggxEigenPair plane = sggxEigenPair(dot(u, Au), dot(w, Au), dot(w, A * w), degenerate);
+    vec3 T = u * plane.c + w * plane.s;
+    // 3. The (N, T) rotation.
+    vec3 AN = A * N;
+    SggxEigenPair top = sggxEigenPair(dot(N, AN), dot(T, AN), dot(T, A * T), degenerate);
+    vec3 normal = N * top.c + T * top.s;
+    T = T * top.c - N * top.s;
+    // The bitangent's eigenvalue is the plane's smaller; a near tie of the two tangent eigenvalues
+    // can leave the rotated tangent's below it: the tangent is the larger.
+    bool swap = top.smaller < plane.smaller;
+    vec3 B = u * (-plane.s) + w * plane.c;
+    float lT = swap ? plane.smaller : top.smaller;
+    float lB = swap ? top.smaller : plane.smaller;
     SggxLobe lobe;
-    lobe.normal = dot(Q[iN], V) >= 0.0f ? Q[iN] : -Q[iN];
-    lobe.tangent = Q[iT];
+    lobe.normal = dot(normal, V) >= 0.0f ? normal : -normal;
+    lobe.tangent = swap ? B : T;
     lobe.bitangent = cross(lobe.normal, lobe.tangent);
-    float ln = A[iN][iN] > eigenvalueFloor ? A[iN][iN] : eigenvalueFloor;
-    // Quantisation can leave a tangent eigenvalue slightly negative: clamp before the sqrt.
-    lobe.alphaT = sqrt((A[iT][iT] > 0.0f ? A[iT][iT] : 0.0f) / ln);
-    lobe.alphaB = sqrt((A[iB][iB] > 0.0f ? A[iB][iB] : 0.0f) / ln);
+    float ln = top.larger > eigenvalueFloor ? top.larger : eigenvalueFloor;
+    // Rounding can leave a tangent eigenvalue slightly negative: clamp before the sqrt.
+    lobe.alphaT = sqrt((lT > 0.0f ? lT : 0.0f) / ln);
+    lobe.alphaB = sqrt((lB > 0.0f ? lB : 0.0f) / ln);
     return lobe;
 }
 

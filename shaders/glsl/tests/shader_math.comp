@@ -133,7 +133,7 @@ void main() {
                                                  k.d.xyz, vec3(1.0), spec);
         r1.xyz = spec;
     } else if (op == kOpSggxLobe) {
-        SggxLobe lobe = sggxLobe(k.a.x, k.a.y, k.a.z, k.b.x, k.b.y, k.b.z, k.c.xyz, kSggxOffDiagonal,
+        SggxLobe lobe = sggxLobe(k.a.x, k.a.y, k.a.z, k.b.x, k.b.y, k.b.z, k.c.xyz, kSggxDegenerate,
                                  kMinSggxEigenvalue);
         r0 = vec4(lobe.normal, lobe.alphaT);
         r1 = vec4(lobe.tangent, lobe.alphaB);

@@ -55,7 +55,7 @@ Aggregate normaliseAggregate(uint a, AggregateMoments m, ivec2 pixel, uint pixel
     ag.surface.metallic = m.metallic;
     if (kSggx) {
         SggxLobe lobe = sggxLobe(m.mean0.x, m.mean0.y, m.mean0.z, m.mean1.x, m.mean1.y, m.mean1.z, V,
-                                 kSggxOffDiagonal, kMinSggxEigenvalue);
+                                 kSggxDegenerate, kMinSggxEigenvalue);
         {
             // A matrix's spread below the resolution of its sums is rounding (shared/sggx.h): the
             // fixed point's quantisation on the accumulate path, fp32 on the samples path.
