@@ -1,6 +1,6 @@
 // agaa-timings: per-pass GPU times of several methods on the same scene, in one process and
-// one run, with the ratios the paper reports (AGAA vs its peers): shading-pass ratio, frame
-// ratio, bytes-per-pixel ratio. Pipelines are warmed up first (lavapipe JIT-compiles on first
+// one run, with the ratios the paper reports (AGAA vs its peers): shading ratio, frame ratio,
+// bytes-per-pixel ratio. Pipelines are warmed up first (lavapipe JIT-compiles on first
 // use); every time is the median over the timed frames. A benchmark, not a test: it prints,
 // it asserts nothing about speed.
 //
@@ -19,8 +19,10 @@
 // (--sample-rate-shading on) applies to every job that reads it; a job's own settings win.
 // Every method whose name starts with "agaa" (agaa, agaa-accumulate, agaa-samples) is an AGAA job.
 // For every AGAA job it prints, next to the shading/frame ratios against each peer at the same n:
-//   - lighting ms per shading event against no-AA's (needs a noaa job): what one aggregate's
-//     shading costs against one plain sample's;
+//   - shading ms per shading event per pixel against the peer's (against the reference's: what
+//     one aggregate costs to light against one sample), AGAA's shading being its lighting pass and
+//     the per-sample pass of the pixels its shading rate flags, whose events count too; and the
+//     same against no-AA's (needs a noaa job);
 //   - visibility + generation against the per-sample G-buffer pass of Simple/Complex (or of the
 //     reference) at the same n: the cost of AGAA's two raster passes against the one they replace;
 //   - with --breakdown, where each AGAA pass's time goes, from runs that each remove one part
@@ -128,11 +130,25 @@ double passMs(const agaa::RenderResult& r, const std::string& name) {
     return 0.0;
 }
 
-// The shading pass of a method: the pass whose name ends in ".lighting".
+// The shading of a method: its lighting pass (the pass whose name ends in ".lighting") and the
+// passes under it (AGAA's per-sample pass for the pixels its shading rate flags,
+// "agaa.lighting.perSample"), whose shading events the events per pixel count too.
 double shadingMs(const agaa::RenderResult& r) {
-    for (const auto& p : r.passes)
-        if (p.name.size() > 9 && p.name.compare(p.name.size() - 9, 9, ".lighting") == 0) return p.gpuMs;
-    return 0.0;
+    double sum = 0.0;
+    for (const auto& p : r.passes) {
+        const size_t at = p.name.find(".lighting");
+        if (at == std::string::npos) continue;
+        const size_t end = at + 9;
+        if (end == p.name.size() || p.name[end] == '.') sum += p.gpuMs;
+    }
+    return sum;
+}
+
+// Shading ms per shading event per pixel of `a` over `b`'s: what one event costs to light, the
+// issue's per-event figure against the reference (one event a sample).
+double perEventCost(const agaa::RenderResult& a, const agaa::RenderResult& b) {
+    if (a.shadingEventsMean <= 0 || b.shadingEventsMean <= 0 || shadingMs(b) <= 0) return 0.0;
+    return (shadingMs(a) / a.shadingEventsMean) / (shadingMs(b) / b.shadingEventsMean);
 }
 
 // The technique's frame: every pass but the tool's readbacks.
@@ -155,7 +171,7 @@ template <typename Request>
 void timeRounds(agaa::FrameRenderer& renderer, const std::vector<Job>& jobs, const Request& request,
                 const std::map<std::string, agaa::RenderResult>& first, uint32_t rounds,
                 nlohmann::json& ratios) {
-    std::map<std::string, std::vector<double>> frame, shading; // per "A vs B": one ratio a round
+    std::map<std::string, std::vector<double>> frame, shading, perEvent; // per "A vs B": one a round
     auto addRound = [&](const std::map<std::string, agaa::RenderResult>& results) {
         for (const Job& a : jobs)
             for (const Job& b : jobs) {
@@ -164,6 +180,7 @@ void timeRounds(agaa::FrameRenderer& renderer, const std::vector<Job>& jobs, con
                 const std::string key = a.label() + " vs " + b.label();
                 frame[key].push_back(frameMs(rb) / frameMs(ra));
                 shading[key].push_back(shadingMs(ra) > 0 ? shadingMs(rb) / shadingMs(ra) : 0.0);
+                perEvent[key].push_back(perEventCost(ra, rb));
             }
     };
     addRound(first);
@@ -174,14 +191,17 @@ void timeRounds(agaa::FrameRenderer& renderer, const std::vector<Job>& jobs, con
         addRound(results);
     }
     for (const auto& [key, f] : frame) {
-        const std::vector<double>& sh = shading[key];
+        const std::vector<double>&sh = shading[key], &pe = perEvent[key];
         const auto [fmin, fmax] = std::minmax_element(f.begin(), f.end());
-        std::printf("  %s over %u rounds: frame %.2fx faster (median; %.2fx to %.2fx), shading pass %.2fx\n",
-                    key.c_str(), rounds, agaa::median(f), *fmin, *fmax, agaa::median(sh));
+        std::printf("  %s over %u rounds: frame %.2fx faster (median; %.2fx to %.2fx), shading %.2fx, "
+                    "%.2fx the cost per shading event\n",
+                    key.c_str(), rounds, agaa::median(f), *fmin, *fmax, agaa::median(sh), agaa::median(pe));
         ratios[key]["frame_speedup_rounds"] = f;
         ratios[key]["shading_speedup_rounds"] = sh;
+        ratios[key]["per_event_cost_rounds"] = pe;
         ratios[key]["frame_speedup_median"] = agaa::median(f);
         ratios[key]["shading_speedup_median"] = agaa::median(sh);
+        ratios[key]["per_event_cost_median"] = agaa::median(pe);
     }
 }
 
@@ -329,7 +349,9 @@ int main(int argc, char** argv) {
                         agaa::RenderResult noAtomics =
                             without(parts::generationWithoutAtomicsVisibilityWithoutNormals());
                         agaa::RenderResult empty = without(parts::generationEmpty());
-                        const double lighting = shadingMs(res), prologue = shadingMs(noShading);
+                        // The lighting pass alone: the per-sample pass runs in both builds.
+                        const double lighting = passMs(res, "agaa.lighting"),
+                                     prologue = passMs(noShading, "agaa.lighting");
                         const double generation = passMs(res, "agaa.generation");
                         const double material = passMs(noAtomics, "agaa.generation");
                         const double raster = passMs(empty, "agaa.generation");
@@ -365,10 +387,7 @@ int main(int argc, char** argv) {
                     if (!a.isAgaa()) continue;
                     const auto& ra = results[a.label()];
                     nlohmann::json& ratios = out["scenes"][name]["ratios"];
-                    if (noaa && noaa->shadingEventsMean > 0 && ra.shadingEventsMean > 0 &&
-                        shadingMs(*noaa) > 0) {
-                        double perEvent = (shadingMs(ra) / ra.shadingEventsMean) /
-                                          (shadingMs(*noaa) / noaa->shadingEventsMean);
+                    if (const double perEvent = noaa ? perEventCost(ra, *noaa) : 0.0; perEvent > 0) {
                         std::printf("  %s: lighting ms per shading event %.2fx no-AA's (%.2f vs %.2f ms per "
                                     "event/px)\n",
                                     a.label().c_str(), perEvent, shadingMs(ra) / ra.shadingEventsMean,
@@ -381,11 +400,15 @@ int main(int argc, char** argv) {
                         double shading = shadingMs(ra) > 0 ? shadingMs(rb) / shadingMs(ra) : 0.0;
                         double frame = frameMs(rb) / frameMs(ra);
                         double bytes = ra.bytesPerPixel / rb.bytesPerPixel;
+                        double perEvent = perEventCost(ra, rb);
                         std::printf(
-                            "  %s vs %s: shading pass %.2fx faster, frame %.2fx faster, bytes/px %.3fx\n",
-                            a.label().c_str(), b.label().c_str(), shading, frame, bytes);
-                        nlohmann::json entry = {
-                            {"shading_speedup", shading}, {"frame_speedup", frame}, {"bytes_ratio", bytes}};
+                            "  %s vs %s: shading %.2fx faster (%.2fx the cost per shading event), frame "
+                            "%.2fx faster, bytes/px %.3fx\n",
+                            a.label().c_str(), b.label().c_str(), shading, perEvent, frame, bytes);
+                        nlohmann::json entry = {{"shading_speedup", shading},
+                                                {"per_event_cost", perEvent},
+                                                {"frame_speedup", frame},
+                                                {"bytes_ratio", bytes}};
                         // The peer's raster passes: its G-buffer, and SBAA's second geometry pass.
                         double gbuffer = passMs(rb, b.method + ".gbuffer") + passMs(rb, b.method + ".fill");
                         if (gbuffer > 0) {
