@@ -27,8 +27,9 @@ inline constexpr NamedValue<AggregatePosition> kAggregatePositionNames[] = {
 // Auto: SGGX where glossy metals that are not near mirrors are at least half of the drawn
 // materials (eng::scene::SceneFeatures::anisotropicMetalsDominate), Toksvig elsewhere: its mean
 // shading normal and first moment light diffuse aggregates better (issue 14), and on near mirrors
-// SGGX bought no accuracy the converged truth could see at twice the lighting time
-// (docs/decisions/ndf-auto.md, issue 49).
+// SGGX bought no accuracy the converged truth could see, at more lighting time (about 1.15x
+// Toksvig's on metal, twice before its decomposition by squaring; docs/decisions/ndf-auto.md,
+// issue 49).
 enum class AggregateNdf : uint32_t { Toksvig = 0, Sggx = 1, Auto = 2 };
 inline constexpr NamedValue<AggregateNdf> kAggregateNdfNames[] = {
     {"auto", AggregateNdf::Auto}, {"sggx", AggregateNdf::Sggx}, {"toksvig", AggregateNdf::Toksvig}};

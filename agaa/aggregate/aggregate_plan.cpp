@@ -199,8 +199,8 @@ std::vector<VariantChoice> planVariants(const AggregatePlan& plan, const SceneTr
                      : std::to_string(plan.features.anisotropicMetalMaterials) + " of " +
                            std::to_string(plan.features.drawnMaterials) +
                            " drawn materials glossy metal at roughness 0.1 to 0.4 (SGGX from half of them: "
-                           "on near mirrors and mixed scenes it measured no more accurate, at twice the "
-                           "lighting time)"});
+                           "on near mirrors and mixed scenes it measured no more accurate, at about "
+                           "1.15x the lighting time)"});
     v.push_back({"near-mirror-view-footprint", plan.features.hasNearMirrors() ? "on" : "off",
                  plan.features.forced ? std::string("forced")
                                       : std::to_string(plan.features.nearMirrorMaterials) + " of " +

@@ -69,7 +69,8 @@ struct SceneFeatures {
     // among five materials: 0.0262 against SGGX's 0.0324 at (8, 2)), SGGX on scenes made of glossy
     // metal tubes (metal, roughness 0.18 and 0.28: 0.0428 against 0.0568, the truth's own error
     // 0.0036); on near mirrors (spikes and glints, roughness 0.02; hard-mirror, 0) SGGX was no more
-    // accurate than Toksvig, or less, at about twice the lighting time (issue 49).
+    // accurate than Toksvig, or less, at more lighting time (about 1.15x since the decomposition by
+    // squaring, twice before; issue 49).
     bool anisotropicMetalsDominate() const {
         return anisotropicMetalMaterials > 0 && 2 * anisotropicMetalMaterials >= drawnMaterials;
     }

@@ -276,7 +276,7 @@ TEST(SceneFeatures, NearMirrorsCountBelowTheRoughnessOrWithARoughnessTexture) {
 }
 
 // --agaa-ndf auto's rule: SGGX when glossy metals that are not near mirrors are at least half of
-// the drawn materials (issue 49: on near mirrors SGGX bought no accuracy at twice the time).
+// the drawn materials (issue 49: on near mirrors SGGX bought no accuracy, at more lighting time).
 TEST(SceneFeatures, AnisotropicMetalsDominateFromHalfTheDrawnMaterials) {
     Scene s = oneDrawScene();
     s.materials[0].metallicFactor = 1.0f;
