@@ -67,20 +67,28 @@ void sumSampleMaterial(ivec2 pixel, uint pixelIndex, uint s, uint a, bool offLay
         material.offLayerF0Alpha += vec4(mix(vec3(0.04), albedoMetal.rgb, albedoMetal.a), min(alpha, 1.0));
         return;
     }
-    material.albedoMetal[a] += albedoMetal;
+    vec3 moment0, moment1 = vec3(0.0);
     if (kSggx) {
         // The sample's GGX lobe as an SGGX matrix, S = (1 - a^2) N N^T + a^2 I (shared/sggx.h).
         float ca = clamp(alpha, kMinGgxAlpha, kMaxGgxAlpha);
         float a2 = ca * ca;
         vec3 Nw = N * (1.0 - a2);
-        material.moment0[a] += Nw * N + a2;
-        material.moment1[a] += vec3(Nw.x * N.y, Nw.x * N.z, Nw.y * N.z);
+        moment0 = Nw * N + a2;
+        moment1 = vec3(Nw.x * N.y, Nw.x * N.z, Nw.y * N.z);
     } else {
         // Roughness as normal variance: the Toksvig length of the sample's alpha.
-        material.moment0[a] += N * toksvigLength(alpha, agaa.toksvig.x, agaa.toksvig.y, agaa.toksvig.z);
+        moment0 = N * toksvigLength(alpha, agaa.toksvig.x, agaa.toksvig.y, agaa.toksvig.z);
     }
-    material.materialAlpha[a] += clamp(alpha, kMinGgxAlpha, kMaxGgxAlpha);
-    material.materialAlphaRaw[a] += min(alpha, kMaxGgxAlpha);
+    float materialAlpha = clamp(alpha, kMinGgxAlpha, kMaxGgxAlpha), materialAlphaRaw = min(alpha, kMaxGgxAlpha);
+    // At constant indices, as the walk's sums (pixel_samples.glsl).
+    for (uint k = 0u; k < kAggregates; ++k) {
+        bool mine = k == a;
+        material.albedoMetal[k] += mine ? albedoMetal : vec4(0.0);
+        material.moment0[k] += mine ? moment0 : vec3(0.0);
+        if (kSggx) material.moment1[k] += mine ? moment1 : vec3(0.0);
+        material.materialAlpha[k] += mine ? materialAlpha : 0.0;
+        material.materialAlphaRaw[k] += mine ? materialAlphaRaw : 0.0;
+    }
     addSpreadSample(a, N, alpha); // the shading rate's estimate (prefilter_estimate.glsl)
 }
 

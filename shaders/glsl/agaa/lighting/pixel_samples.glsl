@@ -83,14 +83,22 @@ void walkPixelSamples(ivec2 pixel, uint pixelIndex, bool inside) {
         sumSampleMaterial(pixel, pixelIndex, s, a, offLayer, P);
         if (offLayer) continue;
         float t = -P.z;
-        walk.depthSum[a] += t;
         if (depthOrigin < 0.0) depthOrigin = t;
-        walk.depthShifted[a] += t - depthOrigin;
-        walk.depthSquares[a] += (t - depthOrigin) * (t - depthOrigin);
-        walk.positionSum[a] += P;
-        walk.samplesIn[a] += 1u;
+        float shifted = t - depthOrigin;
         vec2 sp = frame.samplePositions[s].xy;
-        walk.screenSum[a] += sp;
-        walk.screenSquares[a] += vec3(sp.x * sp.x, sp.x * sp.y, sp.y * sp.y);
+        vec3 spSquares = vec3(sp.x * sp.x, sp.x * sp.y, sp.y * sp.y);
+        // Every aggregate's sums at a constant index, the sample's own taking it:
+        // indexed by the sample's id, llvmpipe gathers and scatters each lane's element of an
+        // array it keeps in memory; at a constant index it loads and stores the whole vector.
+        for (uint k = 0u; k < kAggregates; ++k) {
+            bool mine = k == a;
+            walk.depthSum[k] += mine ? t : 0.0;
+            walk.depthShifted[k] += mine ? shifted : 0.0;
+            walk.depthSquares[k] += mine ? shifted * shifted : 0.0;
+            walk.positionSum[k] += mine ? P : vec3(0.0);
+            walk.samplesIn[k] += mine ? 1u : 0u;
+            walk.screenSum[k] += mine ? sp : vec2(0.0);
+            walk.screenSquares[k] += mine ? spSquares : vec3(0.0);
+        }
     }
 }

@@ -35,8 +35,11 @@ void clearSpreadSums() {
 
 void addSpreadSample(uint a, vec3 N, float alpha) {
     if (kShadingRate == 0u) return;
-    spreadSums.normalSum[a] += N;
-    spreadSums.alphaMin[a] = min(spreadSums.alphaMin[a], max(alpha, kMinGgxAlpha));
+    for (uint k = 0u; k < kAggregates; ++k) { // constant indices (pixel_samples.glsl)
+        bool mine = k == a;
+        spreadSums.normalSum[k] += mine ? N : vec3(0.0);
+        spreadSums.alphaMin[k] = mine ? min(spreadSums.alphaMin[k], max(alpha, kMinGgxAlpha)) : spreadSums.alphaMin[k];
+    }
 }
 
 // The estimate of aggregate a, whose walk counted `samples` samples: 0 for one sample or one
