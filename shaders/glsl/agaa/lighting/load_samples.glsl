@@ -79,7 +79,8 @@ void sumSampleMaterial(ivec2 pixel, uint pixelIndex, uint s, uint a, bool offLay
         // Roughness as normal variance: the Toksvig length of the sample's alpha.
         moment0 = N * toksvigLength(alpha, agaa.toksvig.x, agaa.toksvig.y, agaa.toksvig.z);
     }
-    float materialAlpha = clamp(alpha, kMinGgxAlpha, kMaxGgxAlpha), materialAlphaRaw = min(alpha, kMaxGgxAlpha);
+    float materialAlpha = clamp(alpha, kMinGgxAlpha, kMaxGgxAlpha),
+          materialAlphaRaw = min(alpha, kMaxGgxAlpha);
     // At constant indices, as the walk's sums (pixel_samples.glsl).
     for (uint k = 0u; k < kAggregates; ++k) {
         bool mine = k == a;

@@ -38,7 +38,8 @@ void addSpreadSample(uint a, vec3 N, float alpha) {
     for (uint k = 0u; k < kAggregates; ++k) { // constant indices (pixel_samples.glsl)
         bool mine = k == a;
         spreadSums.normalSum[k] += mine ? N : vec3(0.0);
-        spreadSums.alphaMin[k] = mine ? min(spreadSums.alphaMin[k], max(alpha, kMinGgxAlpha)) : spreadSums.alphaMin[k];
+        spreadSums.alphaMin[k] =
+            mine ? min(spreadSums.alphaMin[k], max(alpha, kMinGgxAlpha)) : spreadSums.alphaMin[k];
     }
 }
 
