@@ -7,11 +7,13 @@
 #include "gpu_test_support.h"
 #include "shaders/agaa/lighting_gbuffer_shadow_comp.h"
 #include "shaders/tests/agaa_lighting_gbuffer_shadow_no_shading_comp.h"
+#include "shaders/tests/agaa_lighting_gbuffer_shadow_no_shadow_filter_comp.h"
 #include "tools/harness/frame_renderer.h"
 #include "tools/scenes/adversarial_scenes.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <stdexcept>
 #include <string>
 
@@ -55,6 +57,37 @@ TEST(AgaaProgramOverrides, ReplaceTheShippingProgramAndOnlyIt) {
     }
     ASSERT_GT(covered, shipping.shadingEvents.size() / 2) << "the plane must cover most of the frame";
     EXPECT_EQ(differ, covered) << "the replacement must run in place of the shipping lighting";
+    agaa::test::expectNoValidationErrors(*device);
+}
+
+// agaa-timings --breakdown's build without the shadow footprint (its "shadow-map taps" figure)
+// lights every footprint fully: on foliage under the sun, with no pixel left to the per-sample pass
+// (whose own taps it keeps), no pixel gets darker and the shadowed ones get brighter.
+TEST(AgaaProgramOverrides, TheBuildWithoutTheShadowFootprintLightsEveryAggregateUnshadowed) {
+    auto device = agaa::test::makeValidatedDevice();
+    const eng::scene::Scene scene = eng::scene::loadTestScene("foliage");
+    agaa::FrameRenderer renderer(*device, scene);
+    agaa::RenderRequest r;
+    r.method =
+        "agaa-samples"; // agaa/lighting_gbuffer_shadow.comp: the sun casts shadows, nothing is emissive
+    r.view.width = r.view.height = 64;
+    r.settings.agaa.tolerance = agaa::kToleranceNever;
+    r.settings.agaa.aliasLimit = agaa::kAliasLimitNone;
+    const agaa::RenderResult shipping = renderer.render(r);
+    r.settings.agaa.programs["agaa/lighting_gbuffer_shadow.comp"] =
+        kTestsAgaaLightingGbufferShadowNoShadowFilterComp;
+    const agaa::RenderResult unshadowed = renderer.render(r);
+    size_t darker = 0, brighter = 0;
+    for (size_t i = 0; i < shipping.hdr.rgba.size(); ++i) {
+        if (i % 4 == 3) continue;
+        const float a = shipping.hdr.rgba[i], b = unshadowed.hdr.rgba[i];
+        // Visibility 1 only adds irradiance; the rest of the shading is the same code on the same
+        // values, up to the order of a sum's rounding.
+        if (b < a - 1e-5f * std::max(1.0f, a)) ++darker;
+        if (b > a + 1e-3f * std::max(1.0f, a)) ++brighter;
+    }
+    EXPECT_EQ(darker, 0u);
+    EXPECT_GT(brighter, shipping.hdr.rgba.size() / 4 / 20) << "the sun's shadows cover foliage's ground";
     agaa::test::expectNoValidationErrors(*device);
 }
 

@@ -46,6 +46,12 @@ ProgramOverrides lightingWithoutShading() {
     return o;
 }
 
+ProgramOverrides lightingWithoutShadowFilter() {
+    ProgramOverrides o;
+    replace(o, "lighting", "_no_shadow_filter", {""});
+    return o;
+}
+
 ProgramOverrides generationWithoutAtomicsVisibilityWithoutNormals() {
     ProgramOverrides o;
     replace(o, "generation", "_material_only", kEveryAtomics);

@@ -9,6 +9,9 @@ namespace agaa::timings {
 
 // The lighting pass without step 3 (every aggregate's and flagged sample's shading).
 ProgramOverrides lightingWithoutShading();
+// The lighting pass with every shadowed light's footprint fully lit: no shadow-map tap (the
+// shadowed variants only; a scene without shadows runs its shipping pass).
+ProgramOverrides lightingWithoutShadowFilter();
 // The accumulation kernel evaluating the material but adding nothing to the AG-buffer, and the
 // visibility prepass without its face-normal encoding.
 ProgramOverrides generationWithoutAtomicsVisibilityWithoutNormals();

@@ -26,7 +26,8 @@
 //   - visibility + generation against the per-sample G-buffer pass of Simple/Complex (or of the
 //     reference) at the same n: the cost of AGAA's two raster passes against the one they replace;
 //   - with --breakdown, where each AGAA pass's time goes, from runs that each remove one part
-//     (the part-removed builds of breakdown_builds.h): lighting = shading + the rest;
+//     (the part-removed builds of breakdown_builds.h): lighting = shading + the rest, and
+//     shading = the shadow footprint's taps + lights and lobes;
 //     generation = atomics and routing + material + raster/depth/stencil; visibility = face-normal
 //     encoding + the rest. Differences of medians: read them as estimates, not exact sums.
 // Exit codes: 0 done; 2 bad arguments; 3 the device lacks something required.
@@ -346,12 +347,14 @@ int main(int argc, char** argv) {
                             return renderer.render(r);
                         };
                         agaa::RenderResult noShading = without(parts::lightingWithoutShading());
+                        agaa::RenderResult noShadowFilter = without(parts::lightingWithoutShadowFilter());
                         agaa::RenderResult noAtomics =
                             without(parts::generationWithoutAtomicsVisibilityWithoutNormals());
                         agaa::RenderResult empty = without(parts::generationEmpty());
                         // The lighting pass alone: the per-sample pass runs in both builds.
                         const double lighting = passMs(res, "agaa.lighting"),
-                                     prologue = passMs(noShading, "agaa.lighting");
+                                     prologue = passMs(noShading, "agaa.lighting"),
+                                     unshadowed = passMs(noShadowFilter, "agaa.lighting");
                         const double generation = passMs(res, "agaa.generation");
                         const double material = passMs(noAtomics, "agaa.generation");
                         const double raster = passMs(empty, "agaa.generation");
@@ -361,6 +364,9 @@ int main(int argc, char** argv) {
                             "      breakdown: lighting %.2f = shading %.2f + the rest %.2f (sample walk, "
                             "normalisation, culling, resolve)\n",
                             lighting, lighting - prologue, prologue);
+                        std::printf("      breakdown: shading %.2f = shadow-map taps %.2f (the footprint, "
+                                    "--shadow-footprint) + lights and lobes %.2f\n",
+                                    lighting - prologue, lighting - unshadowed, unshadowed - prologue);
                         std::printf(
                             "      breakdown: generation %.2f = atomics and routing %.2f + material %.2f + "
                             "raster, depth and stencil %.2f\n",
@@ -371,6 +377,7 @@ int main(int argc, char** argv) {
                         out["scenes"][name][job.label()]["breakdown_ms"] = {
                             {"lighting_shading", lighting - prologue},
                             {"lighting_rest", prologue},
+                            {"lighting_shadow_taps", lighting - unshadowed},
                             {"generation_atomics", generation - material},
                             {"generation_material", material - raster},
                             {"generation_raster", raster},

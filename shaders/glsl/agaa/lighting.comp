@@ -22,6 +22,7 @@
 #extension GL_GOOGLE_include_directive : require
 #include "agaa/lighting/lighting_pass.glsl"
 #include "agaa/lighting/shade_aggregates.glsl"
+#include "agaa/lighting/shadow_footprint.glsl"
 
 // Nothing is observed in the shipping pass.
 void exportSample(uint pixelIndex, uint s, vec4 a, vec4 b, vec4 c, vec4 d) {}

@@ -3,6 +3,7 @@
 // agaa-timings --breakdown's build of AGAA's lighting pass (tools/agaa_timings/CMakeLists.txt): the
 // shipping pass (agaa/lighting.comp) with step 3 left out, every aggregate resolved unlit.
 #include "agaa/lighting/lighting_pass.glsl"
+#include "agaa/lighting/shadow_footprint.glsl"
 
 void shadeAggregates(OffLayer off, bool inside, uint firstEntry, out OffLayerShading offShaded) {
     shaded = Shading[](noShading(), noShading(), noShading(), noShading());

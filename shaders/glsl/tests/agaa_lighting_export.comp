@@ -6,6 +6,7 @@
 // pixel p at pixels * n + p * c + a.
 #include "agaa/lighting/lighting_pass.glsl"
 #include "agaa/lighting/shade_aggregates.glsl"
+#include "agaa/lighting/shadow_footprint.glsl"
 
 layout(set = 0, binding = 14, std430) writeonly buffer Export { float exportData[]; };
 
