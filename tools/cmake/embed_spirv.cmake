@@ -1,5 +1,6 @@
 # GLSL -> SPIR-V at build time, embedded in the binaries as uint32_t arrays so
-# they run from any directory. A shader compile error fails the build.
+# they run from any directory. A shader compile error fails the build, and so does SPIR-V that
+# SPIRV-Tools' validator rejects (glslang_checked.sh).
 #
 #   agaa_embed_shaders(TARGET name PROGRAMS <program> ...)
 # creates an INTERFACE library `name` whose include directory (${PROJECT_BINARY_DIR}/generated/<name>:
@@ -98,11 +99,12 @@ function(agaa_embed_shaders)
       OUTPUT ${raw}
       BYPRODUCTS ${header}
       COMMAND ${CMAKE_COMMAND} -E make_directory ${out_root}/shaders/${dir}
-      COMMAND ${GLSLANG_VALIDATOR} -V --target-env vulkan1.3 -I${glsl_root} -I${module_glsl} -g0 ${perturb} ${defines}
+      COMMAND sh ${PROJECT_SOURCE_DIR}/tools/cmake/glslang_checked.sh ${GLSLANG_VALIDATOR} -V --target-env vulkan1.3 -I${glsl_root} -I${module_glsl} -g0 ${perturb} ${defines}
               --vn ${symbol}Words --depfile ${raw}.d -o ${raw} ${glsl_root}/${src}
       COMMAND ${CMAKE_COMMAND} -DRAW=${raw} -DOUT=${header} -DSYMBOL=${symbol}
               -P ${PROJECT_SOURCE_DIR}/tools/cmake/wrap_spirv.cmake
-      DEPENDS ${glsl_root}/${src} ${PROJECT_SOURCE_DIR}/tools/cmake/wrap_spirv.cmake ${perturb_stamp}
+      DEPENDS ${glsl_root}/${src} ${PROJECT_SOURCE_DIR}/tools/cmake/wrap_spirv.cmake
+              ${PROJECT_SOURCE_DIR}/tools/cmake/glslang_checked.sh ${perturb_stamp}
       DEPFILE ${raw}.d
       COMMENT "GLSL ${name}"
       VERBATIM)
